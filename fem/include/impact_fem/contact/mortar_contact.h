@@ -1,0 +1,141 @@
+#ifndef IMPACT_FEM_CONTACT_MORTAR_CONTACT_H
+#define IMPACT_FEM_CONTACT_MORTAR_CONTACT_H
+
+#include <deal.II/base/index_set.h>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/mapping.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+#include <deal.II/lac/vector.h>
+
+#include <functional>
+#include <vector>
+
+namespace impact_fem
+{
+  using namespace dealii;
+
+  /**
+   * Frictionless sphere-plate contact with Lagrange multipliers.
+   *
+   * Discretisation (mortar, plate = non-mortar side): the contact pressure
+   * on the plate's contact surface is p(r) = sum_j lambda_j N_j(r), with N_j
+   * the piecewise linear hat functions of the vertices of the plate's
+   * contact surface (lambda_j is the pressure at vertex j). Linear, not the
+   * quadratic traces: quadratic vertex functions change sign, and their
+   * weight 2 pi int N_j r dr vanishes on the axis, which makes the weighted
+   * gaps below meaningless. Non-penetration holds in the weighted sense
+   *   g_j = int N_j(r) [ z_sphere(r) + u_z^sphere - z_plate(r) - u_z^plate ] 2 pi r dr >= 0,
+   *   lambda_j >= 0,  lambda_j g_j = 0,
+   * the sphere point paired with a plate point being the one at the same
+   * radius (small sliding; with equal materials there is no relative slip).
+   * In matrix form g = g_0 + B u and the contact force vector is B^T lambda.
+   *
+   * Time stepping is linear apart from contact, so the effective stiffness
+   * K_eff of the step is constant. With the influence vectors
+   * W = K_eff^{-1} B^T (one solve per contact node, once) and the dense
+   * Delassus matrix G = B W, each step reduces to a small linear
+   * complementarity problem for lambda, solved exactly by an active-set
+   * method: the constraint is satisfied to round-off, no penalty parameter.
+   */
+  class MortarContact
+  {
+  public:
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    void
+    parse_parameters(ParameterHandler &prm);
+
+    /// Build B and g_0 from the contact faces of all ranks.
+    void
+    setup(const DoFHandler<2>             &dof_handler,
+          const Mapping<2>                &mapping,
+          const AffineConstraints<double> &constraints);
+
+    /**
+     * Compute W = K_eff^{-1} B^T and G = B W; @p solve applies K_eff^{-1}.
+     */
+    void
+    compute_influence(
+      const std::function<void(TrilinosWrappers::MPI::Vector &,
+                               const TrilinosWrappers::MPI::Vector &)> &solve,
+      const IndexSet &locally_owned_dofs,
+      const MPI_Comm  comm);
+
+    /// Weighted gaps g_0 + B u [m^3] (identical on all ranks).
+    Vector<double>
+    weighted_gaps(const TrilinosWrappers::MPI::Vector &displacement) const;
+
+    /**
+     * Contact pressures at the nodes [Pa] that make the gaps
+     * free_gaps + G lambda complementary to lambda. Throws when the
+     * active-set iteration does not converge.
+     */
+    Vector<double>
+    solve_complementarity(const Vector<double> &free_gaps);
+
+    /// u += W lambda.
+    void
+    add_contact_response(const Vector<double>         &pressures,
+                         TrilinosWrappers::MPI::Vector &displacement) const;
+
+    /// f += B^T lambda (owned entries).
+    void
+    add_contact_forces(const Vector<double>         &pressures,
+                       TrilinosWrappers::MPI::Vector &forces) const;
+
+    /// Total normal force 2 pi int p r dr [N].
+    double
+    total_force(const Vector<double> &pressures) const;
+
+    /// Radius of the outermost node carrying pressure [m] (0 if none).
+    double
+    contact_radius(const Vector<double> &pressures) const;
+
+    unsigned int
+    n_contact_nodes() const
+    {
+      return node_radius.size();
+    }
+
+    /// Radius of each contact node [m], ascending.
+    const std::vector<double> &
+    node_radii() const
+    {
+      return node_radius;
+    }
+
+    /**
+     * Deepest penetration [m]: the largest negative pointwise gap at the
+     * nodes of both contact surfaces (0 if none).
+     */
+    double
+    penetration(const TrilinosWrappers::MPI::Vector &displacement) const;
+
+  private:
+    unsigned int max_iterations = 1000;
+
+    // Sparse rows of B: global dof indices and values.
+    std::vector<std::vector<types::global_dof_index>> row_dofs;
+    std::vector<std::vector<double>>                  row_values;
+    Vector<double>                                    reference_gaps;
+    std::vector<double>                               node_radius;
+    std::vector<double>                               node_area;
+
+    // Pointwise gaps at the nodes: rows and reference values.
+    std::vector<std::vector<types::global_dof_index>> point_dofs;
+    std::vector<std::vector<double>>                  point_values;
+    std::vector<double>                               point_reference_gaps;
+
+    std::vector<TrilinosWrappers::MPI::Vector> influence;
+    FullMatrix<double>                         delassus;
+    IndexSet                                   owned;
+    MPI_Comm                                   communicator = MPI_COMM_SELF;
+    std::vector<bool>                          active; // warm start
+  };
+} // namespace impact_fem
+
+#endif

@@ -1,0 +1,64 @@
+#ifndef IMPACT_FEM_OUTPUT_HISTORY_H
+#define IMPACT_FEM_OUTPUT_HISTORY_H
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace impact_fem
+{
+  /**
+   * Per-step histories of a run, kept in memory on rank 0 and written as one
+   * HDF5 file: one 1D dataset per quantity with the attributes "unit" and
+   * "description"; run attributes (parameters, derived results) on the root.
+   *
+   * The file is written under a temporary name and renamed when complete, so
+   * no reader ever sees a truncated file; an unfinished run is written as
+   * <name>.incomplete.h5 with the root attribute status = "incomplete".
+   */
+  class History
+  {
+  public:
+    /// Declare a quantity; the order of declaration is the order in the file.
+    void
+    declare(const std::string &name,
+            const std::string &unit,
+            const std::string &description);
+
+    /// Append the value of a declared quantity for the current step.
+    void
+    append(const std::string &name, const double value);
+
+    const std::vector<double> &
+    operator[](const std::string &name) const;
+
+    /// A dataset that is not per step (e.g. a pressure profile); replaced
+    /// on each call.
+    void
+    set_profile(const std::string         &name,
+                const std::string         &unit,
+                const std::string         &description,
+                const std::vector<double> &values);
+
+    std::size_t
+    n_steps() const;
+
+    void
+    write_hdf5(const std::string                        &filename,
+               const std::map<std::string, std::string> &text_attributes,
+               const std::map<std::string, double>      &numeric_attributes,
+               const bool                                complete) const;
+
+  private:
+    struct Series
+    {
+      std::string         name, unit, description;
+      std::vector<double> values;
+    };
+    std::vector<Series>                series;
+    std::vector<Series>                profiles;
+    std::map<std::string, std::size_t> index;
+  };
+} // namespace impact_fem
+
+#endif

@@ -1,0 +1,154 @@
+// impact-fem: a sphere hitting a plate, axisymmetric elastodynamics with
+// frictionless contact. Usage: see print_usage() or fem/README.md.
+
+#include <impact_fem/impact_problem.h>
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/utilities.h>
+
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace
+{
+  void
+  print_usage(std::ostream &out)
+  {
+    out << "Usage: impact-fem [parameters.prm] [--set \"Section/Entry=value\"]...\n"
+           "       impact-fem --print-parameters\n"
+           "Runs one impact; results go to Output/Directory (history.h5, "
+           "summary.json).\n";
+  }
+
+
+  // Apply "Section/Subsection/Entry=value" to the handler.
+  void
+  set_entry(dealii::ParameterHandler &prm, const std::string &assignment)
+  {
+    const auto equal = assignment.find('=');
+    AssertThrow(equal != std::string::npos,
+                dealii::ExcMessage("--set expects \"Section/Entry=value\", got <" +
+                                   assignment + ">."));
+    const std::string path  = dealii::Utilities::trim(assignment.substr(0, equal));
+    const std::string value = dealii::Utilities::trim(assignment.substr(equal + 1));
+    std::vector<std::string> parts = dealii::Utilities::split_string_list(path, '/');
+    AssertThrow(!parts.empty(), dealii::ExcMessage("--set: empty entry name."));
+    for (std::size_t i = 0; i + 1 < parts.size(); ++i)
+      prm.enter_subsection(parts[i]);
+    try
+      {
+        prm.set(parts.back(), value);
+      }
+    catch (const dealii::ExceptionBase &)
+      {
+        for (std::size_t i = 0; i + 1 < parts.size(); ++i)
+          prm.leave_subsection();
+        AssertThrow(false,
+                    dealii::ExcMessage("--set \"" + assignment +
+                                       "\": no entry <" + path +
+                                       "> or the value <" + value +
+                                       "> is malformed for it (see "
+                                       "impact-fem --print-parameters)."));
+      }
+    for (std::size_t i = 0; i + 1 < parts.size(); ++i)
+      prm.leave_subsection();
+  }
+} // namespace
+
+
+int
+main(int argc, char *argv[])
+{
+  using namespace dealii;
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  const bool is_root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+
+  // The problem outlives the try block, so that an error is reported before
+  // the problem's MPI-collective destructors run.
+  std::unique_ptr<impact_fem::ImpactProblem> problem;
+  ParameterHandler                           prm;
+  try
+    {
+      impact_fem::ImpactProblem::declare_parameters(prm);
+
+      std::string              parameter_file;
+      std::vector<std::string> assignments;
+      for (int i = 1; i < argc; ++i)
+        {
+          const std::string arg = argv[i];
+          if (arg == "--help" || arg == "-h")
+            {
+              if (is_root)
+                print_usage(std::cout);
+              return 0;
+            }
+          else if (arg == "--print-parameters")
+            {
+              if (is_root)
+                prm.print_parameters(std::cout, ParameterHandler::PRM);
+              return 0;
+            }
+          else if (arg == "--set")
+            {
+              AssertThrow(i + 1 < argc,
+                          ExcMessage("--set needs an argument "
+                                     "\"Section/Entry=value\"."));
+              assignments.push_back(argv[++i]);
+            }
+          else if (arg.rfind("--set=", 0) == 0)
+            assignments.push_back(arg.substr(6));
+          else if (!arg.empty() && arg[0] == '-')
+            {
+              AssertThrow(false, ExcMessage("Unknown option <" + arg + ">."));
+            }
+          else
+            {
+              AssertThrow(parameter_file.empty(),
+                          ExcMessage("Only one parameter file may be given."));
+              parameter_file = arg;
+            }
+        }
+
+      if (!parameter_file.empty())
+        {
+          std::ifstream probe(parameter_file);
+          AssertThrow(probe,
+                      ExcMessage("Cannot open the parameter file <" +
+                                 parameter_file + ">."));
+          prm.parse_input(parameter_file);
+        }
+      for (const auto &assignment : assignments)
+        set_entry(prm, assignment);
+
+      problem = std::make_unique<impact_fem::ImpactProblem>(prm, MPI_COMM_WORLD);
+      problem->run();
+    }
+  catch (ExceptionBase &exc)
+    {
+      // Errors are detected on all ranks alike (parameters, gmsh status,
+      // contact and solver failures are collective), so every rank returns.
+      if (is_root)
+        {
+          std::cerr << "\nimpact-fem: error: ";
+          exc.print_info(std::cerr);
+          std::cerr << std::flush;
+        }
+      return 1;
+    }
+  catch (std::exception &exc)
+    {
+      if (is_root)
+        std::cerr << "\nimpact-fem: error: " << exc.what() << std::endl;
+      return 1;
+    }
+  catch (...)
+    {
+      if (is_root)
+        std::cerr << "\nimpact-fem: error: unknown exception" << std::endl;
+      return 1;
+    }
+  return 0;
+}

@@ -1,0 +1,52 @@
+#include <impact_fem/materials/elastic.h>
+
+namespace impact_fem
+{
+  namespace materials
+  {
+    void
+    Elastic::declare_parameters(ParameterHandler &prm)
+    {
+      prm.declare_entry("Young's modulus",
+                        "2e11",
+                        Patterns::Double(0),
+                        "Young's modulus E [Pa], > 0.");
+      prm.declare_entry("Poisson's ratio",
+                        "0.25",
+                        Patterns::Double(-1, 0.5),
+                        "Poisson's ratio nu [-], in (-1, 0.5): 0.5 (an "
+                        "incompressible body) is not supported by this "
+                        "displacement formulation.");
+      prm.declare_entry("Density",
+                        "7800",
+                        Patterns::Double(0),
+                        "Mass density rho [kg/m^3], > 0.");
+    }
+
+
+    void
+    Elastic::parse_parameters(ParameterHandler &prm)
+    {
+      young        = prm.get_double("Young's modulus");
+      poisson      = prm.get_double("Poisson's ratio");
+      mass_density = prm.get_double("Density");
+      AssertThrow(young > 0,
+                  ExcMessage("Young's modulus must be positive, got " +
+                             std::to_string(young) + " Pa."));
+      AssertThrow(poisson > -1 && poisson < 0.5,
+                  ExcMessage("Poisson's ratio must lie in (-1, 0.5), got " +
+                             std::to_string(poisson) +
+                             ": nu >= 0.5 is an incompressible material, "
+                             "which this displacement formulation cannot "
+                             "represent."));
+      AssertThrow(mass_density > 0,
+                  ExcMessage("Density must be positive, got " +
+                             std::to_string(mass_density) + " kg/m^3."));
+      stiffness = isotropic_stiffness(young, poisson);
+    }
+
+    IMPACT_FEM_REGISTER_MATERIAL(Elastic,
+                                 "elastic",
+                                 "isotropic linear elasticity (E, nu, rho)")
+  } // namespace materials
+} // namespace impact_fem

@@ -1,0 +1,128 @@
+#include <impact_fem/materials/interface.h>
+
+#include <deal.II/base/exceptions.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+namespace impact_fem
+{
+  namespace materials
+  {
+    namespace
+    {
+      // Function-local static: safe to use from other translation units'
+      // static initialisers (the registrations).
+      std::map<std::string, Registration> &
+      registry()
+      {
+        static std::map<std::string, Registration> kinds;
+        return kinds;
+      }
+
+      // The subsection of a kind is its name with an upper-case first letter
+      // ("elastic" -> "Elastic"), as in the parameter files.
+      std::string
+      subsection_name(const std::string &name)
+      {
+        std::string s = name;
+        if (!s.empty())
+          s[0] = static_cast<char>(std::toupper(s[0]));
+        return s;
+      }
+    } // namespace
+
+
+    double
+    Interface::p_wave_speed() const
+    {
+      const double E = youngs_modulus(), nu = poissons_ratio();
+      const double constrained_modulus =
+        E * (1 - nu) / ((1 + nu) * (1 - 2 * nu));
+      return std::sqrt(constrained_modulus / density());
+    }
+
+
+    double
+    Interface::s_wave_speed() const
+    {
+      const double shear_modulus = youngs_modulus() / (2 * (1 + poissons_ratio()));
+      return std::sqrt(shear_modulus / density());
+    }
+
+
+    SymmetricTensor<4, 3>
+    isotropic_stiffness(const double E, const double nu)
+    {
+      const double lambda = E * nu / ((1 + nu) * (1 - 2 * nu));
+      const double mu     = E / (2 * (1 + nu));
+      SymmetricTensor<4, 3> C;
+      for (unsigned int i = 0; i < 3; ++i)
+        for (unsigned int j = 0; j < 3; ++j)
+          for (unsigned int k = 0; k < 3; ++k)
+            for (unsigned int l = 0; l < 3; ++l)
+              C[i][j][k][l] = lambda * (i == j) * (k == l) +
+                              mu * ((i == k) * (j == l) + (i == l) * (j == k));
+      return C;
+    }
+
+
+    bool
+    register_material(const Registration &registration)
+    {
+      registry()[registration.name] = registration;
+      return true;
+    }
+
+
+    std::vector<std::string>
+    registered_names()
+    {
+      std::vector<std::string> names;
+      for (const auto &kind : registry())
+        names.push_back(kind.first);
+      return names;
+    }
+
+
+    void
+    declare_parameters(ParameterHandler &prm, const std::string &default_model)
+    {
+      std::string selection, help;
+      for (const auto &kind : registry())
+        {
+          selection += (selection.empty() ? "" : "|") + kind.first;
+          help += "\n  " + kind.first + ": " + kind.second.description;
+        }
+      prm.declare_entry("Material model",
+                        default_model,
+                        Patterns::Selection(selection),
+                        "Constitutive law of this body; its constants are in "
+                        "the subsection of the same name. Known models:" +
+                          help);
+      for (const auto &kind : registry())
+        {
+          prm.enter_subsection(subsection_name(kind.first));
+          kind.second.declare_parameters(prm);
+          prm.leave_subsection();
+        }
+    }
+
+
+    std::unique_ptr<Interface>
+    create_material(ParameterHandler &prm)
+    {
+      const std::string name = prm.get("Material model");
+      const auto        kind = registry().find(name);
+      AssertThrow(kind != registry().end(),
+                  ExcMessage("Unknown material model <" + name + ">."));
+      std::unique_ptr<Interface> material = kind->second.create();
+      prm.enter_subsection(subsection_name(name));
+      material->parse_parameters(prm);
+      prm.leave_subsection();
+      return material;
+    }
+
+  } // namespace materials
+} // namespace impact_fem

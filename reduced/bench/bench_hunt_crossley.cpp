@@ -1,0 +1,52 @@
+// Cost of the closed-form Hunt-Crossley impact against a direct ODE integration of the
+// same impact. Targets (issue 2): restitution <= 100 ns, full response <= 5 us, closed form
+// >= 1000 times faster than the ODE at equal accuracy.
+
+#include "impact_reduced/hunt_crossley.hpp"
+#include "impact_reduced/impact_ode.hpp"
+
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+
+namespace {
+
+using namespace impact::reduced;
+
+// The published steel example: m = 0.1 kg, c = 1.7135e10 N/m^1.5, n = 3/2, b = 0.1 s/m.
+constexpr double mass = 0.1;
+constexpr double stiffness = 1.7135e10;
+constexpr double exponent = 1.5;
+constexpr double damping = 0.1;
+
+void restitution(benchmark::State& state) {
+  double beta = 0.1;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(restitution_from_impact_parameter(beta));
+    beta = beta < 1.0 ? beta * 1.01 : 0.1; // vary the input so nothing is hoisted
+  }
+}
+BENCHMARK(restitution);
+
+void damping_from_restitution_inverse(benchmark::State& state) {
+  for (auto _ : state) benchmark::DoNotOptimize(damping_from_restitution(0.9, 1.0));
+}
+BENCHMARK(damping_from_restitution_inverse);
+
+void full_response(benchmark::State& state) {
+  for (auto _ : state) {
+    const HuntCrossleyImpact impact(mass, stiffness, exponent, damping, 1.0);
+    benchmark::DoNotOptimize(impact.response());
+  }
+}
+BENCHMARK(full_response)->Unit(benchmark::kMicrosecond);
+
+void ode_integration(benchmark::State& state) {
+  const ContactForceLaw law = [](double x, double v) {
+    return stiffness * std::pow(x, exponent) * (1.0 + damping * v);
+  };
+  for (auto _ : state) benchmark::DoNotOptimize(integrate_impact(mass, 1.0, law, 1e-10));
+}
+BENCHMARK(ode_integration)->Unit(benchmark::kMicrosecond);
+
+} // namespace

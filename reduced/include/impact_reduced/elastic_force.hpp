@@ -1,0 +1,60 @@
+#pragma once
+/// @file
+/// The elastic part f(x) of a Hunt-Crossley contact law F = f(x) (1 + b dx/dt).
+
+#include <functional>
+
+namespace impact::reduced {
+
+/// An increasing elastic force f(x) [N] of the approach x [m], f(0) = 0, with its
+/// potential P(x) = integral_0^x f [J]. The impact formulas work with P, so a law is
+/// fully described by f, P and the slope f' (used only to locate the force maximum).
+class ElasticForce {
+public:
+  virtual ~ElasticForce() = default;
+  /// f(x) [N] for x >= 0.
+  virtual double force(double approach) const = 0;
+  /// P(x) = integral_0^x f [J] for x >= 0.
+  virtual double potential(double approach) const = 0;
+  /// f'(x) [N/m] for x > 0.
+  virtual double slope(double approach) const = 0;
+  /// The approach x >= 0 with P(x) = potential (potential >= 0). The default solves
+  /// P(x) = potential by bracketing and TOMS 748 to full double precision.
+  virtual double approach_at_potential(double potential) const;
+};
+
+/// The power law f(x) = c x^n (Hertz: n = 3/2), the fast path: P and its inverse are
+/// closed forms. Ranges: c > 0 [N/m^n], n > 0. Throws InvalidInput otherwise.
+class PowerLawForce final : public ElasticForce {
+public:
+  PowerLawForce(double stiffness, double exponent);
+  double stiffness() const { return stiffness_; }
+  double exponent() const { return exponent_; }
+  double force(double approach) const override;
+  double potential(double approach) const override;
+  double slope(double approach) const override;
+  double approach_at_potential(double potential) const override;
+
+private:
+  double stiffness_;
+  double exponent_;
+};
+
+/// A user-supplied law: f, its potential P and its slope f' as callables. The caller
+/// guarantees f(0) = 0, f increasing, and P' = f; results are then as accurate as the
+/// callables (P near its maximum limits v(x) there, see HuntCrossleyImpact).
+class CustomElasticForce final : public ElasticForce {
+public:
+  using Function = std::function<double(double)>;
+  CustomElasticForce(Function force, Function potential, Function slope);
+  double force(double approach) const override { return force_(approach); }
+  double potential(double approach) const override { return potential_(approach); }
+  double slope(double approach) const override { return slope_(approach); }
+
+private:
+  Function force_;
+  Function potential_;
+  Function slope_;
+};
+
+} // namespace impact::reduced

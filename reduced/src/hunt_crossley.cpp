@@ -1,0 +1,337 @@
+#include "impact_reduced/hunt_crossley.hpp"
+
+#include "impact_reduced/invalid_input.hpp"
+#include "branch_point.hpp"
+
+#include <boost/math/quadrature/tanh_sinh.hpp>
+#include <boost/math/tools/roots.hpp>
+
+#include <quadmath.h>
+
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <sstream>
+
+namespace impact::reduced {
+
+namespace {
+
+using detail::branch_ratio;
+using detail::log1p_excess_ratio;
+
+constexpr double epsilon = std::numeric_limits<double>::epsilon();
+
+// Both phase integrals have an integrable power singularity at u = 0 (the ends of the
+// contact, where f(x) -> 0) and none elsewhere: double-exponential quadrature.
+double integrate_from_zero(const std::function<double(double)>& density, double upper) {
+  if (upper <= 0) return 0.0;
+  // (Not const: Boost 1.74 declares integrate const but defines the one-argument form without.)
+  thread_local boost::math::quadrature::tanh_sinh<double> quadrature;
+  return quadrature.integrate([&](double u) { return density(u); }, 0.0, upper, 1e-14);
+}
+
+// (t - log(1 + t)) / t^2 in quadruple precision (series near t = 0).
+__float128 quad_log1p_excess_ratio(__float128 t) {
+  if (fabsq(t) < 0.25) return detail::small_branch_excess_ratio<__float128, 22>(-t);
+  return (t - log1pq(t)) / (t * t);
+}
+
+// Integral of t / (1 + b t) over [lower, lower + width], t > -1/b: the kinetic-energy-like
+// work per unit mass between two approach rates [m^2/s^2]. Written relative to the lower
+// limit so that it is exact (no cancellation) for small widths:
+//   u lower / a + u^2 sigma(r) / a^2,   a = 1 + b lower,  r = b u / a,
+//   sigma(r) = (r - log(1 + r)) / r^2.
+double velocity_work(double damping, double lower, double width) {
+  const double scale = 1.0 + damping * lower;
+  const double ratio = damping * width / scale;
+  return width * lower / scale + width * width * log1p_excess_ratio(ratio) / (scale * scale);
+}
+
+
+// For ascending targets tau_j, the u_j in [0, upper] with integral_0^u_j density = tau_j.
+// Newton's method (the derivative is the density itself) safeguarded by bisection within
+// [u_(j-1), upper], integrating only from the previous root.
+std::vector<double> invert_cumulative_integral(const std::function<double(double)>& density,
+                                               const std::vector<double>& targets, double upper) {
+  // (Not const: Boost 1.74 declares integrate const but defines the one-argument form without.)
+  thread_local boost::math::quadrature::tanh_sinh<double> quadrature;
+  std::vector<double> roots;
+  roots.reserve(targets.size());
+  double previous_root = 0.0;
+  double previous_target = 0.0;
+  for (const double target : targets) {
+    auto equation = [&](double u) {
+      const double increment =
+          u > previous_root
+              ? quadrature.integrate([&](double w) { return density(w); }, previous_root, u, 1e-14)
+              : 0.0;
+      return std::make_pair(previous_target + increment - target, density(u));
+    };
+    // Start from the end of the bracket that the local slope points to.
+    const double guess = 0.5 * (previous_root + upper);
+    boost::uintmax_t iterations = 100;
+    const double root = boost::math::tools::newton_raphson_iterate(
+        equation, guess, previous_root, upper, std::numeric_limits<double>::digits - 6,
+        iterations);
+    previous_target = target;
+    previous_root = root;
+    roots.push_back(root);
+  }
+  return roots;
+}
+
+} // namespace
+
+double restitution_from_impact_parameter(double beta) {
+  require_non_negative("beta", beta);
+  // k = y / beta with S(y) = S(-beta) on the principal branch; in the ratio form
+  // y = p branch_ratio(p), p = beta sqrt(2 sigma(beta)), which is exact at beta -> 0.
+  const double amplitude = std::sqrt(2.0 * log1p_excess_ratio(beta));
+  return amplitude * branch_ratio(beta * amplitude);
+}
+
+double impact_parameter_from_restitution(double restitution) {
+  if (!std::isfinite(restitution) || !(restitution > 0 && restitution <= 1)) {
+    std::ostringstream message;
+    message.precision(17);
+    message << "restitution must be a finite number in (0, 1] (got " << restitution << ")";
+    throw InvalidInput("restitution", message.str());
+  }
+  if (restitution == 1.0) return 0.0;
+  const double shortfall = 1.0 - restitution; // exact (Sterbenz) for restitution >= 1/2
+  boost::uintmax_t iterations = 200;
+  const auto tolerance = boost::math::tools::eps_tolerance<double>();
+  if (shortfall < 0.05) {
+    // Near k = 1 the map k(beta) is flat and k - e cancels. Expand S(k beta) = S(-beta):
+    //   sum_{j>=2} beta^(j-2) ((-1)^j - k^j) / j = 0,
+    // with 1 - k^j = -expm1(j log1p(-shortfall)) exact; beta < 0.08 here, so the series
+    // converges by a factor beta per term.
+    const double log_restitution = std::log1p(-shortfall);
+    auto residual = [&](double beta) {
+      double sum = 0.0;
+      double power = 1.0; // beta^(j-2)
+      for (int j = 2; j < 60; ++j) {
+        const double k_power_deficit = -std::expm1(j * log_restitution); // 1 - k^j
+        const double numerator = (j % 2 == 0) ? k_power_deficit : -(2.0 - k_power_deficit);
+        const double term = power * numerator / j;
+        sum += term;
+        if (std::fabs(term) < 1e-18 * std::fabs(sum)) break;
+        power *= beta;
+      }
+      return sum;
+    };
+    const double guess = 1.5 * shortfall;
+    const auto [low, high] = boost::math::tools::toms748_solve(
+        residual, 0.5 * guess, 2.0 * guess, tolerance, iterations);
+    return 0.5 * (low + high);
+  }
+  // Elsewhere k(beta) is steep enough: solve k(beta) = e on log(beta), with k ~ 1/beta
+  // for large beta bracketing the root.
+  auto residual = [&](double log_beta) {
+    return restitution_from_impact_parameter(std::exp(log_beta)) - restitution;
+  };
+  const double lower = std::log(0.5 * shortfall);
+  const double upper = std::log(2.0 / restitution);
+  const auto [low, high] =
+      boost::math::tools::toms748_solve(residual, lower, upper, tolerance, iterations);
+  return std::exp(0.5 * (low + high));
+}
+
+double damping_from_restitution(double restitution, double velocity) {
+  require_positive("velocity", velocity);
+  return impact_parameter_from_restitution(restitution) / velocity;
+}
+
+HuntCrossleyImpact::HuntCrossleyImpact(double mass, double stiffness, double exponent,
+                                       double damping, double velocity)
+  : HuntCrossleyImpact(mass, std::make_shared<PowerLawForce>(stiffness, exponent), damping,
+                       velocity) {}
+
+HuntCrossleyImpact::HuntCrossleyImpact(double mass,
+                                       std::shared_ptr<const ElasticForce> elastic_force,
+                                       double damping, double velocity)
+  : mass_(mass), elastic_force_(std::move(elastic_force)), damping_(damping),
+    velocity_(velocity) {
+  require_positive("mass", mass);
+  require_non_negative("damping", damping);
+  require_positive("velocity", velocity);
+  if (!elastic_force_) throw InvalidInput("elastic_force", "elastic_force must not be null");
+  if (!std::isfinite(damping * velocity))
+    throw InvalidInput("damping", "damping * velocity overflows");
+  power_law_ = dynamic_cast<const PowerLawForce*>(elastic_force_.get());
+  excess_ratio_ = log1p_excess_ratio(impact_parameter());
+  // P(x_max) = (m / b^2) (beta - ln(1 + beta)) = m V^2 sigma(beta).
+  approach_max_ =
+      elastic_force_->approach_at_potential(mass_ * velocity_ * velocity_ * excess_ratio_);
+  restitution_ = restitution_from_impact_parameter(impact_parameter());
+}
+
+double HuntCrossleyImpact::energy_loss() const {
+  return 0.5 * mass_ * velocity_ * velocity_ * (1.0 - restitution_) * (1.0 + restitution_);
+}
+
+double HuntCrossleyImpact::force(double approach, double approach_rate) const {
+  return elastic_force_->force(approach) * (1.0 + damping_ * approach_rate);
+}
+
+double HuntCrossleyImpact::approach_rate(double approach, ImpactPhase phase) const {
+  if (!std::isfinite(approach) || approach < 0 || approach > approach_max_ * (1 + 4 * epsilon)) {
+    std::ostringstream message;
+    message.precision(17);
+    message << "approach must be in [0, x_max = " << approach_max_ << "] m (got " << approach
+            << ")";
+    throw InvalidInput("approach", message.str());
+  }
+  // Twice the remaining energy per unit mass, 2 (P(x_max) - P(x)) / m. Close to x_max this
+  // difference cancels; for the power law it is formed in quadruple precision, which keeps
+  // v(x) exact to 1e-12 down to x_max - x = 1e-10 x_max and beyond.
+  double energy_twice;
+  if (power_law_) {
+    const __float128 beta = __float128(damping_) * __float128(velocity_);
+    const __float128 speed = velocity_;
+    const __float128 exponent = power_law_->exponent();
+    const __float128 potential_per_mass = __float128(power_law_->stiffness()) *
+                                          powq(__float128(approach), exponent + 1) /
+                                          ((exponent + 1) * __float128(mass_));
+    energy_twice =
+        static_cast<double>(2 * (speed * speed * quad_log1p_excess_ratio(beta) - potential_per_mass));
+  } else {
+    energy_twice = 2.0 * (velocity_ * velocity_ * excess_ratio_ -
+                          elastic_force_->potential(approach) / mass_);
+  }
+  const double speed = std::sqrt(std::max(energy_twice, 0.0));
+  // v = -y / b with y = p branch_ratio(p), p = -+ b speed (lower branch while compressing).
+  if (phase == ImpactPhase::compression) return speed * branch_ratio(-damping_ * speed);
+  return -speed * branch_ratio(damping_ * speed);
+}
+
+double HuntCrossleyImpact::compression_energy(double distance) const {
+  return velocity_work(damping_, velocity_ - distance, distance);
+}
+
+double HuntCrossleyImpact::restitution_energy(double distance) const {
+  return -velocity_work(damping_, rebound_velocity(), distance);
+}
+
+// dt = -m dv / ((1 + b v) f(x(v))): Newton's law, with x(v) from the energy balance.
+double HuntCrossleyImpact::compression_time_density(double distance) const {
+  const double approach = elastic_force_->approach_at_potential(mass_ * compression_energy(distance));
+  return mass_ / ((1.0 + damping_ * (velocity_ - distance)) * elastic_force_->force(approach));
+}
+
+double HuntCrossleyImpact::restitution_time_density(double distance) const {
+  const double approach = elastic_force_->approach_at_potential(mass_ * restitution_energy(distance));
+  return mass_ /
+         ((1.0 + damping_ * (rebound_velocity() + distance)) * elastic_force_->force(approach));
+}
+
+double HuntCrossleyImpact::compression_time_until(double distance) const {
+  return integrate_from_zero([this](double u) { return compression_time_density(u); }, distance);
+}
+
+double HuntCrossleyImpact::restitution_time_from(double distance) const {
+  return integrate_from_zero([this](double u) { return restitution_time_density(u); }, distance);
+}
+
+double HuntCrossleyImpact::compression_time() const { return compression_time_until(velocity_); }
+
+double HuntCrossleyImpact::contact_time() const {
+  return compression_time() + restitution_time_from(-rebound_velocity());
+}
+
+ImpactState HuntCrossleyImpact::force_peak() const {
+  if (damping_ == 0.0)
+    return {compression_time(), approach_max_, 0.0, elastic_force_->force(approach_max_)};
+  // dF/dt = 0  <=>  m f'(x) v = b f(x)^2 (while compressing). In the distance u = V - v
+  // the left side dominates near first contact and the right side at x_max.
+  auto condition = [this](double distance) {
+    const double approach =
+        elastic_force_->approach_at_potential(mass_ * compression_energy(distance));
+    const double elastic = elastic_force_->force(approach);
+    return mass_ * (velocity_ - distance) * elastic_force_->slope(approach) / elastic -
+           damping_ * elastic;
+  };
+  double lower = velocity_ * 1e-6;
+  while (!(condition(lower) > 0)) {
+    lower *= 1e-3;
+    if (lower < velocity_ * 1e-290)
+      throw std::runtime_error("the force peak could not be bracketed");
+  }
+  boost::uintmax_t iterations = 200;
+  const auto [low, high] = boost::math::tools::toms748_solve(
+      condition, lower, velocity_, boost::math::tools::eps_tolerance<double>(), iterations);
+  const double distance = 0.5 * (low + high);
+  return compression_state(compression_time_until(distance), distance);
+}
+
+ImpactState HuntCrossleyImpact::compression_state(double time, double distance) const {
+  const double approach =
+      elastic_force_->approach_at_potential(mass_ * compression_energy(distance));
+  const double rate = velocity_ - distance;
+  return {time, approach, rate, force(approach, rate)};
+}
+
+ImpactState HuntCrossleyImpact::restitution_state(double time, double distance) const {
+  const double approach =
+      elastic_force_->approach_at_potential(mass_ * restitution_energy(distance));
+  const double rate = rebound_velocity() + distance;
+  return {time, approach, rate, force(approach, rate)};
+}
+
+ImpactResponse HuntCrossleyImpact::response() const {
+  const ImpactState peak = force_peak();
+  const double compression = compression_time();
+  return {approach_max_,
+          peak.force,
+          peak.time,
+          compression,
+          compression + restitution_time_from(-rebound_velocity()),
+          rebound_velocity(),
+          restitution_,
+          energy_loss()};
+}
+
+std::vector<ImpactState> HuntCrossleyImpact::history(std::size_t points) const {
+  if (points < 2)
+    throw InvalidInput("points", "points must be >= 2 (got " + std::to_string(points) + ")");
+  const auto compression_density = [this](double u) { return compression_time_density(u); };
+  const auto restitution_density = [this](double u) { return restitution_time_density(u); };
+  const double compression = compression_time();
+  const double restitution_span = -rebound_velocity();
+  const double total = compression + restitution_time_from(restitution_span);
+  const auto time_at = [&](std::size_t i) {
+    return total * static_cast<double>(i) / static_cast<double>(points - 1);
+  };
+
+  std::vector<ImpactState> states(points);
+  states.front() = {0.0, 0.0, velocity_, 0.0};
+  states.back() = {total, 0.0, rebound_velocity(), 0.0};
+  // Compression points forward from first contact, restitution points backward from
+  // separation: each phase integrates away from its singular end, so every state is
+  // computed from an exact small distance u.
+  std::vector<double> compression_elapsed, restitution_remaining;
+  std::vector<std::size_t> compression_index, restitution_index;
+  for (std::size_t i = 1; i + 1 < points; ++i) {
+    if (time_at(i) <= compression) {
+      compression_elapsed.push_back(time_at(i));
+      compression_index.push_back(i);
+    }
+  }
+  for (std::size_t i = points - 2; i >= 1 && time_at(i) > compression; --i) {
+    restitution_remaining.push_back(total - time_at(i));
+    restitution_index.push_back(i);
+  }
+  const auto compression_distances =
+      invert_cumulative_integral(compression_density, compression_elapsed, velocity_);
+  for (std::size_t j = 0; j < compression_index.size(); ++j)
+    states[compression_index[j]] = compression_state(compression_elapsed[j], compression_distances[j]);
+  const auto restitution_distances =
+      invert_cumulative_integral(restitution_density, restitution_remaining, restitution_span);
+  for (std::size_t j = 0; j < restitution_index.size(); ++j)
+    states[restitution_index[j]] =
+        restitution_state(total - restitution_remaining[j], restitution_distances[j]);
+  return states;
+}
+
+} // namespace impact::reduced

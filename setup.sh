@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+# Installs the Debian packages the project needs, only those that are missing.
+# Safe to re-run. Needs root (or sudo) on Debian bookworm.
+set -euo pipefail
+
+packages=(
+  build-essential cmake pkg-config          # compiler and build system
+  libboost-dev libboost-math-dev            # Lambert W, quadrature, root finding, odeint, multiprecision
+  libeigen3-dev libceres-dev                # least-squares calibration
+  libgtest-dev libbenchmark-dev             # unit tests and benchmarks
+  libdeal.ii-dev openmpi-bin libopenmpi-dev # finite-element model, MPI
+  libhdf5-openmpi-dev gmsh                  # result files, mesh generation
+  nlohmann-json3-dev                        # JSON output of tools
+  numdiff                                   # tolerant comparison of outputs in tests
+  python3 python3-matplotlib python3-h5py   # figures of the report
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "setup: all ${#packages[@]} packages present"
+  exit 0
+fi
+
+sudo=""
+[ "$(id -u)" -eq 0 ] || sudo="sudo"
+echo "setup: installing ${missing[*]}"
+export DEBIAN_FRONTEND=noninteractive
+$sudo apt-get update -q
+$sudo apt-get install -y -q --no-install-recommends "${missing[@]}"
