@@ -1028,6 +1028,8 @@ namespace impact_fem
     if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
       {
         std::filesystem::create_directories(output_directory);
+        if (snapshot_interval > 0)
+          std::filesystem::create_directories(output_directory + "/snapshots");
         // Results of an earlier run in the same place would be mistaken for
         // this run's.
         for (const auto *name :

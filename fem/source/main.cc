@@ -6,7 +6,10 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 
+#include <nlohmann/json.hpp>
+
 #include <fstream>
+#include <sstream>
 #include <iostream>
 #include <memory>
 #include <string>
@@ -36,25 +39,37 @@ namespace
     const std::string value = dealii::Utilities::trim(assignment.substr(equal + 1));
     std::vector<std::string> parts = dealii::Utilities::split_string_list(path, '/');
     AssertThrow(!parts.empty(), dealii::ExcMessage("--set: empty entry name."));
-    for (std::size_t i = 0; i + 1 < parts.size(); ++i)
-      prm.enter_subsection(parts[i]);
-    try
-      {
-        prm.set(parts.back(), value);
-      }
-    catch (const dealii::ExceptionBase &)
+    // ParameterHandler checks entry names only in debug mode: look the
+    // entry up among the declared ones first.
+    std::stringstream declared;
+    prm.print_parameters(declared, dealii::ParameterHandler::ShortJSON);
+    nlohmann::json node = nlohmann::json::parse(declared.str());
+    for (const auto &part : parts)
+      node = (node.is_object() && node.contains(part)) ? nlohmann::json(node[part]) :
+                                                          nlohmann::json();
+    std::string problem;
+    if (!node.is_string() && !(node.is_object() && node.contains("value")))
+      problem = "there is no entry <" + path + ">";
+    else
       {
         for (std::size_t i = 0; i + 1 < parts.size(); ++i)
+          prm.enter_subsection(parts[i]);
+        try
+          {
+            prm.set(parts.back(), value);
+          }
+        catch (const dealii::ExceptionBase &)
+          {
+            problem = "the value <" + value + "> does not fit the entry <" +
+                      path + ">";
+          }
+        for (std::size_t i = 0; i + 1 < parts.size(); ++i)
           prm.leave_subsection();
-        AssertThrow(false,
-                    dealii::ExcMessage("--set \"" + assignment +
-                                       "\": no entry <" + path +
-                                       "> or the value <" + value +
-                                       "> is malformed for it (see "
-                                       "impact-fem --print-parameters)."));
       }
-    for (std::size_t i = 0; i + 1 < parts.size(); ++i)
-      prm.leave_subsection();
+    AssertThrow(problem.empty(),
+                dealii::ExcMessage("--set \"" + assignment + "\": " + problem +
+                                   " (see impact-fem --print-parameters for "
+                                   "entries, units and ranges)."));
   }
 } // namespace
 

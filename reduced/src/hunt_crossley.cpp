@@ -2,6 +2,7 @@
 
 #include "impact_reduced/invalid_input.hpp"
 #include "branch_point.hpp"
+#include "gauss_jacobi.hpp"
 
 #include <boost/math/quadrature/tanh_sinh.hpp>
 #include <boost/math/tools/roots.hpp>
@@ -42,11 +43,22 @@ __float128 quad_log1p_excess_ratio(__float128 t) {
 // limit so that it is exact (no cancellation) for small widths:
 //   u lower / a + u^2 sigma(r) / a^2,   a = 1 + b lower,  r = b u / a,
 //   sigma(r) = (r - log(1 + r)) / r^2.
-double velocity_work(double damping, double lower, double width) {
+double velocity_work_per_width(double damping, double lower, double width) {
   const double scale = 1.0 + damping * lower;
   const double ratio = damping * width / scale;
-  return width * lower / scale + width * width * log1p_excess_ratio(ratio) / (scale * scale);
+  return lower / scale + width * log1p_excess_ratio(ratio) / (scale * scale);
 }
+
+double velocity_work(double damping, double lower, double width) {
+  return width * velocity_work_per_width(damping, lower, width);
+}
+
+// The Gauss-Jacobi fast path integrates the smooth factor g of the time density exactly
+// for polynomials of degree < 2 * 24. g is analytic with its nearest singularity where
+// 1 + b v = 0, about 1/b beyond the phase: far enough for beta <= 1 (the accuracy tests
+// check 1e-13 there); larger beta takes the adaptive double-exponential rule.
+constexpr int singular_rule_points = 24;
+constexpr double singular_rule_beta_limit = 1.0;
 
 
 // For ascending targets tau_j, the u_j in [0, upper] with integral_0^u_j density = tau_j.
@@ -165,6 +177,11 @@ HuntCrossleyImpact::HuntCrossleyImpact(double mass,
   approach_max_ =
       elastic_force_->approach_at_potential(mass_ * velocity_ * velocity_ * excess_ratio_);
   restitution_ = restitution_from_impact_parameter(impact_parameter());
+  if (power_law_) {
+    const double exponent = power_law_->exponent();
+    time_scale_ = mass_ / (std::pow(power_law_->stiffness(), 1.0 / (exponent + 1)) *
+                           std::pow((exponent + 1) * mass_, exponent / (exponent + 1)));
+  }
 }
 
 double HuntCrossleyImpact::energy_loss() const {
@@ -226,11 +243,39 @@ double HuntCrossleyImpact::restitution_time_density(double distance) const {
          ((1.0 + damping_ * (rebound_velocity() + distance)) * elastic_force_->force(approach));
 }
 
+bool HuntCrossleyImpact::uses_singular_rule() const {
+  return power_law_ != nullptr && impact_parameter() <= singular_rule_beta_limit;
+}
+
+// For f = c x^n the energy per mass E(u) = u e(u) with e smooth and e(0) > 0, and
+//   dt/du = m / ((1 + b v) c^(1/(n+1)) ((n+1) m E)^alpha) = K u^-alpha g(u),
+//   alpha = n / (n + 1),  g = e(u)^-alpha / (1 + b v),
+// so the end-point singularity is exactly the Jacobi weight.
+double HuntCrossleyImpact::singular_rule_time(ImpactPhase phase, double distance) const {
+  if (distance <= 0) return 0.0;
+  const double exponent = power_law_->exponent();
+  const double alpha = exponent / (exponent + 1);
+  const auto& rule = detail::gauss_jacobi_rule(singular_rule_points, alpha);
+  const bool compressing = phase == ImpactPhase::compression;
+  const double start = compressing ? velocity_ : rebound_velocity();
+  double sum = 0.0;
+  for (std::size_t i = 0; i < rule.nodes.size(); ++i) {
+    const double u = distance * rule.nodes[i];
+    const double rate = compressing ? velocity_ - u : rebound_velocity() + u;
+    const double energy_ratio = compressing ? velocity_work_per_width(damping_, rate, u)
+                                            : -velocity_work_per_width(damping_, start, u);
+    sum += rule.weights[i] * std::pow(energy_ratio, -alpha) / (1.0 + damping_ * rate);
+  }
+  return time_scale_ * std::pow(distance, 1.0 - alpha) * sum;
+}
+
 double HuntCrossleyImpact::compression_time_until(double distance) const {
+  if (uses_singular_rule()) return singular_rule_time(ImpactPhase::compression, distance);
   return integrate_from_zero([this](double u) { return compression_time_density(u); }, distance);
 }
 
 double HuntCrossleyImpact::restitution_time_from(double distance) const {
+  if (uses_singular_rule()) return singular_rule_time(ImpactPhase::restitution, distance);
   return integrate_from_zero([this](double u) { return restitution_time_density(u); }, distance);
 }
 
@@ -252,15 +297,29 @@ ImpactState HuntCrossleyImpact::force_peak() const {
     return mass_ * (velocity_ - distance) * elastic_force_->slope(approach) / elastic -
            damping_ * elastic;
   };
+  boost::uintmax_t iterations = 200;
+  const auto tolerance = boost::math::tools::eps_tolerance<double>();
+  if (power_law_) {
+    // For f = c x^n the condition is polynomial-free: n v = b (n + 1) P(x) / m.
+    const double exponent = power_law_->exponent();
+    auto power_law_condition = [&](double distance) {
+      return exponent * (velocity_ - distance) -
+             damping_ * (exponent + 1) * compression_energy(distance);
+    };
+    const auto [low, high] = boost::math::tools::toms748_solve(
+        power_law_condition, 0.0, velocity_, exponent * velocity_,
+        power_law_condition(velocity_), tolerance, iterations);
+    const double distance = 0.5 * (low + high);
+    return compression_state(compression_time_until(distance), distance);
+  }
   double lower = velocity_ * 1e-6;
   while (!(condition(lower) > 0)) {
     lower *= 1e-3;
     if (lower < velocity_ * 1e-290)
       throw std::runtime_error("the force peak could not be bracketed");
   }
-  boost::uintmax_t iterations = 200;
-  const auto [low, high] = boost::math::tools::toms748_solve(
-      condition, lower, velocity_, boost::math::tools::eps_tolerance<double>(), iterations);
+  const auto [low, high] =
+      boost::math::tools::toms748_solve(condition, lower, velocity_, tolerance, iterations);
   const double distance = 0.5 * (low + high);
   return compression_state(compression_time_until(distance), distance);
 }

@@ -27,7 +27,7 @@ checks.check(s["max_penetration"] < 0.01 * s["approach_max"],
              "penetration < 1 % of the peak approach")
 # The contact force must agree with -m dv/dt of the sphere.
 time, force, velocity = history(directory, "time", "contact_force", "sphere_velocity")
-mass = 0.1000187
+mass = 7800 * 4 / 3 * 3.141592653589793 * RADIUS ** 3
 worst = 0.0
 for i in range(1, len(time) - 1):
     # Newmark: average force over a step = m (v_n - v_{n+1}) / dt

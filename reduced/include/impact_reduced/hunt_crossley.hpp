@@ -120,6 +120,9 @@ private:
   double restitution_time_density(double distance_from_rebound_velocity) const;
   double compression_time_until(double distance_from_impact_velocity) const;
   double restitution_time_from(double distance_from_rebound_velocity) const;
+  // Power-law fast path: dt/du = K u^-alpha g(u) with g smooth, integrated by Gauss-Jacobi.
+  bool uses_singular_rule() const;
+  double singular_rule_time(ImpactPhase phase, double distance) const;
   ImpactState compression_state(double time, double distance) const;
   ImpactState restitution_state(double time, double distance) const;
 
@@ -129,6 +132,7 @@ private:
   double damping_;
   double velocity_;
   double excess_ratio_;   // (beta - ln(1 + beta)) / beta^2, 1/2 at beta = 0
+  double time_scale_ = 0; // K of the power-law fast path [s (m/s)^(alpha - 1)]
   double approach_max_;
   double restitution_;
 };

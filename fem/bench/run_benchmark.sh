@@ -1,0 +1,48 @@
+#!/usr/bin/env bash
+# Benchmark of impact-fem: the default scenario at V = 1 m/s on 1 and 2 MPI
+# ranks. Prints wall time, cells, DoFs, steps, contact time and peak force
+# from each run's summary.json.
+#
+# Usage: fem/bench/run_benchmark.sh [BUILD_DIR] [OUTPUT_DIR]
+#   BUILD_DIR   build tree holding bin/impact-fem (default: build)
+#   OUTPUT_DIR  where the runs write their results (default: results/bench)
+# Add CONVERGED=1 to the environment to also run the mesh-converged
+# reference (the default mesh refined twice, 4x finer; about 2 minutes).
+set -euo pipefail
+
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
+build="${1:-build}"
+output="${2:-results/bench}"
+binary="$build/bin/impact-fem"
+scenario="$here/../scenarios/default.prm"
+[ -x "$binary" ] || { echo "run_benchmark: no executable $binary (build first)" >&2; exit 1; }
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+mpirun=(mpirun --oversubscribe)
+[ "$(id -u)" -eq 0 ] && mpirun+=(--allow-run-as-root)
+
+run() { # name ranks extra --set arguments...
+  local name="$1" ranks="$2"; shift 2
+  "${mpirun[@]}" -np "$ranks" "$binary" "$scenario" \
+    --set "Scenario/Impact velocity=1" --set "Output/Directory=$output/$name" "$@" \
+    > "$output/$name.log" 2>&1 || { echo "run $name failed, see $output/$name.log" >&2; exit 1; }
+}
+
+report() { # name
+  python3 - "$output/$1/summary.json" "$1" <<'PY'
+import json, sys
+s = json.load(open(sys.argv[1]))
+print(f"{sys.argv[2]:<12} {s['ranks']:>5} {s['wall_time']:>9.1f} {s['cells']:>7} {s['dofs']:>8} "
+      f"{s['steps']:>6} {s['contact_time']*1e6:>12.3f} {s['force_max']/1e3:>11.4f} "
+      f"{s['restitution']:>11.5f} {s['energy_error']*100:>9.4f}")
+PY
+}
+
+mkdir -p "$output"
+echo "impact-fem benchmark: default scenario, V = 1 m/s ($(nproc) cores)"
+printf "%-12s %5s %9s %7s %8s %6s %12s %11s %11s %9s\n" \
+  run ranks "wall [s]" cells DoFs steps "t_c [us]" "F_max [kN]" restitution "E err %"
+run default-np1 1; report default-np1
+run default-np2 2; report default-np2
+if [ "${CONVERGED:-0}" = 1 ]; then
+  run converged-np2 2 --set "Mesh/Global refinements=2"; report converged-np2
+fi

@@ -1,0 +1,64 @@
+"""Bad input: each case must exit non-zero with a message naming the cause
+and leave no result file (history.h5, summary.json); a run that fails
+mid-way leaves only history.incomplete.h5, marked incomplete."""
+import os
+from fem_test_lib import *
+
+binary, work, _ = parse_common_arguments()
+checks = Checks()
+small = {"Mesh/Contact element size": 200e-6}
+
+
+def expect_failure(name, settings, words, extra_args=None):
+    directory = f"{work}/bad_{name}"
+    if extra_args is not None:  # raw command line, e.g. a parameter file
+        import shutil, subprocess
+        shutil.rmtree(directory, ignore_errors=True)
+        result = subprocess.run([binary] + extra_args + ["--set", "Output/Directory=" + directory],
+                                capture_output=True, text=True)
+        code, output = result.returncode, result.stdout + result.stderr
+    else:
+        code, output = run(binary, directory, dict(small, **settings), expect_success=False)
+    message = output.strip().splitlines()[-6:]
+    print(f"[{name}] exit {code}: " + " ".join(line.strip() for line in message)[:300])
+    checks.check(code != 0, f"{name}: non-zero exit")
+    checks.check(all(w.lower() in output.lower() for w in words),
+                 f"{name}: message names the cause ({', '.join(words)})")
+    for result_file in ("history.h5", "summary.json"):
+        checks.check(not os.path.exists(os.path.join(directory, result_file)),
+                     f"{name}: no {result_file} left")
+    return directory
+
+
+expect_failure("poisson", {"Sphere/Elastic/Poisson's ratio": 0.5}, ["Poisson's ratio", "0.5"])
+expect_failure("negative_size", {"Mesh/Contact element size": -1e-5}, ["Contact element size", "positive"])
+expect_failure("size_above_sphere", {"Mesh/Contact element size": 0.02}, ["Contact element size", "sphere radius"])
+expect_failure("negative_gap", {"Scenario/Initial gap": -1e-3}, ["Initial gap"])
+expect_failure("unknown_entry_set", {"Scenario/Impact speed": 1}, ["Impact speed"])
+expect_failure("malformed_set", {"Scenario/Impact velocity": "fast"}, ["Impact velocity", "fast"])
+expect_failure("missing_gmsh", {"Mesh/Gmsh executable": "/nonexistent/gmsh"}, ["gmsh was not found"])
+
+prm = os.path.join(work, "bad.prm")
+with open(prm, "w") as f:
+    f.write("subsection Scenario\n  set Impact velocty = 2\nend\n")
+expect_failure("unknown_entry_file", None, ["Impact velocty"], extra_args=[prm])
+with open(prm, "w") as f:
+    f.write("subsection Scenario\n  set Impact velocity = 2 m/s\nend\n")
+expect_failure("malformed_file", None, ["Impact velocity"], extra_args=[prm])
+expect_failure("missing_file", None, ["parameter file"], extra_args=[os.path.join(work, "none.prm")])
+
+# A failure in the middle of the run: the contact iteration limited to one
+# step cannot converge once several nodes touch.
+directory = expect_failure("solver", {"Contact/Maximum active set iterations": 1},
+                           ["active-set", "did not converge"])
+incomplete = os.path.join(directory, "history.incomplete.h5")
+checks.check(os.path.exists(incomplete), "solver: history.incomplete.h5 kept")
+if os.path.exists(incomplete):
+    import h5py
+    with h5py.File(incomplete, "r") as f:
+        status = f.attrs["status"]
+        status = status.decode() if isinstance(status, bytes) else status
+        steps = len(f["time"])
+    print(f"incomplete file: status = {status}, {steps} steps kept")
+    checks.check(status == "incomplete" and steps > 1, "solver: file marked incomplete, steps kept")
+checks.finish()
