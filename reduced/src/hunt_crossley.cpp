@@ -5,6 +5,7 @@
 #include "gauss_jacobi.hpp"
 
 #include <boost/math/quadrature/tanh_sinh.hpp>
+#include <boost/math/special_functions/lambert_w.hpp>
 #include <boost/math/tools/roots.hpp>
 
 #include <quadmath.h>
@@ -177,6 +178,15 @@ HuntCrossleyImpact::HuntCrossleyImpact(double mass,
   approach_max_ =
       elastic_force_->approach_at_potential(mass_ * velocity_ * velocity_ * excess_ratio_);
   restitution_ = restitution_from_impact_parameter(impact_parameter());
+  if (impact_parameter() > 1.0) {
+    // psi_out = -log(-w_out) = 1 + s0 + w_out with w_out = W0(-exp(-1 - s0)); exp(-psi_out)
+    // = -w_out. Both stay exact when 1 + b v_out = -w_out is far below double precision.
+    const double s0 = detail::log1p_excess(impact_parameter());
+    const double w_out = boost::math::lambert_w0(-std::exp(-1.0 - s0));
+    restitution_in_log_rate_ = true;
+    log_rate_span_ = 1.0 + s0 + w_out;
+    separation_force_factor_ = -w_out;
+  }
   if (power_law_) {
     const double exponent = power_law_->exponent();
     time_scale_ = mass_ / (std::pow(power_law_->stiffness(), 1.0 / (exponent + 1)) *
@@ -228,7 +238,21 @@ double HuntCrossleyImpact::compression_energy(double distance) const {
 }
 
 double HuntCrossleyImpact::restitution_energy(double distance) const {
-  return -velocity_work(damping_, rebound_velocity(), distance);
+  if (!restitution_in_log_rate_) return -velocity_work(damping_, rebound_velocity(), distance);
+  // P b^2 / m = u - exp(-psi_out) expm1(u), written without overflow for large u.
+  const double decayed = distance < 1.0 ? separation_force_factor_ * std::expm1(distance)
+                                        : std::exp(distance - log_rate_span_) -
+                                              separation_force_factor_;
+  return (distance - decayed) / (damping_ * damping_);
+}
+
+double HuntCrossleyImpact::restitution_rate(double distance) const {
+  if (!restitution_in_log_rate_) return rebound_velocity() + distance;
+  return std::expm1(distance - log_rate_span_) / damping_; // v = (exp(-psi) - 1) / b
+}
+
+double HuntCrossleyImpact::restitution_span() const {
+  return restitution_in_log_rate_ ? log_rate_span_ : -rebound_velocity();
 }
 
 // dt = -m dv / ((1 + b v) f(x(v))): Newton's law, with x(v) from the energy balance.
@@ -239,8 +263,9 @@ double HuntCrossleyImpact::compression_time_density(double distance) const {
 
 double HuntCrossleyImpact::restitution_time_density(double distance) const {
   const double approach = elastic_force_->approach_at_potential(mass_ * restitution_energy(distance));
-  return mass_ /
-         ((1.0 + damping_ * (rebound_velocity() + distance)) * elastic_force_->force(approach));
+  // dt = -m dv / ((1 + b v) f) = (m / b) dpsi / f.
+  if (restitution_in_log_rate_) return mass_ / (damping_ * elastic_force_->force(approach));
+  return mass_ / ((1.0 + damping_ * restitution_rate(distance)) * elastic_force_->force(approach));
 }
 
 bool HuntCrossleyImpact::uses_singular_rule() const {
@@ -282,7 +307,7 @@ double HuntCrossleyImpact::restitution_time_from(double distance) const {
 double HuntCrossleyImpact::compression_time() const { return compression_time_until(velocity_); }
 
 double HuntCrossleyImpact::contact_time() const {
-  return compression_time() + restitution_time_from(-rebound_velocity());
+  return compression_time() + restitution_time_from(restitution_span());
 }
 
 ImpactState HuntCrossleyImpact::force_peak() const {
@@ -334,7 +359,7 @@ ImpactState HuntCrossleyImpact::compression_state(double time, double distance) 
 ImpactState HuntCrossleyImpact::restitution_state(double time, double distance) const {
   const double approach =
       elastic_force_->approach_at_potential(mass_ * restitution_energy(distance));
-  const double rate = rebound_velocity() + distance;
+  const double rate = restitution_rate(distance);
   return {time, approach, rate, force(approach, rate)};
 }
 
@@ -345,7 +370,7 @@ ImpactResponse HuntCrossleyImpact::response() const {
           peak.force,
           peak.time,
           compression,
-          compression + restitution_time_from(-rebound_velocity()),
+          compression + restitution_time_from(restitution_span()),
           rebound_velocity(),
           restitution_,
           energy_loss()};
@@ -357,8 +382,8 @@ std::vector<ImpactState> HuntCrossleyImpact::history(std::size_t points) const {
   const auto compression_density = [this](double u) { return compression_time_density(u); };
   const auto restitution_density = [this](double u) { return restitution_time_density(u); };
   const double compression = compression_time();
-  const double restitution_span = -rebound_velocity();
-  const double total = compression + restitution_time_from(restitution_span);
+  const double restitution_extent = restitution_span();
+  const double total = compression + restitution_time_from(restitution_extent);
   const auto time_at = [&](std::size_t i) {
     return total * static_cast<double>(i) / static_cast<double>(points - 1);
   };
@@ -386,7 +411,7 @@ std::vector<ImpactState> HuntCrossleyImpact::history(std::size_t points) const {
   for (std::size_t j = 0; j < compression_index.size(); ++j)
     states[compression_index[j]] = compression_state(compression_elapsed[j], compression_distances[j]);
   const auto restitution_distances =
-      invert_cumulative_integral(restitution_density, restitution_remaining, restitution_span);
+      invert_cumulative_integral(restitution_density, restitution_remaining, restitution_extent);
   for (std::size_t j = 0; j < restitution_index.size(); ++j)
     states[restitution_index[j]] =
         restitution_state(total - restitution_remaining[j], restitution_distances[j]);

@@ -111,13 +111,19 @@ public:
   std::vector<ImpactState> history(std::size_t points) const;
 
 private:
-  // Energy per unit mass P(x)/m [m^2/s^2] at approach rate v, measured from the nearer end
-  // of the phase: distance u >= 0 from the phase's first-contact or separation velocity.
+  // Each phase is parametrised by a distance u >= 0 from its singular end (first contact,
+  // separation), so that the quantities are exact where the force vanishes. Compression:
+  // u = V - v. Restitution: u = v - v_out for beta <= 1; for larger beta, where 1 + b v_out
+  // underflows, u = psi_out - psi with psi = -log(1 + b v) (the spec's w = -exp(-psi)).
+  // Energy per unit mass P(x)/m [m^2/s^2]:
   double compression_energy(double distance_from_impact_velocity) const;
-  double restitution_energy(double distance_from_rebound_velocity) const;
-  // dt/du on each phase [s per m/s].
+  double restitution_energy(double distance_from_separation) const;
+  // The approach rate [m/s] at a restitution distance, and the extent of that phase in u.
+  double restitution_rate(double distance_from_separation) const;
+  double restitution_span() const;
+  // dt/du on each phase.
   double compression_time_density(double distance_from_impact_velocity) const;
-  double restitution_time_density(double distance_from_rebound_velocity) const;
+  double restitution_time_density(double distance_from_separation) const;
   double compression_time_until(double distance_from_impact_velocity) const;
   double restitution_time_from(double distance_from_rebound_velocity) const;
   // Power-law fast path: dt/du = K u^-alpha g(u) with g smooth, integrated by Gauss-Jacobi.
@@ -133,6 +139,9 @@ private:
   double velocity_;
   double excess_ratio_;   // (beta - ln(1 + beta)) / beta^2, 1/2 at beta = 0
   double time_scale_ = 0; // K of the power-law fast path [s (m/s)^(alpha - 1)]
+  bool restitution_in_log_rate_ = false; // beta > 1: restitution parametrised by psi
+  double log_rate_span_ = 0;             // psi_out = -log(1 + b v_out)
+  double separation_force_factor_ = 0;   // 1 + b v_out = exp(-psi_out)
   double approach_max_;
   double restitution_;
 };
