@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <iostream>
 #include <limits>
 #include <vector>
@@ -109,16 +110,19 @@ TEST(LambertWAccuracy, OnePlusLambertWBothBranches) {
 }
 
 // lambert_w0 / lambert_wm1 wrappers against Boost's W in 100 digits at the exact double z.
-// Near the branch point W(z) itself is ill-conditioned (dW/dz ~ 1/sqrt(z + 1/e)), and the
-// double-precision algorithm forms z + 1/e with an absolute error of ~1e-19 (long double),
-// so the attainable relative error there is ~ 1e-19 / (4 |1 + W| (z + 1/e)) rather than
-// one ulp. The few-ulp target is asserted for z + 1/e >= 1e-3; closer points are asserted
-// against that conditioning bound and reported.
+// Their header promises "about 1 ulp away from the branch point": asserted <= 4e-16 (2 ulps)
+// for z + 1/e >= 0.01. Closer, W(z) is ill-conditioned (dW/dz ~ 1/(1 + W)) and Boost's
+// double algorithm uses the branch-point series in p = sqrt(2 (e z + 1)) with e z + 1 formed
+// in double, i.e. with an absolute error of a few 1e-16; the attainable relative error is then
+// ~ 1e-16 / |1 + W| (up to ~1e-9 next to -1/e), which is why the impact formulas use
+// one_plus_lambert_w instead. There the wrappers are asserted against that backward-error
+// bound, 4 eps + 4 eps / |1 + W| (an error of 4 ulps of 1 in e z + 1), and the raw errors are
+// reported.
 TEST(LambertWAccuracy, LambertWWrappers) {
   const double branch_point = -0.36787944117144233; // nearest double, below -1/e
   const Real100 branch_point_exact = -exp(Real100(-1));
   std::vector<double> z0_grid, zm1_grid;
-  for (const double t : log_grid(1e-16, 0.0132, 6)) {
+  for (const double t : log_grid(1e-16, 0.2, 8)) {
     const double z = branch_point + t;
     z0_grid.push_back(z);
     zm1_grid.push_back(z);
@@ -130,12 +134,12 @@ TEST(LambertWAccuracy, LambertWWrappers) {
   for (const double t : log_grid(1e-300, 1e300, 4)) z0_grid.push_back(t);
   z0_grid.push_back(0.0);
 
-  WorstError w0_far("lambert_w0 (z+1/e >= 1e-3)", 4e-16);
-  WorstError wm1_far("lambert_wm1 (z+1/e >= 1e-3)", 4e-16);
+  WorstError w0_far("lambert_w0 (z+1/e >= 0.01)", 4e-16);
+  WorstError wm1_far("lambert_wm1 (z+1/e >= 0.01)", 4e-16);
   WorstError w0_near("lambert_w0 near branch / bound", 1.0);
   WorstError wm1_near("lambert_wm1 near branch / bound", 1.0);
-  WorstError w0_near_raw("lambert_w0 (z+1/e < 1e-3), info", 1.0);
-  WorstError wm1_near_raw("lambert_wm1 (z+1/e < 1e-3), info", 1.0);
+  WorstError w0_near_raw("lambert_w0 (z+1/e < 0.01), info", 1.0);
+  WorstError wm1_near_raw("lambert_wm1 (z+1/e < 0.01), info", 1.0);
   for (const bool principal : {true, false}) {
     for (const double z : principal ? z0_grid : zm1_grid) {
       const Real100 distance = Real100(z) - branch_point_exact;
@@ -146,13 +150,13 @@ TEST(LambertWAccuracy, LambertWWrappers) {
       const double value = principal ? lambert_w0(z) : lambert_wm1(z);
       const double error = relative_error(value, reference);
       const std::string where = hp::format("z=%.17g", z);
-      if (distance >= Real100(1e-3)) {
+      if (std::getenv("HP_VERBOSE") && error > 4e-16)
+        std::cout << (principal ? "W0 " : "W-1 ") << where << " error " << error << "\n";
+      if (distance >= Real100(0.01)) {
         (principal ? w0_far : wm1_far).update(error, where);
       } else {
-        // Conditioning bound: 2 ulps plus the effect of an absolute error 1e-19 in e z + 1,
-        // |dW| = 1e-19 / |1 + W| (dW/dz = W / (z (1 + W)), z ~ -1/e).
         const double bound =
-            2 * eps + static_cast<double>(Real100(1e-19) / abs((1 + reference) * reference));
+            4 * eps + 4 * eps / static_cast<double>(abs(1 + reference));
         (principal ? w0_near_raw : wm1_near_raw).update(error, where);
         (principal ? w0_near : wm1_near).update(error / bound, where);
       }
@@ -170,7 +174,8 @@ TEST(LambertWAccuracy, LambertWWrappers) {
   expect_target(wm1_near);
 }
 
-// log1p_excess(t) = t - log(1 + t): "a few ulps" (header), asserted <= 4 ulps.
+// log1p_excess(t) = t - log(1 + t): "a few ulps" (header), asserted <= 4 ulps wherever the
+// result is a normal double.
 TEST(LambertWAccuracy, Log1pExcess) {
   std::vector<double> grid;
   for (const double t : log_grid(1e-300, 1e300, 4)) grid.push_back(t);
@@ -183,7 +188,17 @@ TEST(LambertWAccuracy, Log1pExcess) {
   WorstError worst("log1p_excess", 4 * eps);
   for (const double t : grid) {
     const Real100 tr = t;
-    const Real100 reference = tr - log1p(tr);
+    // Literal in 100 digits where that keeps > 60 digits (|t| >= 1e-15), else the series
+    // t^2/2 - t^3/3 + t^4/4 - ... (relative truncation error < |t|^8 < 1e-120).
+    Real100 reference = 0;
+    if (abs(tr) >= Real100(1e-15)) {
+      reference = tr - log1p(tr);
+    } else {
+      Real100 power = tr * tr;
+      for (int k = 2; k < 10; ++k, power *= -tr) reference += power / k;
+    }
+    // Below the normal range (|t| < ~2e-154) the result underflows: no relative accuracy.
+    if (reference < Real100(std::numeric_limits<double>::min())) continue;
     worst.update(relative_error(log1p_excess(t), reference), hp::format("t=%.17g", t));
   }
   std::cout << "log1p_excess against 100 digits:\n";

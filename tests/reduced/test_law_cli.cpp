@@ -1,6 +1,8 @@
 // impact-reduced law: JSON output for valid input; exit code 2 and a message naming the
 // parameter for every kind of bad input.
 
+#include "cli_runner.hpp"
+
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -13,18 +15,13 @@ namespace {
 
 struct Run {
   int status;
-  std::string output; // stdout and stderr
+  std::string output; // stderr, then stdout
 };
 
+// `arguments` is a shell-quoted argument string.
 Run run_cli(const std::string& arguments) {
-  const std::string command = std::string(IMPACT_REDUCED_CLI) + " law " + arguments + " 2>&1";
-  FILE* pipe = popen(command.c_str(), "r");
-  if (!pipe) return {-1, "popen failed"};
-  std::string output;
-  char buffer[4096];
-  while (const std::size_t read = fread(buffer, 1, sizeof buffer, pipe)) output.append(buffer, read);
-  const int status = pclose(pipe);
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
+  const auto run = impact::testing::run_cli("law " + arguments, {});
+  return {run.exit_code, run.err + run.out};
 }
 
 struct Option {

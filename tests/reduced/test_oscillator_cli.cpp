@@ -1,6 +1,7 @@
 // Tests of `impact-reduced oscillator`: the CSV tables, and exit code 2 with a message naming
 // the parameter for every kind of bad input.
 
+#include "cli_runner.hpp"
 #include "impact_reduced/oscillator.hpp"
 
 #include <gtest/gtest.h>
@@ -20,46 +21,17 @@ namespace {
 
 namespace reduced = impact::reduced;
 
-struct CliRun {
-  int exit_code;
-  std::string out;
-  std::string err;
-};
+using impact::testing::arguments_of;
+using impact::testing::CliRun;
 
-std::string read_all(const std::string& path) {
-  std::ifstream file(path);
-  std::stringstream text;
-  text << file.rdbuf();
-  return text.str();
-}
-
-// Runs the tool with `arguments` (each passed as one shell word).
 CliRun run_cli(const std::vector<std::string>& arguments) {
-  const std::string base = "/tmp/impact_oscillator_cli_" + std::to_string(::getpid());
-  std::string command = std::string("'") + IMPACT_REDUCED_CLI + "' oscillator";
-  for (const auto& argument : arguments) command += " '" + argument + "'";
-  command += " >" + base + ".out 2>" + base + ".err";
-  const int status = std::system(command.c_str());
-  CliRun run{WIFEXITED(status) ? WEXITSTATUS(status) : -1, read_all(base + ".out"),
-          read_all(base + ".err")};
-  std::remove((base + ".out").c_str());
-  std::remove((base + ".err").c_str());
-  return run;
+  return impact::testing::run_cli("oscillator", arguments);
 }
 
 // The published quadratic case.
 const std::map<std::string, std::string> good = {
     {"mass", "2"},  {"viscous", "8"}, {"c1", "800"},  {"c2", "4000"},
     {"power", "1"}, {"a0", "0.05"},   {"count", "10"}, {"method", "numeric"}};
-
-std::vector<std::string> arguments_of(const std::map<std::string, std::string>& options) {
-  std::vector<std::string> arguments;
-  for (const auto& [name, value] : options) {
-    arguments.push_back("--" + name);
-    arguments.push_back(value);
-  }
-  return arguments;
-}
 
 std::vector<std::vector<double>> parse_csv(const std::string& text, std::string& header) {
   std::stringstream lines(text);
