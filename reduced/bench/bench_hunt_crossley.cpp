@@ -33,6 +33,20 @@ void damping_from_restitution_inverse(benchmark::State& state) {
 }
 BENCHMARK(damping_from_restitution_inverse);
 
+// The closed-form keys: x_max, restitution, rebound velocity, energy loss (the
+// constructor computes them; no quadrature). These replace what an ODE integration is
+// otherwise run for.
+void closed_form_keys(benchmark::State& state) {
+  double velocity = 1.0;
+  for (auto _ : state) {
+    const HuntCrossleyImpact impact(mass, stiffness, exponent, damping, velocity);
+    benchmark::DoNotOptimize(impact.approach_max());
+    benchmark::DoNotOptimize(impact.energy_loss());
+    velocity = velocity < 5.0 ? velocity * 1.01 : 1.0;
+  }
+}
+BENCHMARK(closed_form_keys);
+
 void full_response(benchmark::State& state) {
   for (auto _ : state) {
     const HuntCrossleyImpact impact(mass, stiffness, exponent, damping, 1.0);

@@ -158,25 +158,33 @@ double damping_from_restitution(double restitution, double velocity) {
 
 HuntCrossleyImpact::HuntCrossleyImpact(double mass, double stiffness, double exponent,
                                        double damping, double velocity)
-  : HuntCrossleyImpact(mass, std::make_shared<PowerLawForce>(stiffness, exponent), damping,
-                       velocity) {}
+  : HuntCrossleyImpact(mass, nullptr, damping, velocity, PowerLawForce(stiffness, exponent)) {}
 
 HuntCrossleyImpact::HuntCrossleyImpact(double mass,
                                        std::shared_ptr<const ElasticForce> elastic_force,
                                        double damping, double velocity)
-  : mass_(mass), elastic_force_(std::move(elastic_force)), damping_(damping),
-    velocity_(velocity) {
+  : HuntCrossleyImpact(mass, std::move(elastic_force), damping, velocity, std::nullopt) {}
+
+HuntCrossleyImpact::HuntCrossleyImpact(double mass,
+                                       std::shared_ptr<const ElasticForce> custom_force,
+                                       double damping, double velocity,
+                                       std::optional<PowerLawForce> power_law)
+  : mass_(mass), power_law_(std::move(power_law)), custom_force_(std::move(custom_force)),
+    damping_(damping), velocity_(velocity) {
   require_positive("mass", mass);
   require_non_negative("damping", damping);
   require_positive("velocity", velocity);
-  if (!elastic_force_) throw InvalidInput("elastic_force", "elastic_force must not be null");
+  if (!power_law_) {
+    if (!custom_force_) throw InvalidInput("elastic_force", "elastic_force must not be null");
+    if (const auto* power = dynamic_cast<const PowerLawForce*>(custom_force_.get()))
+      power_law_ = *power;
+  }
   if (!std::isfinite(damping * velocity))
     throw InvalidInput("damping", "damping * velocity overflows");
-  power_law_ = dynamic_cast<const PowerLawForce*>(elastic_force_.get());
   excess_ratio_ = log1p_excess_ratio(impact_parameter());
   // P(x_max) = (m / b^2) (beta - ln(1 + beta)) = m V^2 sigma(beta).
   approach_max_ =
-      elastic_force_->approach_at_potential(mass_ * velocity_ * velocity_ * excess_ratio_);
+      elastic_force().approach_at_potential(mass_ * velocity_ * velocity_ * excess_ratio_);
   restitution_ = restitution_from_impact_parameter(impact_parameter());
   if (impact_parameter() > 1.0) {
     // psi_out = -log(-w_out) = 1 + s0 + w_out with w_out = W0(-exp(-1 - s0)); exp(-psi_out)
@@ -187,11 +195,6 @@ HuntCrossleyImpact::HuntCrossleyImpact(double mass,
     log_rate_span_ = 1.0 + s0 + w_out;
     separation_force_factor_ = -w_out;
   }
-  if (power_law_) {
-    const double exponent = power_law_->exponent();
-    time_scale_ = mass_ / (std::pow(power_law_->stiffness(), 1.0 / (exponent + 1)) *
-                           std::pow((exponent + 1) * mass_, exponent / (exponent + 1)));
-  }
 }
 
 double HuntCrossleyImpact::energy_loss() const {
@@ -199,7 +202,7 @@ double HuntCrossleyImpact::energy_loss() const {
 }
 
 double HuntCrossleyImpact::force(double approach, double approach_rate) const {
-  return elastic_force_->force(approach) * (1.0 + damping_ * approach_rate);
+  return elastic_force().force(approach) * (1.0 + damping_ * approach_rate);
 }
 
 double HuntCrossleyImpact::approach_rate(double approach, ImpactPhase phase) const {
@@ -225,7 +228,7 @@ double HuntCrossleyImpact::approach_rate(double approach, ImpactPhase phase) con
         static_cast<double>(2 * (speed * speed * quad_log1p_excess_ratio(beta) - potential_per_mass));
   } else {
     energy_twice = 2.0 * (velocity_ * velocity_ * excess_ratio_ -
-                          elastic_force_->potential(approach) / mass_);
+                          elastic_force().potential(approach) / mass_);
   }
   const double speed = std::sqrt(std::max(energy_twice, 0.0));
   // v = -y / b with y = p branch_ratio(p), p = -+ b speed (lower branch while compressing).
@@ -257,19 +260,19 @@ double HuntCrossleyImpact::restitution_span() const {
 
 // dt = -m dv / ((1 + b v) f(x(v))): Newton's law, with x(v) from the energy balance.
 double HuntCrossleyImpact::compression_time_density(double distance) const {
-  const double approach = elastic_force_->approach_at_potential(mass_ * compression_energy(distance));
-  return mass_ / ((1.0 + damping_ * (velocity_ - distance)) * elastic_force_->force(approach));
+  const double approach = elastic_force().approach_at_potential(mass_ * compression_energy(distance));
+  return mass_ / ((1.0 + damping_ * (velocity_ - distance)) * elastic_force().force(approach));
 }
 
 double HuntCrossleyImpact::restitution_time_density(double distance) const {
-  const double approach = elastic_force_->approach_at_potential(mass_ * restitution_energy(distance));
+  const double approach = elastic_force().approach_at_potential(mass_ * restitution_energy(distance));
   // dt = -m dv / ((1 + b v) f) = (m / b) dpsi / f.
-  if (restitution_in_log_rate_) return mass_ / (damping_ * elastic_force_->force(approach));
-  return mass_ / ((1.0 + damping_ * restitution_rate(distance)) * elastic_force_->force(approach));
+  if (restitution_in_log_rate_) return mass_ / (damping_ * elastic_force().force(approach));
+  return mass_ / ((1.0 + damping_ * restitution_rate(distance)) * elastic_force().force(approach));
 }
 
 bool HuntCrossleyImpact::uses_singular_rule() const {
-  return power_law_ != nullptr && impact_parameter() <= singular_rule_beta_limit;
+  return power_law_.has_value() && impact_parameter() <= singular_rule_beta_limit;
 }
 
 // For f = c x^n the energy per mass E(u) = u e(u) with e smooth and e(0) > 0, and
@@ -291,7 +294,10 @@ double HuntCrossleyImpact::singular_rule_time(ImpactPhase phase, double distance
                                             : -velocity_work_per_width(damping_, start, u);
     sum += rule.weights[i] * std::pow(energy_ratio, -alpha) / (1.0 + damping_ * rate);
   }
-  return time_scale_ * std::pow(distance, 1.0 - alpha) * sum;
+  // K = m / (c^(1/(n+1)) ((n+1) m)^alpha) [s (m/s)^(alpha - 1)]
+  const double time_scale = mass_ / (std::pow(power_law_->stiffness(), 1.0 / (exponent + 1)) *
+                                     std::pow((exponent + 1) * mass_, alpha));
+  return time_scale * std::pow(distance, 1.0 - alpha) * sum;
 }
 
 double HuntCrossleyImpact::compression_time_until(double distance) const {
@@ -312,14 +318,14 @@ double HuntCrossleyImpact::contact_time() const {
 
 ImpactState HuntCrossleyImpact::force_peak() const {
   if (damping_ == 0.0)
-    return {compression_time(), approach_max_, 0.0, elastic_force_->force(approach_max_)};
+    return {compression_time(), approach_max_, 0.0, elastic_force().force(approach_max_)};
   // dF/dt = 0  <=>  m f'(x) v = b f(x)^2 (while compressing). In the distance u = V - v
   // the left side dominates near first contact and the right side at x_max.
   auto condition = [this](double distance) {
     const double approach =
-        elastic_force_->approach_at_potential(mass_ * compression_energy(distance));
-    const double elastic = elastic_force_->force(approach);
-    return mass_ * (velocity_ - distance) * elastic_force_->slope(approach) / elastic -
+        elastic_force().approach_at_potential(mass_ * compression_energy(distance));
+    const double elastic = elastic_force().force(approach);
+    return mass_ * (velocity_ - distance) * elastic_force().slope(approach) / elastic -
            damping_ * elastic;
   };
   boost::uintmax_t iterations = 200;
@@ -351,14 +357,14 @@ ImpactState HuntCrossleyImpact::force_peak() const {
 
 ImpactState HuntCrossleyImpact::compression_state(double time, double distance) const {
   const double approach =
-      elastic_force_->approach_at_potential(mass_ * compression_energy(distance));
+      elastic_force().approach_at_potential(mass_ * compression_energy(distance));
   const double rate = velocity_ - distance;
   return {time, approach, rate, force(approach, rate)};
 }
 
 ImpactState HuntCrossleyImpact::restitution_state(double time, double distance) const {
   const double approach =
-      elastic_force_->approach_at_potential(mass_ * restitution_energy(distance));
+      elastic_force().approach_at_potential(mass_ * restitution_energy(distance));
   const double rate = restitution_rate(distance);
   return {time, approach, rate, force(approach, rate)};
 }

@@ -14,6 +14,7 @@
 
 #include <cstddef>
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace impact::reduced {
@@ -111,6 +112,9 @@ public:
   std::vector<ImpactState> history(std::size_t points) const;
 
 private:
+  HuntCrossleyImpact(double mass, std::shared_ptr<const ElasticForce> custom_force,
+                     double damping, double velocity, std::optional<PowerLawForce> power_law);
+
   // Each phase is parametrised by a distance u >= 0 from its singular end (first contact,
   // separation), so that the quantities are exact where the force vanishes. Compression:
   // u = V - v. Restitution: u = v - v_out for beta <= 1; for larger beta, where 1 + b v_out
@@ -132,13 +136,18 @@ private:
   ImpactState compression_state(double time, double distance) const;
   ImpactState restitution_state(double time, double distance) const;
 
+  // The law: the power law is held by value (the fast path, no allocation), any other law
+  // through the caller's pointer.
+  const ElasticForce& elastic_force() const {
+    return power_law_ ? static_cast<const ElasticForce&>(*power_law_) : *custom_force_;
+  }
+
   double mass_;
-  std::shared_ptr<const ElasticForce> elastic_force_;
-  const PowerLawForce* power_law_; // elastic_force_ when it is the power law, else null
+  std::optional<PowerLawForce> power_law_;
+  std::shared_ptr<const ElasticForce> custom_force_;
   double damping_;
   double velocity_;
   double excess_ratio_;   // (beta - ln(1 + beta)) / beta^2, 1/2 at beta = 0
-  double time_scale_ = 0; // K of the power-law fast path [s (m/s)^(alpha - 1)]
   bool restitution_in_log_rate_ = false; // beta > 1: restitution parametrised by psi
   double log_rate_span_ = 0;             // psi_out = -log(1 + b v_out)
   double separation_force_factor_ = 0;   // 1 + b v_out = exp(-psi_out)
