@@ -11,8 +11,11 @@
 
 namespace impact::reduced::detail {
 
-/// S(y) = -y - log(1 - y) for y < 1, to about 1 ulp relative (series for |y| < 1/4).
+/// S(y) = -y - log(1 - y) for y < 1, to about 1 ulp relative (series for |y| < 1/2).
 double branch_excess(double y);
+
+/// S(y) / y^2 for y < 1, y != 0 (1/2 at y = 0).
+double branch_excess_ratio(double y);
 
 /// t - log(1 + t) for t > -1 (= S(-t)), to about 1 ulp relative.
 inline double log1p_excess(double t) { return branch_excess(-t); }

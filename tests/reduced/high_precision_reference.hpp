@@ -21,6 +21,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <cstdlib>
 #include <iostream>
 #include <limits>
 #include <optional>
@@ -191,9 +192,19 @@ inline ImpactReference hertz_reference(const ImpactInput& in) {
   return r;
 }
 
-/// The tanh-sinh integrator in 50 digits, shared (its abscissa tables are expensive). The
-/// minimum complement 1e-300 truncates the endpoint tails: with integrands ~ d^(-n/(n+1)),
-/// n <= 2.5, the omitted part is < 1e-80 relative.
+/// X(t) = exp(t) - 1 - t without cancellation: series for |t| < 1/8, else literal.
+template <class Real>
+Real expm1_excess(const Real& t) {
+  if (abs(t) >= Real(0.125)) return Real(expm1(t) - t);
+  Real term = t * t / 2, sum = 0;
+  for (int k = 3; abs(term) > abs(sum) * std::numeric_limits<Real>::epsilon() / 4; ++k) {
+    sum += term;
+    term *= t / k;
+  }
+  return sum;
+}
+
+/// The tanh-sinh integrator in 50 digits, shared (its abscissa tables are expensive).
 inline boost::math::quadrature::tanh_sinh<Real50>& quadrature50() {
   static boost::math::quadrature::tanh_sinh<Real50> integrator(15, Real50(1e-300));
   return integrator;
@@ -207,12 +218,17 @@ inline boost::math::quadrature::tanh_sinh<Real50>& quadrature50() {
 /// (separation). With E = b^2 P / m = psi - exp(psi) + 1 + beta - ln(1 + beta), the energy is
 /// formed from the distance delta to the singular end of each phase, exactly:
 ///   compression, psi = psi_in - delta:   E = -(1 + beta) expm1(-delta) - delta
-///   restitution, psi = psi_out + delta:  E = delta - a expm1(delta),  a = -w_out
-/// (using psi_out + w_out = ln(1 + beta) - 1 - beta). The log variable keeps the
-/// restitution integrand smooth when w_out is tiny (large beta: w_out ~ -1e-432 at 1e3).
+///   restitution, psi = psi_out + delta:  E = delta - a expm1(delta),  a = -w_out = 1 - y
+/// (using psi_out + w_out = ln(1 + beta) - 1 - beta), rearranged as
+///   E = -beta expm1(-delta) - X(-delta)  and  E = y expm1(delta) - X(delta),
+/// X(t) = expm1(t) - t, so that E also keeps its digits at tiny beta, where the two terms of
+/// the literal forms cancel to a relative 1/beta (the restitution phase keeps the literal
+/// form when y > 1/2, where the rearranged one would cancel instead). The log variable keeps
+/// the restitution integrand smooth when w_out is tiny (large beta: w_out ~ -1e-432 at 1e3).
 /// The force peak: dF/dt = 0 <=> m f' v = b f^2, which for the power law and v = -(1+w)/b
 /// reads (n + 1) E = n (exp(psi) - 1); solved by TOMS 748 in delta (100 digits).
-inline ImpactReference hunt_crossley_reference(const ImpactInput& in) {
+/// `with_times` = false skips the quadratures (times left at 0): closed forms and peak only.
+inline ImpactReference hunt_crossley_reference(const ImpactInput& in, bool with_times = true) {
   if (in.damping == 0) return hertz_reference(in);
   using boost::math::tools::eps_tolerance;
   using boost::math::tools::toms748_solve;
@@ -232,7 +248,6 @@ inline ImpactReference hunt_crossley_reference(const ImpactInput& in) {
 
   const Real100 psi_in = log1p(beta);
   const Real100 psi_out = psi_in - 1 - beta - w_out;
-  const Real100 a = -w_out;
 
   // Force peak, in delta = psi_in - psi in (0, psi_in).
   auto energy_compression100 = [&](const Real100& delta) {
@@ -252,33 +267,69 @@ inline ImpactReference hunt_crossley_reference(const ImpactInput& in) {
   r.force_max = exp(psi_peak) * c * pow(r.approach_at_peak, n); // F = -w f(x)
   r.rate_at_peak = expm1(psi_peak) / b;                           // v = -(1 + w) / b
 
+  if (!with_times) return r;
+
   // Time integrals in 50 digits.
   const Real50 m50(m), c50(c), n50(n), b50(b), p50(p), beta50(beta);
-  const Real50 a50(a);
+  const Real50 y50(y), a50(-w_out);
   const Real50 time_scale = m50 / b50;
   const Real50 energy_to_xp = p50 * m50 / (c50 * b50 * b50); // x^p = energy_to_xp * E
   auto force_of_energy = [&](const Real50& energy) {
     const Real50 x = pow(energy_to_xp * energy, 1 / p50);
     return c50 * pow(x, n50);
   };
+  // E = beta (1 - e^-delta) - (e^-delta - 1 + delta) = y expm1(delta) - (expm1(delta) - delta):
+  // the O(delta^2) parts taken by series, so that E keeps all digits also at tiny beta.
   auto compression_density = [&](const Real50& delta) {
-    return time_scale / force_of_energy(-(1 + beta50) * expm1(-delta) - delta);
+    const Real50 energy = -beta50 * expm1(-delta) - expm1_excess(Real50(-delta));
+    return time_scale / force_of_energy(energy);
   };
   auto restitution_density = [&](const Real50& delta) {
-    return time_scale / force_of_energy(delta - a50 * expm1(delta));
+    // y expm1(delta) - X(delta) cancels when y -> 1 (large beta); then the literal
+    // delta - a expm1(delta), a = -w_out <= 1/2, has no cancellation.
+    const Real50 energy =
+        y50 <= 0.5 ? Real50(y50 * expm1(delta) - expm1_excess(delta))
+                   : Real50(delta - a50 * expm1(delta));
+    return time_scale / force_of_energy(energy);
   };
   auto& quadrature = quadrature50();
   const Real50 tolerance = 1e-32;
-  auto integrate = [&](auto density, const Real50& lower, const Real50& upper) {
-    Real50 error = 0, l1 = 0;
-    const Real50 value = quadrature.integrate(density, lower, upper, tolerance, &error, &l1);
-    r.quadrature_error = std::max(r.quadrature_error, static_cast<double>(error / l1));
-    return Real100(value);
+  // Each integral returns its value and its absolute error estimate; the reported quality is
+  // the estimate relative to the time it contributes to (a piece may be tiny: for small beta
+  // the force peak lies within ~beta^2 of x_max). Integrated over u in [0, 1], delta = lower + (upper - lower) u (scale-free: for small
+  // beta the intervals are ~beta wide), with the two-argument form of tanh_sinh: uc = -u in
+  // the left half, 1 - u in the right half, so delta next to either end is formed from the
+  // exact complement.
+  auto integrate = [&](auto density, const Real50& lower, const Real50& upper, Real50& error) {
+    const Real50 width = upper - lower;
+    // The tails within 1e-200 of an end are dropped (with integrands ~ u^(-n/(n+1)), n <= 2.5,
+    // they weigh < 1e-57 relative): there the abscissas reach ~1e-646000000 and E underflows.
+    auto integrand = [&](const Real50&, const Real50& uc) {
+      if (abs(uc) < Real50(1e-200)) return Real50(0);
+      return width * density(uc <= 0 ? Real50(lower - width * uc) : Real50(upper - width * uc));
+    };
+    Real50 l1 = 0;
+    error = 0;
+    const Real50 value =
+        quadrature.integrate(integrand, Real50(0), Real50(1), tolerance, &error, &l1);
+    if (std::getenv("HP_VERBOSE"))
+      std::cout << "    quadrature [" << lower << ", " << upper << "]: " << value << " +- "
+                << error << "\n";
+    return value;
   };
-  r.time_force_max = integrate(compression_density, Real50(0), Real50(delta_peak));
-  r.compression_time =
-      r.time_force_max + integrate(compression_density, Real50(delta_peak), Real50(psi_in));
-  r.contact_time = r.compression_time + integrate(restitution_density, Real50(0), Real50(-psi_out));
+  Real50 error_peak, error_to_max, error_restitution;
+  const Real50 to_peak = integrate(compression_density, Real50(0), Real50(delta_peak), error_peak);
+  const Real50 peak_to_max =
+      integrate(compression_density, Real50(delta_peak), Real50(psi_in), error_to_max);
+  const Real50 restitution =
+      integrate(restitution_density, Real50(0), Real50(-psi_out), error_restitution);
+  r.time_force_max = Real100(to_peak);
+  r.compression_time = Real100(to_peak) + Real100(peak_to_max);
+  r.contact_time = r.compression_time + Real100(restitution);
+  r.quadrature_error = static_cast<double>(
+      std::max({error_peak / to_peak, (error_peak + error_to_max) / (to_peak + peak_to_max),
+                (error_peak + error_to_max + error_restitution) /
+                    (to_peak + peak_to_max + restitution)}));
   return r;
 }
 
