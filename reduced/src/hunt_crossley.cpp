@@ -96,12 +96,19 @@ std::vector<double> invert_cumulative_integral(const std::function<double(double
 
 } // namespace
 
+namespace {
+// k = y / beta with S(y) = S(-beta) on the principal branch; in the ratio form
+// y = p branch_ratio(p), p = beta sqrt(2 sigma), sigma = S(-beta) / beta^2, which is exact
+// at beta -> 0.
+double restitution_from_excess_ratio(double beta, double excess_ratio) {
+  const double amplitude = std::sqrt(2.0 * excess_ratio);
+  return amplitude * branch_ratio(beta * amplitude);
+}
+} // namespace
+
 double restitution_from_impact_parameter(double beta) {
   require_non_negative("beta", beta);
-  // k = y / beta with S(y) = S(-beta) on the principal branch; in the ratio form
-  // y = p branch_ratio(p), p = beta sqrt(2 sigma(beta)), which is exact at beta -> 0.
-  const double amplitude = std::sqrt(2.0 * log1p_excess_ratio(beta));
-  return amplitude * branch_ratio(beta * amplitude);
+  return restitution_from_excess_ratio(beta, log1p_excess_ratio(beta));
 }
 
 double impact_parameter_from_restitution(double restitution) {
@@ -185,7 +192,7 @@ HuntCrossleyImpact::HuntCrossleyImpact(double mass,
   // P(x_max) = (m / b^2) (beta - ln(1 + beta)) = m V^2 sigma(beta).
   approach_max_ =
       elastic_force().approach_at_potential(mass_ * velocity_ * velocity_ * excess_ratio_);
-  restitution_ = restitution_from_impact_parameter(impact_parameter());
+  restitution_ = restitution_from_excess_ratio(impact_parameter(), excess_ratio_);
   if (impact_parameter() > 1.0) {
     // psi_out = -log(-w_out) = 1 + s0 + w_out with w_out = W0(-exp(-1 - s0)); exp(-psi_out)
     // = -w_out. Both stay exact when 1 + b v_out = -w_out is far below double precision.
