@@ -25,14 +25,10 @@
 
 namespace impact::reduced {
 
+// Tsuji's alpha is sqrt(5) times the damping ratio of the linear oscillator with the same
+// restitution (the Hertz contact linearised at its natural frequency).
 double tsuji_alpha(double restitution) {
-  if (!(restitution > 0 && restitution <= 1))
-    throw InvalidInput("restitution", "restitution must be a number in (0, 1] (got " +
-                                          std::to_string(restitution) + ")");
-  if (restitution == 1) return 0.0;
-  const double log_e = std::log(restitution);
-  constexpr double pi = 3.14159265358979323846;
-  return -std::sqrt(5.0) * log_e / std::sqrt(log_e * log_e + pi * pi);
+  return std::sqrt(5.0) * linear_oscillator_damping_ratio(restitution);
 }
 
 namespace laws {

@@ -17,6 +17,8 @@
 #include <boost/math/tools/roots.hpp>
 #include <boost/multiprecision/cpp_bin_float.hpp>
 
+#include <gtest/gtest.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -83,6 +85,22 @@ struct WorstError {
     return text;
   }
 };
+
+/// Prints the sweep's worst error and records it as a test property.
+inline void report(const WorstError& worst) {
+  std::cout << "  " << worst.summary() << "\n";
+  ::testing::Test::RecordProperty(worst.quantity + " worst relative error",
+                                  format("%.3e", worst.error) + " at " + worst.where);
+}
+
+/// report(), and a test failure if any point of the sweep missed the target.
+inline void expect_target(const WorstError& worst) {
+  report(worst);
+  EXPECT_TRUE(worst.passed()) << worst.quantity << ": worst relative error " << worst.error
+                              << " exceeds the target " << worst.target << " at " << worst.where
+                              << " (" << worst.failures << " of " << worst.points
+                              << " points above target)";
+}
 
 // ---------------------------------------------------------------------------------------
 // Lambert W

@@ -35,6 +35,8 @@ using hp::ImpactInput;
 using hp::ImpactReference;
 using hp::Real100;
 using hp::relative_error;
+using hp::expect_target;
+using hp::report;
 using hp::WorstError;
 
 // The spec's steel ball on a steel half-space.
@@ -88,19 +90,6 @@ double call(const std::function<double()>& f, const std::string& what) {
   }
 }
 
-void report(const WorstError& worst) {
-  std::cout << "  " << worst.summary() << "\n";
-  ::testing::Test::RecordProperty(worst.quantity + " worst relative error",
-                                  hp::format("%.3e", worst.error) + " at " + worst.where);
-}
-
-void expect_target(const WorstError& worst) {
-  report(worst);
-  EXPECT_TRUE(worst.passed()) << worst.quantity << ": worst relative error " << worst.error
-                              << " exceeds the target " << worst.target << " at "
-                              << worst.where << " (" << worst.failures << " of "
-                              << worst.points << " points above target)";
-}
 
 // ---------------------------------------------------------------------------------------
 // The references themselves

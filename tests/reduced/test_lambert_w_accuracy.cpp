@@ -21,6 +21,8 @@ namespace {
 using namespace impact::reduced;
 using hp::Real100;
 using hp::relative_error;
+using hp::expect_target;
+using hp::report;
 using hp::WorstError;
 
 constexpr double eps = std::numeric_limits<double>::epsilon();
@@ -35,20 +37,6 @@ std::vector<double> log_grid(double first, double last, int per_decade) {
   grid.front() = first;
   grid.back() = last;
   return grid;
-}
-
-void report(const WorstError& worst) {
-  std::cout << "  " << worst.summary() << "\n";
-  ::testing::Test::RecordProperty(worst.quantity + " worst relative error",
-                                  hp::format("%.3e", worst.error) + " at " + worst.where);
-}
-
-void expect_target(const WorstError& worst) {
-  report(worst);
-  EXPECT_TRUE(worst.passed()) << worst.quantity << ": worst relative error " << worst.error
-                              << " exceeds the target " << worst.target << " at " << worst.where
-                              << " (" << worst.failures << " of " << worst.points
-                              << " points above target)";
 }
 
 // The references themselves: the branch-point series and Boost's 100-digit W agree where
