@@ -81,8 +81,13 @@ std::vector<double> invert_cumulative_integral(const std::function<double(double
               : 0.0;
       return std::make_pair(previous_target + increment - target, density(u));
     };
-    // Start from the end of the bracket that the local slope points to.
-    const double guess = 0.5 * (previous_root + upper);
+    // Start from the local slope at the previous root (a first-order step); from the
+    // singular end, where the slope is infinite, from the middle of the bracket.
+    double guess = 0.5 * (previous_root + upper);
+    if (previous_root > 0.0) {
+      const double step = (target - previous_target) / density(previous_root);
+      if (step > 0.0 && previous_root + step < upper) guess = previous_root + step;
+    }
     boost::uintmax_t iterations = 100;
     const double root = boost::math::tools::newton_raphson_iterate(
         equation, guess, previous_root, upper, std::numeric_limits<double>::digits - 6,

@@ -1,0 +1,470 @@
+// Reading and writing FEM runs and campaigns (see fem_run.hpp; names in fem_run_format.hpp).
+
+#include "impact_postprocess/fem_run.hpp"
+
+#include "hdf5_file.hpp"
+#include "impact_postprocess/fem_run_format.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <optional>
+#include <sstream>
+
+namespace impact::postprocess {
+
+namespace fs = std::filesystem;
+namespace format = fem_format;
+
+namespace {
+
+std::string quoted(const fs::path& path) { return "'" + path.string() + "'"; }
+
+[[noreturn]] void fail(const fs::path& file, const std::string& problem) {
+  throw RunInputError("run " + quoted(file) + ": " + problem);
+}
+
+// summary.json belongs to history.h5 in the same directory; another file NAME.h5 may have
+// NAME.summary.json beside it.
+fs::path summary_path_of(const fs::path& file) {
+  if (file.filename() == format::history_file) return file.parent_path() / format::summary_file;
+  return file.parent_path() / (file.stem().string() + ".summary.json");
+}
+
+fs::path incomplete_sibling(const fs::path& file) {
+  return file.parent_path() / format::incomplete_history_file;
+}
+
+// The run's HDF5 file for a path that names the file or the run directory.
+fs::path history_file_of(const fs::path& path) {
+  if (fs::is_directory(path)) {
+    const fs::path complete = path / format::history_file;
+    if (fs::exists(complete)) return complete;
+    if (fs::exists(path / format::incomplete_history_file))
+      fail(path, std::string("the FEM run did not finish: the directory holds only ") +
+                     format::incomplete_history_file + " (status '" + format::status_incomplete +
+                     "'); run it again to completion");
+    fail(path, std::string("the directory holds no ") + format::history_file);
+  }
+  if (!fs::exists(path)) {
+    if (path.filename() == format::history_file && fs::exists(incomplete_sibling(path)))
+      fail(path, std::string("the file does not exist, only ") + format::incomplete_history_file +
+                     ": the FEM run did not finish; run it again to completion");
+    fail(path, "the file does not exist");
+  }
+  return path;
+}
+
+// The derived results, from summary.json first, else from the "result: ..." attributes.
+class Results {
+public:
+  Results(const fs::path& file, const std::map<std::string, double>& attributes)
+      : attributes_(attributes) {
+    const fs::path summary_file = summary_path_of(file);
+    if (!fs::exists(summary_file)) return;
+    std::ifstream in(summary_file);
+    try {
+      summary_ = nlohmann::json::parse(in);
+    } catch (const nlohmann::json::exception& error) {
+      fail(summary_file, std::string("it is not valid JSON (") + error.what() + ")");
+    }
+    if (!summary_.is_object()) fail(summary_file, "it is not a JSON object");
+  }
+
+  bool summary_says_incomplete() const {
+    return summary_.contains(format::complete_key) && summary_[format::complete_key].is_boolean() &&
+           !summary_[format::complete_key].get<bool>();
+  }
+
+  std::optional<double> number(const std::string& key) const {
+    if (summary_.contains(key) && summary_[key].is_number()) return summary_[key].get<double>();
+    const auto attribute = attributes_.find(format::result_attribute_prefix + key);
+    if (attribute != attributes_.end() && std::isfinite(attribute->second))
+      return attribute->second;
+    return std::nullopt;
+  }
+
+private:
+  nlohmann::json summary_ = nlohmann::json::object();
+  const std::map<std::string, double>& attributes_;
+};
+
+std::vector<double> required_series(const hdf5::File& file, const fs::path& path,
+                                    const char* name, std::size_t size) {
+  if (!file.has_dataset(name))
+    fail(path, std::string("the file has no dataset '") + name + "'");
+  std::vector<double> values;
+  try {
+    values = file.read_dataset(name);
+  } catch (const std::runtime_error& error) {
+    fail(path, error.what());
+  }
+  if (size != 0 && values.size() != size)
+    fail(path, "the dataset '" + std::string(name) + "' has " + std::to_string(values.size()) +
+                   " values, but 'time' has " + std::to_string(size));
+  for (std::size_t i = 0; i < values.size(); ++i)
+    if (!std::isfinite(values[i]))
+      fail(path, "the dataset '" + std::string(name) + "' holds a non-finite value at step " +
+                     std::to_string(i));
+  return values;
+}
+
+// Where F^(2/3) (linear in time near the ends of a Hertz-like contact) extrapolates to zero
+// between samples i (force > 0) and j.
+double force_zero_time(const FemRun& run, std::size_t i, std::size_t j) {
+  const double fi = std::cbrt(run.contact_force[i] * run.contact_force[i]);
+  const double fj = std::cbrt(run.contact_force[j] * run.contact_force[j]);
+  if (fj == fi) return run.time[i];
+  return run.time[i] - fi * (run.time[j] - run.time[i]) / (fj - fi);
+}
+
+} // namespace
+
+FemRun read_fem_run(const fs::path& path) {
+  const fs::path file_path = history_file_of(path);
+  FemRun run;
+  run.source = file_path.string();
+
+  std::optional<hdf5::File> opened;
+  try {
+    opened.emplace(hdf5::File::open_read_only(file_path.string()));
+  } catch (const std::runtime_error& error) {
+    fail(file_path, std::string("cannot be read: ") + error.what());
+  }
+  const hdf5::File& file = *opened;
+  file.read_root_attributes(run.text_attributes, run.numeric_attributes);
+
+  const auto status = run.text_attributes.find(format::status_attribute);
+  if (status == run.text_attributes.end())
+    fail(file_path, std::string("the file has no '") + format::status_attribute +
+                        "' attribute, so it cannot be told whether the FEM run finished");
+  if (status->second != format::status_complete)
+    fail(file_path, std::string("the file is marked incomplete (") + format::status_attribute +
+                        " = '" + status->second + "'): the FEM run did not finish");
+
+  run.time = required_series(file, file_path, format::time_dataset, 0);
+  if (run.time.size() < 3)
+    fail(file_path, "the dataset 'time' has " + std::to_string(run.time.size()) +
+                        " values; a run needs at least 3 time steps");
+  for (std::size_t i = 1; i < run.time.size(); ++i)
+    if (!(run.time[i] > run.time[i - 1]))
+      fail(file_path, "the dataset 'time' is not strictly increasing (step " + std::to_string(i) +
+                          ")");
+  run.contact_force = required_series(file, file_path, format::contact_force_dataset, run.time.size());
+  run.approach = required_series(file, file_path, format::approach_dataset, run.time.size());
+  if (file.has_dataset(format::sphere_velocity_dataset))
+    run.sphere_velocity =
+        required_series(file, file_path, format::sphere_velocity_dataset, run.time.size());
+
+  const Results results(file_path, run.numeric_attributes);
+  if (results.summary_says_incomplete())
+    fail(file_path, std::string(format::summary_file) + " says the run is not complete");
+
+  // The reduced model starts at first contact with the speed there.
+  auto velocity = results.number(format::contact_velocity_key);
+  if (!velocity) velocity = results.number(format::impact_velocity_key);
+  if (!velocity) {
+    const auto parameter = run.text_attributes.find(format::impact_velocity_parameter);
+    if (parameter != run.text_attributes.end()) {
+      try {
+        velocity = std::stod(parameter->second);
+      } catch (const std::exception&) {
+      }
+    }
+  }
+  if (!velocity)
+    fail(file_path, std::string("no impact velocity: neither summary.json nor the file has '") +
+                        format::contact_velocity_key + "' or '" + format::impact_velocity_key +
+                        "', and the attribute '" + format::impact_velocity_parameter +
+                        "' is missing");
+  if (!(std::isfinite(*velocity) && *velocity > 0))
+    fail(file_path, "the impact velocity must be positive (got " + std::to_string(*velocity) + ")");
+  run.impact_velocity = *velocity;
+
+  auto mass = results.number(format::sphere_mass_key);
+  if (!mass) {
+    const auto attribute = run.numeric_attributes.find(format::sphere_mass_attribute);
+    if (attribute != run.numeric_attributes.end()) mass = attribute->second;
+  }
+  if (!mass)
+    fail(file_path, std::string("no sphere mass: neither summary.json has '") +
+                        format::sphere_mass_key + "' nor the file the attribute '" +
+                        format::sphere_mass_attribute + "'");
+  if (!(std::isfinite(*mass) && *mass > 0))
+    fail(file_path, "the sphere mass must be positive (got " + std::to_string(*mass) + ")");
+  run.mass = *mass;
+
+  // Contact: the episode of positive force around the peak force (robust to noise
+  // before and after it).
+  const std::size_t n = run.time.size();
+  const auto peak =
+      std::size_t(std::max_element(run.contact_force.begin(), run.contact_force.end()) -
+                  run.contact_force.begin());
+  if (!(run.contact_force[peak] > 0))
+    fail(file_path, "no contact: 'contact_force' is never positive (the sphere did not reach "
+                    "the plate within the simulated time?)");
+  std::size_t first = peak, last = peak;
+  while (first > 0 && run.contact_force[first - 1] > 0) --first;
+  while (last + 1 < n && run.contact_force[last + 1] > 0) ++last;
+  if (last - first < 2)
+    fail(file_path, "the contact lasts " + std::to_string(last - first + 1) +
+                        " time step(s); at least 3 are needed to fit a force history");
+
+  const auto restitution = results.number(format::restitution_key);
+  if (!restitution)
+    fail(file_path, "no restitution: the sphere did not separate from the plate within the "
+                    "simulated time (summary.json and the file have no '" +
+                        std::string(format::restitution_key) + "'); lengthen the run");
+  if (!(std::isfinite(*restitution) && *restitution > 0))
+    fail(file_path, "the restitution must be positive (got " + std::to_string(*restitution) + ")");
+  run.restitution = *restitution;
+
+  run.first_contact_time =
+      results.number(format::first_contact_time_key)
+          .value_or(first > 0 ? std::max(run.time[first - 1], force_zero_time(run, first, first + 1))
+                              : run.time[0]);
+  const double separation =
+      last + 1 < n ? std::min(run.time[last + 1], force_zero_time(run, last, last - 1))
+                   : run.time[last];
+  run.contact_time = results.number(format::contact_time_key)
+                         .value_or(separation - run.first_contact_time);
+  run.force_max = results.number(format::force_max_key).value_or(run.contact_force[peak]);
+  run.time_force_max = results.number(format::time_force_max_key).value_or(run.time[peak]);
+  run.approach_max = results.number(format::approach_max_key)
+                         .value_or(*std::max_element(run.approach.begin(), run.approach.end()));
+  return run;
+}
+
+Campaign read_runs(const std::vector<fs::path>& paths) {
+  Campaign campaign;
+  for (const auto& path : paths) {
+    try {
+      campaign.runs.push_back(read_fem_run(path));
+    } catch (const RunInputError& error) {
+      campaign.problems.push_back({path.string(), error.what()});
+    }
+  }
+  std::stable_sort(campaign.runs.begin(), campaign.runs.end(),
+                   [](const FemRun& a, const FemRun& b) {
+                     return a.impact_velocity < b.impact_velocity;
+                   });
+  return campaign;
+}
+
+namespace {
+
+struct IndexEntry {
+  fs::path path;
+  std::optional<double> velocity;
+};
+
+std::string describe(const IndexEntry& entry) {
+  std::ostringstream text;
+  if (entry.velocity) text << " (velocity " << *entry.velocity << " m/s)";
+  return text.str();
+}
+
+std::vector<IndexEntry> read_json_index(const fs::path& index_file) {
+  nlohmann::json index;
+  try {
+    std::ifstream in(index_file);
+    index = nlohmann::json::parse(in);
+  } catch (const nlohmann::json::exception& error) {
+    throw RunInputError("campaign index " + quoted(index_file) + " is not valid JSON (" +
+                        error.what() + ")");
+  }
+  const nlohmann::json& runs = index.is_object() && index.contains("runs") ? index["runs"] : index;
+  if (!runs.is_array())
+    throw RunInputError("campaign index " + quoted(index_file) +
+                        ": expected a list of runs, or an object with a list \"runs\"");
+  std::vector<IndexEntry> entries;
+  for (const auto& run : runs) {
+    IndexEntry entry;
+    if (run.is_string()) {
+      entry.path = run.get<std::string>();
+    } else if (run.is_object() && run.contains("path") && run["path"].is_string()) {
+      entry.path = run["path"].get<std::string>();
+      if (run.contains("velocity") && run["velocity"].is_number())
+        entry.velocity = run["velocity"].get<double>();
+    } else {
+      throw RunInputError("campaign index " + quoted(index_file) + ": the entry " + run.dump() +
+                          " has no \"path\"");
+    }
+    entries.push_back(entry);
+  }
+  return entries;
+}
+
+std::vector<std::string> split_csv_line(const std::string& line) {
+  std::vector<std::string> fields;
+  std::stringstream stream(line);
+  std::string field;
+  while (std::getline(stream, field, ',')) {
+    const auto begin = field.find_first_not_of(" \t\r\"");
+    const auto end = field.find_last_not_of(" \t\r\"");
+    fields.push_back(begin == std::string::npos ? "" : field.substr(begin, end - begin + 1));
+  }
+  return fields;
+}
+
+std::vector<IndexEntry> read_csv_index(const fs::path& index_file) {
+  std::ifstream in(index_file);
+  std::string line;
+  std::vector<std::string> header;
+  std::vector<IndexEntry> entries;
+  std::size_t path_column = 0, velocity_column = std::string::npos;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#' || line.find_first_not_of(" \t\r") == std::string::npos)
+      continue;
+    const auto fields = split_csv_line(line);
+    if (header.empty()) {
+      header = fields;
+      const auto path_at = std::find(header.begin(), header.end(), "path");
+      if (path_at == header.end())
+        throw RunInputError("campaign index " + quoted(index_file) +
+                            ": the header line has no column 'path'");
+      path_column = std::size_t(path_at - header.begin());
+      const auto velocity_at = std::find(header.begin(), header.end(), "velocity");
+      if (velocity_at != header.end()) velocity_column = std::size_t(velocity_at - header.begin());
+      continue;
+    }
+    if (fields.size() <= path_column || fields[path_column].empty())
+      throw RunInputError("campaign index " + quoted(index_file) + ": the line '" + line +
+                          "' has no path");
+    IndexEntry entry{fields[path_column], std::nullopt};
+    if (velocity_column < fields.size()) {
+      try {
+        entry.velocity = std::stod(fields[velocity_column]);
+      } catch (const std::exception&) {
+      }
+    }
+    entries.push_back(entry);
+  }
+  if (header.empty())
+    throw RunInputError("campaign index " + quoted(index_file) + " is empty");
+  return entries;
+}
+
+} // namespace
+
+Campaign read_campaign(const fs::path& directory) {
+  if (!fs::is_directory(directory))
+    throw RunInputError("campaign directory " + quoted(directory) +
+                        (fs::exists(directory) ? " is not a directory" : " does not exist"));
+  std::vector<IndexEntry> entries;
+  bool indexed = false;
+  if (fs::exists(directory / format::campaign_index_json)) {
+    entries = read_json_index(directory / format::campaign_index_json);
+    indexed = true;
+  } else if (fs::exists(directory / format::campaign_index_csv)) {
+    entries = read_csv_index(directory / format::campaign_index_csv);
+    indexed = true;
+  } else {
+    std::vector<fs::path> found;
+    for (const auto& item : fs::directory_iterator(directory)) {
+      const fs::path& path = item.path();
+      if (item.is_directory() && (fs::exists(path / format::history_file) ||
+                                  fs::exists(path / format::incomplete_history_file)))
+        found.push_back(path);
+      else if (item.is_regular_file() && path.extension() == ".h5")
+        found.push_back(path);
+    }
+    std::sort(found.begin(), found.end());
+    for (const auto& path : found) entries.push_back({path, std::nullopt});
+  }
+  if (entries.empty())
+    throw RunInputError("campaign directory " + quoted(directory) + " holds no run" +
+                        (indexed ? std::string(" (its index lists none)")
+                                 : std::string(" (no ") + format::campaign_index_json + " or " +
+                                       format::campaign_index_csv + ", no subdirectory with " +
+                                       format::history_file + ")"));
+
+  std::vector<fs::path> paths;
+  Campaign missing;
+  for (auto& entry : entries) {
+    if (entry.path.is_relative()) entry.path = directory / entry.path;
+    if (!fs::exists(entry.path) &&
+        !(entry.path.filename() == format::history_file &&
+          fs::exists(incomplete_sibling(entry.path)))) {
+      missing.problems.push_back(
+          {entry.path.string(), "run " + quoted(entry.path) + describe(entry) +
+                                    " is listed in the campaign index but does not exist"});
+      continue;
+    }
+    paths.push_back(entry.path);
+  }
+  Campaign campaign = read_runs(paths);
+  campaign.problems.insert(campaign.problems.begin(), missing.problems.begin(),
+                           missing.problems.end());
+  return campaign;
+}
+
+fs::path write_fem_run(const FemRun& run, const fs::path& directory, bool complete) {
+  fs::create_directories(directory);
+  const fs::path file_path =
+      directory / (complete ? format::history_file : format::incomplete_history_file);
+  auto file = hdf5::File::create(file_path.string());
+  file.write_attribute(format::status_attribute,
+                       std::string(complete ? format::status_complete : format::status_incomplete));
+  {
+    std::ostringstream velocity;
+    velocity.precision(17);
+    velocity << run.impact_velocity;
+    file.write_attribute(format::impact_velocity_parameter, velocity.str());
+  }
+  file.write_attribute(format::sphere_mass_attribute, run.mass);
+
+  const std::vector<std::pair<const char*, double>> results = {
+      {format::impact_velocity_key, run.impact_velocity},
+      {format::contact_velocity_key, run.impact_velocity},
+      {format::restitution_key, run.restitution},
+      {format::rebound_velocity_key, run.restitution * run.impact_velocity},
+      {format::first_contact_time_key, run.first_contact_time},
+      {format::contact_time_key, run.contact_time},
+      {format::force_max_key, run.force_max},
+      {format::time_force_max_key, run.time_force_max},
+      {format::approach_max_key, run.approach_max}};
+  for (const auto& [key, value] : results)
+    if (std::isfinite(value))
+      file.write_attribute(format::result_attribute_prefix + std::string(key), value);
+  for (const auto& [key, value] : run.text_attributes)
+    if (key != format::status_attribute && key != format::impact_velocity_parameter)
+      file.write_attribute(key, value);
+  for (const auto& [key, value] : run.numeric_attributes)
+    if (key != format::sphere_mass_attribute &&
+        key.rfind(format::result_attribute_prefix, 0) == std::string::npos)
+      file.write_attribute(key, value);
+
+  const struct {
+    const char* name;
+    const std::vector<double>& values;
+    const char* unit;
+    const char* description;
+  } series[] = {
+      {format::time_dataset, run.time, "s", "simulated time"},
+      {format::contact_force_dataset, run.contact_force, "N", "total normal contact force"},
+      {format::approach_dataset, run.approach, "m", "approach (indentation) of sphere and plate"},
+      {format::sphere_velocity_dataset, run.sphere_velocity, "m/s",
+       "centre-of-mass velocity of the sphere, downward positive"}};
+  for (const auto& s : series)
+    if (!s.values.empty()) file.write_dataset(s.name, s.values, s.unit, s.description);
+
+  const fs::path summary_file = summary_path_of(file_path);
+  if (complete) {
+    nlohmann::json summary;
+    summary[format::complete_key] = true;
+    for (const auto& [key, value] : results)
+      summary[key] = std::isfinite(value) ? nlohmann::json(value) : nlohmann::json(nullptr);
+    summary[format::sphere_mass_key] = run.mass;
+    std::ofstream out(summary_file);
+    out << summary.dump(2) << '\n';
+  } else {
+    fs::remove(summary_file);
+  }
+  return file_path;
+}
+
+} // namespace impact::postprocess

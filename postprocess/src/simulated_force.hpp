@@ -1,0 +1,23 @@
+#pragma once
+// The contact force of a reduced-model impact at given times, for fitting to a measured
+// force history: the library's reference integration (integrate_impact_history), sampled
+// uniformly, and the state interpolated between samples by cubic Hermite polynomials
+// (x with x', x' with x'' = -F/m), the force then evaluated from the law. With a few times
+// more samples than measured points the interpolation error is far below the integration
+// tolerance.
+
+#include <impact_reduced/impact_ode.hpp>
+
+#include <cstddef>
+#include <vector>
+
+namespace impact::postprocess::detail {
+
+/// F at each time in `times` [s since first contact]; 0 before contact and after separation.
+/// Returns false if the impact cannot be integrated (the law holds the body, non-finite
+/// force, invalid parameters).
+bool simulate_force(const reduced::ContactForceLaw& law, double mass, double velocity,
+                    const std::vector<double>& times, std::size_t points, double tolerance,
+                    double* force);
+
+} // namespace impact::postprocess::detail

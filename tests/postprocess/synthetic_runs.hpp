@@ -1,0 +1,76 @@
+#pragma once
+// FEM-format runs made by the reduced library itself: the Hunt–Crossley impact with known
+// (c, n, b), sampled like impact-fem (300 steps per contact time, continued after
+// separation), optionally with Gaussian noise of a given fraction of each history's peak.
+
+#include "impact_postprocess/fem_run.hpp"
+
+#include <impact_reduced/hunt_crossley.hpp>
+
+#include <filesystem>
+#include <random>
+#include <string>
+#include <unistd.h>
+
+namespace impact::testing {
+
+struct HuntCrossleyTruth {
+  double mass = 0.1;          // kg
+  double stiffness = 1.0e10;  // N/m^n
+  double exponent = 1.45;
+  double damping = 0.1;       // s/m
+};
+
+inline postprocess::FemRun synthetic_run(const HuntCrossleyTruth& truth, double velocity,
+                                         double noise = 0, unsigned seed = 1) {
+  const reduced::HuntCrossleyImpact impact(truth.mass, truth.stiffness, truth.exponent,
+                                           truth.damping, velocity);
+  const auto response = impact.response();
+  const std::size_t steps = 300;
+  const auto history = impact.history(steps + 1);
+  postprocess::FemRun run;
+  run.impact_velocity = velocity;
+  run.mass = truth.mass;
+  run.restitution = response.restitution;
+  run.first_contact_time = 0;
+  run.contact_time = response.contact_time;
+  run.force_max = response.force_max;
+  run.time_force_max = response.time_force_max;
+  run.approach_max = response.approach_max;
+  for (const auto& state : history) {
+    run.time.push_back(state.time);
+    run.contact_force.push_back(state.force);
+    run.approach.push_back(state.approach);
+    run.sphere_velocity.push_back(state.approach_rate);
+  }
+  // Free flight after separation (the plate is rigid here, so approach rate = sphere velocity).
+  const double step = response.contact_time / double(steps);
+  for (std::size_t k = steps + 1; k <= steps + 60; ++k) {
+    const double t = double(k) * step;
+    run.time.push_back(t);
+    run.contact_force.push_back(0);
+    run.approach.push_back(response.rebound_velocity * (t - response.contact_time));
+    run.sphere_velocity.push_back(response.rebound_velocity);
+  }
+  if (noise > 0) {
+    std::mt19937 generator(seed);
+    std::normal_distribution<double> normal(0, 1);
+    for (std::size_t i = 0; i < run.time.size(); ++i) {
+      run.contact_force[i] += noise * response.force_max * normal(generator);
+      run.approach[i] += noise * response.approach_max * normal(generator);
+      run.sphere_velocity[i] += noise * velocity * normal(generator);
+    }
+  }
+  return run;
+}
+
+/// A fresh directory for one test's files.
+inline std::filesystem::path scratch_directory(const std::string& name) {
+  const auto directory = std::filesystem::temp_directory_path() /
+                         ("impact_postprocess_" + std::to_string(::getpid()) + "_" + name);
+  std::filesystem::remove_all(directory);
+  std::filesystem::create_directories(directory);
+  return directory;
+}
+
+} // namespace impact::testing
