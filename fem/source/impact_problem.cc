@@ -16,6 +16,7 @@
 #include <nlohmann/json.hpp>
 
 #include <cmath>
+#include <csignal>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
@@ -26,6 +27,37 @@ namespace impact_fem
 {
   namespace
   {
+    // Set by SIGINT / SIGTERM during the time loop.
+    volatile std::sig_atomic_t interrupt_signal = 0;
+
+    extern "C" void
+    record_interrupt(int signal)
+    {
+      interrupt_signal = signal;
+    }
+
+    /// Catch SIGINT and SIGTERM while it lives, restore the old handlers after.
+    class ScopedInterruptHandler
+    {
+    public:
+      ScopedInterruptHandler()
+      {
+        interrupt_signal   = 0;
+        previous_interrupt = std::signal(SIGINT, record_interrupt);
+        previous_terminate = std::signal(SIGTERM, record_interrupt);
+      }
+      ~ScopedInterruptHandler()
+      {
+        std::signal(SIGINT, previous_interrupt);
+        std::signal(SIGTERM, previous_terminate);
+      }
+
+    private:
+      void (*previous_interrupt)(int);
+      void (*previous_terminate)(int);
+    };
+
+
     /**
      * Small strain of a vector-valued shape function (or field) in the
      * meridian plane, as a 3x3 tensor ordered (r, z, theta); the hoop strain
@@ -221,6 +253,10 @@ namespace impact_fem
     prm.enter_subsection("Plate");
     plate_material = materials::create_material(prm);
     prm.leave_subsection();
+
+    has_material_damping =
+      sphere_material->damping_tangent().norm() > 0 ||
+      plate_material->damping_tangent().norm() > 0;
 
     mesh.parse_parameters(prm, geometry);
     time_integrator.parse_parameters(prm);
@@ -574,11 +610,24 @@ namespace impact_fem
     displacement = 0;
     velocity.equ(static_press ? 0. : -impact_velocity, sphere_vertical);
     acceleration.equ(static_press ? 0. : -gravity, sphere_vertical);
-
-    weighted_gaps  = contact.weighted_gaps(displacement);
     initial_energy = 0.5 * mass_matrix.matrix_norm_square(velocity);
     time           = 0;
     step           = 0;
+
+    // The flight across the initial gap is a rigid motion known exactly:
+    // start at the first contact, so that every time step serves the
+    // contact phase.
+    if (!static_press && geometry.initial_gap > 0)
+      {
+        const double g0 = geometry.initial_gap, V = impact_velocity;
+        time = gravity > 0 ? (std::sqrt(V * V + 2 * gravity * g0) - V) / gravity :
+                             g0 / V;
+        displacement.equ(-g0, sphere_vertical);
+        velocity.equ(-(V + gravity * time), sphere_vertical);
+        gravity_work = body_force * displacement;
+      }
+    contact_velocity = impact_velocity + (static_press ? 0. : gravity * time);
+    weighted_gaps    = contact.weighted_gaps(displacement);
   }
 
 
@@ -600,8 +649,11 @@ namespace impact_fem
       TrilinosWrappers::MPI::Vector damping_force(rhs);
       boundary_damping_matrix.vmult(damping_force, tmp);
       rhs += damping_force;
-      material_damping_matrix.vmult(damping_force, tmp);
-      rhs += damping_force;
+      if (has_material_damping)
+        {
+          material_damping_matrix.vmult(damping_force, tmp);
+          rhs += damping_force;
+        }
       rhs += body_force;
     }
     {
@@ -642,8 +694,9 @@ namespace impact_fem
     mean_velocity *= 0.5;
     radiated_energy +=
       tn.time_step * boundary_damping_matrix.matrix_norm_square(mean_velocity);
-    dissipated_energy +=
-      tn.time_step * material_damping_matrix.matrix_norm_square(mean_velocity);
+    if (has_material_damping)
+      dissipated_energy +=
+        tn.time_step * material_damping_matrix.matrix_norm_square(mean_velocity);
     gravity_work += body_force * increment;
 
     displacement      = free_displacement;
@@ -686,10 +739,11 @@ namespace impact_fem
     const double reference_energy =
       initial_energy > 0 ? initial_energy : std::max(gravity_work, 1e-300);
 
+    TimerOutput::Scope t_stress(*computing_timer, "postprocess stress");
     // Largest von Mises stress over the quadrature points near the contact,
     // where it peaks (Hertz: 0.48 a below the surface); the rest of the
     // bodies only carries the much weaker radiated waves.
-    const double   stress_zone = 4 * mesh.contact_surface_radius;
+    const double   stress_zone = 2 * mesh.contact_surface_radius;
     const Point<2> contact_points[2] = {Point<2>(0, 0),
                                         Point<2>(0, geometry.initial_gap)};
     TrilinosWrappers::MPI::Vector ghosted(locally_owned_dofs,
@@ -787,8 +841,7 @@ namespace impact_fem
         separation_time = time;
         end_time        = std::min(end_time,
                             time + time_integrator.time_after_separation *
-                                     (time - geometry.initial_gap /
-                                               impact_velocity));
+                                     (time - history["time"].front()));
       }
   }
 
@@ -820,23 +873,58 @@ namespace impact_fem
                              std::vector<std::string>(2, "velocity"),
                              DataOut<2>::type_dof_data,
                              vector_field);
+    // Stress as cell averages over the quadrature points (r, z, theta
+    // components and von Mises).
     Vector<float> body(triangulation.n_active_cells());
-    for (const auto &cell : triangulation.active_cell_iterators())
+    std::vector<Vector<float>> stress(5, Vector<float>(triangulation.n_active_cells()));
+    const QGauss<2> quadrature(fe->degree + 1);
+    FEValues<2>     fe_values(*mapping,
+                          *fe,
+                          quadrature,
+                          update_values | update_gradients |
+                            update_quadrature_points);
+    std::vector<Tensor<1, 2>> values(quadrature.size());
+    std::vector<Tensor<2, 2>> gradients(quadrature.size());
+    const FEValuesExtractors::Vector u(0);
+    for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
-        body[cell->active_cell_index()] = cell->material_id();
+        {
+          const unsigned int index = cell->active_cell_index();
+          body[index] = cell->material_id();
+          fe_values.reinit(cell);
+          fe_values[u].get_function_values(ghosted_u, values);
+          fe_values[u].get_function_gradients(ghosted_u, gradients);
+          const auto C = material_of(cell->material_id()).stiffness_tangent();
+          for (unsigned int q = 0; q < quadrature.size(); ++q)
+            {
+              const SymmetricTensor<2, 3> sigma =
+                C * axisymmetric_strain(values[q],
+                                        gradients[q],
+                                        fe_values.quadrature_point(q)[0]);
+              const double weight = 1. / quadrature.size();
+              stress[0][index] += weight * sigma[0][0];
+              stress[1][index] += weight * sigma[1][1];
+              stress[2][index] += weight * sigma[2][2];
+              stress[3][index] += weight * sigma[0][1];
+              stress[4][index] += weight * von_mises(sigma);
+            }
+        }
     data_out.add_data_vector(body, "body");
+    const char *stress_names[5] = {
+      "stress_rr", "stress_zz", "stress_thetatheta", "stress_rz", "von_mises"};
+    for (unsigned int c = 0; c < 5; ++c)
+      data_out.add_data_vector(stress[c], stress_names[c]);
     data_out.build_patches(*mapping, fe->degree, DataOut<2>::curved_inner_cells);
 
     const std::string directory = output_directory + "/snapshots/";
-    static std::vector<std::pair<double, std::string>> records;
-    records.emplace_back(time,
+    snapshot_records.emplace_back(time,
                          "snapshots/" +
                            data_out.write_vtu_with_pvtu_record(
                              directory, "solution", snapshot, mpi_communicator, 4));
     if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
       {
         std::ofstream pvd(output_directory + "/snapshots.pvd");
-        DataOutBase::write_pvd_record(pvd, records);
+        DataOutBase::write_pvd_record(pvd, snapshot_records);
       }
   }
 
@@ -846,7 +934,7 @@ namespace impact_fem
   {
     const auto   now     = std::chrono::steady_clock::now();
     const double elapsed = std::chrono::duration<double>(now - wall_start).count();
-    if (!last && progress_interval > 0 &&
+    if (!last && progress_interval > 0 && !isatty(STDOUT_FILENO) &&
         std::chrono::duration<double>(now - last_progress).count() <
           progress_interval)
       return;
@@ -861,14 +949,26 @@ namespace impact_fem
                    hertz_contact_time *
                      (1 + time_integrator.time_after_separation));
     const double remaining =
-      time > 0 ? elapsed * std::max(0., expected_end - time) / time : 0;
+      time > history["time"].front() ?
+        elapsed * std::max(0., expected_end - time) /
+          (time - history["time"].front()) :
+        0;
+    // On a terminal the line is updated in place every step; in a log file
+    // a new line follows every progress interval.
+    static const bool terminal = isatty(STDOUT_FILENO);
+    if (terminal)
+      pcout << '\r';
     pcout << "  t = " << std::setw(8) << std::fixed << std::setprecision(2)
           << time * 1e6 << " us  step " << std::setw(5) << step
           << "  force " << std::setw(8) << std::setprecision(4)
           << history["contact_force"].back() / 1e3 << " kN  contact radius "
           << std::setw(6) << history["contact_radius"].back() * 1e3
-          << " mm  remaining " << std::setprecision(0) << remaining << " s"
-          << std::defaultfloat << std::setprecision(6) << std::endl;
+          << " mm  remaining " << std::setprecision(0) << remaining << " s "
+          << std::defaultfloat << std::setprecision(6);
+    if (!terminal || last)
+      pcout << std::endl;
+    else
+      pcout << std::flush;
   }
 
 
@@ -923,8 +1023,13 @@ namespace impact_fem
         penetration   = std::max(penetration, history["penetration"][i]);
       }
     const bool   separated        = !std::isnan(separation);
-    const double rebound_velocity = separated ? -history["sphere_velocity"][n - 1] : nan;
-    const double restitution      = rebound_velocity / impact_velocity;
+    // Rebound velocity at separation: gravity (if any) keeps acting on the
+    // free sphere afterwards, so the final velocity is taken back to it.
+    const double rebound_velocity =
+      separated ? -(history["sphere_velocity"][n - 1] -
+                    gravity * (t[n - 1] - separation)) :
+                  nan;
+    const double restitution = rebound_velocity / contact_velocity;
 
     // Where the initial energy went, at the end of the run.
     const double E0          = initial_energy;
@@ -942,6 +1047,7 @@ namespace impact_fem
     };
     summary["complete"]               = complete;
     summary["impact_velocity"]        = impact_velocity;
+    summary["contact_velocity"]       = contact_velocity;
     summary["first_contact_time"]     = number(first_contact);
     summary["separation_time"]        = number(separation);
     summary["contact_time"]           = number(contact_time);
@@ -997,14 +1103,36 @@ namespace impact_fem
     }
     std::filesystem::rename(summary_file + ".tmp", summary_file);
 
+    if (static_press)
+      {
+        std::cout << "\nResult of the static press (" << output_directory
+                  << "):\n"
+                  << std::setprecision(5) << "  contact force     "
+                  << force[n - 1] << " N\n"
+                  << "  contact radius    "
+                  << history["contact_radius"][n - 1] * 1e3 << " mm\n"
+                  << "  max pressure      "
+                  << history["max_pressure"][n - 1] / 1e9 << " GPa\n"
+                  << "  approach          " << history["approach"][n - 1] * 1e6
+                  << " um\n"
+                  << "  max penetration   " << penetration * 1e9 << " nm\n"
+                  << "  cells " << triangulation.n_global_active_cells()
+                  << ", dofs " << dof_handler.n_dofs() << ", wall time "
+                  << wall_time << " s" << std::endl;
+        return;
+      }
     std::cout << "\nResult (" << output_directory << "):\n"
               << std::setprecision(5)
+              << "  first contact     " << first_contact * 1e6
+              << " us, separation " << separation * 1e6 << " us\n"
               << "  contact time      " << contact_time * 1e6 << " us\n"
               << "  peak force        " << force[peak] / 1e3 << " kN at "
               << t[peak] * 1e6 << " us\n"
               << "  peak approach     " << approach_max * 1e6 << " um\n"
               << "  rebound velocity  " << rebound_velocity << " m/s\n"
-              << "  restitution       " << restitution << "\n"
+              << "  restitution       " << restitution
+              << " (lost energy fraction " << (1 - restitution * restitution) * 100
+              << " %)\n"
               << "  energy: sphere vibration " << sphere_vib / E0 * 100
               << " %, plate " << plate_stored / E0 * 100 << " %, radiated "
               << history["radiated_energy"][n - 1] / E0 * 100
@@ -1062,9 +1190,9 @@ namespace impact_fem
            {"sphere_velocity", "m/s", "centre-of-mass velocity of the sphere, downward positive"},
            {"plate_displacement", "m", "mean vertical displacement of the plate bottom, downward positive"},
            {"approach", "m", "sphere_displacement - initial gap - plate_displacement"},
-           {"contact_radius", "m", "radius of the outermost contact node carrying pressure"},
+           {"contact_radius", "m", "contact radius: between the outermost loaded node and the next, where p^2 extrapolated linearly in r^2 vanishes"},
            {"max_pressure", "Pa", "largest nodal contact pressure"},
-           {"max_von_mises", "Pa", "largest von Mises stress in both bodies within 4 contact surface radii of the contact point"},
+           {"max_von_mises", "Pa", "largest von Mises stress in both bodies within 2 contact surface radii of the contact point"},
            {"max_von_mises_r", "m", "radial position of max_von_mises"},
            {"max_von_mises_z", "m", "axial position of max_von_mises (reference configuration)"},
            {"kinetic_energy", "J", "kinetic energy of both bodies"},
@@ -1091,14 +1219,40 @@ namespace impact_fem
     };
     write_snapshot_if_due();
 
+    // An interrupted run (SIGINT, SIGTERM) and a failing one keep what they
+    // computed in history.incomplete.h5, which is also refreshed every
+    // minute so that even a killed run leaves its history behind.
+    const ScopedInterruptHandler interrupt_handler;
+    auto last_checkpoint = std::chrono::steady_clock::now();
     try
       {
         while (time < end_time - 0.5 * time_integrator.time_step)
           {
+            const int signal =
+              Utilities::MPI::max(static_cast<int>(interrupt_signal),
+                                  mpi_communicator);
+            AssertThrow(signal == 0,
+                        ExcMessage("Interrupted by signal " +
+                                   std::to_string(signal) + " at t = " +
+                                   std::to_string(time) +
+                                   " s; the history so far is in " +
+                                   output_directory +
+                                   "/history.incomplete.h5."));
             solve_time_step();
             record_step();
             write_snapshot_if_due();
             print_progress(false);
+
+            const bool checkpoint_due = Utilities::MPI::broadcast(
+              mpi_communicator,
+              std::chrono::steady_clock::now() - last_checkpoint >
+                std::chrono::seconds(60),
+              0);
+            if (checkpoint_due)
+              {
+                write_results(false);
+                last_checkpoint = std::chrono::steady_clock::now();
+              }
           }
         print_progress(true);
       }
@@ -1112,6 +1266,8 @@ namespace impact_fem
       pcout << "Warning: the bodies did not separate before the end of the "
                "run (Time integration/Maximum time)." << std::endl;
     write_results(true);
+    if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+      std::filesystem::remove(output_directory + "/history.incomplete.h5");
     computing_timer->print_summary();
   }
 } // namespace impact_fem

@@ -47,6 +47,13 @@ with open(prm, "w") as f:
 expect_failure("malformed_file", None, ["Impact velocity"], extra_args=[prm])
 expect_failure("missing_file", None, ["parameter file"], extra_args=[os.path.join(work, "none.prm")])
 
+# --print-parameters lists every entry with its default and unit.
+import subprocess
+listing = subprocess.run([binary, "--print-parameters"], capture_output=True, text=True)
+checks.check(listing.returncode == 0 and "set Impact velocity = 1" in listing.stdout
+             and "[m/s]" in listing.stdout and "subsection Time integration" in listing.stdout,
+             "--print-parameters lists the entries with defaults and units")
+
 # A failure in the middle of the run: the contact iteration limited to one
 # step cannot converge once several nodes touch.
 directory = expect_failure("solver", {"Contact/Maximum active set iterations": 1},

@@ -20,6 +20,8 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <chrono>
+#include <utility>
+#include <vector>
 #include <memory>
 #include <string>
 
@@ -85,8 +87,10 @@ namespace impact_fem
     bool         absorbing_boundaries = true;
     std::unique_ptr<materials::Interface> sphere_material, plate_material;
     double       sphere_mass = 0;           // [kg]
+    bool         has_material_damping = false; // any viscous material
     double       hertz_contact_time = 0;    // [s]
     double       initial_energy = 0;        // [J]
+    double       contact_velocity = 0;      // speed at first contact [m/s]
 
     SpherePlateMesh mesh;
     Newmark         time_integrator;
@@ -128,6 +132,7 @@ namespace impact_fem
     double         gravity_work = 0;
 
     History history;
+    std::vector<std::pair<double, std::string>> snapshot_records; // (time, .pvtu)
     std::chrono::steady_clock::time_point wall_start, last_progress;
     double       end_time = 0;
     double       separation_time = -1;

@@ -566,10 +566,23 @@ namespace impact_fem
   double
   MortarContact::contact_radius(const Vector<double> &pressures) const
   {
-    double radius = 0;
-    for (unsigned int j = 0; j < n_contact_nodes(); ++j)
+    // The edge lies between the outermost loaded node and the next one.
+    // Within that interval it is placed where p^2, linear in r^2 for the
+    // Hertz profile p0^2 (1 - r^2/a^2), extrapolated from the two outermost
+    // loaded nodes, vanishes.
+    const unsigned int n    = n_contact_nodes();
+    unsigned int       last = n;
+    for (unsigned int j = 0; j < n; ++j)
       if (pressures[j] > 0)
-        radius = node_radius[j];
-    return radius;
+        last = j;
+    if (last == n)
+      return 0;
+    if (last == 0 || last + 1 == n || !(pressures[last - 1] > pressures[last]))
+      return node_radius[last];
+    const double r1 = node_radius[last - 1], r2 = node_radius[last];
+    const double q1 = pressures[last - 1] * pressures[last - 1],
+                 q2 = pressures[last] * pressures[last];
+    const double edge_squared = r2 * r2 + q2 * (r2 * r2 - r1 * r1) / (q1 - q2);
+    return std::clamp(std::sqrt(edge_squared), r2, node_radius[last + 1]);
   }
 } // namespace impact_fem

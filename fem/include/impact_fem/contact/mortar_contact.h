@@ -91,7 +91,12 @@ namespace impact_fem
     double
     total_force(const Vector<double> &pressures) const;
 
-    /// Radius of the outermost node carrying pressure [m] (0 if none).
+    /**
+     * Contact radius [m] (0 if no contact): between the outermost node
+     * carrying pressure and the next node, where the Hertz-shaped
+     * extrapolation of the two outermost nodal pressures (p^2 linear in
+     * r^2) vanishes.
+     */
     double
     contact_radius(const Vector<double> &pressures) const;
 

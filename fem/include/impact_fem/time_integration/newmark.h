@@ -42,12 +42,10 @@ namespace impact_fem
     double time_after_separation = 0; ///< fraction of the contact time [-]
     double maximum_time = 0;          ///< [s], 0: automatic
 
-    // Coefficients of the update, see the class documentation.
+    // Coefficients of the update, see the class documentation; after the
+    // solve a_{n+1} = c_M (u_{n+1} - u_n) - c_v v_n - c_a a_n and
+    // v_{n+1} = v_n + dt ((1 - gamma) a_n + gamma a_{n+1}).
     double c_M = 0, c_C = 0, c_v = 0, c_a = 0, d_v = 0, d_a = 0;
-
-    /// Acceleration at n+1 from the displacement increment.
-    /// a_{n+1} = c_M (u_{n+1} - u_n) - c_v v_n - c_a a_n
-    /// Velocity: v_{n+1} = v_n + dt ((1 - gamma) a_n + gamma a_{n+1}).
   };
 } // namespace impact_fem
 
