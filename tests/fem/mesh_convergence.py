@@ -5,7 +5,8 @@ step on all. Prints the observed order p = log2(|f0 - f1| / |f1 - f2|) and the
 Richardson extrapolation f2 + (f2 - f1) / (2^p - 1), with the observed order
 when it lies in [1, 6] and the element order 2 otherwise (values not yet in
 the asymptotic range); the extrapolated value must agree with the finest
-mesh within 0.5 %.
+mesh within 0.5 %, and the observed order must be at least the element order
+(within 0.5).
 """
 import math
 from fem_test_lib import *
@@ -38,4 +39,8 @@ for key in ("contact_time", "force_max"):
           f"extrapolated (order {used:.2f}) {extrapolated:.6g}, finest differs "
           f"by {difference*100:.3f} %")
     checks.check(difference < 0.005, f"{key}: extrapolated value within 0.5 % of the finest mesh")
+    # The element order is 2. The differences between meshes are ~1e-4 relative, where the
+    # node-by-node release of the contact blurs the asymptotic rate, so the check is that
+    # the error falls at least as fast as the element order (within 0.5), not an equality.
+    checks.check(order >= 1.5, f"{key}: observed order {order:.2f} >= element order 2 - 0.5")
 checks.finish()
