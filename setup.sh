@@ -12,7 +12,8 @@ packages=(
   libhdf5-openmpi-dev gmsh                  # result files, mesh generation
   nlohmann-json3-dev                        # JSON output of tools
   numdiff                                   # tolerant comparison of outputs in tests
-  python3 python3-matplotlib python3-h5py   # figures of the report
+  python3 python3-matplotlib python3-h5py   # figures of the report, HDF5 checks in fem tests
+  chromium fonts-dejavu-core                # the report's rendering test (headless screenshot)
 )
 
 missing=()

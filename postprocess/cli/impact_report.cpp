@@ -1,0 +1,301 @@
+// impact-report: the model-validity report of a campaign of FEM impact runs (HTML page with
+// embedded figures, Markdown twin, figure PNGs beside them).
+// Exit codes: 0 complete report; 2 bad input (the report says what is missing); 3 a fit did
+// not converge (numbers marked so); 4 the figures could not be drawn (report without them);
+// 1 internal error. A report is written in every case but a usage error and exit 1.
+
+#include "impact_postprocess/calibration.hpp"
+#include "impact_postprocess/calibration_json.hpp"
+#include "impact_postprocess/fem_run.hpp"
+#include "impact_postprocess/fem_run_format.hpp"
+#include "impact_postprocess/report.hpp"
+
+#include <impact_reduced/invalid_input.hpp>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <sys/wait.h>
+
+namespace {
+
+namespace fs = std::filesystem;
+using json = nlohmann::json;
+using namespace impact::postprocess;
+
+const char* usage = R"(usage: impact-report --campaign DIR --output DIR [--calibration FILE] [--quiet]
+       impact-report RUN... --output DIR [--calibration FILE] [--quiet]
+
+Writes the model-validity report of a campaign of impact-fem runs: where the calibrated
+Hunt-Crossley law F = c x^n (1 + b dx/dt) reproduces the FEM, compared with the published
+b = 0.1 s/m, Hertz and the best comparison law.
+
+  --campaign DIR       the runs of a campaign (as impact-calibrate reads them)
+  RUN                  a run directory or HDF5 file of impact-fem (instead of --campaign)
+  --output DIR         where report.html, report.md, figures/ and report_data.json go
+                       (created if needed)
+  --calibration FILE   the JSON of impact-calibrate for these runs; without it the runs
+                       are calibrated here (all laws) and DIR/calibration.json is written
+  --quiet              no progress messages on stderr
+  --help               this text
+
+Environment: IMPACT_REPORT_PYTHON, the Python 3 with matplotlib that draws the figures
+(default: the one found when the project was configured).
+
+Exit codes: 0 complete report, 2 bad input (the report says what is missing), 3 a fit did
+not converge, 4 the figures could not be drawn, 1 internal error.
+)";
+
+class UsageError : public std::runtime_error {
+public:
+  using std::runtime_error::runtime_error;
+};
+
+struct Arguments {
+  std::vector<fs::path> runs;
+  std::optional<fs::path> campaign;
+  std::optional<fs::path> output;
+  std::optional<fs::path> calibration;
+  bool quiet = false;
+  bool help = false;
+};
+
+Arguments parse(int argc, char** argv) {
+  Arguments arguments;
+  for (int i = 1; i < argc; ++i) {
+    const std::string argument = argv[i];
+    const auto value = [&]() -> std::string {
+      if (i + 1 >= argc) throw UsageError("the option " + argument + " needs a value");
+      return argv[++i];
+    };
+    if (argument == "--help" || argument == "-h") arguments.help = true;
+    else if (argument == "--quiet") arguments.quiet = true;
+    else if (argument == "--campaign") arguments.campaign = value();
+    else if (argument == "--output") arguments.output = value();
+    else if (argument == "--calibration") arguments.calibration = value();
+    else if (argument.rfind("--", 0) == 0) throw UsageError("unknown option '" + argument + "'");
+    else arguments.runs.emplace_back(argument);
+  }
+  if (arguments.help) return arguments;
+  if (!arguments.output) throw UsageError("--output DIR is required");
+  if (arguments.campaign && !arguments.runs.empty())
+    throw UsageError("give either run files or --campaign DIR, not both");
+  if (!arguments.campaign && arguments.runs.empty())
+    throw UsageError("no input: give run files or --campaign DIR");
+  if (fs::exists(*arguments.output) && !fs::is_directory(*arguments.output))
+    throw UsageError("--output '" + arguments.output->string() + "' exists and is not a directory");
+  return arguments;
+}
+
+std::string shell_quote(const std::string& text) {
+  std::string quoted = "'";
+  for (char c : text) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return quoted + "'";
+}
+
+// The figure script: installed beside the executable's share directory, else in the source
+// tree the executable was built from.
+fs::path figure_script() {
+  std::error_code error;
+  const fs::path executable = fs::read_symlink("/proc/self/exe", error);
+  if (!error) {
+    const fs::path installed =
+        executable.parent_path().parent_path() / "share" / "impact" / "report_figures.py";
+    if (fs::exists(installed)) return installed;
+  }
+  return IMPACT_REPORT_FIGURE_SCRIPT;
+}
+
+std::string python_interpreter() {
+  const char* chosen = std::getenv("IMPACT_REPORT_PYTHON");
+  return chosen && *chosen ? chosen : IMPACT_REPORT_PYTHON;
+}
+
+// Draws the figures; returns the problems (none when every figure file was written).
+std::vector<ReportProblem> draw_figures(const Report& report, const fs::path& output,
+                                        const fs::path& figures) {
+  const auto expected = report_figures(report);
+  if (expected.empty()) return {};
+  fs::create_directories(figures);
+  for (const auto& figure : expected) fs::remove(figures / figure.file); // no stale image
+  const fs::path data = output / "report_data.json";
+  {
+    std::ofstream out(data);
+    out << figure_specification(report).dump() << '\n';
+    if (!out) return {{data.string(), "figures", "cannot write the figure data file"}};
+  }
+  const fs::path log = output / "figures.log";
+  const std::string python = python_interpreter();
+  const fs::path script = figure_script();
+  const std::string command = shell_quote(python) + " " + shell_quote(script.string()) + " " +
+                              shell_quote(data.string()) + " " + shell_quote(figures.string()) +
+                              " >" + shell_quote(log.string()) + " 2>&1";
+  const int status = std::system(command.c_str());
+  const int code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  std::vector<ReportProblem> problems;
+  if (code != 0) {
+    std::string message;
+    {
+      std::ifstream in(log);
+      std::string line;
+      while (std::getline(in, line))
+        if (!line.empty()) message = line; // the last line says what failed
+    }
+    problems.push_back({script.string(), "figures",
+                        "the figures could not be drawn (" + python + " " + script.string() +
+                            " exited with " + std::to_string(code) + ": " +
+                            (message.empty() ? "no message" : message) +
+                            "); install python3-matplotlib or set IMPACT_REPORT_PYTHON"});
+  }
+  for (const auto& figure : expected)
+    if (!fs::exists(figures / figure.file) || fs::file_size(figures / figure.file) == 0)
+      problems.push_back({(figures / figure.file).string(), "figures", "the figure was not drawn"});
+  return problems;
+}
+
+// Without an index, the campaign reader finds runs by their HDF5 files, so a run directory
+// whose HDF5 file is missing would go unnoticed: it is found here by its summary.json.
+std::vector<InputProblem> runs_without_history(const fs::path& campaign) {
+  namespace format = fem_format;
+  std::vector<InputProblem> problems;
+  if (!fs::is_directory(campaign) || fs::exists(campaign / format::campaign_index_json) ||
+      fs::exists(campaign / format::campaign_index_csv))
+    return problems;
+  for (const auto& item : fs::directory_iterator(campaign)) {
+    const fs::path& path = item.path();
+    if (item.is_directory() && fs::exists(path / format::summary_file) &&
+        !fs::exists(path / format::history_file) &&
+        !fs::exists(path / format::incomplete_history_file))
+      problems.push_back({path.string(), "run '" + path.string() + "': the directory holds " +
+                                             format::summary_file + " but no " +
+                                             format::history_file +
+                                             ": the HDF5 file of the run is missing"});
+  }
+  return problems;
+}
+
+// The calibration: the given JSON, or one computed here (and written beside the report).
+json obtain_calibration(const Arguments& arguments, const Campaign& input,
+                        std::vector<ReportProblem>& problems, std::string& source) {
+  if (arguments.calibration) {
+    source = arguments.calibration->string();
+    if (!fs::is_regular_file(*arguments.calibration)) {
+      problems.push_back({source, "input", "the calibration file does not exist: the report "
+                                           "shows the FEM data only"});
+      return nullptr;
+    }
+    try {
+      std::ifstream in(*arguments.calibration);
+      json calibration = json::parse(in);
+      if (!calibration.is_object() || calibration.value("format", "") != "impact-calibration")
+        throw std::runtime_error("it is not a calibration of impact-calibrate (no \"format\": "
+                                 "\"impact-calibration\")");
+      return calibration;
+    } catch (const std::exception& error) {
+      problems.push_back({source, "input", std::string("the calibration cannot be read: ") +
+                                               error.what() + "; the report shows the FEM data only"});
+      return nullptr;
+    }
+  }
+  if (input.runs.empty()) return nullptr;
+  CalibrationOptions options;
+  if (!arguments.quiet)
+    options.progress = [](const std::string& line) {
+      std::cerr << "impact-report: calibration: " << line << std::endl;
+    };
+  Calibration calibration = calibrate(input.runs, options);
+  std::vector<CalibrationProblem> all;
+  for (const auto& problem : input.problems)
+    all.push_back({problem.source, "input", problem.message});
+  if (!calibration.campaign.fitted)
+    all.push_back({arguments.campaign ? arguments.campaign->string() : "", "input",
+                   "campaign not fitted: " + calibration.campaign.reason});
+  all.insert(all.end(), calibration.problems.begin(), calibration.problems.end());
+  calibration.problems = all;
+  const json result = to_json(calibration);
+  const fs::path file = *arguments.output / "calibration.json";
+  {
+    std::ofstream out(file);
+    out << result.dump(2) << '\n';
+  }
+  source = file.string() + " (calibrated by impact-report)";
+  return result;
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+  Arguments arguments;
+  try {
+    arguments = parse(argc, argv);
+  } catch (const UsageError& error) {
+    std::cerr << "impact-report: error: " << error.what()
+              << "\n(impact-report --help for the usage)\n";
+    return 2;
+  }
+  if (arguments.help) {
+    std::cout << usage;
+    return 0;
+  }
+  try {
+    const fs::path output = *arguments.output;
+    fs::create_directories(output);
+
+    Campaign input;
+    std::vector<ReportProblem> problems;
+    std::string campaign_source;
+    if (arguments.campaign) {
+      campaign_source = arguments.campaign->string();
+      try {
+        input = read_campaign(*arguments.campaign);
+      } catch (const RunInputError& error) {
+        input.problems.push_back({campaign_source, error.what()});
+      }
+      const auto lost = runs_without_history(*arguments.campaign);
+      input.problems.insert(input.problems.end(), lost.begin(), lost.end());
+    } else {
+      for (const auto& run : arguments.runs)
+        campaign_source += (campaign_source.empty() ? "" : ", ") + run.string();
+      input = read_runs(arguments.runs);
+    }
+
+    std::string calibration_source;
+    const json calibration = obtain_calibration(arguments, input, problems, calibration_source);
+    Report report = build_report(input, calibration, problems, campaign_source, calibration_source);
+
+    const fs::path figures_directory = "figures";
+    const auto figure_problems = draw_figures(report, output, output / figures_directory);
+    report.problems.insert(report.problems.end(), figure_problems.begin(), figure_problems.end());
+
+    write_report_markdown(report, output / "report.md", figures_directory);
+    write_report_html(report, output / "report.html", figures_directory);
+
+    bool input_problem = false, convergence_problem = false, figure_problem = false;
+    for (const auto& problem : report.problems) {
+      input_problem = input_problem || problem.kind == "input";
+      convergence_problem = convergence_problem || problem.kind == "convergence";
+      figure_problem = figure_problem || problem.kind == "figures";
+      std::cerr << "impact-report: " << (problem.kind == "input" ? "error" : "warning") << ": "
+                << (problem.source.empty() ? "" : problem.source + ": ") << problem.message
+                << '\n';
+    }
+    if (!report.problems.empty())
+      std::cerr << "impact-report: the report is incomplete; it lists these problems\n";
+    std::cout << "markdown written to " << (output / "report.md").string() << '\n'
+              << "report written to " << (output / "report.html").string() << '\n';
+    if (input_problem) return 2;
+    if (convergence_problem) return 3;
+    return figure_problem ? 4 : 0;
+  } catch (const impact::reduced::InvalidInput& error) {
+    std::cerr << "impact-report: error: " << error.what() << '\n';
+    return 2;
+  } catch (const std::exception& error) {
+    std::cerr << "impact-report: internal error: " << error.what() << '\n';
+    return 1;
+  }
+}

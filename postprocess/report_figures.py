@@ -1,0 +1,96 @@
+#!/usr/bin/env python3
+"""Draws the figures of impact-report from the data file it writes.
+
+usage: report_figures.py DATA.json OUTPUT_DIRECTORY
+
+DATA.json = {"figures": [{"file", "title", "columns", "panels": [panel, ...]}, ...]}, a panel =
+{"title", "xlabel", "ylabel", "series": [{"label", "x", "y", "color", "linestyle", "marker",
+"yerr": [lower, upper] (optional)}], "hlines": [{"y", "label", "color", "linestyle"}],
+"bands": [{"y0", "y1", "color", "alpha", "label"}], "note"}. Every number is computed by
+impact-report (C++); this script only draws (null = missing value, not drawn).
+Exit codes: 0 all figures written, 1 an error (message on stderr).
+"""
+
+import json
+import math
+import os
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+
+def values(items):
+    return [math.nan if v is None else float(v) for v in items]
+
+
+def draw_panel(axes, panel):
+    for series in panel.get("series", []):
+        x, y = values(series["x"]), values(series["y"])
+        if not any(math.isfinite(v) for v in y):
+            continue
+        style = dict(color=series.get("color", "black"), label=series.get("label"),
+                     linestyle=series.get("linestyle", "-") or "-",
+                     marker=series.get("marker") or None, markersize=5)
+        if "yerr" in series:
+            lower, upper = values(series["yerr"][0]), values(series["yerr"][1])
+            errors = [[0 if not math.isfinite(v) else v for v in lower],
+                      [0 if not math.isfinite(v) else v for v in upper]]
+            axes.errorbar(x, y, yerr=errors, capsize=3, **style)
+        else:
+            axes.plot(x, y, **style)
+    for band in panel.get("bands", []):
+        axes.axhspan(band["y0"], band["y1"], color=band.get("color", "grey"),
+                     alpha=band.get("alpha", 0.15), label=band.get("label"))
+    for line in panel.get("hlines", []):
+        if line.get("y") is not None:
+            axes.axhline(line["y"], color=line.get("color", "grey"),
+                         linestyle=line.get("linestyle", ":"), label=line.get("label"))
+    if panel.get("note"):
+        axes.text(0.5, 0.5, panel["note"], transform=axes.transAxes, ha="center",
+                  va="center", fontsize=8, wrap=True, color="tab:red")
+    axes.set_title(panel.get("title", ""), fontsize=10)
+    axes.set_xlabel(panel.get("xlabel", ""))
+    axes.set_ylabel(panel.get("ylabel", ""))
+    axes.grid(True, alpha=0.3)
+    if axes.get_legend_handles_labels()[0]:
+        axes.legend(fontsize=7)
+
+
+def draw_figure(figure, directory):
+    panels = figure["panels"]
+    columns = max(1, min(int(figure.get("columns", 2)), len(panels)))
+    rows = max(1, math.ceil(len(panels) / columns))
+    width = 5.0 * columns if columns > 1 else 8.0
+    fig, axes = plt.subplots(rows, columns, figsize=(width, 3.6 * rows), squeeze=False)
+    for index, panel in enumerate(panels):
+        draw_panel(axes[index // columns][index % columns], panel)
+    for index in range(len(panels), rows * columns):
+        axes[index // columns][index % columns].set_visible(False)
+    fig.suptitle(figure.get("title", ""))
+    fig.tight_layout()
+    path = os.path.join(directory, figure["file"])
+    fig.savefig(path, dpi=90)
+    plt.close(fig)
+
+
+def main(arguments):
+    if len(arguments) != 3:
+        sys.stderr.write(__doc__)
+        return 1
+    with open(arguments[1], encoding="utf-8") as data_file:
+        data = json.load(data_file)
+    os.makedirs(arguments[2], exist_ok=True)
+    for figure in data["figures"]:
+        draw_figure(figure, arguments[2])
+    return 0
+
+
+if __name__ == "__main__":
+    try:
+        sys.exit(main(sys.argv))
+    except Exception as error:  # report any failure as one line for impact-report
+        sys.stderr.write("report_figures.py: error: %s: %s\n" % (type(error).__name__, error))
+        sys.exit(1)

@@ -1,0 +1,591 @@
+// impact-report as a user runs it. A small synthetic campaign (four velocities, FEM format,
+// made by the reduced library with a damping that grows with V so that the calibrated
+// Hunt–Crossley model holds only in part of the range) is calibrated by impact-calibrate and
+// reported: the HTML and Markdown exist, every figure is a valid PNG, the tables hold the
+// calibration JSON's numbers, and the page renders in headless Chromium (not blank). Each
+// bad input gives its exit code, a message, and a report that says what is missing.
+
+#include "synthetic_runs.hpp"
+
+#include "impact_postprocess/fem_run.hpp"
+#include "impact_postprocess/fem_run_format.hpp"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <sys/wait.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+namespace {
+
+using namespace impact::postprocess;
+using json = nlohmann::json;
+namespace fs = std::filesystem;
+
+struct CliRun {
+  int exit_code;
+  std::string out;
+  std::string err;
+};
+
+std::string read_text(const fs::path& path) {
+  std::ifstream file(path, std::ios::binary);
+  std::stringstream text;
+  text << file.rdbuf();
+  return text.str();
+}
+
+std::string quote(const std::string& text) { return "'" + text + "'"; }
+
+CliRun run_command(const std::string& command, const fs::path& scratch) {
+  const std::string full = command + " >" + quote((scratch / "out.txt").string()) + " 2>" +
+                           quote((scratch / "err.txt").string());
+  const int status = std::system(full.c_str());
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, read_text(scratch / "out.txt"),
+          read_text(scratch / "err.txt")};
+}
+
+CliRun run_tool(const char* tool, const std::vector<std::string>& arguments,
+                const fs::path& scratch, const std::string& environment = "") {
+  std::string command = environment + quote(tool);
+  for (const auto& argument : arguments) command += " " + quote(argument);
+  return run_command(command, scratch);
+}
+
+bool contains(const std::string& text, const std::string& part) {
+  return text.find(part) != std::string::npos;
+}
+
+// The synthetic FEM: Hunt–Crossley with b growing with V (so that one constant b cannot
+// hold everywhere), and the scenario's materials recorded as impact-fem records them.
+FemRun campaign_run(double velocity) {
+  impact::testing::HuntCrossleyTruth truth;
+  truth.damping = 0.06 + 0.03 * velocity;
+  FemRun run = impact::testing::synthetic_run(truth, velocity);
+  for (const std::string body : {"Sphere", "Plate"}) {
+    run.text_attributes[body + "/Material model"] = "elastic";
+    run.text_attributes[body + "/Elastic/Young's modulus"] = "2e11";
+    run.text_attributes[body + "/Elastic/Poisson's ratio"] = "0.25";
+  }
+  run.text_attributes["Scenario/Sphere radius"] = "0.01452";
+  return run;
+}
+
+// Adds FEM-only results to a run's summary.json (energy balance, stresses).
+void add_to_summary(const fs::path& run_directory, const json& extra) {
+  const fs::path file = run_directory / fem_format::summary_file;
+  json summary = json::parse(read_text(file));
+  summary.update(extra);
+  std::ofstream(file) << summary.dump(2);
+}
+
+// ---- PNG and Markdown readers ---------------------------------------------------------
+
+struct PngSize {
+  bool valid;
+  unsigned width, height;
+};
+
+PngSize png_size(const std::string& bytes) {
+  static const std::string signature("\x89PNG\r\n\x1a\n", 8);
+  if (bytes.size() < 24 || bytes.compare(0, 8, signature) != 0 || bytes.compare(12, 4, "IHDR") != 0)
+    return {false, 0, 0};
+  const auto word = [&](std::size_t at) {
+    return unsigned((unsigned char)bytes[at]) << 24 | unsigned((unsigned char)bytes[at + 1]) << 16 |
+           unsigned((unsigned char)bytes[at + 2]) << 8 | unsigned((unsigned char)bytes[at + 3]);
+  };
+  return {true, word(16), word(20)};
+}
+
+using MarkdownTable = std::vector<std::vector<std::string>>; // header row first
+
+std::vector<std::string> split_row(const std::string& line) {
+  std::vector<std::string> cells;
+  std::string cell;
+  for (std::size_t i = 1; i < line.size(); ++i) {
+    if (line[i] == '\\' && i + 1 < line.size() && line[i + 1] == '|') {
+      cell += '|';
+      ++i;
+    } else if (line[i] == '|') {
+      const auto begin = cell.find_first_not_of(' ');
+      const auto end = cell.find_last_not_of(' ');
+      cells.push_back(begin == std::string::npos ? "" : cell.substr(begin, end - begin + 1));
+      cell.clear();
+    } else {
+      cell += line[i];
+    }
+  }
+  return cells;
+}
+
+std::vector<MarkdownTable> markdown_tables(const std::string& markdown) {
+  std::vector<MarkdownTable> tables;
+  std::stringstream stream(markdown);
+  std::string line;
+  MarkdownTable current;
+  while (std::getline(stream, line)) {
+    if (line.rfind("|", 0) == 0) {
+      if (line.rfind("|---", 0) == 0) continue;
+      current.push_back(split_row(line));
+    } else if (!current.empty()) {
+      tables.push_back(current);
+      current.clear();
+    }
+  }
+  if (!current.empty()) tables.push_back(current);
+  return tables;
+}
+
+// The table whose header starts with these cells.
+const MarkdownTable* find_table(const std::vector<MarkdownTable>& tables,
+                                const std::vector<std::string>& header_start) {
+  for (const auto& table : tables)
+    if (table.front().size() >= header_start.size() &&
+        std::equal(header_start.begin(), header_start.end(), table.front().begin()))
+      return &table;
+  return nullptr;
+}
+
+std::size_t column(const MarkdownTable& table, const std::string& name) {
+  for (std::size_t i = 0; i < table.front().size(); ++i)
+    if (table.front()[i] == name) return i;
+  ADD_FAILURE() << "no column '" << name << "'";
+  return 0;
+}
+
+double cell_number(const std::string& cell) { return std::stod(cell); }
+
+// Six significant digits are printed.
+void expect_same(double shown, double expected, const std::string& what) {
+  EXPECT_NEAR(shown, expected, 1e-5 * std::abs(expected)) << what;
+}
+
+// ---- The good campaign, made once ---------------------------------------------------------
+
+const std::vector<double> velocities = {0.5, 1.0, 2.0, 4.0};
+
+// The campaign is calibrated and reported once; ctest runs every test case in its own process,
+// so the checks are one test case (each check names itself in a failure).
+struct ReportOfCampaign {
+  static void make() {
+    directory = new fs::path(impact::testing::scratch_directory("report_campaign"));
+    const fs::path campaign = *directory / "campaign";
+    for (double v : velocities)
+      write_fem_run(campaign_run(v), campaign / ("v" + std::to_string(v)));
+    add_to_summary(campaign / ("v" + std::to_string(1.0)),
+                   {{"energy_error", 0.0012}, {"max_von_mises", 1.2e9},
+                    {"yield_strength", 1.5e9}, {"dissipated_energy_fraction", 0.05},
+                    {"radiated_energy_fraction", 0.01}});
+    calibrate = new CliRun(run_tool(IMPACT_CALIBRATE_CLI,
+                                    {"--campaign", campaign.string(), "--output",
+                                     (*directory / "calibration.json").string(), "--laws",
+                                     "lankarani-nikravesh,kuwabara-kono", "--quiet"},
+                                    *directory));
+    report = new CliRun(run_tool(IMPACT_REPORT_CLI,
+                                 {"--campaign", campaign.string(), "--calibration",
+                                  (*directory / "calibration.json").string(), "--output",
+                                  (*directory / "report").string(), "--quiet"},
+                                 *directory));
+  }
+  // IMPACT_REPORT_TEST_KEEP=DIR keeps the campaign, calibration and report there.
+  static void remove() {
+    if (const char* keep = std::getenv("IMPACT_REPORT_TEST_KEEP"); keep && *keep) {
+      fs::remove_all(keep);
+      fs::copy(*directory, keep, fs::copy_options::recursive);
+    }
+    fs::remove_all(*directory);
+    delete directory;
+    delete calibrate;
+    delete report;
+  }
+  static fs::path output() { return *directory / "report"; }
+  static json calibration() { return json::parse(read_text(*directory / "calibration.json")); }
+
+  static fs::path* directory;
+  static CliRun* calibrate;
+  static CliRun* report;
+};
+
+fs::path* ReportOfCampaign::directory = nullptr;
+CliRun* ReportOfCampaign::calibrate = nullptr;
+CliRun* ReportOfCampaign::report = nullptr;
+
+const std::vector<std::string> figure_files = {"loops.png", "histories.png", "quantities.png",
+                                               "damping.png", "errors.png"};
+
+void check_HtmlAndMarkdownExist() {
+  EXPECT_TRUE(contains(ReportOfCampaign::report->out, "report written to " + (ReportOfCampaign::output() / "report.html").string()))
+      << ReportOfCampaign::report->out;
+  const std::string html = read_text(ReportOfCampaign::output() / "report.html");
+  const std::string markdown = read_text(ReportOfCampaign::output() / "report.md");
+  EXPECT_TRUE(contains(html, "<!DOCTYPE html>"));
+  EXPECT_TRUE(contains(html, "</html>"));
+  EXPECT_TRUE(contains(markdown, "# Impact model-validity report"));
+  for (const char* section : {"Validity verdict", "Calibrated parameters", "Runs",
+                              "Force–approach loops", "Approach and force against time",
+                              "Per-run damping b against V", "Errors of the reduced models",
+                              "Energy balance and yield check"}) {
+    EXPECT_TRUE(contains(markdown, std::string("## ") + section)) << section;
+    EXPECT_TRUE(contains(html, std::string("<h2>") + section)) << section;
+  }
+  EXPECT_TRUE(contains(markdown, "Complete:"));
+}
+
+void check_EveryFigureIsAValidImage() {
+  const std::string markdown = read_text(ReportOfCampaign::output() / "report.md");
+  const std::string html = read_text(ReportOfCampaign::output() / "report.html");
+  std::size_t embedded = 0;
+  for (std::size_t at = html.find("data:image/png;base64,"); at != std::string::npos;
+       at = html.find("data:image/png;base64,", at + 1))
+    ++embedded;
+  EXPECT_EQ(embedded, figure_files.size()); // the HTML stands alone
+  for (const auto& file : figure_files) {
+    const fs::path path = ReportOfCampaign::output() / "figures" / file;
+    ASSERT_TRUE(fs::exists(path)) << path;
+    const std::string bytes = read_text(path);
+    EXPECT_GT(bytes.size(), 5000u) << path;
+    const PngSize size = png_size(bytes);
+    EXPECT_TRUE(size.valid) << path << " is not a PNG";
+    EXPECT_GT(size.width, 200u) << path;
+    EXPECT_GT(size.height, 200u) << path;
+    EXPECT_TRUE(contains(markdown, "](figures/" + file + ")")) << file;
+  }
+}
+
+void check_TablesHoldTheNumbersOfTheCalibration() {
+  const json calibration_json = ReportOfCampaign::calibration();
+  const auto tables = markdown_tables(read_text(ReportOfCampaign::output() / "report.md"));
+
+  const MarkdownTable* parameters = find_table(tables, {"parameter", "value", "standard error"});
+  ASSERT_NE(parameters, nullptr);
+  const json& hc = calibration_json["campaign"]["hunt_crossley"];
+  ASSERT_EQ(parameters->size(), 4u);
+  for (std::size_t row = 1; row < parameters->size(); ++row) {
+    const auto& cells = (*parameters)[row];
+    const json& p = hc["parameters"][cells[0]];
+    expect_same(cell_number(cells[1]), p["value"].get<double>(), cells[0] + " value");
+    expect_same(cell_number(cells[2]), p["standard_error"].get<double>(), cells[0] + " error");
+    expect_same(cell_number(cells[3]), p["interval"][0].get<double>(), cells[0] + " lower");
+    expect_same(cell_number(cells[4]), p["interval"][1].get<double>(), cells[0] + " upper");
+  }
+
+  const MarkdownTable* runs = find_table(tables, {"V [m/s]", "mass [kg]"});
+  ASSERT_NE(runs, nullptr);
+  ASSERT_EQ(runs->size(), velocities.size() + 1);
+  const json& calibrated_runs = calibration_json["runs"];
+  for (std::size_t i = 0; i < velocities.size(); ++i) {
+    const auto& cells = (*runs)[i + 1];
+    const json& run = calibrated_runs[i];
+    const json& measured = run["measured"];
+    expect_same(cell_number(cells[0]), run["impact_velocity"].get<double>(), "V");
+    expect_same(cell_number(cells[column(*runs, "e [1]")]), measured["restitution"].get<double>(), "e");
+    expect_same(cell_number(cells[column(*runs, "t_c [µs]")]) * 1e-6,
+                measured["contact_time"].get<double>(), "t_c");
+    expect_same(cell_number(cells[column(*runs, "F_max [kN]")]) * 1e3,
+                measured["force_max"].get<double>(), "F_max");
+    expect_same(cell_number(cells[column(*runs, "x_max [µm]")]) * 1e-6,
+                measured["approach_max"].get<double>(), "x_max");
+    expect_same(cell_number(cells[column(*runs, "b from e [s/m]")]),
+                run["restitution_fit"]["b"]["value"].get<double>(), "b from e");
+    expect_same(cell_number(cells[column(*runs, "b history fit [s/m]")]),
+                run["history_fit"]["parameters"]["b"]["value"].get<double>(), "b history");
+    expect_same(cell_number(cells[column(*runs, "n history fit")]),
+                run["history_fit"]["parameters"]["n"]["value"].get<double>(), "n history");
+  }
+
+  // Predictions of the calibrated and best-law models: the calibration's own numbers.
+  const MarkdownTable* restitution = find_table(tables, {"V [m/s]", "FEM restitution e [1]"});
+  ASSERT_NE(restitution, nullptr);
+  const json& ranking = calibration_json["campaign"]["ranking"];
+  std::string best;
+  for (const auto& entry : ranking)
+    if (entry["model"] != "hunt-crossley") {
+      best = entry["model"].get<std::string>();
+      break;
+    }
+  const json* best_fit = nullptr;
+  for (const auto& law : calibration_json["campaign"]["comparison_laws"])
+    if (law["model"] == best) best_fit = &law;
+  ASSERT_NE(best_fit, nullptr);
+  for (std::size_t i = 0; i < velocities.size(); ++i) {
+    const auto& cells = (*restitution)[i + 1];
+    expect_same(cell_number(cells[column(*restitution, "Hunt–Crossley (calibrated)")]),
+                hc["runs"][i]["prediction"]["restitution"].get<double>(), "HC e");
+    expect_same(cell_number(cells[column(*restitution, best + " (best law)")]),
+                (*best_fit)["runs"][i]["prediction"]["restitution"].get<double>(), "best-law e");
+  }
+
+  const MarkdownTable* ranked = find_table(tables, {"rank", "model"});
+  ASSERT_NE(ranked, nullptr);
+  ASSERT_EQ(ranked->size(), ranking.size() + 1);
+  for (std::size_t i = 0; i < ranking.size(); ++i) {
+    EXPECT_EQ((*ranked)[i + 1][1], ranking[i]["model"].get<std::string>());
+    expect_same(cell_number((*ranked)[i + 1][column(*ranked, "RMS residual [%]")]) / 100,
+                ranking[i]["rms_residual"].get<double>(), "RMS");
+    expect_same(cell_number((*ranked)[i + 1][column(*ranked, "value")]),
+                ranking[i]["parameter"]["value"].get<double>(), "ranking parameter");
+  }
+}
+
+void check_StatesTheVerdictTheModelsAndTheChecks() {
+  const std::string markdown = read_text(ReportOfCampaign::output() / "report.md");
+  EXPECT_TRUE(contains(markdown, "- Within 2 %:")) << markdown;
+  EXPECT_TRUE(contains(markdown, "- Within 5 %:"));
+  EXPECT_TRUE(contains(markdown, "Cause: "));
+  // b was made to grow with V: the report must see the trend.
+  EXPECT_TRUE(contains(markdown, "b rises with V")) << markdown;
+  // The Hertz stiffness of the recorded materials (published steel example).
+  EXPECT_TRUE(contains(markdown, "Hertz value of the scenario's materials"));
+  EXPECT_TRUE(contains(markdown, "c_Hertz = 1.713")); // 1.7135e10 N/m^1.5, published steel
+  EXPECT_TRUE(contains(markdown, "Hunt–Crossley (b = 0.1 s/m)"));
+  EXPECT_TRUE(contains(markdown, "Hertz (b = 0)"));
+  EXPECT_TRUE(contains(markdown, "n - 3/2 = "));
+  // Energy and yield: recorded for one run, "not recorded" for the others.
+  const auto tables = markdown_tables(markdown);
+  const MarkdownTable* energy = find_table(tables, {"V [m/s]", "energy error [%]"});
+  ASSERT_NE(energy, nullptr);
+  ASSERT_EQ(energy->size(), velocities.size() + 1);
+  EXPECT_EQ((*energy)[1][1], "not recorded");
+  expect_same(cell_number((*energy)[2][1]), 0.12, "energy error");
+  EXPECT_TRUE(contains((*energy)[2].back(), "elastic: 80 % of the yield strength"));
+  EXPECT_TRUE(contains((*energy)[1].back(), "not recorded"));
+  // The table of errors: every model, every quantity, every velocity.
+  const MarkdownTable* errors = find_table(tables, {"model", "quantity"});
+  ASSERT_NE(errors, nullptr);
+  EXPECT_EQ(errors->size(), 1 + 4 * 4u);
+  EXPECT_EQ(errors->front().size(), 2 + velocities.size());
+}
+
+void check_PageRendersInHeadlessChromium() {
+  ASSERT_EQ(std::system("command -v chromium >/dev/null 2>&1"), 0)
+      << "chromium is not installed: the rendering of the report cannot be checked. Install "
+         "it (Debian package 'chromium'; CI installs it).";
+  const fs::path screenshot = ReportOfCampaign::output() / "screenshot.png";
+  const fs::path profile = ReportOfCampaign::output() / "chromium-profile";
+  fs::create_directories(profile);
+  const CliRun render = run_command(
+      "timeout 120 chromium --headless --no-sandbox --disable-gpu --disable-quic --no-first-run "
+      "--disable-background-networking --disable-component-update --disable-sync "
+      "--user-data-dir=" + quote(profile.string()) + " --screenshot=" +
+          quote(screenshot.string()) + " --window-size=1200,3000 " +
+          quote("file://" + (ReportOfCampaign::output() / "report.html").string()),
+      *ReportOfCampaign::directory);
+  ASSERT_TRUE(fs::exists(screenshot)) << "no screenshot (exit " << render.exit_code << "): "
+                                      << render.err;
+  const PngSize size = png_size(read_text(screenshot));
+  ASSERT_TRUE(size.valid);
+  EXPECT_EQ(size.width, 1200u);
+  EXPECT_EQ(size.height, 3000u);
+  // Not blank: many distinct colours and a good share of non-white pixels.
+  const CliRun analysis = run_command(
+      quote(IMPACT_REPORT_PYTHON) + " -c " +
+          quote("import sys, numpy, matplotlib.image as image\n"
+                "a = numpy.round(image.imread(sys.argv[1])[..., :3] * 255).astype(int)\n"
+                "p = a.reshape(-1, 3)\n"
+                "print(len(numpy.unique(p[:, 0] * 65536 + p[:, 1] * 256 + p[:, 2])),"
+                " float((p.min(axis=1) < 240).mean()))") +
+          " " + quote(screenshot.string()),
+      *ReportOfCampaign::directory);
+  ASSERT_EQ(analysis.exit_code, 0) << analysis.err;
+  std::stringstream numbers(analysis.out);
+  int colours = 0;
+  double ink = 0;
+  numbers >> colours >> ink;
+  EXPECT_GT(colours, 100) << "the screenshot looks blank";
+  EXPECT_GT(ink, 0.02) << "the screenshot looks blank";
+}
+
+TEST(ReportOfCampaign, IsCompleteHoldsTheCalibrationAndRenders) {
+  ReportOfCampaign::make();
+  ASSERT_EQ(ReportOfCampaign::calibrate->exit_code, 0) << ReportOfCampaign::calibrate->err;
+  ASSERT_EQ(ReportOfCampaign::report->exit_code, 0) << ReportOfCampaign::report->err;
+  {
+    SCOPED_TRACE("HTML and Markdown exist");
+    check_HtmlAndMarkdownExist();
+  }
+  {
+    SCOPED_TRACE("every figure is a valid image");
+    check_EveryFigureIsAValidImage();
+  }
+  {
+    SCOPED_TRACE("the tables hold the numbers of the calibration JSON");
+    check_TablesHoldTheNumbersOfTheCalibration();
+  }
+  {
+    SCOPED_TRACE("verdict, models, energy and yield");
+    check_StatesTheVerdictTheModelsAndTheChecks();
+  }
+  {
+    SCOPED_TRACE("the page renders in headless Chromium");
+    check_PageRendersInHeadlessChromium();
+  }
+  ReportOfCampaign::remove();
+}
+
+// ---- Bad input ---------------------------------------------------------------------------
+
+class ReportBadInput : public ::testing::Test {
+protected:
+  void SetUp() override {
+    directory = impact::testing::scratch_directory(
+        std::string("report_") + ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    campaign = directory / "campaign";
+    output = directory / "report";
+  }
+  void TearDown() override { fs::remove_all(directory); }
+
+  void add_run(double velocity, bool complete = true) {
+    write_fem_run(campaign_run(velocity), campaign / ("v" + std::to_string(velocity)), complete);
+  }
+  CliRun report(std::vector<std::string> extra = {}, const std::string& environment = "") {
+    std::vector<std::string> arguments = {"--campaign", campaign.string(), "--output",
+                                          output.string(), "--quiet"};
+    arguments.insert(arguments.end(), extra.begin(), extra.end());
+    return run_tool(IMPACT_REPORT_CLI, arguments, directory, environment);
+  }
+  fs::path calibrate(std::vector<std::string> extra = {}) {
+    const fs::path file = directory / "calibration.json";
+    std::vector<std::string> arguments = {"--campaign", campaign.string(), "--output",
+                                          file.string(), "--laws", "lankarani-nikravesh", "--quiet"};
+    arguments.insert(arguments.end(), extra.begin(), extra.end());
+    run_tool(IMPACT_CALIBRATE_CLI, arguments, directory);
+    return file;
+  }
+  // The report exists in both forms and says it is incomplete, naming `what`.
+  void expect_incomplete_report(const std::string& what) {
+    const std::string markdown = read_text(output / "report.md");
+    const std::string html = read_text(output / "report.html");
+    EXPECT_TRUE(contains(markdown, "INCOMPLETE")) << markdown;
+    EXPECT_TRUE(contains(markdown, what)) << "'" << what << "' not in:\n" << markdown;
+    EXPECT_TRUE(contains(html, "INCOMPLETE"));
+  }
+
+  fs::path directory, campaign, output;
+};
+
+TEST_F(ReportBadInput, MissingHdf5File) {
+  add_run(1.0);
+  add_run(2.0);
+  add_run(4.0);
+  fs::remove(campaign / ("v" + std::to_string(4.0)) / fem_format::history_file);
+  // Without an index, a run directory that lost its HDF5 file is found by its summary.json.
+  const fs::path calibration = calibrate();
+  const CliRun run = report({"--calibration", calibration.string()});
+  EXPECT_EQ(run.exit_code, 2) << run.err;
+  EXPECT_TRUE(contains(run.err, "but no history.h5")) << run.err;
+  expect_incomplete_report("the HDF5 file of the run is missing");
+  // The good runs are still reported.
+  EXPECT_TRUE(contains(read_text(output / "report.md"), "- Within 2 %:"));
+}
+
+TEST_F(ReportBadInput, IncompleteHdf5File) {
+  add_run(1.0);
+  add_run(2.0);
+  add_run(4.0, false);
+  const CliRun run = report({"--calibration", calibrate().string()});
+  EXPECT_EQ(run.exit_code, 2) << run.err;
+  EXPECT_TRUE(contains(run.err, "did not finish")) << run.err;
+  expect_incomplete_report("did not finish");
+}
+
+TEST_F(ReportBadInput, CampaignWithASingleVelocity) {
+  add_run(1.0);
+  const CliRun run = report({"--calibration", calibrate().string()});
+  EXPECT_EQ(run.exit_code, 2) << run.err;
+  EXPECT_TRUE(contains(run.err, "single impact velocity")) << run.err;
+  expect_incomplete_report("single impact velocity");
+  const std::string markdown = read_text(output / "report.md");
+  EXPECT_TRUE(contains(markdown, "Cause: No verdict")) << markdown;
+  EXPECT_TRUE(contains(markdown, "Hunt–Crossley (per-run fit)"));
+  EXPECT_FALSE(contains(markdown, "- Within 2 %:"));
+}
+
+TEST_F(ReportBadInput, RunWithoutContact) {
+  add_run(1.0);
+  add_run(2.0);
+  FemRun no_contact = campaign_run(4.0);
+  std::fill(no_contact.contact_force.begin(), no_contact.contact_force.end(), 0.0);
+  write_fem_run(no_contact, campaign / "v4");
+  const CliRun run = report({"--calibration", calibrate().string()});
+  EXPECT_EQ(run.exit_code, 2) << run.err;
+  EXPECT_TRUE(contains(run.err, "no contact")) << run.err;
+  expect_incomplete_report("no contact");
+}
+
+TEST_F(ReportBadInput, FitThatDoesNotConverge) {
+  add_run(1.0);
+  add_run(2.0);
+  impact::testing::HuntCrossleyTruth truth;
+  write_fem_run(impact::testing::synthetic_run(truth, 4.0, 0.01), campaign / "v4");
+  const fs::path calibration = calibrate({"--max-iterations", "1"});
+  const CliRun run = report({"--calibration", calibration.string()});
+  EXPECT_EQ(run.exit_code, 3) << run.err;
+  EXPECT_TRUE(contains(run.err, "did not converge")) << run.err;
+  expect_incomplete_report("did not converge");
+  const std::string markdown = read_text(output / "report.md");
+  EXPECT_TRUE(contains(markdown, "(not converged)"));
+  EXPECT_TRUE(contains(markdown, "Cause: No verdict: the campaign fit of Hunt–Crossley did not "
+                                 "converge"));
+}
+
+TEST_F(ReportBadInput, CalibrationFileMissing) {
+  add_run(1.0);
+  add_run(2.0);
+  const CliRun run = report({"--calibration", (directory / "absent.json").string()});
+  EXPECT_EQ(run.exit_code, 2) << run.err;
+  EXPECT_TRUE(contains(run.err, "calibration file does not exist")) << run.err;
+  expect_incomplete_report("calibration file does not exist");
+  EXPECT_TRUE(contains(read_text(output / "report.md"), "Cause: No verdict"));
+}
+
+TEST_F(ReportBadInput, MissingCampaignDirectory) {
+  const CliRun run = report();
+  EXPECT_EQ(run.exit_code, 2) << run.err;
+  EXPECT_TRUE(contains(run.err, "does not exist")) << run.err;
+  expect_incomplete_report("No FEM run could be read");
+}
+
+TEST_F(ReportBadInput, FiguresThatCannotBeDrawn) {
+  add_run(1.0);
+  add_run(2.0);
+  const CliRun run = report({"--calibration", calibrate().string()},
+                            "IMPACT_REPORT_PYTHON=/nonexistent/python3 ");
+  EXPECT_EQ(run.exit_code, 4) << run.err;
+  EXPECT_TRUE(contains(run.err, "figures could not be drawn")) << run.err;
+  expect_incomplete_report("Figure missing");
+}
+
+TEST(ReportCli, CalibratesTheCampaignItselfWithoutACalibrationFile) {
+  const fs::path directory = impact::testing::scratch_directory("report_self_calibrated");
+  for (double v : {0.5, 1.0, 2.0})
+    write_fem_run(campaign_run(v), directory / "campaign" / ("v" + std::to_string(v)));
+  const CliRun run = run_tool(IMPACT_REPORT_CLI,
+                              {"--campaign", (directory / "campaign").string(), "--output",
+                               (directory / "report").string(), "--quiet"},
+                              directory);
+  EXPECT_EQ(run.exit_code, 0) << run.err;
+  const json calibration = json::parse(read_text(directory / "report" / "calibration.json"));
+  EXPECT_EQ(calibration["status"], "complete");
+  EXPECT_TRUE(contains(read_text(directory / "report" / "report.md"), "calibrated by impact-report"));
+  fs::remove_all(directory);
+}
+
+TEST(ReportCli, UsageErrors) {
+  const fs::path directory = impact::testing::scratch_directory("report_usage");
+  EXPECT_EQ(run_tool(IMPACT_REPORT_CLI, {"--help"}, directory).exit_code, 0);
+  const CliRun no_output = run_tool(IMPACT_REPORT_CLI, {"--campaign", "x"}, directory);
+  EXPECT_EQ(no_output.exit_code, 2);
+  EXPECT_TRUE(contains(no_output.err, "--output DIR is required"));
+  const CliRun unknown = run_tool(IMPACT_REPORT_CLI, {"--campaign", "x", "--output", "y", "--nope"},
+                                  directory);
+  EXPECT_EQ(unknown.exit_code, 2);
+  EXPECT_TRUE(contains(unknown.err, "unknown option '--nope'"));
+  fs::remove_all(directory);
+}
+
+} // namespace
