@@ -2,25 +2,32 @@
 // Exit codes: 0 success; 2 bad input (the message names the problem; the JSON, when it
 // could be written, lists what is missing); 3 a fit did not converge; 1 internal error.
 
+#include "command_line.hpp"
+
 #include "impact_postprocess/calibration.hpp"
 #include "impact_postprocess/calibration_json.hpp"
 #include "impact_postprocess/fem_run.hpp"
 
 #include <impact_reduced/invalid_input.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iostream>
 #include <optional>
 #include <sstream>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace {
 
 namespace fs = std::filesystem;
 using namespace impact::postprocess;
+
+const std::string program = "impact-calibrate";
 
 const char* usage = R"(usage: impact-calibrate RUN... --output FILE [options]
        impact-calibrate --campaign DIR --output FILE [options]
@@ -44,20 +51,10 @@ Exit codes: 0 success, 2 bad input (message names the problem; the JSON says wha
 missing), 3 a fit did not converge (see "problems" in the JSON), 1 internal error.
 )";
 
-class UsageError : public std::runtime_error {
-public:
-  using std::runtime_error::runtime_error;
-};
-
-struct Arguments {
-  std::vector<fs::path> runs;
-  std::optional<fs::path> campaign;
-  std::optional<fs::path> output;
+struct Arguments : cli::RunArguments {
   std::vector<std::string> laws = impact::reduced::comparison_law_names();
   int max_iterations = 100;
   double confidence = 0.95;
-  bool quiet = false;
-  bool help = false;
 };
 
 std::vector<std::string> split(const std::string& text) {
@@ -69,23 +66,29 @@ std::vector<std::string> split(const std::string& text) {
   return items;
 }
 
+// The number that `text` spells in full (read by std::stol for an integral T, else by
+// std::stod), or none.
+template <class T>
+std::optional<T> whole_number(const std::string& text) {
+  std::size_t end = 0;
+  try {
+    T number;
+    if constexpr (std::is_integral_v<T>) number = std::stol(text, &end);
+    else number = std::stod(text, &end);
+    if (end == text.size()) return number;
+  } catch (const std::exception&) {
+  }
+  return std::nullopt;
+}
+
 Arguments parse(int argc, char** argv) {
+  using cli::UsageError;
   Arguments arguments;
-  for (int i = 1; i < argc; ++i) {
-    const std::string argument = argv[i];
-    const auto value = [&]() -> std::string {
-      if (i + 1 >= argc) throw UsageError("the option " + argument + " needs a value");
-      return argv[++i];
-    };
-    if (argument == "--help" || argument == "-h") {
-      arguments.help = true;
-    } else if (argument == "--quiet") {
-      arguments.quiet = true;
-    } else if (argument == "--campaign") {
+  const auto option = [&](const std::string& argument,
+                          const std::function<std::string()>& value) {
+    if (argument == "--campaign") {
       if (arguments.campaign) throw UsageError("--campaign is given twice");
       arguments.campaign = value();
-    } else if (argument == "--output") {
-      arguments.output = value();
     } else if (argument == "--laws") {
       const std::string list = value();
       if (list == "all") {
@@ -105,40 +108,23 @@ Arguments parse(int argc, char** argv) {
       }
     } else if (argument == "--max-iterations") {
       const std::string text = value();
-      std::size_t end = 0;
-      long iterations = 0;
-      try {
-        iterations = std::stol(text, &end);
-      } catch (const std::exception&) {
-        end = 0;
-      }
-      if (end != text.size() || iterations < 1 || iterations > 100000)
+      const auto iterations = whole_number<long>(text);
+      if (!iterations || *iterations < 1 || *iterations > 100000)
         throw UsageError("--max-iterations must be an integer in [1, 100000] (got '" + text + "')");
-      arguments.max_iterations = int(iterations);
+      arguments.max_iterations = int(*iterations);
     } else if (argument == "--confidence") {
       const std::string text = value();
-      std::size_t end = 0;
-      double level = 0;
-      try {
-        level = std::stod(text, &end);
-      } catch (const std::exception&) {
-        end = 0;
-      }
-      if (end != text.size() || !(level > 0 && level < 1))
+      const auto level = whole_number<double>(text);
+      if (!level || !(*level > 0 && *level < 1))
         throw UsageError("--confidence must be a number in (0, 1) (got '" + text + "')");
-      arguments.confidence = level;
-    } else if (argument.rfind("--", 0) == 0) {
-      throw UsageError("unknown option '" + argument + "'");
+      arguments.confidence = *level;
     } else {
-      arguments.runs.emplace_back(argument);
+      return false;
     }
-  }
+    return true;
+  };
+  cli::parse_run_arguments(argc, argv, arguments, "FILE", option);
   if (arguments.help) return arguments;
-  if (!arguments.output) throw UsageError("--output FILE is required");
-  if (arguments.campaign && !arguments.runs.empty())
-    throw UsageError("give either run files or --campaign DIR, not both");
-  if (!arguments.campaign && arguments.runs.empty())
-    throw UsageError("no input: give run files or --campaign DIR");
   const fs::path directory = arguments.output->parent_path();
   if (!directory.empty() && !fs::is_directory(directory))
     throw UsageError("the directory of --output '" + arguments.output->string() +
@@ -158,85 +144,57 @@ void write_json(const fs::path& path, const Calibration& calibration) {
   fs::rename(temporary, path);
 }
 
+int execute(const Arguments& arguments) {
+  const Campaign input = cli::read_input(arguments);
+  for (const auto& problem : input.problems)
+    std::cerr << "impact-calibrate: error: " << problem.message << '\n';
+
+  CalibrationOptions options;
+  options.laws = arguments.laws;
+  options.max_iterations = arguments.max_iterations;
+  options.confidence_level = arguments.confidence;
+  if (!arguments.quiet)
+    options.progress = [](const std::string& line) {
+      std::cerr << "impact-calibrate: " << line << std::endl;
+    };
+  Calibration calibration = calibrate(input.runs, options);
+  std::vector<CalibrationProblem> problems;
+  for (const auto& problem : input.problems)
+    problems.push_back({problem.source, "input", problem.message});
+  if (input.runs.empty())
+    problems.push_back({arguments.campaign ? arguments.campaign->string() : "",
+                        "input", "no usable run: nothing was calibrated"});
+  else if (!calibration.campaign.fitted && (arguments.campaign || arguments.runs.size() > 1))
+    problems.push_back({arguments.campaign ? arguments.campaign->string() : "", "input",
+                        "campaign not fitted: " + calibration.campaign.reason});
+  problems.insert(problems.end(), calibration.problems.begin(), calibration.problems.end());
+  calibration.problems = problems;
+
+  bool input_problem = false, convergence_problem = false;
+  for (const auto& problem : calibration.problems) {
+    if (problem.kind == "input") input_problem = true;
+    if (problem.kind == "convergence") convergence_problem = true;
+    if (problem.kind != "input" || problem.message.rfind("campaign not fitted", 0) == 0 ||
+        problem.message.rfind("no usable run", 0) == 0)
+      cli::print_problem(program, problem);
+  }
+  write_json(*arguments.output, calibration);
+
+  const auto& hc = calibration.campaign.hunt_crossley;
+  if (hc) {
+    std::cout.precision(6);
+    std::cout << "Hunt-Crossley over " << calibration.runs.size() << " runs: c = "
+              << hc->fit.stiffness.value << " N/m^n, n = " << hc->fit.exponent.value
+              << ", b = " << hc->fit.parameter.value << " s/m (RMS residual "
+              << hc->fit.quality.rms_residual * 100 << " % of the peak force)\n";
+  }
+  std::cout << "calibration written to " << arguments.output->string() << '\n';
+  if (input_problem) return 2;
+  return convergence_problem ? 3 : 0;
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
-  Arguments arguments;
-  try {
-    arguments = parse(argc, argv);
-  } catch (const UsageError& error) {
-    std::cerr << "impact-calibrate: error: " << error.what() << "\n(impact-calibrate --help "
-              << "for the usage)\n";
-    return 2;
-  }
-  if (arguments.help) {
-    std::cout << usage;
-    return 0;
-  }
-
-  try {
-    Campaign input;
-    if (arguments.campaign) {
-      try {
-        input = read_campaign(*arguments.campaign);
-      } catch (const RunInputError& error) {
-        input.problems.push_back({arguments.campaign->string(), error.what()});
-      }
-    } else {
-      input = read_runs(arguments.runs);
-    }
-    for (const auto& problem : input.problems)
-      std::cerr << "impact-calibrate: error: " << problem.message << '\n';
-
-    CalibrationOptions options;
-    options.laws = arguments.laws;
-    options.max_iterations = arguments.max_iterations;
-    options.confidence_level = arguments.confidence;
-    if (!arguments.quiet)
-      options.progress = [](const std::string& line) {
-        std::cerr << "impact-calibrate: " << line << std::endl;
-      };
-    Calibration calibration = calibrate(input.runs, options);
-    std::vector<CalibrationProblem> problems;
-    for (const auto& problem : input.problems)
-      problems.push_back({problem.source, "input", problem.message});
-    if (input.runs.empty())
-      problems.push_back({arguments.campaign ? arguments.campaign->string() : "",
-                          "input", "no usable run: nothing was calibrated"});
-    else if (!calibration.campaign.fitted && (arguments.campaign || arguments.runs.size() > 1))
-      problems.push_back({arguments.campaign ? arguments.campaign->string() : "", "input",
-                          "campaign not fitted: " + calibration.campaign.reason});
-    problems.insert(problems.end(), calibration.problems.begin(), calibration.problems.end());
-    calibration.problems = problems;
-
-    bool input_problem = false, convergence_problem = false;
-    for (const auto& problem : calibration.problems) {
-      if (problem.kind == "input") input_problem = true;
-      if (problem.kind == "convergence") convergence_problem = true;
-      if (problem.kind != "input" || problem.message.rfind("campaign not fitted", 0) == 0 ||
-          problem.message.rfind("no usable run", 0) == 0)
-        std::cerr << "impact-calibrate: " << (problem.kind == "input" ? "error" : "warning")
-                  << ": " << (problem.source.empty() ? "" : problem.source + ": ")
-                  << problem.message << '\n';
-    }
-    write_json(*arguments.output, calibration);
-
-    const auto& hc = calibration.campaign.hunt_crossley;
-    if (hc) {
-      std::cout.precision(6);
-      std::cout << "Hunt-Crossley over " << calibration.runs.size() << " runs: c = "
-                << hc->fit.stiffness.value << " N/m^n, n = " << hc->fit.exponent.value
-                << ", b = " << hc->fit.parameter.value << " s/m (RMS residual "
-                << hc->fit.quality.rms_residual * 100 << " % of the peak force)\n";
-    }
-    std::cout << "calibration written to " << arguments.output->string() << '\n';
-    if (input_problem) return 2;
-    return convergence_problem ? 3 : 0;
-  } catch (const impact::reduced::InvalidInput& error) {
-    std::cerr << "impact-calibrate: error: " << error.what() << '\n';
-    return 2;
-  } catch (const std::exception& error) {
-    std::cerr << "impact-calibrate: internal error: " << error.what() << '\n';
-    return 1;
-  }
+  return cli::run_command(program, usage, argc, argv, parse, execute);
 }

@@ -4,6 +4,8 @@
 // not converge (numbers marked so); 4 the figures could not be drawn (report without them);
 // 1 internal error. A report is written in every case but a usage error and exit 1.
 
+#include "command_line.hpp"
+
 #include "impact_postprocess/calibration.hpp"
 #include "impact_postprocess/calibration_json.hpp"
 #include "impact_postprocess/fem_run.hpp"
@@ -15,6 +17,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iostream>
 #include <optional>
 #include <string>
@@ -27,6 +30,8 @@ namespace {
 namespace fs = std::filesystem;
 using json = nlohmann::json;
 using namespace impact::postprocess;
+
+const std::string program = "impact-report";
 
 const char* usage = R"(usage: impact-report --campaign DIR --output DIR [--calibration FILE] [--quiet]
        impact-report RUN... --output DIR [--calibration FILE] [--quiet]
@@ -51,44 +56,24 @@ Exit codes: 0 complete report, 2 bad input (the report says what is missing), 3 
 not converge, 4 the figures could not be drawn, 1 internal error.
 )";
 
-class UsageError : public std::runtime_error {
-public:
-  using std::runtime_error::runtime_error;
-};
-
-struct Arguments {
-  std::vector<fs::path> runs;
-  std::optional<fs::path> campaign;
-  std::optional<fs::path> output;
+struct Arguments : cli::RunArguments {
   std::optional<fs::path> calibration;
-  bool quiet = false;
-  bool help = false;
 };
 
 Arguments parse(int argc, char** argv) {
   Arguments arguments;
-  for (int i = 1; i < argc; ++i) {
-    const std::string argument = argv[i];
-    const auto value = [&]() -> std::string {
-      if (i + 1 >= argc) throw UsageError("the option " + argument + " needs a value");
-      return argv[++i];
-    };
-    if (argument == "--help" || argument == "-h") arguments.help = true;
-    else if (argument == "--quiet") arguments.quiet = true;
-    else if (argument == "--campaign") arguments.campaign = value();
-    else if (argument == "--output") arguments.output = value();
+  const auto option = [&](const std::string& argument,
+                          const std::function<std::string()>& value) {
+    if (argument == "--campaign") arguments.campaign = value();
     else if (argument == "--calibration") arguments.calibration = value();
-    else if (argument.rfind("--", 0) == 0) throw UsageError("unknown option '" + argument + "'");
-    else arguments.runs.emplace_back(argument);
-  }
+    else return false;
+    return true;
+  };
+  cli::parse_run_arguments(argc, argv, arguments, "DIR", option);
   if (arguments.help) return arguments;
-  if (!arguments.output) throw UsageError("--output DIR is required");
-  if (arguments.campaign && !arguments.runs.empty())
-    throw UsageError("give either run files or --campaign DIR, not both");
-  if (!arguments.campaign && arguments.runs.empty())
-    throw UsageError("no input: give run files or --campaign DIR");
   if (fs::exists(*arguments.output) && !fs::is_directory(*arguments.output))
-    throw UsageError("--output '" + arguments.output->string() + "' exists and is not a directory");
+    throw cli::UsageError("--output '" + arguments.output->string() +
+                          "' exists and is not a directory");
   return arguments;
 }
 
@@ -227,75 +212,51 @@ json obtain_calibration(const Arguments& arguments, const Campaign& input,
   return result;
 }
 
+int execute(const Arguments& arguments) {
+  const fs::path output = *arguments.output;
+  fs::create_directories(output);
+
+  Campaign input = cli::read_input(arguments);
+  std::vector<ReportProblem> problems;
+  std::string campaign_source;
+  if (arguments.campaign) {
+    campaign_source = arguments.campaign->string();
+    const auto lost = runs_without_history(*arguments.campaign);
+    input.problems.insert(input.problems.end(), lost.begin(), lost.end());
+  } else {
+    for (const auto& run : arguments.runs)
+      campaign_source += (campaign_source.empty() ? "" : ", ") + run.string();
+  }
+
+  std::string calibration_source;
+  const json calibration = obtain_calibration(arguments, input, problems, calibration_source);
+  Report report = build_report(input, calibration, problems, campaign_source, calibration_source);
+
+  const fs::path figures_directory = "figures";
+  const auto figure_problems = draw_figures(report, output, output / figures_directory);
+  report.problems.insert(report.problems.end(), figure_problems.begin(), figure_problems.end());
+
+  write_report_markdown(report, output / "report.md", figures_directory);
+  write_report_html(report, output / "report.html", figures_directory);
+
+  bool input_problem = false, convergence_problem = false, figure_problem = false;
+  for (const auto& problem : report.problems) {
+    input_problem = input_problem || problem.kind == "input";
+    convergence_problem = convergence_problem || problem.kind == "convergence";
+    figure_problem = figure_problem || problem.kind == "figures";
+    cli::print_problem(program, problem);
+  }
+  if (!report.problems.empty())
+    std::cerr << "impact-report: the report is incomplete; it lists these problems\n";
+  std::cout << "markdown written to " << (output / "report.md").string() << '\n'
+            << "report written to " << (output / "report.html").string() << '\n';
+  if (input_problem) return 2;
+  if (convergence_problem) return 3;
+  return figure_problem ? 4 : 0;
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
-  Arguments arguments;
-  try {
-    arguments = parse(argc, argv);
-  } catch (const UsageError& error) {
-    std::cerr << "impact-report: error: " << error.what()
-              << "\n(impact-report --help for the usage)\n";
-    return 2;
-  }
-  if (arguments.help) {
-    std::cout << usage;
-    return 0;
-  }
-  try {
-    const fs::path output = *arguments.output;
-    fs::create_directories(output);
-
-    Campaign input;
-    std::vector<ReportProblem> problems;
-    std::string campaign_source;
-    if (arguments.campaign) {
-      campaign_source = arguments.campaign->string();
-      try {
-        input = read_campaign(*arguments.campaign);
-      } catch (const RunInputError& error) {
-        input.problems.push_back({campaign_source, error.what()});
-      }
-      const auto lost = runs_without_history(*arguments.campaign);
-      input.problems.insert(input.problems.end(), lost.begin(), lost.end());
-    } else {
-      for (const auto& run : arguments.runs)
-        campaign_source += (campaign_source.empty() ? "" : ", ") + run.string();
-      input = read_runs(arguments.runs);
-    }
-
-    std::string calibration_source;
-    const json calibration = obtain_calibration(arguments, input, problems, calibration_source);
-    Report report = build_report(input, calibration, problems, campaign_source, calibration_source);
-
-    const fs::path figures_directory = "figures";
-    const auto figure_problems = draw_figures(report, output, output / figures_directory);
-    report.problems.insert(report.problems.end(), figure_problems.begin(), figure_problems.end());
-
-    write_report_markdown(report, output / "report.md", figures_directory);
-    write_report_html(report, output / "report.html", figures_directory);
-
-    bool input_problem = false, convergence_problem = false, figure_problem = false;
-    for (const auto& problem : report.problems) {
-      input_problem = input_problem || problem.kind == "input";
-      convergence_problem = convergence_problem || problem.kind == "convergence";
-      figure_problem = figure_problem || problem.kind == "figures";
-      std::cerr << "impact-report: " << (problem.kind == "input" ? "error" : "warning") << ": "
-                << (problem.source.empty() ? "" : problem.source + ": ") << problem.message
-                << '\n';
-    }
-    if (!report.problems.empty())
-      std::cerr << "impact-report: the report is incomplete; it lists these problems\n";
-    std::cout << "markdown written to " << (output / "report.md").string() << '\n'
-              << "report written to " << (output / "report.html").string() << '\n';
-    if (input_problem) return 2;
-    if (convergence_problem) return 3;
-    return figure_problem ? 4 : 0;
-  } catch (const impact::reduced::InvalidInput& error) {
-    std::cerr << "impact-report: error: " << error.what() << '\n';
-    return 2;
-  } catch (const std::exception& error) {
-    std::cerr << "impact-report: internal error: " << error.what() << '\n';
-    return 1;
-  }
+  return cli::run_command(program, usage, argc, argv, parse, execute);
 }

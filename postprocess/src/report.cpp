@@ -6,6 +6,7 @@
 
 #include "impact_postprocess/contact_models.hpp"
 #include "impact_postprocess/fem_run_format.hpp"
+#include "report_json.hpp"
 
 #include <impact_reduced/hertz_stiffness.hpp>
 #include <impact_reduced/hunt_crossley.hpp>
@@ -32,14 +33,8 @@ constexpr std::size_t fem_history_samples = 1500;
 // impact-fem's parameter of the sphere radius (a text attribute of the run file).
 constexpr const char* sphere_radius_parameter = "Scenario/Sphere radius";
 
-const json& member(const json& node, const std::string& key) {
-  static const json null_value;
-  if (!node.is_object()) return null_value;
-  const auto found = node.find(key);
-  return found == node.end() ? null_value : *found;
-}
-
-double number(const json& node) { return node.is_number() ? node.get<double>() : nan; }
+using detail::member;
+using detail::number;
 
 std::string format(double value, int digits = 4) {
   if (!std::isfinite(value)) return "n/a";

@@ -4,6 +4,8 @@
 
 #include "impact_postprocess/report.hpp"
 
+#include "report_json.hpp"
+
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -102,14 +104,8 @@ std::string model_cell(const ReportModel& model, std::size_t run, std::size_t qu
          (model.converged ? "" : " (not converged)");
 }
 
-const json& member(const json& node, const std::string& key) {
-  static const json null_value;
-  if (!node.is_object()) return null_value;
-  const auto found = node.find(key);
-  return found == node.end() ? null_value : *found;
-}
-
-double number(const json& node) { return node.is_number() ? node.get<double>() : nan; }
+using detail::member;
+using detail::number;
 
 Document build_document(const Report& report, const fs::path& figures_directory) {
   Document doc;
