@@ -1,14 +1,18 @@
 #!/usr/bin/env bash
 # Benchmark of impact-fem: the default scenario at V = 1 m/s on 1 and 2 MPI
 # ranks. Prints wall time, cells, DoFs, steps, contact time and peak force
-# from each run's summary.json.
+# from each run's summary.json. Then the study's campaign
+# (fem/scenarios/study.prm: the default scenario with Kelvin-Voigt steel,
+# six velocities 0.5..5 m/s) on 2 ranks, as two groups of one rank (the
+# default, Campaign/Ranks per run = 1) and as every run on both ranks
+# (Ranks per run = 0): campaign wall time and the table of its runs.
 #
 # Usage: fem/bench/run_benchmark.sh [BUILD_DIR] [OUTPUT_DIR]
 #   BUILD_DIR   build tree holding bin/impact-fem (default: build)
 #   OUTPUT_DIR  where the runs write their results (default: results/bench)
 # Add CONVERGED=1 to the environment to also run the mesh-converged
 # reference (the default mesh refined once: 25 um at the contact, 4x the
-# cells; under a minute on 2 ranks).
+# cells; under a minute on 2 ranks). CAMPAIGN=0 skips the campaigns.
 set -euo pipefail
 
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
@@ -46,4 +50,30 @@ run default-np1 1; report default-np1
 run default-np2 2; report default-np2
 if [ "${CONVERGED:-0}" = 1 ]; then
   run converged-np2 2 --set "Mesh/Global refinements=1"; report converged-np2
+fi
+
+if [ "${CAMPAIGN:-1}" = 1 ]; then
+  study="$here/../scenarios/study.prm"
+  for ranks_per_run in 1 0; do
+    name="campaign-rpr$ranks_per_run"
+    rm -rf "$output/$name"
+    start=$(date +%s.%N)
+    "${mpirun[@]}" -np 2 "$binary" "$study" --set "Output/Directory=$output/$name" \
+      --set "Campaign/Ranks per run=$ranks_per_run" > "$output/$name.log" 2>&1 \
+      || { echo "campaign $name failed, see $output/$name.log" >&2; exit 1; }
+    wall=$(python3 -c "import time,sys; print(f'{time.time() - float(sys.argv[1]):.1f}')" "$start")
+    echo
+    echo "study campaign (fem/scenarios/study.prm, 6 velocities), 2 ranks, Ranks per run = $ranks_per_run: $wall s wall"
+    python3 - "$output/$name" <<'PY'
+import json, os, sys
+d = sys.argv[1]
+index = json.load(open(os.path.join(d, "index.json")))
+print(f"{'V [m/s]':>8} {'ranks':>5} {'wall [s]':>9} {'t_c [us]':>9} {'F_max [kN]':>10} {'e':>9} {'dissip %':>9} {'radiated %':>10} {'E err %':>8} {'vM sphere [GPa]':>15}")
+for run in index["runs"]:
+    s = json.load(open(os.path.join(d, run["path"], "summary.json")))
+    print(f"{run['velocity']:>8g} {s['ranks']:>5} {s['wall_time']:>9.1f} {s['contact_time']*1e6:>9.3f} "
+          f"{s['force_max']/1e3:>10.4f} {s['restitution']:>9.5f} {s['dissipated_energy_fraction']*100:>9.3f} "
+          f"{s['radiated_energy_fraction']*100:>10.3f} {s['energy_error']*100:>8.4f} {s['von_mises_max_sphere']/1e9:>15.3f}")
+PY
+  done
 fi

@@ -106,13 +106,26 @@ namespace impact_fem
   } // namespace
 
 
+  int
+  ImpactProblem::interrupt_received()
+  {
+    return interrupt_signal;
+  }
+
+
   void
   ImpactProblem::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Scenario");
     prm.declare_entry("Analysis",
                       "impact",
-                      Patterns::Selection("impact|static press"),
+                      Patterns::Selection(
+                        "impact|static press|material point|specimen"),
+                      "'material point': the sphere's material at one point "
+                      "under the history of the subsection 'Material point' "
+                      "(no mesh, no contact). 'specimen': the same history "
+                      "on a homogeneous cylinder of the sphere's material, "
+                      "finite elements, quasi-static. "
                       "'impact': the sphere hits the plate at the impact "
                       "velocity. 'static press': the sphere, at rest, is "
                       "pressed into the plate by a uniform body force of "
@@ -160,12 +173,19 @@ namespace impact_fem
                       "by its own weight).");
     prm.leave_subsection();
 
-    prm.enter_subsection("Sphere");
-    materials::declare_parameters(prm, "elastic");
-    prm.leave_subsection();
-    prm.enter_subsection("Plate");
-    materials::declare_parameters(prm, "elastic");
-    prm.leave_subsection();
+    for (const auto *body : {"Sphere", "Plate"})
+      {
+        prm.enter_subsection(body);
+        materials::declare_parameters(prm, "elastic");
+        prm.declare_entry("Yield strength",
+                          "0",
+                          Patterns::Double(0),
+                          "Yield strength of the body [Pa], >= 0; 0: none. "
+                          "The summary reports whether, when and where the "
+                          "von Mises stress exceeded it (the viscoelastic "
+                          "model is not valid beyond).");
+        prm.leave_subsection();
+      }
 
     SpherePlateMesh::declare_parameters(prm);
     Newmark::declare_parameters(prm);
@@ -200,9 +220,12 @@ namespace impact_fem
   }
 
 
-  ImpactProblem::ImpactProblem(ParameterHandler &prm, const MPI_Comm comm)
+  ImpactProblem::ImpactProblem(ParameterHandler &prm,
+                               const MPI_Comm    comm,
+                               std::ostream     &log)
     : mpi_communicator(comm)
-    , pcout(std::cout, Utilities::MPI::this_mpi_process(comm) == 0)
+    , pcout(log, Utilities::MPI::this_mpi_process(comm) == 0)
+    , log_is_terminal(&log == &std::cout && isatty(STDOUT_FILENO))
     , parameters(prm)
     , triangulation(comm,
                     Triangulation<2>::limit_level_difference_at_vertices)
@@ -248,15 +271,19 @@ namespace impact_fem
                            "load."));
 
     prm.enter_subsection("Sphere");
-    sphere_material = materials::create_material(prm);
+    sphere_material   = materials::create_material(prm);
+    yield_strength[0] = prm.get_double("Yield strength");
     prm.leave_subsection();
     prm.enter_subsection("Plate");
-    plate_material = materials::create_material(prm);
+    plate_material    = materials::create_material(prm);
+    yield_strength[1] = prm.get_double("Yield strength");
     prm.leave_subsection();
 
     has_material_damping =
       sphere_material->damping_tangent().norm() > 0 ||
       plate_material->damping_tangent().norm() > 0;
+    has_internal_variables = sphere_material->n_internal_variables() > 0 ||
+                             plate_material->n_internal_variables() > 0;
 
     mesh.parse_parameters(prm, geometry);
     time_integrator.parse_parameters(prm);
@@ -390,6 +417,7 @@ namespace impact_fem
                          &stiffness_matrix,
                          &boundary_damping_matrix,
                          &material_damping_matrix,
+                         &internal_stiffness_matrix,
                          &effective_stiffness})
       matrix->reinit(sparsity);
 
@@ -399,7 +427,8 @@ namespace impact_fem
                          &body_force,
                          &sphere_momentum_weights,
                          &plate_bottom_weights,
-                         &sphere_mask})
+                         &sphere_mask,
+                         &internal_force_predictor})
       vector->reinit(locally_owned_dofs, mpi_communicator);
 
     pcout << "  mesh: " << triangulation.n_global_active_cells()
@@ -430,7 +459,8 @@ namespace impact_fem
     FullMatrix<double>  cell_mass(dofs_per_cell, dofs_per_cell),
       cell_stiffness(dofs_per_cell, dofs_per_cell),
       cell_boundary_damping(dofs_per_cell, dofs_per_cell),
-      cell_material_damping(dofs_per_cell, dofs_per_cell);
+      cell_material_damping(dofs_per_cell, dofs_per_cell),
+      cell_internal_stiffness(dofs_per_cell, dofs_per_cell);
     Vector<double> cell_momentum(dofs_per_cell), cell_bottom(dofs_per_cell),
       cell_mask(dofs_per_cell);
     std::vector<types::global_dof_index> local_dofs(dofs_per_cell);
@@ -445,6 +475,8 @@ namespace impact_fem
           const auto &material = material_of(cell->material_id());
           const SymmetricTensor<4, 3> C   = material.stiffness_tangent();
           const SymmetricTensor<4, 3> D   = material.damping_tangent();
+          const SymmetricTensor<4, 3> C_internal =
+            material.internal_tangent(time_integrator.time_step);
           const double                rho = material.density();
           const bool on_sphere = cell->material_id() == body_ids::sphere;
 
@@ -452,6 +484,7 @@ namespace impact_fem
           cell_stiffness        = 0;
           cell_boundary_damping = 0;
           cell_material_damping = 0;
+          cell_internal_stiffness = 0;
           cell_momentum         = 0;
           cell_bottom           = 0;
           fe_values.reinit(cell);
@@ -469,12 +502,14 @@ namespace impact_fem
                   const Tensor<1, 2>          phi_i = fe_values[u].value(i, q);
                   const SymmetricTensor<2, 3> C_eps = C * strain[i];
                   const SymmetricTensor<2, 3> D_eps = D * strain[i];
+                  const SymmetricTensor<2, 3> Ci_eps = C_internal * strain[i];
                   for (unsigned int j = 0; j < dofs_per_cell; ++j)
                     {
                       cell_mass(i, j) +=
                         rho * (phi_i * fe_values[u].value(j, q)) * dV;
                       cell_stiffness(i, j) += (C_eps * strain[j]) * dV;
                       cell_material_damping(i, j) += (D_eps * strain[j]) * dV;
+                      cell_internal_stiffness(i, j) += (Ci_eps * strain[j]) * dV;
                     }
                   if (on_sphere)
                     cell_momentum(i) += rho * phi_i[1] * dV;
@@ -532,6 +567,9 @@ namespace impact_fem
           constraints.distribute_local_to_global(cell_material_damping,
                                                  local_dofs,
                                                  material_damping_matrix);
+          constraints.distribute_local_to_global(cell_internal_stiffness,
+                                                 local_dofs,
+                                                 internal_stiffness_matrix);
           constraints.distribute_local_to_global(cell_momentum,
                                                  local_dofs,
                                                  sphere_momentum_weights);
@@ -546,7 +584,8 @@ namespace impact_fem
     for (auto *matrix : {&mass_matrix,
                          &stiffness_matrix,
                          &boundary_damping_matrix,
-                         &material_damping_matrix})
+                         &material_damping_matrix,
+                         &internal_stiffness_matrix})
       matrix->compress(VectorOperation::add);
     sphere_momentum_weights.compress(VectorOperation::add);
     plate_bottom_weights.compress(VectorOperation::add);
@@ -566,6 +605,8 @@ namespace impact_fem
     effective_stiffness.add(time_integrator.c_M, mass_matrix);
     effective_stiffness.add(time_integrator.c_C, boundary_damping_matrix);
     effective_stiffness.add(time_integrator.c_C, material_damping_matrix);
+    // The Maxwell arms' algorithmic tangent (constant for a constant step).
+    effective_stiffness.add(1., internal_stiffness_matrix);
     direct_solver = std::make_unique<TrilinosWrappers::SolverDirect>(
       solver_control,
       TrilinosWrappers::SolverDirect::AdditionalData(false,
@@ -628,6 +669,24 @@ namespace impact_fem
       }
     contact_velocity = impact_velocity + (static_press ? 0. : gravity * time);
     weighted_gaps    = contact.weighted_gaps(displacement);
+
+    // The bodies start unstrained (the flight is rigid) with relaxed arms.
+    internal_force_predictor = 0;
+    if (has_internal_variables)
+      {
+        const unsigned int n_q_points =
+          QGauss<2>(fe->degree + 1).size();
+        for (const auto &cell : triangulation.active_cell_iterators())
+          if (cell->is_locally_owned() &&
+              material_of(cell->material_id()).n_internal_variables() > 0)
+            {
+              material_states.initialize(cell, n_q_points);
+              for (const auto &state : material_states.get_data(cell))
+                state->internal.assign(
+                  material_of(cell->material_id()).n_internal_variables(),
+                  SymmetricTensor<2, 3>());
+            }
+      }
   }
 
 
@@ -655,6 +714,8 @@ namespace impact_fem
           rhs += damping_force;
         }
       rhs += body_force;
+      // History of the Maxwell arms.
+      rhs -= internal_force_predictor;
     }
     {
       TimerOutput::Scope t(*computing_timer, "solve free step");
@@ -706,6 +767,83 @@ namespace impact_fem
     weighted_gaps     = new_gaps;
     time += tn.time_step;
     ++step;
+    update_material_states();
+  }
+
+
+  void
+  ImpactProblem::update_material_states()
+  {
+    if (!has_internal_variables)
+      return;
+    TimerOutput::Scope t(*computing_timer, "update material states");
+    const double dt = time_integrator.time_step;
+    TrilinosWrappers::MPI::Vector ghosted(locally_owned_dofs,
+                                          locally_relevant_dofs,
+                                          mpi_communicator);
+    {
+      TrilinosWrappers::MPI::Vector distributed(displacement);
+      constraints.distribute(distributed);
+      ghosted = distributed;
+    }
+    const QGauss<2>    quadrature(fe->degree + 1);
+    FEValues<2>        fe_values(*mapping,
+                          *fe,
+                          quadrature,
+                          update_values | update_gradients |
+                            update_quadrature_points | update_JxW_values);
+    const unsigned int dofs_per_cell = fe->n_dofs_per_cell();
+    Vector<double>     cell_force(dofs_per_cell);
+    std::vector<types::global_dof_index> local_dofs(dofs_per_cell);
+    std::vector<Tensor<1, 2>>            values(quadrature.size());
+    std::vector<Tensor<2, 2>>            gradients(quadrature.size());
+    const FEValuesExtractors::Vector     u(0);
+    double dissipated = 0, stored[2] = {0, 0};
+
+    internal_force_predictor = 0;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned() &&
+          material_of(cell->material_id()).n_internal_variables() > 0)
+        {
+          const auto &material = material_of(cell->material_id());
+          const auto  states   = material_states.get_data(cell);
+          const unsigned int body = cell->material_id() == body_ids::sphere ? 0 : 1;
+          fe_values.reinit(cell);
+          fe_values[u].get_function_values(ghosted, values);
+          fe_values[u].get_function_gradients(ghosted, gradients);
+          cell_force = 0;
+          for (unsigned int q = 0; q < quadrature.size(); ++q)
+            {
+              const double r  = fe_values.quadrature_point(q)[0];
+              const double dV = 2 * M_PI * r * fe_values.JxW(q);
+              QuadraturePointState &state = *states[q];
+              const SymmetricTensor<2, 3> strain =
+                axisymmetric_strain(values[q], gradients[q], r);
+              dissipated += material.update_internal_variables(state.internal,
+                                                               state.strain,
+                                                               strain,
+                                                               dt) *
+                            dV;
+              state.strain = strain;
+              stored[body] += material.internal_energy(state.internal) * dV;
+              const SymmetricTensor<2, 3> predictor =
+                material.internal_stress_predictor(state.internal, strain, dt);
+              for (unsigned int i = 0; i < dofs_per_cell; ++i)
+                cell_force(i) +=
+                  (predictor * axisymmetric_strain(fe_values[u].value(i, q),
+                                                   fe_values[u].gradient(i, q),
+                                                   r)) *
+                  dV;
+            }
+          cell->get_dof_indices(local_dofs);
+          constraints.distribute_local_to_global(cell_force,
+                                                 local_dofs,
+                                                 internal_force_predictor);
+        }
+    internal_force_predictor.compress(VectorOperation::add);
+    dissipated_energy += Utilities::MPI::sum(dissipated, mpi_communicator);
+    for (unsigned int body = 0; body < 2; ++body)
+      internal_energy[body] = Utilities::MPI::sum(stored[body], mpi_communicator);
   }
 
 
@@ -724,14 +862,17 @@ namespace impact_fem
     const double plate_displacement = -(plate_bottom_weights * displacement);
 
     const double kinetic = 0.5 * mass_matrix.matrix_norm_square(velocity);
-    const double strain  = 0.5 * stiffness_matrix.matrix_norm_square(displacement);
+    // Stored elastic energy: the long-term springs (the stiffness matrix)
+    // plus the springs of the Maxwell arms (at the quadrature points).
+    const double strain  = 0.5 * stiffness_matrix.matrix_norm_square(displacement) +
+                          internal_energy[0] + internal_energy[1];
     TrilinosWrappers::MPI::Vector on_sphere(velocity);
     on_sphere.scale(sphere_mask);
     const double sphere_kinetic = 0.5 * mass_matrix.matrix_norm_square(on_sphere);
     on_sphere = displacement;
     on_sphere.scale(sphere_mask);
     const double sphere_strain =
-      0.5 * stiffness_matrix.matrix_norm_square(on_sphere);
+      0.5 * stiffness_matrix.matrix_norm_square(on_sphere) + internal_energy[0];
     const double balance = kinetic + strain + radiated_energy +
                            dissipated_energy - initial_energy - gravity_work;
     // A static press starts without energy: its balance is relative to the
@@ -740,19 +881,28 @@ namespace impact_fem
       initial_energy > 0 ? initial_energy : std::max(gravity_work, 1e-300);
 
     TimerOutput::Scope t_stress(*computing_timer, "postprocess stress");
-    // Largest von Mises stress over the quadrature points near the contact,
-    // where it peaks (Hertz: 0.48 a below the surface); the rest of the
-    // bodies only carries the much weaker radiated waves.
+    // Largest von Mises stress of each body over the quadrature points near
+    // the contact, where it peaks (Hertz: 0.48 a below the surface); the
+    // rest of the bodies only carries the much weaker radiated waves. The
+    // stress is the total one: elastic, viscous (Kelvin-Voigt) and that of
+    // the Maxwell arms.
     const double   stress_zone = 2 * mesh.contact_surface_radius;
     const Point<2> contact_points[2] = {Point<2>(0, 0),
                                         Point<2>(0, geometry.initial_gap)};
     TrilinosWrappers::MPI::Vector ghosted(locally_owned_dofs,
                                           locally_relevant_dofs,
-                                          mpi_communicator);
+                                          mpi_communicator),
+      ghosted_velocity(ghosted);
     {
       TrilinosWrappers::MPI::Vector distributed(displacement);
       constraints.distribute(distributed);
       ghosted = distributed;
+      if (has_material_damping)
+        {
+          distributed = velocity;
+          constraints.distribute(distributed);
+          ghosted_velocity = distributed;
+        }
     }
     const QGauss<2> quadrature(fe->degree + 1);
     FEValues<2>     fe_values(*mapping,
@@ -760,40 +910,85 @@ namespace impact_fem
                           quadrature,
                           update_values | update_gradients |
                             update_quadrature_points);
-    std::vector<Tensor<1, 2>> values(quadrature.size());
-    std::vector<Tensor<2, 2>> gradients(quadrature.size());
+    std::vector<Tensor<1, 2>> values(quadrature.size()),
+      velocity_values(quadrature.size());
+    std::vector<Tensor<2, 2>> gradients(quadrature.size()),
+      velocity_gradients(quadrature.size());
     const FEValuesExtractors::Vector u(0);
-    double   max_stress = 0;
-    Point<2> max_location;
+    double   body_max[2] = {0, 0};
+    Point<2> body_location[2];
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned() &&
           std::min(cell->center().distance(contact_points[0]),
                    cell->center().distance(contact_points[1])) < stress_zone)
         {
+          const auto &material = material_of(cell->material_id());
+          const unsigned int body =
+            cell->material_id() == body_ids::sphere ? 0 : 1;
           fe_values.reinit(cell);
           fe_values[u].get_function_values(ghosted, values);
           fe_values[u].get_function_gradients(ghosted, gradients);
-          const auto C = material_of(cell->material_id()).stiffness_tangent();
+          const bool viscous = material.damping_tangent().norm() > 0;
+          if (viscous)
+            {
+              fe_values[u].get_function_values(ghosted_velocity,
+                                               velocity_values);
+              fe_values[u].get_function_gradients(ghosted_velocity,
+                                                  velocity_gradients);
+            }
+          const auto C = material.stiffness_tangent();
+          const auto D = material.damping_tangent();
+          std::vector<std::shared_ptr<QuadraturePointState>> states;
+          if (material.n_internal_variables() > 0)
+            states = material_states.get_data(cell);
           for (unsigned int q = 0; q < quadrature.size(); ++q)
             {
               const Point<2> &x = fe_values.quadrature_point(q);
-              const double    s =
-                von_mises(C * axisymmetric_strain(values[q], gradients[q], x[0]));
-              if (s > max_stress)
+              SymmetricTensor<2, 3> stress =
+                C * axisymmetric_strain(values[q], gradients[q], x[0]);
+              if (viscous)
+                stress += D * axisymmetric_strain(velocity_values[q],
+                                                  velocity_gradients[q],
+                                                  x[0]);
+              if (!states.empty())
+                stress += material.internal_stress(states[q]->internal);
+              const double s = von_mises(stress);
+              if (s > body_max[body])
                 {
-                  max_stress   = s;
-                  max_location = x;
+                  body_max[body]      = s;
+                  body_location[body] = x;
                 }
             }
         }
-    // The location travels with the rank that holds the maximum.
-    const auto global_max = Utilities::MPI::max(max_stress, mpi_communicator);
-    const unsigned int holder =
-      Utilities::MPI::min(max_stress == global_max ?
-                            Utilities::MPI::this_mpi_process(mpi_communicator) :
-                            Utilities::MPI::n_mpi_processes(mpi_communicator),
-                          mpi_communicator);
-    max_location = Utilities::MPI::broadcast(mpi_communicator, max_location, holder);
+    // Each location travels with the rank that holds the maximum.
+    for (unsigned int body = 0; body < 2; ++body)
+      {
+        const double global = Utilities::MPI::max(body_max[body], mpi_communicator);
+        const unsigned int holder = Utilities::MPI::min(
+          body_max[body] == global ?
+            Utilities::MPI::this_mpi_process(mpi_communicator) :
+            Utilities::MPI::n_mpi_processes(mpi_communicator),
+          mpi_communicator);
+        body_location[body] =
+          Utilities::MPI::broadcast(mpi_communicator, body_location[body], holder);
+        body_max[body] = global;
+        StressPeak &peak = stress_peak[body];
+        if (global > peak.value)
+          {
+            peak.value    = global;
+            peak.time     = time;
+            peak.location = body_location[body];
+          }
+        if (yield_strength[body] > 0 && global > yield_strength[body] &&
+            peak.first_yield_time < 0)
+          {
+            peak.first_yield_time     = time;
+            peak.first_yield_location = body_location[body];
+          }
+      }
+    const unsigned int max_body     = body_max[1] > body_max[0] ? 1 : 0;
+    const double       global_max   = body_max[max_body];
+    const Point<2>     max_location = body_location[max_body];
 
     double max_pressure = 0;
     for (const double p : contact_pressures)
@@ -811,6 +1006,14 @@ namespace impact_fem
     history.append("max_von_mises", global_max);
     history.append("max_von_mises_r", max_location[0]);
     history.append("max_von_mises_z", max_location[1]);
+    for (unsigned int body = 0; body < 2; ++body)
+      {
+        const std::string name = body == 0 ? "sphere" : "plate";
+        history.append("max_von_mises_" + name, body_max[body]);
+        history.append("max_von_mises_" + name + "_r", body_location[body][0]);
+        history.append("max_von_mises_" + name + "_z", body_location[body][1]);
+      }
+    history.append("internal_energy", internal_energy[0] + internal_energy[1]);
     history.append("kinetic_energy", kinetic);
     history.append("strain_energy", strain);
     history.append("dissipated_energy", dissipated_energy);
@@ -883,8 +1086,10 @@ namespace impact_fem
                           quadrature,
                           update_values | update_gradients |
                             update_quadrature_points);
-    std::vector<Tensor<1, 2>> values(quadrature.size());
-    std::vector<Tensor<2, 2>> gradients(quadrature.size());
+    std::vector<Tensor<1, 2>> values(quadrature.size()),
+      velocity_values(quadrature.size());
+    std::vector<Tensor<2, 2>> gradients(quadrature.size()),
+      velocity_gradients(quadrature.size());
     const FEValuesExtractors::Vector u(0);
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
@@ -894,13 +1099,25 @@ namespace impact_fem
           fe_values.reinit(cell);
           fe_values[u].get_function_values(ghosted_u, values);
           fe_values[u].get_function_gradients(ghosted_u, gradients);
-          const auto C = material_of(cell->material_id()).stiffness_tangent();
+          // The total stress: elastic, viscous and the Maxwell arms'.
+          const auto &material = material_of(cell->material_id());
+          const auto  C        = material.stiffness_tangent();
+          const auto  D        = material.damping_tangent();
+          fe_values[u].get_function_values(ghosted_v, velocity_values);
+          fe_values[u].get_function_gradients(ghosted_v, velocity_gradients);
+          std::vector<std::shared_ptr<QuadraturePointState>> states;
+          if (material.n_internal_variables() > 0)
+            states = material_states.get_data(cell);
           for (unsigned int q = 0; q < quadrature.size(); ++q)
             {
-              const SymmetricTensor<2, 3> sigma =
-                C * axisymmetric_strain(values[q],
-                                        gradients[q],
-                                        fe_values.quadrature_point(q)[0]);
+              const double r = fe_values.quadrature_point(q)[0];
+              SymmetricTensor<2, 3> sigma =
+                C * axisymmetric_strain(values[q], gradients[q], r) +
+                D * axisymmetric_strain(velocity_values[q],
+                                        velocity_gradients[q],
+                                        r);
+              if (!states.empty())
+                sigma += material.internal_stress(states[q]->internal);
               const double weight = 1. / quadrature.size();
               stress[0][index] += weight * sigma[0][0];
               stress[1][index] += weight * sigma[1][1];
@@ -934,7 +1151,7 @@ namespace impact_fem
   {
     const auto   now     = std::chrono::steady_clock::now();
     const double elapsed = std::chrono::duration<double>(now - wall_start).count();
-    if (!last && progress_interval > 0 && !isatty(STDOUT_FILENO) &&
+    if (!last && progress_interval > 0 && !log_is_terminal &&
         std::chrono::duration<double>(now - last_progress).count() <
           progress_interval)
       return;
@@ -955,7 +1172,7 @@ namespace impact_fem
         0;
     // On a terminal the line is updated in place every step; in a log file
     // a new line follows every progress interval.
-    static const bool terminal = isatty(STDOUT_FILENO);
+    const bool terminal = log_is_terminal;
     if (terminal)
       pcout << '\r';
     pcout << "  t = " << std::setw(8) << std::fixed << std::setprecision(2)
@@ -1002,11 +1219,18 @@ namespace impact_fem
                    fj = std::cbrt(force[j] * force[j]);
       return t[i] - fi * (t[j] - t[i]) / (fj - fi);
     };
+    // Kept within the steps around the change: a force that does not grow
+    // like t^(3/2) at first (a viscous contact starts with a finite force)
+    // extrapolates elsewhere; then the last step without contact is taken.
     if (first + 1 < n && force[first + 1] > 0)
-      first_contact = std::max(first > 0 ? t[first - 1] : 0.,
-                               zero_of(first, first + 1));
+      {
+        const double before = first > 0 ? t[first - 1] : 0.;
+        const double zero   = zero_of(first, first + 1);
+        first_contact = zero <= t[first] ? std::max(before, zero) : before;
+      }
     if (last < n && last + 1 < n && last > first)
-      separation = std::min(t[last + 1], zero_of(last, last - 1));
+      separation = std::max(t[last],
+                            std::min(t[last + 1], zero_of(last, last - 1)));
     const double contact_time = separation - first_contact;
 
     std::size_t peak = 0;
@@ -1067,6 +1291,54 @@ namespace impact_fem
       history["dissipated_energy"][n - 1] / E0;
     summary["max_von_mises"]          = max_von_mises;
     summary["max_penetration"]        = penetration;
+    // Yield check: the viscoelastic model holds only below the elastic limit.
+    bool        any_yield_strength = false, yield_exceeded = false;
+    std::string yield_report;
+    for (unsigned int body = 0; body < 2; ++body)
+      {
+        const std::string name = body == 0 ? "sphere" : "plate";
+        const StressPeak &peak = stress_peak[body];
+        const bool has_limit   = yield_strength[body] > 0;
+        const bool exceeded    = has_limit && peak.first_yield_time >= 0;
+        any_yield_strength |= has_limit;
+        yield_exceeded |= exceeded;
+        summary["von_mises_max_" + name]           = peak.value;
+        summary["von_mises_max_" + name + "_time"] = peak.time;
+        summary["von_mises_max_" + name + "_r"]    = peak.location[0];
+        summary["von_mises_max_" + name + "_z"]    = peak.location[1];
+        summary["yield_strength_" + name] =
+          has_limit ? nlohmann::json(yield_strength[body]) : nlohmann::json(nullptr);
+        summary["yield_exceeded_" + name] =
+          has_limit ? nlohmann::json(exceeded) : nlohmann::json(nullptr);
+        summary["yield_time_" + name] =
+          exceeded ? nlohmann::json(peak.first_yield_time) : nlohmann::json(nullptr);
+        summary["yield_r_" + name] =
+          exceeded ? nlohmann::json(peak.first_yield_location[0]) :
+                     nlohmann::json(nullptr);
+        summary["yield_z_" + name] =
+          exceeded ? nlohmann::json(peak.first_yield_location[1]) :
+                     nlohmann::json(nullptr);
+        std::ostringstream line;
+        line << std::setprecision(4) << "  von Mises " << name << " max "
+             << peak.value / 1e9 << " GPa at t = " << peak.time * 1e6
+             << " us, (r, z) = (" << peak.location[0] * 1e3 << ", "
+             << peak.location[1] * 1e3 << ") mm";
+        if (exceeded)
+          line << "; YIELD STRENGTH " << yield_strength[body] / 1e9
+               << " GPa EXCEEDED from t = " << peak.first_yield_time * 1e6
+               << " us at (" << peak.first_yield_location[0] * 1e3 << ", "
+               << peak.first_yield_location[1] * 1e3 << ") mm";
+        else if (has_limit)
+          line << " (below the yield strength " << yield_strength[body] / 1e9
+               << " GPa)";
+        yield_report += line.str() + "\n";
+      }
+    summary["yield_exceeded"] = any_yield_strength ?
+                                  nlohmann::json(yield_exceeded) :
+                                  nlohmann::json(nullptr);
+    summary["sphere_mass"]    = sphere_mass;
+    summary["internal_energy_fraction"] =
+      history["internal_energy"][n - 1] / E0;
     summary["time_step"]              = time_integrator.time_step;
     summary["cells"]                  = triangulation.n_global_active_cells();
     summary["dofs"]                   = dof_handler.n_dofs();
@@ -1105,7 +1377,7 @@ namespace impact_fem
 
     if (static_press)
       {
-        std::cout << "\nResult of the static press (" << output_directory
+        pcout << "\nResult of the static press (" << output_directory
                   << "):\n"
                   << std::setprecision(5) << "  contact force     "
                   << force[n - 1] << " N\n"
@@ -1121,7 +1393,7 @@ namespace impact_fem
                   << wall_time << " s" << std::endl;
         return;
       }
-    std::cout << "\nResult (" << output_directory << "):\n"
+    pcout << "\nResult (" << output_directory << "):\n"
               << std::setprecision(5)
               << "  first contact     " << first_contact * 1e6
               << " us, separation " << separation * 1e6 << " us\n"
@@ -1136,7 +1408,10 @@ namespace impact_fem
               << "  energy: sphere vibration " << sphere_vib / E0 * 100
               << " %, plate " << plate_stored / E0 * 100 << " %, radiated "
               << history["radiated_energy"][n - 1] / E0 * 100
+              << " %, dissipated "
+              << history["dissipated_energy"][n - 1] / E0 * 100
               << " %, balance error " << energy_error * 100 << " %\n"
+              << yield_report
               << "  max penetration   " << penetration * 1e9 << " nm\n"
               << "  cells " << triangulation.n_global_active_cells()
               << ", dofs " << dof_handler.n_dofs() << ", steps " << step
@@ -1195,8 +1470,15 @@ namespace impact_fem
            {"max_von_mises", "Pa", "largest von Mises stress in both bodies within 2 contact surface radii of the contact point"},
            {"max_von_mises_r", "m", "radial position of max_von_mises"},
            {"max_von_mises_z", "m", "axial position of max_von_mises (reference configuration)"},
+           {"max_von_mises_sphere", "Pa", "largest von Mises stress in the sphere (same zone)"},
+           {"max_von_mises_sphere_r", "m", "radial position of max_von_mises_sphere"},
+           {"max_von_mises_sphere_z", "m", "axial position of max_von_mises_sphere (reference configuration)"},
+           {"max_von_mises_plate", "Pa", "largest von Mises stress in the plate (same zone)"},
+           {"max_von_mises_plate_r", "m", "radial position of max_von_mises_plate"},
+           {"max_von_mises_plate_z", "m", "axial position of max_von_mises_plate (reference configuration)"},
            {"kinetic_energy", "J", "kinetic energy of both bodies"},
-           {"strain_energy", "J", "elastic strain energy of both bodies"},
+           {"strain_energy", "J", "stored elastic energy of both bodies, including internal_energy"},
+           {"internal_energy", "J", "elastic energy stored in the springs of the Maxwell arms (part of strain_energy)"},
            {"dissipated_energy", "J", "cumulative viscous dissipation in the materials"},
            {"radiated_energy", "J", "cumulative energy absorbed by the far-boundary dashpots"},
            {"gravity_work", "J", "cumulative work of gravity on the sphere"},

@@ -1,6 +1,8 @@
 // impact-fem: a sphere hitting a plate, axisymmetric elastodynamics with
 // frictionless contact. Usage: see print_usage() or fem/README.md.
 
+#include <impact_fem/analysis/material_point.h>
+#include <impact_fem/campaign.h>
 #include <impact_fem/impact_problem.h>
 
 #include <deal.II/base/mpi.h>
@@ -21,9 +23,13 @@ namespace
   print_usage(std::ostream &out)
   {
     out << "Usage: impact-fem [parameters.prm] [--set \"Section/Entry=value\"]...\n"
+           "                  [--velocities V1,V2,...]\n"
            "       impact-fem --print-parameters\n"
            "Runs one impact; results go to Output/Directory (history.h5, "
-           "summary.json).\n";
+           "summary.json).\n"
+           "With --velocities (or Campaign/Impact velocities) a campaign: one "
+           "run per velocity in Output/Directory/v<V>, plus index.json; "
+           "started again, it skips the complete runs.\n";
   }
 
 
@@ -88,8 +94,10 @@ main(int argc, char *argv[])
   try
     {
       impact_fem::ImpactProblem::declare_parameters(prm);
+      impact_fem::MaterialPointTest::declare_parameters(prm);
+      impact_fem::Campaign::declare_parameters(prm);
 
-      std::string              parameter_file;
+      std::string              parameter_file, velocity_list;
       std::vector<std::string> assignments;
       for (int i = 1; i < argc; ++i)
         {
@@ -115,6 +123,17 @@ main(int argc, char *argv[])
             }
           else if (arg.rfind("--set=", 0) == 0)
             assignments.push_back(arg.substr(6));
+          else if (arg == "--velocities")
+            {
+              AssertThrow(i + 1 < argc,
+                          ExcMessage("--velocities needs a list, e.g. "
+                                     "--velocities 0.5,1,2."));
+              velocity_list = argv[++i];
+              AssertThrow(!velocity_list.empty(),
+                          ExcMessage("--velocities: empty list."));
+            }
+          else if (arg.rfind("--velocities=", 0) == 0)
+            velocity_list = arg.substr(13);
           else if (!arg.empty() && arg[0] == '-')
             {
               AssertThrow(false, ExcMessage("Unknown option <" + arg + ">."));
@@ -138,8 +157,33 @@ main(int argc, char *argv[])
       for (const auto &assignment : assignments)
         set_entry(prm, assignment);
 
-      problem = std::make_unique<impact_fem::ImpactProblem>(prm, MPI_COMM_WORLD);
-      problem->run();
+      prm.enter_subsection("Scenario");
+      const std::string analysis = prm.get("Analysis");
+      prm.leave_subsection();
+      const std::vector<double> velocities =
+        impact_fem::Campaign::velocities(prm, velocity_list);
+      if (analysis == "material point")
+        {
+          if (is_root)
+            impact_fem::MaterialPointTest(prm).run();
+        }
+      else if (analysis == "specimen")
+        {
+          if (is_root)
+            impact_fem::SpecimenTest(prm).run();
+        }
+      else if (!velocities.empty())
+        {
+          impact_fem::Campaign campaign(prm, velocities);
+          if (campaign.run(MPI_COMM_WORLD) > 0)
+            return 1;
+        }
+      else
+        {
+          problem =
+            std::make_unique<impact_fem::ImpactProblem>(prm, MPI_COMM_WORLD);
+          problem->run();
+        }
     }
   catch (ExceptionBase &exc)
     {

@@ -1,4 +1,5 @@
-"""Bad input: each case must exit non-zero with a message naming the cause
+"""Bad input (including the viscoelastic entries and the campaign's
+velocity list): each case must exit non-zero with a message naming the cause
 and leave no result file (history.h5, summary.json); a run that fails
 mid-way leaves only history.incomplete.h5, marked incomplete."""
 import os
@@ -36,6 +37,14 @@ expect_failure("size_above_sphere", {"Mesh/Contact element size": 0.02}, ["Conta
 expect_failure("negative_gap", {"Scenario/Initial gap": -1e-3}, ["Initial gap"])
 expect_failure("unknown_entry_set", {"Scenario/Impact speed": 1}, ["Impact speed"])
 expect_failure("malformed_set", {"Scenario/Impact velocity": "fast"}, ["Impact velocity", "fast"])
+expect_failure("prony_lists", {"Sphere/Material model": "maxwell", "Sphere/Maxwell/Shear moduli": "1e10,2e10",
+                               "Sphere/Maxwell/Shear relaxation times": "1e-6"},
+               ["Shear moduli", "relaxation times", "one time per modulus"])
+expect_failure("negative_retardation", {"Sphere/Material model": "kelvin-voigt",
+                                        "Sphere/Kelvin-voigt/Retardation time": -1e-6},
+               ["Retardation time", "does not fit"])
+expect_failure("bad_velocities", None, ["velocities", "fast"],
+               extra_args=["--velocities", "1,fast"])
 expect_failure("missing_gmsh", {"Mesh/Gmsh executable": "/nonexistent/gmsh"}, ["gmsh was not found"])
 
 prm = os.path.join(work, "bad.prm")

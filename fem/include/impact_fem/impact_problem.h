@@ -8,6 +8,7 @@
 #include <impact_fem/time_integration/newmark.h>
 
 #include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/quadrature_point_data.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/timer.h>
 #include <deal.II/distributed/tria.h>
@@ -20,6 +21,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <chrono>
+#include <iostream>
 #include <utility>
 #include <vector>
 #include <memory>
@@ -39,10 +41,17 @@ namespace impact_fem
     static void
     declare_parameters(ParameterHandler &prm);
 
-    ImpactProblem(ParameterHandler &prm, const MPI_Comm comm);
+    /// Progress and results go to `log` on the first rank of `comm`.
+    ImpactProblem(ParameterHandler &prm,
+                  const MPI_Comm    comm,
+                  std::ostream     &log = std::cout);
 
     void
     run();
+
+    /// The signal (SIGINT, SIGTERM) that interrupted the last run, 0 if none.
+    static int
+    interrupt_received();
 
   private:
     void
@@ -60,6 +69,8 @@ namespace impact_fem
     void
     solve_time_step();
     void
+    update_material_states();
+    void
     record_step();
     void
     output_results(const unsigned int snapshot);
@@ -73,6 +84,7 @@ namespace impact_fem
 
     MPI_Comm           mpi_communicator;
     ConditionalOStream pcout;
+    bool               log_is_terminal; // progress updated in place
     // Created by run(): a TimerOutput destroyed while an exception unwinds
     // prints a warning that would bury the error message.
     std::unique_ptr<TimerOutput> computing_timer;
@@ -88,6 +100,8 @@ namespace impact_fem
     std::unique_ptr<materials::Interface> sphere_material, plate_material;
     double       sphere_mass = 0;           // [kg]
     bool         has_material_damping = false; // any viscous material
+    bool         has_internal_variables = false; // any Maxwell body
+    double       yield_strength[2] = {0, 0}; // sphere, plate [Pa]; 0: none
     double       hertz_contact_time = 0;    // [s]
     double       initial_energy = 0;        // [J]
     double       contact_velocity = 0;      // speed at first contact [m/s]
@@ -113,6 +127,7 @@ namespace impact_fem
     TrilinosWrappers::SparseMatrix stiffness_matrix;
     TrilinosWrappers::SparseMatrix boundary_damping_matrix; // dashpots
     TrilinosWrappers::SparseMatrix material_damping_matrix; // viscosity
+    TrilinosWrappers::SparseMatrix internal_stiffness_matrix; // Maxwell arms
     TrilinosWrappers::SparseMatrix effective_stiffness;
     std::unique_ptr<TrilinosWrappers::SolverDirect> direct_solver;
     SolverControl                                   solver_control;
@@ -124,6 +139,22 @@ namespace impact_fem
     TrilinosWrappers::MPI::Vector sphere_momentum_weights; // M e_z on the sphere
     TrilinosWrappers::MPI::Vector plate_bottom_weights;    // mean u_z of bottom
     TrilinosWrappers::MPI::Vector sphere_mask;             // 1 on sphere dofs
+    // Right-hand side part of the Maxwell arms' forces at the next step:
+    // int B^T internal_stress_predictor dV.
+    TrilinosWrappers::MPI::Vector internal_force_predictor;
+
+    /// Strain and internal variables at one quadrature point, at the end of
+    /// the last completed step (bodies with internal variables only, on the
+    /// locally owned cells).
+    struct QuadraturePointState
+    {
+      SymmetricTensor<2, 3>              strain;
+      std::vector<SymmetricTensor<2, 3>> internal;
+    };
+    CellDataStorage<typename Triangulation<2>::cell_iterator,
+                    QuadraturePointState>
+      material_states;
+    double internal_energy[2] = {0, 0}; // stored in the arms: sphere, plate [J]
 
     double         time = 0;
     unsigned int   step = 0;
@@ -138,6 +169,17 @@ namespace impact_fem
     double       separation_time = -1;
     double       largest_force   = -1;
     bool         contact_started = false;
+
+    /// Largest von Mises stress of a body over the run, and where the yield
+    /// strength was first exceeded.
+    struct StressPeak
+    {
+      double   value = 0, time = 0;
+      Point<2> location;
+      double   first_yield_time = -1;
+      Point<2> first_yield_location;
+    };
+    StressPeak stress_peak[2]; // sphere, plate
   };
 } // namespace impact_fem
 

@@ -30,18 +30,7 @@ namespace impact_fem
       young        = prm.get_double("Young's modulus");
       poisson      = prm.get_double("Poisson's ratio");
       mass_density = prm.get_double("Density");
-      AssertThrow(young > 0,
-                  ExcMessage("Young's modulus must be positive, got " +
-                             std::to_string(young) + " Pa."));
-      AssertThrow(poisson > -1 && poisson < 0.5,
-                  ExcMessage("Poisson's ratio must lie in (-1, 0.5), got " +
-                             std::to_string(poisson) +
-                             ": nu >= 0.5 is an incompressible material, "
-                             "which this displacement formulation cannot "
-                             "represent."));
-      AssertThrow(mass_density > 0,
-                  ExcMessage("Density must be positive, got " +
-                             std::to_string(mass_density) + " kg/m^3."));
+      check_elastic_constants(young, poisson, mass_density);
       stiffness = isotropic_stiffness(young, poisson);
     }
 

@@ -68,6 +68,34 @@ namespace impact_fem
     }
 
 
+    SymmetricTensor<4, 3>
+    isotropic_tensor(const double G, const double K)
+    {
+      const SymmetricTensor<2, 3> I = unit_symmetric_tensor<3>();
+      return 2 * G * deviator_tensor<3>() + K * outer_product(I, I);
+    }
+
+
+    void
+    check_elastic_constants(const double young,
+                            const double poisson,
+                            const double mass_density)
+    {
+      AssertThrow(young > 0,
+                  ExcMessage("Young's modulus must be positive, got " +
+                             std::to_string(young) + " Pa."));
+      AssertThrow(poisson > -1 && poisson < 0.5,
+                  ExcMessage("Poisson's ratio must lie in (-1, 0.5), got " +
+                             std::to_string(poisson) +
+                             ": nu >= 0.5 is an incompressible material, "
+                             "which this displacement formulation cannot "
+                             "represent."));
+      AssertThrow(mass_density > 0,
+                  ExcMessage("Density must be positive, got " +
+                             std::to_string(mass_density) + " kg/m^3."));
+    }
+
+
     bool
     register_material(const Registration &registration)
     {

@@ -24,11 +24,17 @@ namespace impact_fem
      *
      * The model is linear in the strain and the strain rate, which keeps the
      * effective stiffness of the implicit time step constant:
-     *   sigma = C : eps + D : d eps/dt + (history terms of the model),
-     * where C = stiffness_tangent() and D = damping_tangent(). Models with
-     * internal variables (generalised Maxwell) provide the history terms
-     * through the quadrature-point interface that follows in issue 4; elastic
-     * and Kelvin-Voigt materials need only C and D.
+     *   sigma = C : eps + D : d eps/dt + sigma_internal(h),
+     * where C = stiffness_tangent(), D = damping_tangent() and h are the
+     * internal variables of the model at a quadrature point (the spring
+     * strains of the Maxwell arms). Elastic and Kelvin-Voigt materials have
+     * no internal variables. For a model with internal variables the stress
+     * they carry at the end of a step of constant length dt is affine in the
+     * strain at the end of the step,
+     *   sigma_internal_{n+1} = internal_tangent(dt) : eps_{n+1}
+     *                          + internal_stress_predictor(h_n, eps_n, dt),
+     * so the algorithmic tangent is constant and the history enters the
+     * right-hand side only.
      *
      * A new kind is one new file: a class derived from Interface with a static
      * declare_parameters(ParameterHandler&) and IMPACT_FEM_REGISTER_MATERIAL.
@@ -57,6 +63,62 @@ namespace impact_fem
         return SymmetricTensor<4, 3>();
       }
 
+      /// Number of internal-variable tensors per quadrature point (0: none).
+      virtual unsigned int
+      n_internal_variables() const
+      {
+        return 0;
+      }
+
+      /// d sigma_internal_{n+1} / d eps_{n+1} for a step of length dt [Pa].
+      virtual SymmetricTensor<4, 3>
+      internal_tangent(const double /*time_step*/) const
+      {
+        return SymmetricTensor<4, 3>();
+      }
+
+      /// sigma_internal_{n+1} - internal_tangent(dt) : eps_{n+1}, from the
+      /// internal variables and the strain at the start of the step [Pa].
+      virtual SymmetricTensor<2, 3>
+      internal_stress_predictor(
+        const std::vector<SymmetricTensor<2, 3>> & /*internal*/,
+        const SymmetricTensor<2, 3> & /*strain_start*/,
+        const double /*time_step*/) const
+      {
+        return SymmetricTensor<2, 3>();
+      }
+
+      /// Advance the internal variables over a step in which the strain
+      /// goes linearly in time from strain_start to strain_end (exact for
+      /// that path). Returns the energy dissipated per unit volume over the
+      /// step [J/m^3], also exact for that path.
+      virtual double
+      update_internal_variables(
+        std::vector<SymmetricTensor<2, 3>> & /*internal*/,
+        const SymmetricTensor<2, 3> & /*strain_start*/,
+        const SymmetricTensor<2, 3> & /*strain_end*/,
+        const double /*time_step*/) const
+      {
+        return 0;
+      }
+
+      /// Stress carried by the internal variables [Pa].
+      virtual SymmetricTensor<2, 3>
+      internal_stress(
+        const std::vector<SymmetricTensor<2, 3>> & /*internal*/) const
+      {
+        return SymmetricTensor<2, 3>();
+      }
+
+      /// Elastic energy stored with the internal variables (in the springs
+      /// of the Maxwell arms) per unit volume [J/m^3].
+      virtual double
+      internal_energy(
+        const std::vector<SymmetricTensor<2, 3>> & /*internal*/) const
+      {
+        return 0;
+      }
+
       /// Instantaneous Young's modulus [Pa] and Poisson's ratio [-]: they
       /// define the Hertz estimates (time step, contact time) and the wave
       /// speeds of the absorbing boundaries.
@@ -76,6 +138,18 @@ namespace impact_fem
     /// Isotropic elasticity tensor from Young's modulus and Poisson's ratio.
     SymmetricTensor<4, 3>
     isotropic_stiffness(const double youngs_modulus, const double poissons_ratio);
+
+    /// Isotropic tensor 2 G P_dev + 3 K P_vol from a shear and a bulk
+    /// modulus (P_dev, P_vol: the deviatoric and volumetric projectors).
+    SymmetricTensor<4, 3>
+    isotropic_tensor(const double shear_modulus, const double bulk_modulus);
+
+    /// Checks shared by the models: E > 0, nu in (-1, 0.5), rho > 0, with
+    /// messages that name the entry.
+    void
+    check_elastic_constants(const double youngs_modulus,
+                            const double poissons_ratio,
+                            const double density);
 
 
     /// Everything the registry knows about one kind of material.

@@ -1,0 +1,73 @@
+#ifndef IMPACT_FEM_ANALYSIS_MATERIAL_POINT_H
+#define IMPACT_FEM_ANALYSIS_MATERIAL_POINT_H
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <string>
+
+namespace impact_fem
+{
+  using namespace dealii;
+
+  /**
+   * `Scenario/Analysis = material point`: the sphere's material at one
+   * quadrature point of a homogeneous specimen under a prescribed history,
+   * integrated with the same constant-step update as the impact (the
+   * material's tangents, internal-variable predictor and update; the
+   * trapezoidal rule of the Newmark step for the strain rate):
+   *  - `strain ramp`: eps(t) = min(t / t_ramp, 1) eps_hat (relaxation);
+   *  - `strain oscillation`: eps(t) = sin(omega t) eps_hat;
+   *  - `stress step`: sigma(t) = sigma_hat for t > 0 (creep; needs a
+   *    viscous material, e.g. Kelvin-Voigt).
+   * Writes `history.h5` (time, strain_* and stress_* in the (r, z, theta)
+   * basis, internal_energy, dissipated_energy) to Output/Directory.
+   */
+  class MaterialPointTest
+  {
+  public:
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    explicit MaterialPointTest(ParameterHandler &prm);
+
+    void
+    run();
+
+  private:
+    ParameterHandler &parameters;
+  };
+
+
+  /**
+   * `Scenario/Analysis = specimen`: the same histories applied to a
+   * homogeneous axisymmetric specimen, a cylinder (radius and height 1 mm,
+   * deal.II GridGenerator, 2 x 2 cells of the impact's element degree),
+   * quasi-static, with the finite-element assembly of the impact: the
+   * material's constant tangents (C + internal tangent + 2/dt D, the
+   * trapezoidal rule for the strain rate), the Maxwell arms' history as a
+   * right-hand side assembled from the quadrature-point states
+   * (CellDataStorage) and updated after each step.
+   *  - strain histories: the displacement of the homogeneous strain (rr = theta-theta
+   *    = eps_hat_rr, zz = eps_hat_zz; the only homogeneous axisymmetric
+   *    states) prescribed on the whole boundary;
+   *  - `stress step`: uniaxial stress sigma_hat_zz on the top face, bottom
+   *    on rollers, side free (creep).
+   * Writes `history.h5` with the mean strain and stress over the quadrature
+   * points (`strain_*`, `stress_*`) and `inhomogeneity` (largest deviation
+   * of a quadrature point's stress from the mean, relative to the mean's
+   * largest component).
+   */
+  class SpecimenTest
+  {
+  public:
+    explicit SpecimenTest(ParameterHandler &prm);
+
+    void
+    run();
+
+  private:
+    ParameterHandler &parameters;
+  };
+} // namespace impact_fem
+
+#endif

@@ -1,0 +1,599 @@
+#include <impact_fem/analysis/material_point.h>
+#include <impact_fem/materials/interface.h>
+#include <impact_fem/output/history.h>
+
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/symmetric_tensor.h>
+#include <deal.II/base/utilities.h>
+
+#include <cmath>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+
+namespace impact_fem
+{
+  namespace
+  {
+    // (rr, zz, theta-theta, rz) <-> 3x3 symmetric tensor in (r, z, theta).
+    SymmetricTensor<2, 3>
+    tensor_from(const std::vector<double> &c)
+    {
+      SymmetricTensor<2, 3> t;
+      t[0][0] = c[0];
+      t[1][1] = c[1];
+      t[2][2] = c[2];
+      t[0][1] = c[3];
+      return t;
+    }
+  } // namespace
+
+
+  void
+  MaterialPointTest::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Material point");
+    prm.declare_entry("Loading",
+                      "strain ramp",
+                      Patterns::Selection(
+                        "strain ramp|strain oscillation|stress step"),
+                      "Prescribed history at the material point (Scenario/"
+                      "Analysis = material point, sphere material): "
+                      "'strain ramp' min(t/t_ramp, 1) eps_hat, 'strain "
+                      "oscillation' sin(omega t) eps_hat, 'stress step' "
+                      "sigma_hat for t > 0.");
+    prm.declare_entry("Strain",
+                      "1e-3, -2e-4, 5e-4, 3e-4",
+                      Patterns::List(Patterns::Double(), 4, 4),
+                      "eps_hat: components rr, zz, theta-theta, rz [-].");
+    prm.declare_entry("Stress",
+                      "1e8, 0, 0, 5e7",
+                      Patterns::List(Patterns::Double(), 4, 4),
+                      "sigma_hat: components rr, zz, theta-theta, rz [Pa].");
+    prm.declare_entry("Ramp time",
+                      "1e-6",
+                      Patterns::Double(0),
+                      "t_ramp of the strain ramp [s], > 0.");
+    prm.declare_entry("Angular frequency",
+                      "1e6",
+                      Patterns::Double(0),
+                      "omega of the strain oscillation [rad/s].");
+    prm.declare_entry("Duration",
+                      "1e-5",
+                      Patterns::Double(0),
+                      "Length of the history [s], > 0.");
+    prm.declare_entry("Time step",
+                      "1e-8",
+                      Patterns::Double(0),
+                      "Constant time step [s], > 0.");
+    prm.leave_subsection();
+  }
+
+
+  MaterialPointTest::MaterialPointTest(ParameterHandler &prm)
+    : parameters(prm)
+  {}
+
+
+  void
+  MaterialPointTest::run()
+  {
+    ParameterHandler &prm = parameters;
+    prm.enter_subsection("Sphere");
+    const std::unique_ptr<materials::Interface> material =
+      materials::create_material(prm);
+    prm.leave_subsection();
+    prm.enter_subsection("Output");
+    const std::string directory = prm.get("Directory");
+    prm.leave_subsection();
+    prm.enter_subsection("Material point");
+    const std::string loading = prm.get("Loading");
+    const SymmetricTensor<2, 3> strain_hat = tensor_from(
+      Utilities::string_to_double(Utilities::split_string_list(prm.get("Strain"))));
+    const SymmetricTensor<2, 3> stress_hat = tensor_from(
+      Utilities::string_to_double(Utilities::split_string_list(prm.get("Stress"))));
+    const double ramp_time = prm.get_double("Ramp time");
+    const double omega     = prm.get_double("Angular frequency");
+    const double duration  = prm.get_double("Duration");
+    const double dt        = prm.get_double("Time step");
+    prm.leave_subsection();
+    AssertThrow(dt > 0 && duration > 0 && ramp_time > 0,
+                ExcMessage("Material point: Time step, Duration and Ramp "
+                           "time must be positive."));
+
+    const SymmetricTensor<4, 3> C = material->stiffness_tangent();
+    const SymmetricTensor<4, 3> D = material->damping_tangent();
+    const SymmetricTensor<4, 3> C_internal = material->internal_tangent(dt);
+    std::vector<SymmetricTensor<2, 3>> internal(material->n_internal_variables());
+    const bool stress_controlled = loading == "stress step";
+    AssertThrow(!stress_controlled || D.norm() > 0,
+                ExcMessage("Material point: the 'stress step' (creep) "
+                           "loading needs a viscous material (Kelvin-Voigt), "
+                           "whose strain starts continuous."));
+
+    auto prescribed_strain = [&](const double t) {
+      return loading == "strain ramp" ? std::min(t / ramp_time, 1.) * strain_hat :
+                                        std::sin(omega * t) * strain_hat;
+    };
+    auto prescribed_strain_rate = [&](const double t) {
+      return loading == "strain ramp" ?
+               (t < ramp_time ? 1. / ramp_time : 0.) * strain_hat :
+               omega * std::cos(omega * t) * strain_hat;
+    };
+
+    History history;
+    const char *components[4] = {"rr", "zz", "thetatheta", "rz"};
+    history.declare("time", "s", "time");
+    for (const auto *c : components)
+      history.declare(std::string("strain_") + c, "1", std::string("strain ") + c);
+    for (const auto *c : components)
+      history.declare(std::string("stress_") + c, "Pa", std::string("stress ") + c);
+    history.declare("internal_energy", "J/m^3", "energy stored in the Maxwell arms");
+    history.declare("dissipated_energy", "J/m^3", "cumulative dissipation in the Maxwell arms");
+
+    // Initial state: unstrained; under a stress step the dashpot takes the
+    // load at t = 0+, d eps/dt = D^-1 sigma_hat.
+    SymmetricTensor<2, 3> strain, strain_rate, stress;
+    if (stress_controlled)
+      {
+        strain_rate = invert(D) * stress_hat;
+        stress      = stress_hat;
+      }
+    double dissipated = 0;
+    auto   record     = [&](const double t) {
+      history.append("time", t);
+      const SymmetricTensor<2, 3> *tensors[2] = {&strain, &stress};
+      for (unsigned int k = 0; k < 2; ++k)
+        {
+          const std::string prefix = k == 0 ? "strain_" : "stress_";
+          history.append(prefix + "rr", (*tensors[k])[0][0]);
+          history.append(prefix + "zz", (*tensors[k])[1][1]);
+          history.append(prefix + "thetatheta", (*tensors[k])[2][2]);
+          history.append(prefix + "rz", (*tensors[k])[0][1]);
+        }
+      history.append("internal_energy", material->internal_energy(internal));
+      history.append("dissipated_energy", dissipated);
+    };
+    record(0);
+
+    const unsigned int n_steps = static_cast<unsigned int>(std::lround(duration / dt));
+    for (unsigned int step = 1; step <= n_steps; ++step)
+      {
+        const double t = step * dt;
+        const SymmetricTensor<2, 3> predictor =
+          material->internal_stress_predictor(internal, strain, dt);
+        SymmetricTensor<2, 3> new_strain, new_rate;
+        if (stress_controlled)
+          {
+            // C eps + D d eps/dt + C_int eps + predictor = sigma_hat with the
+            // trapezoidal rule of the Newmark step for d eps/dt.
+            new_strain = invert(C + 2 / dt * D + C_internal) *
+                         (stress_hat + D * (2 / dt * strain + strain_rate) -
+                          predictor);
+            new_rate = 2 / dt * (new_strain - strain) - strain_rate;
+          }
+        else
+          {
+            new_strain = prescribed_strain(t);
+            new_rate   = prescribed_strain_rate(t);
+          }
+        stress = C * new_strain + D * new_rate + C_internal * new_strain + predictor;
+        dissipated +=
+          material->update_internal_variables(internal, strain, new_strain, dt);
+        strain      = new_strain;
+        strain_rate = new_rate;
+        record(t);
+      }
+
+    std::filesystem::create_directories(directory);
+    std::map<std::string, std::string> text;
+    text["Scenario/Analysis"]        = "material point";
+    text["Material point/Loading"]   = loading;
+    std::map<std::string, double> numbers;
+    numbers["time_step [s]"] = dt;
+    history.write_hdf5(directory + "/history.h5", text, numbers, true);
+    std::cout << "material point (" << loading << "): " << n_steps
+              << " steps of " << dt << " s, final stress zz "
+              << stress[1][1] << " Pa -> " << directory << "/history.h5"
+              << std::endl;
+  }
+} // namespace impact_fem
+
+
+// ---------------------------------------------------------------------------
+// The homogeneous specimen.
+
+#include <deal.II/base/function.h>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/base/quadrature_point_data.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/tria.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/sparse_direct.h>
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/vector.h>
+#include <deal.II/numerics/vector_tools.h>
+
+namespace impact_fem
+{
+  namespace
+  {
+    // As in the impact: (r, z, theta) strain of a vector field, hoop u_r / r.
+    SymmetricTensor<2, 3>
+    specimen_strain(const Tensor<1, 2> &value, const Tensor<2, 2> &gradient, const double r)
+    {
+      SymmetricTensor<2, 3> strain;
+      strain[0][0] = gradient[0][0];
+      strain[1][1] = gradient[1][1];
+      strain[2][2] = value[0] / r;
+      strain[0][1] = 0.5 * (gradient[0][1] + gradient[1][0]);
+      return strain;
+    }
+
+    struct SpecimenPointState
+    {
+      SymmetricTensor<2, 3>              strain;
+      std::vector<SymmetricTensor<2, 3>> internal;
+    };
+
+    // Displacement of the homogeneous strain eps_rr = eps_tt = a, eps_zz = b.
+    class HomogeneousDisplacement : public Function<2>
+    {
+    public:
+      HomogeneousDisplacement(const double a, const double b)
+        : Function<2>(2)
+        , a(a)
+        , b(b)
+      {}
+      double
+      value(const Point<2> &p, const unsigned int component) const override
+      {
+        return component == 0 ? a * p[0] : b * p[1];
+      }
+
+    private:
+      double a, b;
+    };
+  } // namespace
+
+
+  SpecimenTest::SpecimenTest(ParameterHandler &prm)
+    : parameters(prm)
+  {}
+
+
+  void
+  SpecimenTest::run()
+  {
+    ParameterHandler &prm = parameters;
+    prm.enter_subsection("Sphere");
+    const std::unique_ptr<materials::Interface> material =
+      materials::create_material(prm);
+    prm.leave_subsection();
+    prm.enter_subsection("Output");
+    const std::string directory = prm.get("Directory");
+    prm.leave_subsection();
+    prm.enter_subsection("Mesh");
+    const unsigned int degree = prm.get_integer("Polynomial degree");
+    prm.leave_subsection();
+    prm.enter_subsection("Material point");
+    const std::string loading = prm.get("Loading");
+    const auto strain_hat =
+      Utilities::string_to_double(Utilities::split_string_list(prm.get("Strain")));
+    const auto stress_hat =
+      Utilities::string_to_double(Utilities::split_string_list(prm.get("Stress")));
+    const double ramp_time = prm.get_double("Ramp time");
+    const double omega     = prm.get_double("Angular frequency");
+    const double duration  = prm.get_double("Duration");
+    const double dt        = prm.get_double("Time step");
+    prm.leave_subsection();
+    const bool stress_controlled = loading == "stress step";
+    AssertThrow(dt > 0 && duration > 0 && ramp_time > 0,
+                ExcMessage("Material point: Time step, Duration and Ramp "
+                           "time must be positive."));
+    AssertThrow(stress_controlled ||
+                  (strain_hat[2] == strain_hat[0] && strain_hat[3] == 0),
+                ExcMessage("Specimen: a homogeneous axisymmetric strain has "
+                           "theta-theta = rr and no rz component; set "
+                           "Material point/Strain accordingly."));
+    AssertThrow(!stress_controlled ||
+                  (stress_hat[0] == 0 && stress_hat[2] == 0 && stress_hat[3] == 0),
+                ExcMessage("Specimen: the stress step is uniaxial, only the "
+                           "zz component of Material point/Stress may be "
+                           "non-zero."));
+    AssertThrow(!stress_controlled || material->damping_tangent().norm() > 0,
+                ExcMessage("Specimen: the 'stress step' (creep) loading needs "
+                           "a viscous material (Kelvin-Voigt)."));
+    auto strain_factor = [&](const double t) {
+      return loading == "strain ramp" ? std::min(t / ramp_time, 1.) :
+                                        std::sin(omega * t);
+    };
+
+    // Cylinder 0 <= r <= 1 mm, 0 <= z <= 1 mm; boundary ids of
+    // hyper_rectangle: 0 axis, 1 side, 2 bottom, 3 top.
+    const double     size = 1e-3;
+    Triangulation<2> triangulation;
+    GridGenerator::hyper_rectangle(triangulation,
+                                   Point<2>(0, 0),
+                                   Point<2>(size, size),
+                                   true);
+    triangulation.refine_global(1);
+    const FESystem<2> fe(FE_Q<2>(degree), 2);
+    DoFHandler<2>     dof_handler(triangulation);
+    dof_handler.distribute_dofs(fe);
+    const QGauss<2>     quadrature(degree + 1);
+    const QGauss<1>     face_quadrature(degree + 1);
+    FEValues<2>         fe_values(fe,
+                          quadrature,
+                          update_values | update_gradients |
+                            update_quadrature_points | update_JxW_values);
+    FEFaceValues<2>     fe_face_values(fe,
+                                   face_quadrature,
+                                   update_values | update_quadrature_points |
+                                     update_JxW_values);
+    const FEValuesExtractors::Vector u(0);
+    const unsigned int               dofs_per_cell = fe.n_dofs_per_cell();
+
+    CellDataStorage<Triangulation<2>::cell_iterator, SpecimenPointState> states;
+    for (const auto &cell : triangulation.active_cell_iterators())
+      {
+        states.initialize(cell, quadrature.size());
+        for (const auto &state : states.get_data(cell))
+          state->internal.assign(material->n_internal_variables(),
+                                 SymmetricTensor<2, 3>());
+      }
+
+    const SymmetricTensor<4, 3> C = material->stiffness_tangent();
+    const SymmetricTensor<4, 3> D = material->damping_tangent();
+    const SymmetricTensor<4, 3> C_internal = material->internal_tangent(dt);
+
+    DynamicSparsityPattern dsp(dof_handler.n_dofs());
+    DoFTools::make_sparsity_pattern(dof_handler, dsp);
+    SparsityPattern sparsity;
+    sparsity.copy_from(dsp);
+    SparseMatrix<double> system_matrix(sparsity), damping_matrix(sparsity);
+    Vector<double> displacement(dof_handler.n_dofs()), velocity(dof_handler.n_dofs()),
+      rhs(dof_handler.n_dofs());
+
+    auto make_constraints = [&](const double t, const bool homogeneous) {
+      AffineConstraints<double> constraints;
+      if (stress_controlled)
+        {
+          VectorTools::interpolate_boundary_values(
+            dof_handler, 0, Functions::ZeroFunction<2>(2), constraints,
+            fe.component_mask(FEValuesExtractors::Scalar(0)));
+          VectorTools::interpolate_boundary_values(
+            dof_handler, 2, Functions::ZeroFunction<2>(2), constraints,
+            fe.component_mask(FEValuesExtractors::Scalar(1)));
+        }
+      else
+        {
+          const double factor = homogeneous ? 0 : strain_factor(t);
+          const HomogeneousDisplacement boundary(factor * strain_hat[0],
+                                                 factor * strain_hat[1]);
+          for (const types::boundary_id id : {0, 1, 2, 3})
+            VectorTools::interpolate_boundary_values(dof_handler, id, boundary,
+                                                     constraints);
+        }
+      constraints.close();
+      return constraints;
+    };
+
+    // One assembly: K_eff = C + C_internal + c D (c = 2/dt, or 1 and no C
+    // for the initial rate), rhs = traction - history + D (c u_n + v_n).
+    auto assemble = [&](const AffineConstraints<double> &constraints,
+                        const bool initial_rate) {
+      system_matrix = 0;
+      damping_matrix = 0;
+      rhs = 0;
+      FullMatrix<double> cell_matrix(dofs_per_cell, dofs_per_cell),
+        cell_damping(dofs_per_cell, dofs_per_cell);
+      Vector<double>     cell_rhs(dofs_per_cell);
+      std::vector<types::global_dof_index> dofs(dofs_per_cell);
+      std::vector<SymmetricTensor<2, 3>>   strain(dofs_per_cell);
+      const SymmetricTensor<4, 3> A =
+        initial_rate ? D : C + C_internal + 2 / dt * D;
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        {
+          fe_values.reinit(cell);
+          cell_matrix  = 0;
+          cell_damping = 0;
+          cell_rhs     = 0;
+          const auto point_states = states.get_data(cell);
+          for (unsigned int q = 0; q < quadrature.size(); ++q)
+            {
+              const double r  = fe_values.quadrature_point(q)[0];
+              const double dV = 2 * M_PI * r * fe_values.JxW(q);
+              for (unsigned int i = 0; i < dofs_per_cell; ++i)
+                strain[i] = specimen_strain(fe_values[u].value(i, q),
+                                            fe_values[u].gradient(i, q), r);
+              const SymmetricTensor<2, 3> history =
+                initial_rate ? SymmetricTensor<2, 3>() :
+                               material->internal_stress_predictor(
+                                 point_states[q]->internal, point_states[q]->strain, dt);
+              for (unsigned int i = 0; i < dofs_per_cell; ++i)
+                {
+                  for (unsigned int j = 0; j < dofs_per_cell; ++j)
+                    {
+                      cell_matrix(i, j) += (A * strain[j]) * strain[i] * dV;
+                      cell_damping(i, j) += (D * strain[j]) * strain[i] * dV;
+                    }
+                  cell_rhs(i) -= (history * strain[i]) * dV;
+                }
+            }
+          if (stress_controlled)
+            for (const auto face : cell->face_indices())
+              if (cell->face(face)->at_boundary() &&
+                  cell->face(face)->boundary_id() == 3)
+                {
+                  fe_face_values.reinit(cell, face);
+                  for (unsigned int q = 0; q < face_quadrature.size(); ++q)
+                    for (unsigned int i = 0; i < dofs_per_cell; ++i)
+                      cell_rhs(i) += stress_hat[1] * fe_face_values[u].value(i, q)[1] *
+                                     2 * M_PI * fe_face_values.quadrature_point(q)[0] *
+                                     fe_face_values.JxW(q);
+                }
+          cell->get_dof_indices(dofs);
+          constraints.distribute_local_to_global(cell_matrix, cell_rhs, dofs,
+                                                 system_matrix, rhs);
+          damping_matrix.add(dofs, cell_damping);
+        }
+    };
+
+    History history;
+    const char *components[4] = {"rr", "zz", "thetatheta", "rz"};
+    history.declare("time", "s", "time");
+    for (const auto *c : components)
+      history.declare(std::string("strain_") + c, "1",
+                      std::string("mean strain ") + c + " over the quadrature points");
+    for (const auto *c : components)
+      history.declare(std::string("stress_") + c, "Pa",
+                      std::string("mean stress ") + c + " over the quadrature points");
+    history.declare("inhomogeneity", "1",
+                    "largest deviation of a quadrature point's stress from the "
+                    "mean, relative to the largest mean component");
+    history.declare("internal_energy", "J", "energy stored in the Maxwell arms of the specimen");
+    history.declare("dissipated_energy", "J", "cumulative dissipation in the Maxwell arms");
+
+    // Evaluates the step's strain and stress at the quadrature points
+    // (stress from the state at the start of the step), then updates the
+    // states; appends the means to the history.
+    double dissipated = 0;
+    auto   evaluate_and_update = [&](const double t, const bool update) {
+      std::vector<SymmetricTensor<2, 3>> strains, stresses;
+      std::vector<Tensor<1, 2>> values(quadrature.size()), rates(quadrature.size());
+      std::vector<Tensor<2, 2>> gradients(quadrature.size()),
+        rate_gradients(quadrature.size());
+      double stored = 0;
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        {
+          fe_values.reinit(cell);
+          fe_values[u].get_function_values(displacement, values);
+          fe_values[u].get_function_gradients(displacement, gradients);
+          fe_values[u].get_function_values(velocity, rates);
+          fe_values[u].get_function_gradients(velocity, rate_gradients);
+          const auto point_states = states.get_data(cell);
+          for (unsigned int q = 0; q < quadrature.size(); ++q)
+            {
+              const double r  = fe_values.quadrature_point(q)[0];
+              const double dV = 2 * M_PI * r * fe_values.JxW(q);
+              SpecimenPointState &state = *point_states[q];
+              const SymmetricTensor<2, 3> eps = specimen_strain(values[q], gradients[q], r);
+              SymmetricTensor<2, 3> sigma =
+                C * eps + D * specimen_strain(rates[q], rate_gradients[q], r);
+              if (update)
+                {
+                  sigma += C_internal * eps +
+                           material->internal_stress_predictor(state.internal,
+                                                               state.strain, dt);
+                  dissipated += material->update_internal_variables(
+                                  state.internal, state.strain, eps, dt) *
+                                dV;
+                  state.strain = eps;
+                }
+              stored += material->internal_energy(state.internal) * dV;
+              strains.push_back(eps);
+              stresses.push_back(sigma);
+            }
+        }
+      SymmetricTensor<2, 3> mean_strain, mean_stress;
+      for (unsigned int k = 0; k < strains.size(); ++k)
+        {
+          mean_strain += strains[k] / strains.size();
+          mean_stress += stresses[k] / stresses.size();
+        }
+      double deviation = 0, scale = 0;
+      for (unsigned int a = 0; a < 3; ++a)
+        for (unsigned int b = a; b < 3; ++b)
+          scale = std::max(scale, std::abs(mean_stress[a][b]));
+      for (const auto &sigma : stresses)
+        for (unsigned int a = 0; a < 3; ++a)
+          for (unsigned int b = a; b < 3; ++b)
+            deviation = std::max(deviation, std::abs(sigma[a][b] - mean_stress[a][b]));
+      history.append("time", t);
+      const SymmetricTensor<2, 3> *tensors[2] = {&mean_strain, &mean_stress};
+      for (unsigned int k = 0; k < 2; ++k)
+        {
+          const std::string prefix = k == 0 ? "strain_" : "stress_";
+          history.append(prefix + "rr", (*tensors[k])[0][0]);
+          history.append(prefix + "zz", (*tensors[k])[1][1]);
+          history.append(prefix + "thetatheta", (*tensors[k])[2][2]);
+          history.append(prefix + "rz", (*tensors[k])[0][1]);
+        }
+      history.append("inhomogeneity", scale > 0 ? deviation / scale : 0.);
+      history.append("internal_energy", stored);
+      history.append("dissipated_energy", dissipated);
+    };
+
+    // Initial state: unstrained; the initial rate from D v_0 = load (creep)
+    // or the prescribed rate.
+    if (stress_controlled)
+      {
+        const AffineConstraints<double> constraints = make_constraints(0, true);
+        assemble(constraints, true);
+        SparseDirectUMFPACK solver;
+        solver.solve(system_matrix, rhs);
+        velocity = rhs;
+        constraints.distribute(velocity);
+      }
+    else
+      {
+        const double rate = loading == "strain ramp" ? 1. / ramp_time : omega;
+        VectorTools::interpolate(dof_handler,
+                                 HomogeneousDisplacement(rate * strain_hat[0],
+                                                         rate * strain_hat[1]),
+                                 velocity);
+      }
+    evaluate_and_update(0, false);
+
+    const unsigned int n_steps =
+      static_cast<unsigned int>(std::lround(duration / dt));
+    Vector<double> previous(displacement.size()), tmp(displacement.size());
+    for (unsigned int step = 1; step <= n_steps; ++step)
+      {
+        const double t = step * dt;
+        const AffineConstraints<double> constraints = make_constraints(t, false);
+        assemble(constraints, false);
+        // + D (2/dt u_n + v_n) for the trapezoidal strain rate.
+        tmp = displacement;
+        tmp *= 2 / dt;
+        tmp += velocity;
+        Vector<double> damping_force(displacement.size());
+        damping_matrix.vmult(damping_force, tmp);
+        constraints.condense(damping_force);
+        rhs += damping_force;
+        SparseDirectUMFPACK solver;
+        solver.initialize(system_matrix);
+        previous = displacement;
+        solver.vmult(displacement, rhs);
+        constraints.distribute(displacement);
+        // v_{n+1} = 2/dt (u_{n+1} - u_n) - v_n
+        tmp = displacement;
+        tmp -= previous;
+        tmp *= 2 / dt;
+        tmp -= velocity;
+        velocity = tmp;
+        evaluate_and_update(t, true);
+      }
+
+    std::filesystem::create_directories(directory);
+    std::map<std::string, std::string> text;
+    text["Scenario/Analysis"]      = "specimen";
+    text["Material point/Loading"] = loading;
+    std::map<std::string, double> numbers;
+    numbers["time_step [s]"] = dt;
+    numbers["cells"]         = triangulation.n_active_cells();
+    numbers["dofs"]          = dof_handler.n_dofs();
+    history.write_hdf5(directory + "/history.h5", text, numbers, true);
+    std::cout << "specimen (" << loading << "): " << triangulation.n_active_cells()
+              << " cells, " << dof_handler.n_dofs() << " dofs, " << n_steps
+              << " steps of " << dt << " s -> " << directory << "/history.h5"
+              << std::endl;
+  }
+} // namespace impact_fem

@@ -1,0 +1,108 @@
+// Kelvin-Voigt viscoelasticity: sigma = C : (eps + tau_r d eps/dt), with
+// separate retardation times for the deviatoric and the volumetric parts.
+#include <impact_fem/materials/interface.h>
+
+namespace impact_fem
+{
+  namespace materials
+  {
+    /**
+     * sigma = 2 G (e + tau_d de/dt) + K (theta + tau_v dtheta/dt) I, with
+     * e the strain deviator and theta the volume strain: a spring and a
+     * dashpot in parallel. Linear in the strain rate, so it enters the time
+     * step as a constant damping matrix D = 2 G tau_d P_dev + 3 K tau_v P_vol.
+     */
+    class KelvinVoigt : public Interface
+    {
+    public:
+      static void
+      declare_parameters(ParameterHandler &prm)
+      {
+        prm.declare_entry("Young's modulus",
+                          "2e11",
+                          Patterns::Double(0),
+                          "Young's modulus E of the spring [Pa], > 0.");
+        prm.declare_entry("Poisson's ratio",
+                          "0.25",
+                          Patterns::Double(-1, 0.5),
+                          "Poisson's ratio nu of the spring [-], in (-1, "
+                          "0.5).");
+        prm.declare_entry("Density",
+                          "7800",
+                          Patterns::Double(0),
+                          "Mass density rho [kg/m^3], > 0.");
+        prm.declare_entry("Retardation time",
+                          "1e-7",
+                          Patterns::Double(0),
+                          "Retardation time tau_r of the deviatoric "
+                          "(shear) part [s], >= 0; 0 is elastic.");
+        prm.declare_entry("Volumetric retardation time",
+                          "-1",
+                          Patterns::Double(-1),
+                          "Retardation time of the volumetric part [s], "
+                          ">= 0; a negative value (default) takes the "
+                          "deviatoric 'Retardation time'.");
+      }
+
+      void
+      parse_parameters(ParameterHandler &prm) override
+      {
+        young        = prm.get_double("Young's modulus");
+        poisson      = prm.get_double("Poisson's ratio");
+        mass_density = prm.get_double("Density");
+        check_elastic_constants(young, poisson, mass_density);
+        const double tau_d = prm.get_double("Retardation time");
+        double       tau_v = prm.get_double("Volumetric retardation time");
+        AssertThrow(tau_d >= 0,
+                    ExcMessage("Kelvin-voigt/Retardation time must not be "
+                               "negative."));
+        if (tau_v < 0)
+          tau_v = tau_d;
+        const double G = young / (2 * (1 + poisson));
+        const double K = young / (3 * (1 - 2 * poisson));
+        stiffness      = isotropic_tensor(G, K);
+        damping        = isotropic_tensor(G * tau_d, K * tau_v);
+      }
+
+      double
+      density() const override
+      {
+        return mass_density;
+      }
+
+      SymmetricTensor<4, 3>
+      stiffness_tangent() const override
+      {
+        return stiffness;
+      }
+
+      SymmetricTensor<4, 3>
+      damping_tangent() const override
+      {
+        return damping;
+      }
+
+      double
+      youngs_modulus() const override
+      {
+        return young;
+      }
+
+      double
+      poissons_ratio() const override
+      {
+        return poisson;
+      }
+
+    private:
+      double                young = 0, poisson = 0, mass_density = 0;
+      SymmetricTensor<4, 3> stiffness, damping;
+    };
+
+    IMPACT_FEM_REGISTER_MATERIAL(
+      KelvinVoigt,
+      "kelvin-voigt",
+      "sigma = C : (eps + tau_r d eps/dt): E, nu, rho, deviatoric and "
+      "volumetric retardation times")
+  } // namespace materials
+} // namespace impact_fem
