@@ -188,6 +188,13 @@ int execute(const Arguments& arguments) {
               << ", b = " << hc->fit.parameter.value << " s/m (RMS residual "
               << hc->fit.quality.rms_residual * 100 << " % of the peak force)\n";
   }
+  if (const auto& fixed = calibration.campaign.hunt_crossley_hertz_exponent) {
+    std::cout.precision(6);
+    std::cout << "Hunt-Crossley with n = " << hertz_exponent << " fixed: c = "
+              << fixed->fit.stiffness.value << " N/m^" << hertz_exponent
+              << ", b = " << fixed->fit.parameter.value << " s/m (RMS residual "
+              << fixed->fit.quality.rms_residual * 100 << " % of the peak force)\n";
+  }
   std::cout << "calibration written to " << arguments.output->string() << '\n';
   if (input_problem) return 2;
   return convergence_problem ? 3 : 0;

@@ -456,13 +456,17 @@ struct CampaignStart {
   double mass;         // median
 };
 
+// One (c, n, p) of `model` for all runs. n is held fixed at the model's required exponent,
+// else at `exponent` when given (Hunt–Crossley at the Hertz value), else fitted.
 CampaignModelFit fit_campaign_model(const ContactModel& model,
                                     const std::vector<PreparedRun>& runs,
                                     const CampaignStart& start, double initial_damping,
                                     const CalibrationOptions& options,
-                                    std::vector<CalibrationProblem>& problems) {
-  const bool fixed_exponent = model.required_exponent.has_value();
-  const double n0 = fixed_exponent ? *model.required_exponent : start.exponent;
+                                    std::vector<CalibrationProblem>& problems,
+                                    std::optional<double> exponent = std::nullopt) {
+  if (model.required_exponent) exponent = model.required_exponent;
+  const bool fixed_exponent = exponent.has_value();
+  const double n0 = fixed_exponent ? *exponent : start.exponent;
   const double c0 = std::exp(start.log_reference_force - n0 * std::log(start.reference_approach));
   const reduced::ContactSetup reference_setup{start.mass, c0, n0};
   double scale = 1, p0 = start.restitution;
@@ -516,9 +520,13 @@ CampaignModelFit fit_campaign_model(const ContactModel& model,
   }
   campaign_fit.fit.quality = combine(parts);
   if (!fit.converged)
-    problems.push_back({model.name, "convergence",
-                        "the campaign fit of " + model.name +
-                            " did not converge: " + fit.solver_message});
+    problems.push_back(
+        {model.name, "convergence",
+         "the campaign fit of " + model.name +
+             (fixed_exponent && !model.required_exponent
+                  ? " with n fixed at " + format_number(*exponent)
+                  : std::string()) +
+             " did not converge: " + fit.solver_message});
   return campaign_fit;
 }
 
@@ -607,6 +615,14 @@ Calibration calibrate(const std::vector<FemRun>& runs, const CalibrationOptions&
     start.log_reference_force =
         std::log(hc.stiffness.value) + hc.exponent.value * std::log(start.reference_approach);
   }
+  // Hunt–Crossley with n at the Hertz value: its c (N/m^1.5) is the one to compare with the
+  // Hertz stiffness. Starts from the free fit's F_ref and b.
+  progress.start();
+  campaign.hunt_crossley_hertz_exponent =
+      fit_campaign_model(hunt_crossley_model(), prepared, start, hc.parameter.value, options,
+                         calibration.problems, hertz_exponent);
+  progress("campaign: hunt-crossley with n = " + format_number(hertz_exponent) +
+           " fitted in " + progress.elapsed());
   for (const auto& law : laws) {
     progress.start();
     try {

@@ -186,6 +186,10 @@ json to_json(const Calibration& calibration) {
         {"velocities", campaign.velocities},
         {"hunt_crossley",
          campaign.hunt_crossley ? campaign_fit_json(*campaign.hunt_crossley) : json(nullptr)},
+        {"hunt_crossley_hertz_exponent",
+         campaign.hunt_crossley_hertz_exponent
+             ? campaign_fit_json(*campaign.hunt_crossley_hertz_exponent)
+             : json(nullptr)},
         {"comparison_laws", laws},
         {"ranking", ranking}}}};
 }

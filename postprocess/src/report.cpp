@@ -646,15 +646,40 @@ Report build_report(const Campaign& campaign, const json& calibration,
                           "the fit of " + model.label +
                               " did not converge: its numbers are shown marked 'not converged'"});
 
-  // Offsets from Hertz of the calibrated elastic part, and the trend of b.
+  // Offsets from Hertz of the calibrated elastic part: n from the free fit, c from the fit
+  // with n held at 3/2 (the free fit's c is in N/m^n, not comparable with c_Hertz), and the
+  // trend of b.
   const json& hc = member(campaign_json, "hunt_crossley");
   if (hc.is_object()) {
-    const double c = number(member(member(member(hc, "parameters"), "c"), "value"));
-    const double n = number(member(member(member(hc, "parameters"), "n"), "value"));
-    report.parameter_notes.push_back(
-        "Offsets of the calibrated elastic part from Hertz: n - 3/2 = " + format(n - 1.5, 3) +
-        ", c / c_Hertz - 1 = " + percent(c / hertz - 1) + " (c_Hertz = " + format(hertz, 5) +
-        " N/m^1.5; c's unit depends on n, so this offset means most when n is close to 3/2).");
+    const auto parameter = [](const json& fit, const char* name) {
+      return number(member(member(member(fit, "parameters"), name), "value"));
+    };
+    const auto not_converged = [](const json& fit) {
+      return member(fit, "converged") == false ? std::string(" (not converged)") : std::string();
+    };
+    const double c = parameter(hc, "c");
+    const double n = parameter(hc, "n");
+    const json& fixed = member(campaign_json, "hunt_crossley_hertz_exponent");
+    std::string note = "Offsets of the calibrated elastic part from Hertz (c_Hertz = " +
+                       format(hertz, 5) + " N/m^1.5): n - 3/2 = " +
+                       (n >= 1.5 ? "+" : "") + format(n - 1.5, 3) +
+                       " (free fit of c, n, b: n = " + format(n, 6) + not_converged(hc) + ")";
+    if (fixed.is_object()) {
+      const double c_fixed = parameter(fixed, "c");
+      note += "; c / c_Hertz - 1 = " + percent(c_fixed / hertz - 1) +
+              " (fit with n fixed at 3/2, c and b free: c = " + format(c_fixed, 6) +
+              " N/m^1.5" + not_converged(fixed) +
+              "); for information, the free fit's c / c_Hertz - 1 = " + percent(c / hertz - 1) +
+              " (c = " + format(c, 6) +
+              " N/m^n at the fitted n: its unit depends on n, so it is not comparable with "
+              "c_Hertz).";
+    } else {
+      note += "; the free fit's c / c_Hertz - 1 = " + percent(c / hertz - 1) + " (c = " +
+              format(c, 6) +
+              " N/m^n: its unit depends on n, so this offset means most when n is close to 3/2; "
+              "the calibration has no fit with n fixed at 3/2).";
+    }
+    report.parameter_notes.push_back(note);
   }
   const std::string trend = damping_trend(report.runs);
   if (!trend.empty()) report.parameter_notes.push_back(trend);

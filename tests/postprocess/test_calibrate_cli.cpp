@@ -133,14 +133,19 @@ TEST_F(CalibrateCli, CampaignGivesEveryKey) {
   }
 
   const json& campaign = calibration["campaign"];
-  for (const char* key : {"fitted", "reason", "velocities", "hunt_crossley", "comparison_laws",
-                          "ranking"})
+  for (const char* key : {"fitted", "reason", "velocities", "hunt_crossley",
+                          "hunt_crossley_hertz_exponent", "comparison_laws", "ranking"})
     EXPECT_TRUE(campaign.contains(key)) << "campaign has no '" << key << "'";
   EXPECT_TRUE(campaign["fitted"].get<bool>());
   EXPECT_EQ(campaign["velocities"].size(), 3u);
-  std::vector<json> fits = {campaign["hunt_crossley"]};
+  std::vector<json> fits = {campaign["hunt_crossley"], campaign["hunt_crossley_hertz_exponent"]};
   for (const auto& law : campaign["comparison_laws"]) fits.push_back(law);
-  ASSERT_EQ(fits.size(), 3u);
+  ASSERT_EQ(fits.size(), 4u);
+  const json& fixed_n = campaign["hunt_crossley_hertz_exponent"]["parameters"]["n"];
+  EXPECT_EQ(fixed_n["value"].get<double>(), 1.5);
+  EXPECT_TRUE(fixed_n["fixed"].get<bool>());
+  EXPECT_TRUE(fixed_n["interval"][0].is_null());
+  EXPECT_TRUE(contains(run.out, "Hunt-Crossley with n = 1.5 fixed: c = ")) << run.out;
   for (const auto& fit : fits) {
     expect_fit_keys(fit, fit["model"].get<std::string>());
     for (const char* key : {"formula", "reference", "damping", "runs"})

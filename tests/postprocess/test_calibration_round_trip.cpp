@@ -23,12 +23,13 @@ const HuntCrossleyTruth truth;
 const std::vector<double> velocities = {0.5, 1, 2, 4};
 
 // Written to HDF5 and read back, so that the round trip includes the file format.
-std::vector<FemRun> campaign(double noise, const std::string& name) {
+std::vector<FemRun> campaign(double noise, const std::string& name,
+                             const HuntCrossleyTruth& made_by = truth) {
   const auto directory = impact::testing::scratch_directory(name);
   std::vector<std::filesystem::path> paths;
   unsigned seed = 7;
   for (double velocity : velocities) {
-    const auto run = impact::testing::synthetic_run(truth, velocity, noise, seed++);
+    const auto run = impact::testing::synthetic_run(made_by, velocity, noise, seed++);
     paths.push_back(write_fem_run(run, directory / ("v" + std::to_string(velocity))));
   }
   const Campaign read = read_runs(paths);
@@ -107,6 +108,42 @@ TEST(CalibrationRoundTrip, WithoutNoiseEveryFitReturnsTheTruth) {
     EXPECT_TRUE(law.fit.converged) << law.fit.model << ": " << law.fit.solver_message;
     EXPECT_GT(law.fit.quality.rms_residual, 100 * campaign.hunt_crossley->fit.quality.rms_residual)
         << law.fit.model;
+  }
+  // Hunt–Crossley with n held at 3/2 (the truth has 1.45): n fixed, c and b fitted, worse.
+  ASSERT_TRUE(campaign.hunt_crossley_hertz_exponent);
+  const ModelFit& fixed = campaign.hunt_crossley_hertz_exponent->fit;
+  print("campaign hunt-crossley n=3/2", fixed);
+  EXPECT_TRUE(fixed.converged) << fixed.solver_message;
+  EXPECT_TRUE(fixed.exponent_fixed);
+  EXPECT_FALSE(fixed.parameter_fixed);
+  EXPECT_EQ(fixed.exponent.value, hertz_exponent);
+  EXPECT_TRUE(std::isnan(fixed.exponent.standard_error)); // no interval for a fixed parameter
+  EXPECT_GT(fixed.stiffness.standard_error, 0);
+  EXPECT_GT(fixed.parameter.standard_error, 0);
+  EXPECT_GT(fixed.quality.rms_residual, 100 * campaign.hunt_crossley->fit.quality.rms_residual);
+  ASSERT_EQ(campaign.hunt_crossley_hertz_exponent->runs.size(), velocities.size());
+}
+
+// Data made with n = 3/2: the fit with n held at 3/2 returns c and b as the free fit does.
+TEST(CalibrationRoundTrip, WithTheHertzExponentTheFixedExponentFitReturnsTheTruth) {
+  HuntCrossleyTruth hertzian;
+  hertzian.exponent = hertz_exponent;
+  hertzian.stiffness = 1.7135e10;
+  CalibrationOptions options;
+  options.laws = {};
+  const Calibration calibration = calibrate(campaign(0, "hertzian", hertzian), options);
+  EXPECT_TRUE(calibration.problems.empty());
+  const auto& campaign = calibration.campaign;
+  ASSERT_TRUE(campaign.hunt_crossley);
+  ASSERT_TRUE(campaign.hunt_crossley_hertz_exponent);
+  for (const ModelFit* fit : {&campaign.hunt_crossley->fit,
+                              &campaign.hunt_crossley_hertz_exponent->fit}) {
+    print(fit->exponent_fixed ? "hertzian campaign n=3/2" : "hertzian campaign", *fit);
+    EXPECT_TRUE(fit->converged) << fit->solver_message;
+    EXPECT_NEAR(fit->stiffness.value / hertzian.stiffness, 1, 1e-6);
+    EXPECT_NEAR(fit->exponent.value, hertzian.exponent, 1e-6);
+    EXPECT_NEAR(fit->parameter.value, hertzian.damping, 1e-6 * hertzian.damping);
+    EXPECT_LT(fit->quality.rms_residual, 1e-6);
   }
 }
 

@@ -19,6 +19,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <map>
+#include <regex>
 #include <sstream>
 
 namespace {
@@ -361,6 +362,47 @@ void check_StatesTheVerdictTheModelsAndTheChecks() {
   EXPECT_EQ(errors->front().size(), 2 + velocities.size());
 }
 
+// The offsets from Hertz: n - 3/2 from the free campaign fit, c / c_Hertz - 1 from the fit
+// with n fixed at 3/2, and the free fit's c offset for information, all from the JSON.
+void check_StatesTheOffsetsFromHertz() {
+  const json campaign = ReportOfCampaign::calibration()["campaign"];
+  const json& free_fit = campaign["hunt_crossley"];
+  const json& fixed_fit = campaign["hunt_crossley_hertz_exponent"];
+  ASSERT_TRUE(fixed_fit.is_object()) << "the calibration has no fit with n fixed at 3/2";
+  EXPECT_TRUE(fixed_fit["parameters"]["n"]["fixed"].get<bool>());
+  EXPECT_EQ(fixed_fit["parameters"]["n"]["value"].get<double>(), 1.5);
+  const double n = free_fit["parameters"]["n"]["value"].get<double>();
+  const double c_free = free_fit["parameters"]["c"]["value"].get<double>();
+  const double c_fixed = fixed_fit["parameters"]["c"]["value"].get<double>();
+
+  const std::string markdown = read_text(ReportOfCampaign::output() / "report.md");
+  std::smatch match;
+  const std::string number = "([-+]?[0-9.]+(?:e[-+]?[0-9]+)?)";
+  const std::regex bullet(
+      "Offsets of the calibrated elastic part from Hertz \\(c_Hertz = " + number +
+      " N/m\\^1\\.5\\): n - 3/2 = " + number + " \\(free fit of c, n, b: n = " + number +
+      "\\); c / c_Hertz - 1 = " + number + " % \\(fit with n fixed at 3/2, c and b free: c = " +
+      number + " N/m\\^1\\.5\\); for information, the free fit's c / c_Hertz - 1 = " + number +
+      " % \\(c = " + number + " N/m\\^n");
+  ASSERT_TRUE(std::regex_search(markdown, match, bullet)) << markdown;
+  const double hertz = std::stod(match[1]);
+  EXPECT_NEAR(hertz, 1.7135e10, 1e-3 * 1.7135e10); // the recorded steel materials
+  // Offsets: three significant digits; values: six.
+  const auto expect_offset = [](double shown, double expected, const std::string& what) {
+    EXPECT_NEAR(shown, expected, 5e-3 * std::abs(expected) + 1e-12) << what;
+  };
+  expect_offset(std::stod(match[2]), n - 1.5, "n - 3/2");
+  expect_same(std::stod(match[3]), n, "free-fit n");
+  expect_offset(std::stod(match[4]) / 100, c_fixed / hertz - 1, "fixed-n c / c_Hertz - 1");
+  expect_same(std::stod(match[5]), c_fixed, "fixed-n c");
+  expect_offset(std::stod(match[6]) / 100, c_free / hertz - 1, "free-fit c / c_Hertz - 1");
+  expect_same(std::stod(match[7]), c_free, "free-fit c");
+  // The HTML states the same.
+  const std::string html = read_text(ReportOfCampaign::output() / "report.html");
+  EXPECT_TRUE(contains(html, "n - 3/2 = " + std::string(match[2])));
+  EXPECT_TRUE(contains(html, "fit with n fixed at 3/2, c and b free: c = " + std::string(match[5])));
+}
+
 void check_PageRendersInHeadlessChromium() {
   ASSERT_EQ(std::system("command -v chromium >/dev/null 2>&1"), 0)
       << "chromium is not installed: the rendering of the report cannot be checked. Install "
@@ -419,6 +461,10 @@ TEST(ReportOfCampaign, IsCompleteHoldsTheCalibrationAndRenders) {
   {
     SCOPED_TRACE("verdict, models, energy and yield");
     check_StatesTheVerdictTheModelsAndTheChecks();
+  }
+  {
+    SCOPED_TRACE("the offsets from Hertz");
+    check_StatesTheOffsetsFromHertz();
   }
   {
     SCOPED_TRACE("the page renders in headless Chromium");

@@ -9,7 +9,9 @@
 ///     model's own approach rate (closed form), so that no measured rate is differentiated;
 ///   - history: c, n, b together, by fitting the simulated impact's force F(t) to the measured
 ///     force history from first contact to shortly after separation.
-/// Over a campaign: one (c, n, p) per model fitted to the force histories of all runs.
+/// Over a campaign: one (c, n, p) per model fitted to the force histories of all runs, and
+/// Hunt–Crossley once more with n held at the Hertz value 3/2 (c, b free), whose c is in
+/// N/m^1.5 and so comparable with the Hertz stiffness.
 /// Residuals are force differences divided by the run's peak force; 95 % intervals from
 /// the covariance s^2 (J^T J)^-1 (postprocess/README.md gives the details).
 
@@ -117,8 +119,14 @@ struct CampaignCalibration {
   std::string reason;                       ///< why not, when not fitted
   std::vector<double> velocities;
   std::optional<CampaignModelFit> hunt_crossley;
+  /// Hunt–Crossley with n fixed at hertz_exponent (c, b free): the c to compare with the
+  /// Hertz stiffness (the free fit's c is in N/m^n and correlates with n).
+  std::optional<CampaignModelFit> hunt_crossley_hertz_exponent;
   std::vector<CampaignModelFit> comparison_laws;
 };
+
+/// The Hertz exponent, at which the fixed-exponent Hunt–Crossley campaign fit holds n.
+inline constexpr double hertz_exponent = 1.5;
 
 /// A problem met while calibrating (input or solver), kept for the JSON.
 struct CalibrationProblem {
