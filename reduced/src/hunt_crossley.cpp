@@ -25,12 +25,18 @@ using detail::log1p_excess_ratio;
 constexpr double epsilon = std::numeric_limits<double>::epsilon();
 
 // Both phase integrals have an integrable power singularity at u = 0 (the ends of the
-// contact, where f(x) -> 0) and none elsewhere: double-exponential quadrature.
-double integrate_from_zero(const std::function<double(double)>& density, double upper) {
-  if (upper <= 0) return 0.0;
+// contact, where f(x) -> 0) and none elsewhere: double-exponential quadrature, which also
+// keeps the abscissas next to a lower limit of 0 exact.
+double integrate_density(const std::function<double(double)>& density, double lower,
+                         double upper) {
+  if (upper <= lower) return 0.0;
   // (Not const: Boost 1.74 declares integrate const but defines the one-argument form without.)
   thread_local boost::math::quadrature::tanh_sinh<double> quadrature;
-  return quadrature.integrate([&](double u) { return density(u); }, 0.0, upper, 1e-14);
+  return quadrature.integrate([&](double u) { return density(u); }, lower, upper, 1e-14);
+}
+
+double integrate_from_zero(const std::function<double(double)>& density, double upper) {
+  return integrate_density(density, 0.0, upper);
 }
 
 // (t - log(1 + t)) / t^2 in quadruple precision (series near t = 0).
@@ -61,24 +67,18 @@ double velocity_work(double damping, double lower, double width) {
 constexpr int singular_rule_points = 24;
 constexpr double singular_rule_beta_limit = 1.0;
 
-
 // For ascending targets tau_j, the u_j in [0, upper] with integral_0^u_j density = tau_j.
 // Newton's method (the derivative is the density itself) safeguarded by bisection within
 // [u_(j-1), upper], integrating only from the previous root.
 std::vector<double> invert_cumulative_integral(const std::function<double(double)>& density,
                                                const std::vector<double>& targets, double upper) {
-  // (Not const: Boost 1.74 declares integrate const but defines the one-argument form without.)
-  thread_local boost::math::quadrature::tanh_sinh<double> quadrature;
   std::vector<double> roots;
   roots.reserve(targets.size());
   double previous_root = 0.0;
   double previous_target = 0.0;
   for (const double target : targets) {
     auto equation = [&](double u) {
-      const double increment =
-          u > previous_root
-              ? quadrature.integrate([&](double w) { return density(w); }, previous_root, u, 1e-14)
-              : 0.0;
+      const double increment = integrate_density(density, previous_root, u);
       return std::make_pair(previous_target + increment - target, density(u));
     };
     // Start from the local slope at the previous root (a first-order step); from the
