@@ -50,14 +50,10 @@ __float128 quad_log1p_excess_ratio(__float128 t) {
 // limit so that it is exact (no cancellation) for small widths:
 //   u lower / a + u^2 sigma(r) / a^2,   a = 1 + b lower,  r = b u / a,
 //   sigma(r) = (r - log(1 + r)) / r^2.
-double velocity_work_per_width(double damping, double lower, double width) {
+double velocity_work(double damping, double lower, double width) {
   const double scale = 1.0 + damping * lower;
   const double ratio = damping * width / scale;
-  return lower / scale + width * log1p_excess_ratio(ratio) / (scale * scale);
-}
-
-double velocity_work(double damping, double lower, double width) {
-  return width * velocity_work_per_width(damping, lower, width);
+  return width * (lower / scale + width * log1p_excess_ratio(ratio) / (scale * scale));
 }
 
 // The Gauss-Jacobi fast path integrates the smooth factor g of the time density exactly
@@ -297,14 +293,12 @@ double HuntCrossleyImpact::singular_rule_time(ImpactPhase phase, double distance
   const double alpha = exponent / (exponent + 1);
   const auto& rule = detail::gauss_jacobi_rule(singular_rule_points, alpha);
   const bool compressing = phase == ImpactPhase::compression;
-  const double start = compressing ? velocity_ : rebound_velocity();
   double sum = 0.0;
   for (std::size_t i = 0; i < rule.nodes.size(); ++i) {
     const double u = distance * rule.nodes[i];
-    const double rate = compressing ? velocity_ - u : rebound_velocity() + u;
-    const double energy_ratio = compressing ? velocity_work_per_width(damping_, rate, u)
-                                            : -velocity_work_per_width(damping_, start, u);
-    sum += rule.weights[i] * std::pow(energy_ratio, -alpha) / (1.0 + damping_ * rate);
+    const double rate = compressing ? velocity_ - u : restitution_rate(u);
+    const double energy = compressing ? compression_energy(u) : restitution_energy(u);
+    sum += rule.weights[i] * std::pow(energy / u, -alpha) / (1.0 + damping_ * rate);
   }
   // K = m / (c^(1/(n+1)) ((n+1) m)^alpha) [s (m/s)^(alpha - 1)]
   const double time_scale = mass_ / (std::pow(power_law_->stiffness(), 1.0 / (exponent + 1)) *
