@@ -1,3 +1,4 @@
+#include <impact_fem/axisymmetric_strain.h>
 #include <impact_fem/hertz.h>
 #include <impact_fem/impact_problem.h>
 
@@ -58,31 +59,78 @@ namespace impact_fem
     };
 
 
-    /**
-     * Small strain of a vector-valued shape function (or field) in the
-     * meridian plane, as a 3x3 tensor ordered (r, z, theta); the hoop strain
-     * is u_r / r.
-     */
-    SymmetricTensor<2, 3>
-    axisymmetric_strain(const Tensor<1, 2> &value,
-                        const Tensor<2, 2> &gradient,
-                        const double        r)
-    {
-      SymmetricTensor<2, 3> strain;
-      strain[0][0] = gradient[0][0];
-      strain[1][1] = gradient[1][1];
-      strain[2][2] = value[0] / r;
-      strain[0][1] = 0.5 * (gradient[0][1] + gradient[1][0]);
-      return strain;
-    }
-
-
     double
     von_mises(const SymmetricTensor<2, 3> &stress)
     {
       const SymmetricTensor<2, 3> s = deviator(stress);
       return std::sqrt(1.5 * scalar_product(s, s));
     }
+
+
+    /**
+     * The total stress at the quadrature points of a cell: elastic, viscous
+     * (Kelvin-Voigt; the velocity is read only for a viscous material) and
+     * that of the Maxwell arms (from the quadrature-point states, empty for
+     * a material without internal variables).
+     */
+    class CellStress
+    {
+    public:
+      CellStress(const Mapping<2> &mapping, const FiniteElement<2> &fe)
+        : quadrature(fe.degree + 1)
+        , fe_values(mapping,
+                    fe,
+                    quadrature,
+                    update_values | update_gradients | update_quadrature_points)
+        , values(quadrature.size())
+        , velocity_values(quadrature.size())
+        , gradients(quadrature.size())
+        , velocity_gradients(quadrature.size())
+        , stress(quadrature.size())
+      {}
+
+      template <typename CellIterator, typename VectorType, typename States>
+      const std::vector<SymmetricTensor<2, 3>> &
+      evaluate(const CellIterator            &cell,
+               const VectorType              &displacement,
+               const VectorType              &velocity,
+               const materials::Interface    &material,
+               const States                  &states)
+      {
+        const FEValuesExtractors::Vector u(0);
+        fe_values.reinit(cell);
+        fe_values[u].get_function_values(displacement, values);
+        fe_values[u].get_function_gradients(displacement, gradients);
+        const auto C       = material.stiffness_tangent();
+        const auto D       = material.damping_tangent();
+        const bool viscous = D.norm() > 0;
+        if (viscous)
+          {
+            fe_values[u].get_function_values(velocity, velocity_values);
+            fe_values[u].get_function_gradients(velocity, velocity_gradients);
+          }
+        for (unsigned int q = 0; q < quadrature.size(); ++q)
+          {
+            const double r = fe_values.quadrature_point(q)[0];
+            stress[q] = C * axisymmetric_strain(values[q], gradients[q], r);
+            if (viscous)
+              stress[q] += D * axisymmetric_strain(velocity_values[q],
+                                                   velocity_gradients[q],
+                                                   r);
+            if (!states.empty())
+              stress[q] += material.internal_stress(states[q]->internal);
+          }
+        return stress;
+      }
+
+      const QGauss<2> quadrature;
+      FEValues<2>     fe_values;
+
+    private:
+      std::vector<Tensor<1, 2>>          values, velocity_values;
+      std::vector<Tensor<2, 2>>          gradients, velocity_gradients;
+      std::vector<SymmetricTensor<2, 3>> stress;
+    };
 
 
     // Parameters flattened to "Section/Entry" -> value, from the JSON print.
@@ -904,18 +952,8 @@ namespace impact_fem
           ghosted_velocity = distributed;
         }
     }
-    const QGauss<2> quadrature(fe->degree + 1);
-    FEValues<2>     fe_values(*mapping,
-                          *fe,
-                          quadrature,
-                          update_values | update_gradients |
-                            update_quadrature_points);
-    std::vector<Tensor<1, 2>> values(quadrature.size()),
-      velocity_values(quadrature.size());
-    std::vector<Tensor<2, 2>> gradients(quadrature.size()),
-      velocity_gradients(quadrature.size());
-    const FEValuesExtractors::Vector u(0);
-    double   body_max[2] = {0, 0};
+    CellStress cell_stress(*mapping, *fe);
+    double     body_max[2] = {0, 0};
     Point<2> body_location[2];
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned() &&
@@ -925,34 +963,15 @@ namespace impact_fem
           const auto &material = material_of(cell->material_id());
           const unsigned int body =
             cell->material_id() == body_ids::sphere ? 0 : 1;
-          fe_values.reinit(cell);
-          fe_values[u].get_function_values(ghosted, values);
-          fe_values[u].get_function_gradients(ghosted, gradients);
-          const bool viscous = material.damping_tangent().norm() > 0;
-          if (viscous)
-            {
-              fe_values[u].get_function_values(ghosted_velocity,
-                                               velocity_values);
-              fe_values[u].get_function_gradients(ghosted_velocity,
-                                                  velocity_gradients);
-            }
-          const auto C = material.stiffness_tangent();
-          const auto D = material.damping_tangent();
           std::vector<std::shared_ptr<QuadraturePointState>> states;
           if (material.n_internal_variables() > 0)
             states = material_states.get_data(cell);
-          for (unsigned int q = 0; q < quadrature.size(); ++q)
+          const auto &stress = cell_stress.evaluate(
+            cell, ghosted, ghosted_velocity, material, states);
+          for (unsigned int q = 0; q < stress.size(); ++q)
             {
-              const Point<2> &x = fe_values.quadrature_point(q);
-              SymmetricTensor<2, 3> stress =
-                C * axisymmetric_strain(values[q], gradients[q], x[0]);
-              if (viscous)
-                stress += D * axisymmetric_strain(velocity_values[q],
-                                                  velocity_gradients[q],
-                                                  x[0]);
-              if (!states.empty())
-                stress += material.internal_stress(states[q]->internal);
-              const double s = von_mises(stress);
+              const Point<2> &x = cell_stress.fe_values.quadrature_point(q);
+              const double    s = von_mises(stress[q]);
               if (s > body_max[body])
                 {
                   body_max[body]      = s;
@@ -1080,45 +1099,22 @@ namespace impact_fem
     // components and von Mises).
     Vector<float> body(triangulation.n_active_cells());
     std::vector<Vector<float>> stress(5, Vector<float>(triangulation.n_active_cells()));
-    const QGauss<2> quadrature(fe->degree + 1);
-    FEValues<2>     fe_values(*mapping,
-                          *fe,
-                          quadrature,
-                          update_values | update_gradients |
-                            update_quadrature_points);
-    std::vector<Tensor<1, 2>> values(quadrature.size()),
-      velocity_values(quadrature.size());
-    std::vector<Tensor<2, 2>> gradients(quadrature.size()),
-      velocity_gradients(quadrature.size());
-    const FEValuesExtractors::Vector u(0);
+    CellStress cell_stress(*mapping, *fe);
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
           const unsigned int index = cell->active_cell_index();
           body[index] = cell->material_id();
-          fe_values.reinit(cell);
-          fe_values[u].get_function_values(ghosted_u, values);
-          fe_values[u].get_function_gradients(ghosted_u, gradients);
           // The total stress: elastic, viscous and the Maxwell arms'.
           const auto &material = material_of(cell->material_id());
-          const auto  C        = material.stiffness_tangent();
-          const auto  D        = material.damping_tangent();
-          fe_values[u].get_function_values(ghosted_v, velocity_values);
-          fe_values[u].get_function_gradients(ghosted_v, velocity_gradients);
           std::vector<std::shared_ptr<QuadraturePointState>> states;
           if (material.n_internal_variables() > 0)
             states = material_states.get_data(cell);
-          for (unsigned int q = 0; q < quadrature.size(); ++q)
+          const auto &sigmas =
+            cell_stress.evaluate(cell, ghosted_u, ghosted_v, material, states);
+          for (const auto &sigma : sigmas)
             {
-              const double r = fe_values.quadrature_point(q)[0];
-              SymmetricTensor<2, 3> sigma =
-                C * axisymmetric_strain(values[q], gradients[q], r) +
-                D * axisymmetric_strain(velocity_values[q],
-                                        velocity_gradients[q],
-                                        r);
-              if (!states.empty())
-                sigma += material.internal_stress(states[q]->internal);
-              const double weight = 1. / quadrature.size();
+              const double weight = 1. / sigmas.size();
               stress[0][index] += weight * sigma[0][0];
               stress[1][index] += weight * sigma[1][1];
               stress[2][index] += weight * sigma[2][2];

@@ -1,4 +1,5 @@
 #include <impact_fem/analysis/material_point.h>
+#include <impact_fem/axisymmetric_strain.h>
 #include <impact_fem/materials/interface.h>
 #include <impact_fem/output/history.h>
 
@@ -25,6 +26,84 @@ namespace impact_fem
       t[2][2] = c[2];
       t[0][1] = c[3];
       return t;
+    }
+
+
+    // What both analyses read: the sphere's material, the output directory
+    // and the prescribed history (subsection "Material point").
+    struct Loading
+    {
+      std::unique_ptr<materials::Interface> material;
+      std::string                           directory;
+      std::string                           loading;
+      std::vector<double>                   strain_hat, stress_hat;
+      double ramp_time = 0, omega = 0, duration = 0, dt = 0;
+    };
+
+
+    Loading
+    read_loading(ParameterHandler &prm)
+    {
+      Loading l;
+      prm.enter_subsection("Sphere");
+      l.material = materials::create_material(prm);
+      prm.leave_subsection();
+      prm.enter_subsection("Output");
+      l.directory = prm.get("Directory");
+      prm.leave_subsection();
+      prm.enter_subsection("Material point");
+      l.loading = prm.get("Loading");
+      l.strain_hat =
+        Utilities::string_to_double(Utilities::split_string_list(prm.get("Strain")));
+      l.stress_hat =
+        Utilities::string_to_double(Utilities::split_string_list(prm.get("Stress")));
+      l.ramp_time = prm.get_double("Ramp time");
+      l.omega     = prm.get_double("Angular frequency");
+      l.duration  = prm.get_double("Duration");
+      l.dt        = prm.get_double("Time step");
+      prm.leave_subsection();
+      AssertThrow(l.dt > 0 && l.duration > 0 && l.ramp_time > 0,
+                  ExcMessage("Material point: Time step, Duration and Ramp "
+                             "time must be positive."));
+      return l;
+    }
+
+
+    // The history's time, strain_* and stress_* columns (rr, zz,
+    // theta-theta, rz); the descriptions are "<before>strain rr<after>".
+    void
+    declare_components(History           &history,
+                       const std::string &before,
+                       const std::string &after)
+    {
+      const char *components[4] = {"rr", "zz", "thetatheta", "rz"};
+      history.declare("time", "s", "time");
+      for (const auto *c : components)
+        history.declare(std::string("strain_") + c, "1",
+                        before + "strain " + c + after);
+      for (const auto *c : components)
+        history.declare(std::string("stress_") + c, "Pa",
+                        before + "stress " + c + after);
+    }
+
+
+    // Appends t and the components of the strain and the stress.
+    void
+    append_components(History                     &history,
+                      const double                 t,
+                      const SymmetricTensor<2, 3> &strain,
+                      const SymmetricTensor<2, 3> &stress)
+    {
+      history.append("time", t);
+      const SymmetricTensor<2, 3> *tensors[2] = {&strain, &stress};
+      for (unsigned int k = 0; k < 2; ++k)
+        {
+          const std::string prefix = k == 0 ? "strain_" : "stress_";
+          history.append(prefix + "rr", (*tensors[k])[0][0]);
+          history.append(prefix + "zz", (*tensors[k])[1][1]);
+          history.append(prefix + "thetatheta", (*tensors[k])[2][2]);
+          history.append(prefix + "rz", (*tensors[k])[0][1]);
+        }
     }
   } // namespace
 
@@ -78,28 +157,16 @@ namespace impact_fem
   void
   MaterialPointTest::run()
   {
-    ParameterHandler &prm = parameters;
-    prm.enter_subsection("Sphere");
-    const std::unique_ptr<materials::Interface> material =
-      materials::create_material(prm);
-    prm.leave_subsection();
-    prm.enter_subsection("Output");
-    const std::string directory = prm.get("Directory");
-    prm.leave_subsection();
-    prm.enter_subsection("Material point");
-    const std::string loading = prm.get("Loading");
-    const SymmetricTensor<2, 3> strain_hat = tensor_from(
-      Utilities::string_to_double(Utilities::split_string_list(prm.get("Strain"))));
-    const SymmetricTensor<2, 3> stress_hat = tensor_from(
-      Utilities::string_to_double(Utilities::split_string_list(prm.get("Stress"))));
-    const double ramp_time = prm.get_double("Ramp time");
-    const double omega     = prm.get_double("Angular frequency");
-    const double duration  = prm.get_double("Duration");
-    const double dt        = prm.get_double("Time step");
-    prm.leave_subsection();
-    AssertThrow(dt > 0 && duration > 0 && ramp_time > 0,
-                ExcMessage("Material point: Time step, Duration and Ramp "
-                           "time must be positive."));
+    const Loading                 input      = read_loading(parameters);
+    const auto                   &material   = input.material;
+    const std::string            &directory  = input.directory;
+    const std::string            &loading    = input.loading;
+    const SymmetricTensor<2, 3>   strain_hat = tensor_from(input.strain_hat);
+    const SymmetricTensor<2, 3>   stress_hat = tensor_from(input.stress_hat);
+    const double                  ramp_time  = input.ramp_time;
+    const double                  omega      = input.omega;
+    const double                  duration   = input.duration;
+    const double                  dt         = input.dt;
 
     const SymmetricTensor<4, 3> C = material->stiffness_tangent();
     const SymmetricTensor<4, 3> D = material->damping_tangent();
@@ -122,12 +189,7 @@ namespace impact_fem
     };
 
     History history;
-    const char *components[4] = {"rr", "zz", "thetatheta", "rz"};
-    history.declare("time", "s", "time");
-    for (const auto *c : components)
-      history.declare(std::string("strain_") + c, "1", std::string("strain ") + c);
-    for (const auto *c : components)
-      history.declare(std::string("stress_") + c, "Pa", std::string("stress ") + c);
+    declare_components(history, "", "");
     history.declare("internal_energy", "J/m^3", "energy stored in the Maxwell arms");
     history.declare("dissipated_energy", "J/m^3", "cumulative dissipation in the Maxwell arms");
 
@@ -141,16 +203,7 @@ namespace impact_fem
       }
     double dissipated = 0;
     auto   record     = [&](const double t) {
-      history.append("time", t);
-      const SymmetricTensor<2, 3> *tensors[2] = {&strain, &stress};
-      for (unsigned int k = 0; k < 2; ++k)
-        {
-          const std::string prefix = k == 0 ? "strain_" : "stress_";
-          history.append(prefix + "rr", (*tensors[k])[0][0]);
-          history.append(prefix + "zz", (*tensors[k])[1][1]);
-          history.append(prefix + "thetatheta", (*tensors[k])[2][2]);
-          history.append(prefix + "rz", (*tensors[k])[0][1]);
-        }
+      append_components(history, t, strain, stress);
       history.append("internal_energy", material->internal_energy(internal));
       history.append("dissipated_energy", dissipated);
     };
@@ -224,18 +277,6 @@ namespace impact_fem
 {
   namespace
   {
-    // As in the impact: (r, z, theta) strain of a vector field, hoop u_r / r.
-    SymmetricTensor<2, 3>
-    specimen_strain(const Tensor<1, 2> &value, const Tensor<2, 2> &gradient, const double r)
-    {
-      SymmetricTensor<2, 3> strain;
-      strain[0][0] = gradient[0][0];
-      strain[1][1] = gradient[1][1];
-      strain[2][2] = value[0] / r;
-      strain[0][1] = 0.5 * (gradient[0][1] + gradient[1][0]);
-      return strain;
-    }
-
     struct SpecimenPointState
     {
       SymmetricTensor<2, 3>              strain;
@@ -272,31 +313,20 @@ namespace impact_fem
   SpecimenTest::run()
   {
     ParameterHandler &prm = parameters;
-    prm.enter_subsection("Sphere");
-    const std::unique_ptr<materials::Interface> material =
-      materials::create_material(prm);
-    prm.leave_subsection();
-    prm.enter_subsection("Output");
-    const std::string directory = prm.get("Directory");
-    prm.leave_subsection();
+    const Loading       input      = read_loading(prm);
+    const auto         &material   = input.material;
+    const std::string  &directory  = input.directory;
+    const std::string  &loading    = input.loading;
+    const auto         &strain_hat = input.strain_hat;
+    const auto         &stress_hat = input.stress_hat;
+    const double        ramp_time  = input.ramp_time;
+    const double        omega      = input.omega;
+    const double        duration   = input.duration;
+    const double        dt         = input.dt;
     prm.enter_subsection("Mesh");
     const unsigned int degree = prm.get_integer("Polynomial degree");
     prm.leave_subsection();
-    prm.enter_subsection("Material point");
-    const std::string loading = prm.get("Loading");
-    const auto strain_hat =
-      Utilities::string_to_double(Utilities::split_string_list(prm.get("Strain")));
-    const auto stress_hat =
-      Utilities::string_to_double(Utilities::split_string_list(prm.get("Stress")));
-    const double ramp_time = prm.get_double("Ramp time");
-    const double omega     = prm.get_double("Angular frequency");
-    const double duration  = prm.get_double("Duration");
-    const double dt        = prm.get_double("Time step");
-    prm.leave_subsection();
     const bool stress_controlled = loading == "stress step";
-    AssertThrow(dt > 0 && duration > 0 && ramp_time > 0,
-                ExcMessage("Material point: Time step, Duration and Ramp "
-                           "time must be positive."));
     AssertThrow(stress_controlled ||
                   (strain_hat[2] == strain_hat[0] && strain_hat[3] == 0),
                 ExcMessage("Specimen: a homogeneous axisymmetric strain has "
@@ -411,7 +441,7 @@ namespace impact_fem
               const double r  = fe_values.quadrature_point(q)[0];
               const double dV = 2 * M_PI * r * fe_values.JxW(q);
               for (unsigned int i = 0; i < dofs_per_cell; ++i)
-                strain[i] = specimen_strain(fe_values[u].value(i, q),
+                strain[i] = axisymmetric_strain(fe_values[u].value(i, q),
                                             fe_values[u].gradient(i, q), r);
               const SymmetricTensor<2, 3> history =
                 initial_rate ? SymmetricTensor<2, 3>() :
@@ -447,14 +477,7 @@ namespace impact_fem
     };
 
     History history;
-    const char *components[4] = {"rr", "zz", "thetatheta", "rz"};
-    history.declare("time", "s", "time");
-    for (const auto *c : components)
-      history.declare(std::string("strain_") + c, "1",
-                      std::string("mean strain ") + c + " over the quadrature points");
-    for (const auto *c : components)
-      history.declare(std::string("stress_") + c, "Pa",
-                      std::string("mean stress ") + c + " over the quadrature points");
+    declare_components(history, "mean ", " over the quadrature points");
     history.declare("inhomogeneity", "1",
                     "largest deviation of a quadrature point's stress from the "
                     "mean, relative to the largest mean component");
@@ -484,9 +507,9 @@ namespace impact_fem
               const double r  = fe_values.quadrature_point(q)[0];
               const double dV = 2 * M_PI * r * fe_values.JxW(q);
               SpecimenPointState &state = *point_states[q];
-              const SymmetricTensor<2, 3> eps = specimen_strain(values[q], gradients[q], r);
+              const SymmetricTensor<2, 3> eps = axisymmetric_strain(values[q], gradients[q], r);
               SymmetricTensor<2, 3> sigma =
-                C * eps + D * specimen_strain(rates[q], rate_gradients[q], r);
+                C * eps + D * axisymmetric_strain(rates[q], rate_gradients[q], r);
               if (update)
                 {
                   sigma += C_internal * eps +
@@ -516,16 +539,7 @@ namespace impact_fem
         for (unsigned int a = 0; a < 3; ++a)
           for (unsigned int b = a; b < 3; ++b)
             deviation = std::max(deviation, std::abs(sigma[a][b] - mean_stress[a][b]));
-      history.append("time", t);
-      const SymmetricTensor<2, 3> *tensors[2] = {&mean_strain, &mean_stress};
-      for (unsigned int k = 0; k < 2; ++k)
-        {
-          const std::string prefix = k == 0 ? "strain_" : "stress_";
-          history.append(prefix + "rr", (*tensors[k])[0][0]);
-          history.append(prefix + "zz", (*tensors[k])[1][1]);
-          history.append(prefix + "thetatheta", (*tensors[k])[2][2]);
-          history.append(prefix + "rz", (*tensors[k])[0][1]);
-        }
+      append_components(history, t, mean_strain, mean_stress);
       history.append("inhomogeneity", scale > 0 ? deviation / scale : 0.);
       history.append("internal_energy", stored);
       history.append("dissipated_energy", dissipated);

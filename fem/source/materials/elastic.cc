@@ -25,12 +25,19 @@ namespace impact_fem
 
 
     void
-    Elastic::parse_parameters(ParameterHandler &prm)
+    IsotropicElasticity::parse_elastic_constants(ParameterHandler &prm)
     {
       young        = prm.get_double("Young's modulus");
       poisson      = prm.get_double("Poisson's ratio");
       mass_density = prm.get_double("Density");
       check_elastic_constants(young, poisson, mass_density);
+    }
+
+
+    void
+    Elastic::parse_parameters(ParameterHandler &prm)
+    {
+      parse_elastic_constants(prm);
       stiffness = isotropic_stiffness(young, poisson);
     }
 

@@ -1,6 +1,6 @@
 // Kelvin-Voigt viscoelasticity: sigma = C : (eps + tau_r d eps/dt), with
 // separate retardation times for the deviatoric and the volumetric parts.
-#include <impact_fem/materials/interface.h>
+#include <impact_fem/materials/elastic.h>
 
 namespace impact_fem
 {
@@ -12,7 +12,7 @@ namespace impact_fem
      * dashpot in parallel. Linear in the strain rate, so it enters the time
      * step as a constant damping matrix D = 2 G tau_d P_dev + 3 K tau_v P_vol.
      */
-    class KelvinVoigt : public Interface
+    class KelvinVoigt : public IsotropicElasticity
     {
     public:
       static void
@@ -47,10 +47,7 @@ namespace impact_fem
       void
       parse_parameters(ParameterHandler &prm) override
       {
-        young        = prm.get_double("Young's modulus");
-        poisson      = prm.get_double("Poisson's ratio");
-        mass_density = prm.get_double("Density");
-        check_elastic_constants(young, poisson, mass_density);
+        parse_elastic_constants(prm);
         const double tau_d = prm.get_double("Retardation time");
         double       tau_v = prm.get_double("Volumetric retardation time");
         AssertThrow(tau_d >= 0,
@@ -64,39 +61,14 @@ namespace impact_fem
         damping        = isotropic_tensor(G * tau_d, K * tau_v);
       }
 
-      double
-      density() const override
-      {
-        return mass_density;
-      }
-
-      SymmetricTensor<4, 3>
-      stiffness_tangent() const override
-      {
-        return stiffness;
-      }
-
       SymmetricTensor<4, 3>
       damping_tangent() const override
       {
         return damping;
       }
 
-      double
-      youngs_modulus() const override
-      {
-        return young;
-      }
-
-      double
-      poissons_ratio() const override
-      {
-        return poisson;
-      }
-
     private:
-      double                young = 0, poisson = 0, mass_density = 0;
-      SymmetricTensor<4, 3> stiffness, damping;
+      SymmetricTensor<4, 3> damping;
     };
 
     IMPACT_FEM_REGISTER_MATERIAL(

@@ -1,6 +1,6 @@
 // Generalised Maxwell (standard linear solid): shear and bulk relaxation as
 // Prony series, internal variables integrated exactly over each step.
-#include <impact_fem/materials/interface.h>
+#include <impact_fem/materials/elastic.h>
 
 #include <cmath>
 
@@ -23,7 +23,7 @@ namespace impact_fem
      * stores M/2 h:h and dissipates (M/tau) h:h per unit time, integrated
      * exactly over the step for the same linear strain path.
      */
-    class Maxwell : public Interface
+    class Maxwell : public IsotropicElasticity
     {
     public:
       static void
@@ -108,30 +108,6 @@ namespace impact_fem
         young   = 9 * K0 * G0 / (3 * K0 + G0);
         poisson = (3 * K0 - 2 * G0) / (2 * (3 * K0 + G0));
         stiffness = isotropic_tensor(shear_modulus_relaxed, bulk_modulus_relaxed);
-      }
-
-      double
-      density() const override
-      {
-        return mass_density;
-      }
-
-      SymmetricTensor<4, 3>
-      stiffness_tangent() const override
-      {
-        return stiffness;
-      }
-
-      double
-      youngs_modulus() const override
-      {
-        return young;
-      }
-
-      double
-      poissons_ratio() const override
-      {
-        return poisson;
       }
 
       unsigned int
@@ -251,10 +227,8 @@ namespace impact_fem
                             trace(strain) / 3. * unit_symmetric_tensor<3>();
       }
 
-      double                mass_density = 0, young = 0, poisson = 0;
-      double                shear_modulus_relaxed = 0, bulk_modulus_relaxed = 0;
-      std::vector<Arm>      arms;
-      SymmetricTensor<4, 3> stiffness;
+      double           shear_modulus_relaxed = 0, bulk_modulus_relaxed = 0;
+      std::vector<Arm> arms;
     };
 
     IMPACT_FEM_REGISTER_MATERIAL(
