@@ -219,6 +219,10 @@ namespace impact_fem
         std::ostringstream label;
         label << "  run " << i + 1 << "/" << impact_velocities.size()
               << "  V = " << v << " m/s  (" << run_path(v) << ")";
+        // A signal received during an earlier run stops the campaign here
+        // (a restart does the remaining runs).
+        if (Utilities::MPI::max(ImpactProblem::interrupt_received(), group_comm) != 0)
+          break;
         const bool complete = Utilities::MPI::broadcast(
           group_comm, group_root && is_complete(v, parameters), 0);
         if (complete)

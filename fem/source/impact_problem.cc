@@ -38,12 +38,13 @@ namespace impact_fem
     }
 
     /// Catch SIGINT and SIGTERM while it lives, restore the old handlers after.
+    /// A signal once received stays recorded (it is not reset for the next run
+    /// of a campaign), so that a campaign stops instead of losing it.
     class ScopedInterruptHandler
     {
     public:
       ScopedInterruptHandler()
       {
-        interrupt_signal   = 0;
         previous_interrupt = std::signal(SIGINT, record_interrupt);
         previous_terminate = std::signal(SIGTERM, record_interrupt);
       }
@@ -1501,21 +1502,24 @@ namespace impact_fem
     // computed in history.incomplete.h5, which is also refreshed every
     // minute so that even a killed run leaves its history behind.
     const ScopedInterruptHandler interrupt_handler;
+    // Checked before every step and once more after the last one, so that a
+    // signal received at any time of the loop leaves the run incomplete.
+    const auto stop_if_interrupted = [&]() {
+      const int signal =
+        Utilities::MPI::max(static_cast<int>(interrupt_signal),
+                            mpi_communicator);
+      AssertThrow(signal == 0,
+                  ExcMessage("Interrupted by signal " + std::to_string(signal) +
+                             " at t = " + std::to_string(time) +
+                             " s; the history so far is in " +
+                             output_directory + "/history.incomplete.h5."));
+    };
     auto last_checkpoint = std::chrono::steady_clock::now();
     try
       {
         while (time < end_time - 0.5 * time_integrator.time_step)
           {
-            const int signal =
-              Utilities::MPI::max(static_cast<int>(interrupt_signal),
-                                  mpi_communicator);
-            AssertThrow(signal == 0,
-                        ExcMessage("Interrupted by signal " +
-                                   std::to_string(signal) + " at t = " +
-                                   std::to_string(time) +
-                                   " s; the history so far is in " +
-                                   output_directory +
-                                   "/history.incomplete.h5."));
+            stop_if_interrupted();
             solve_time_step();
             record_step();
             write_snapshot_if_due();
@@ -1533,6 +1537,7 @@ namespace impact_fem
               }
           }
         print_progress(true);
+        stop_if_interrupted();
       }
     catch (...)
       {
