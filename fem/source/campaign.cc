@@ -1,5 +1,6 @@
 #include <impact_fem/campaign.h>
 #include <impact_fem/impact_problem.h>
+#include <impact_fem/verification/verification.h>
 
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
@@ -110,6 +111,7 @@ namespace impact_fem
     prm.enter_subsection("Campaign");
     ranks_per_run = prm.get_integer("Ranks per run");
     prm.leave_subsection();
+    verify = verification::enabled(prm);
   }
 
 
@@ -138,9 +140,17 @@ namespace impact_fem
     const std::string ranks = prm.get("Ranks per run");
     prm.set("Impact velocities", "");
     prm.set("Ranks per run", "1");
-    std::ostringstream text;
     prm.leave_subsection();
+    // Whether a run is verified does not change the run itself.
+    prm.enter_subsection("Verification");
+    const std::string verify_entry = prm.get("Verify");
+    prm.set("Verify", "false");
+    prm.leave_subsection();
+    std::ostringstream text;
     prm.print_parameters(text, ParameterHandler::ShortPRM);
+    prm.enter_subsection("Verification");
+    prm.set("Verify", verify_entry);
+    prm.leave_subsection();
     prm.enter_subsection("Campaign");
     prm.set("Impact velocities", list);
     prm.set("Ranks per run", ranks);
@@ -178,7 +188,12 @@ namespace impact_fem
         const std::string run_directory = directory + "/" + run_path(v);
         if (std::filesystem::exists(run_directory + "/summary.json") &&
             std::filesystem::exists(run_directory + "/history.h5"))
-          runs.push_back({{"velocity", v}, {"path", run_path(v)}});
+          {
+            nlohmann::json run = {{"velocity", v}, {"path", run_path(v)}};
+            if (std::filesystem::exists(run_directory + "/verification.json"))
+              run["verification"] = run_path(v) + "/verification.json";
+            runs.push_back(run);
+          }
       }
     std::ostringstream text;
     text << std::setw(2) << nlohmann::json{{"runs", runs}} << std::endl;
@@ -225,7 +240,12 @@ namespace impact_fem
           break;
         const bool complete = Utilities::MPI::broadcast(
           group_comm, group_root && is_complete(v, parameters), 0);
-        if (complete)
+        const bool verified = Utilities::MPI::broadcast(
+          group_comm,
+          group_root &&
+            std::filesystem::exists(run_directory + "/verification.json"),
+          0);
+        if (complete && (!verify || verified))
           {
             if (group_root)
               std::cout << label.str() << ": complete, skipped" << std::endl;
@@ -233,26 +253,37 @@ namespace impact_fem
           }
         if (group_root)
           {
-            std::cout << label.str() << ": running" << std::endl;
+            std::cout << label.str()
+                      << (complete ? ": complete, verifying" : ": running")
+                      << std::endl;
             std::filesystem::create_directories(run_directory);
-            std::filesystem::remove(run_directory + "/summary.json");
-            write_file_atomically(run_directory + "/parameters.prm", parameters);
+            std::filesystem::remove(run_directory + "/verification.json");
+            if (!complete)
+              {
+                std::filesystem::remove(run_directory + "/summary.json");
+                write_file_atomically(run_directory + "/parameters.prm", parameters);
+              }
           }
         MPI_Barrier(group_comm);
         const auto    start = std::chrono::steady_clock::now();
         std::ofstream log;
         if (group_root)
-          log.open(run_directory + "/run.log");
+          log.open(run_directory + "/run.log", complete ? std::ios::app : std::ios::out);
         // The problem outlives the try block: its destructor (collective
         // over the group) must not run while an exception unwinds.
         std::unique_ptr<ImpactProblem> problem;
         try
           {
-            problem = std::make_unique<ImpactProblem>(prm,
-                                                      group_comm,
-                                                      group_root ? log : std::cout);
-            problem->run();
-            problem.reset();
+            if (verify)
+              verification::verify(prm, group_comm, group_root ? log : std::cout, complete);
+            else
+              {
+                problem = std::make_unique<ImpactProblem>(prm,
+                                                          group_comm,
+                                                          group_root ? log : std::cout);
+                problem->run();
+                problem.reset();
+              }
           }
         catch (const std::exception &error)
           {

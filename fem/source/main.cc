@@ -4,6 +4,7 @@
 #include <impact_fem/analysis/material_point.h>
 #include <impact_fem/campaign.h>
 #include <impact_fem/impact_problem.h>
+#include <impact_fem/verification/verification.h>
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
@@ -23,13 +24,16 @@ namespace
   print_usage(std::ostream &out)
   {
     out << "Usage: impact-fem [parameters.prm] [--set \"Section/Entry=value\"]...\n"
-           "                  [--velocities V1,V2,...]\n"
+           "                  [--velocities V1,V2,...] [--verify]\n"
            "       impact-fem --print-parameters\n"
            "Runs one impact; results go to Output/Directory (history.h5, "
            "summary.json).\n"
            "With --velocities (or Campaign/Impact velocities) a campaign: one "
            "run per velocity in Output/Directory/v<V>, plus index.json; "
-           "started again, it skips the complete runs.\n";
+           "started again, it skips the complete runs.\n"
+           "With --verify (or Verification/Verify) every run is also run on two "
+           "coarser discretisations and its numerical uncertainty (observed "
+           "order, Richardson extrapolation, GCI) written to verification.json.\n";
   }
 
 
@@ -96,9 +100,11 @@ main(int argc, char *argv[])
       impact_fem::ImpactProblem::declare_parameters(prm);
       impact_fem::MaterialPointTest::declare_parameters(prm);
       impact_fem::Campaign::declare_parameters(prm);
+      impact_fem::verification::declare_parameters(prm);
 
       std::string              parameter_file, velocity_list;
       std::vector<std::string> assignments;
+      bool                     verify = false;
       for (int i = 1; i < argc; ++i)
         {
           const std::string arg = argv[i];
@@ -132,6 +138,8 @@ main(int argc, char *argv[])
               AssertThrow(!velocity_list.empty(),
                           ExcMessage("--velocities: empty list."));
             }
+          else if (arg == "--verify")
+            verify = true;
           else if (arg.rfind("--velocities=", 0) == 0)
             velocity_list = arg.substr(13);
           else if (!arg.empty() && arg[0] == '-')
@@ -156,6 +164,8 @@ main(int argc, char *argv[])
         }
       for (const auto &assignment : assignments)
         set_entry(prm, assignment);
+      if (verify)
+        set_entry(prm, "Verification/Verify=true");
 
       prm.enter_subsection("Scenario");
       const std::string analysis = prm.get("Analysis");
@@ -178,6 +188,8 @@ main(int argc, char *argv[])
           if (campaign.run(MPI_COMM_WORLD) > 0)
             return 1;
         }
+      else if (impact_fem::verification::enabled(prm))
+        impact_fem::verification::verify(prm, MPI_COMM_WORLD, std::cout);
       else
         {
           problem =

@@ -23,6 +23,10 @@ namespace impact_fem
    * equal to the parameters it would run with is complete and skipped; any
    * other is (re)computed. The ranks are split into groups of 'Ranks per
    * run' that take the velocities in turn (round robin).
+   *
+   * With Verification/Verify every run is verified (verification.h): its
+   * verification.json is linked from the index entry ("verification"), and
+   * a complete run without one is verified at restart, the run itself kept.
    */
   class Campaign
   {
@@ -55,6 +59,7 @@ namespace impact_fem
     std::vector<double> impact_velocities;
     std::string         directory;
     unsigned int        ranks_per_run = 0;
+    bool                verify        = false; ///< Verification/Verify
   };
 } // namespace impact_fem
 

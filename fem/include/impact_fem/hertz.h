@@ -55,12 +55,6 @@ namespace impact_fem
     }
   };
 
-  /// Static Hertz contact radius under the force F [m].
-  inline double
-  hertz_contact_radius(double force, double radius, double effective_modulus)
-  {
-    return std::cbrt(3.0 * force * radius / (4.0 * effective_modulus));
-  }
 } // namespace impact_fem
 
 #endif

@@ -2,14 +2,16 @@
 #define IMPACT_FEM_IMPACT_PROBLEM_H
 
 #include <impact_fem/contact/mortar_contact.h>
-#include <impact_fem/materials/interface.h>
+#include <impact_fem/materials/internal_variables.h>
 #include <impact_fem/mesh/sphere_plate_mesh.h>
 #include <impact_fem/output/history.h>
-#include <impact_fem/time_integration/newmark.h>
+#include <impact_fem/parameters.h>
+#include <impact_fem/postprocess/interface.h>
+#include <impact_fem/time_integration/interface.h>
 
 #include <deal.II/base/conditional_ostream.h>
-#include <deal.II/base/quadrature_point_data.h>
 #include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/timer.h>
 #include <deal.II/distributed/tria.h>
 #include <deal.II/dofs/dof_handler.h>
@@ -22,10 +24,10 @@
 
 #include <chrono>
 #include <iostream>
-#include <utility>
-#include <vector>
 #include <memory>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace impact_fem
 {
@@ -33,11 +35,20 @@ namespace impact_fem
 
   /**
    * A sphere hitting a plate: axisymmetric small-strain elastodynamics of
-   * two bodies in frictionless contact (see fem/README.md for the model).
+   * two bodies in frictionless contact (fem/README.md). The life cycle is
+   * that of a deal.II tutorial, read in run(): mesh, system, matrices,
+   * factorisation, contact influence, initial state, then per step the
+   * solve (time stepper + contact) and the postprocessors.
+   *
+   * What only looks at the solution (energies, stresses, contact
+   * quantities, snapshots, progress) lives in postprocess/ and reads the
+   * state through the const accessors below.
    */
   class ImpactProblem
   {
   public:
+    using VectorType = TrilinosWrappers::MPI::Vector;
+
     static void
     declare_parameters(ParameterHandler &prm);
 
@@ -49,9 +60,142 @@ namespace impact_fem
     void
     run();
 
-    /// The signal (SIGINT, SIGTERM) that interrupted the last run, 0 if none.
+    /// The signal (SIGINT, SIGTERM) that interrupted a run, 0 if none.
     static int
     interrupt_received();
+
+    // ---- Access for the postprocessors ----
+    const Parameters &
+    scenario() const
+    {
+      return parameters;
+    }
+    MPI_Comm
+    communicator() const
+    {
+      return mpi_communicator;
+    }
+    const ConditionalOStream &
+    console() const
+    {
+      return pcout;
+    }
+    /// The log is a terminal that can show a line updated in place.
+    bool
+    console_is_terminal() const
+    {
+      return log_is_terminal;
+    }
+    const SpherePlateMesh &
+    mesh_parameters() const
+    {
+      return mesh;
+    }
+    const DoFHandler<2> &
+    dofs() const
+    {
+      return dof_handler;
+    }
+    const Mapping<2> &
+    geometric_mapping() const
+    {
+      return *mapping;
+    }
+    const Quadrature<2> &
+    cell_quadrature() const
+    {
+      return *quadrature;
+    }
+    const IndexSet &
+    owned_dofs() const
+    {
+      return locally_owned_dofs;
+    }
+    const IndexSet &
+    relevant_dofs() const
+    {
+      return locally_relevant_dofs;
+    }
+    const AffineConstraints<double> &
+    hanging_and_boundary_constraints() const
+    {
+      return constraints;
+    }
+    const materials::Interface &
+    material_of(const types::material_id body) const;
+
+    /// The matrices of M a + C v + K u = f (C = boundary + material).
+    struct SystemMatrices
+    {
+      TrilinosWrappers::SparseMatrix mass, stiffness, boundary_damping,
+        material_damping, internal_stiffness;
+    };
+    const SystemMatrices &
+    matrices() const
+    {
+      return system;
+    }
+
+    /// Functionals of the state: M e_z on the sphere (momentum), the mean
+    /// vertical displacement of the plate bottom, 1 on the sphere's dofs,
+    /// the body force (gravity on the sphere).
+    struct Functionals
+    {
+      VectorType sphere_momentum, plate_bottom_mean, sphere_mask, body_force;
+    };
+    const Functionals &
+    functionals() const
+    {
+      return weights;
+    }
+
+    const time_integration::Interface &
+    stepper() const
+    {
+      return *time_stepper;
+    }
+    /// Displacement and velocity with constraints distributed and ghost
+    /// entries, for cell-wise evaluation (refreshed after every step).
+    const VectorType &
+    ghosted_displacement() const
+    {
+      return ghosted_u;
+    }
+    const VectorType &
+    ghosted_velocity() const
+    {
+      return ghosted_v;
+    }
+    const MortarContact &
+    contact_conditions() const
+    {
+      return contact;
+    }
+    /// Nodal contact pressures at the end of the last step [Pa].
+    const Vector<double> &
+    contact_pressures() const
+    {
+      return pressures;
+    }
+    const materials::InternalVariables &
+    internal_variables() const
+    {
+      return arms;
+    }
+    /// Speed of the sphere at first contact [m/s].
+    double
+    contact_velocity() const
+    {
+      return first_contact_speed;
+    }
+    /// Expected end of the run [s]: from Hertz until the bodies separate.
+    double
+    expected_end_time() const;
+    std::chrono::steady_clock::time_point
+    start_of_run() const
+    {
+      return wall_start;
+    }
 
   private:
     void
@@ -69,117 +213,54 @@ namespace impact_fem
     void
     solve_time_step();
     void
-    update_material_states();
+    refresh_ghosted_state();
     void
-    record_step();
-    void
-    output_results(const unsigned int snapshot);
-    void
-    print_progress(const bool last);
+    postprocess_step();
     void
     write_results(const bool complete);
 
-    const materials::Interface &
-    material_of(const types::material_id body) const;
-
     MPI_Comm           mpi_communicator;
     ConditionalOStream pcout;
-    bool               log_is_terminal; // progress updated in place
+    bool               log_is_terminal;
     // Created by run(): a TimerOutput destroyed while an exception unwinds
     // prints a warning that would bury the error message.
     std::unique_ptr<TimerOutput> computing_timer;
-    ParameterHandler  &parameters;
+    ParameterHandler            &prm;
 
-    // Scenario
-    Geometry     geometry;
-    bool         static_press    = false;   // quasi-static press, no impact
-    double       static_force    = 0;       // [N]
-    double       impact_velocity = 0;       // [m/s]
-    double       gravity         = 0;       // [m/s^2]
-    bool         absorbing_boundaries = true;
-    std::unique_ptr<materials::Interface> sphere_material, plate_material;
-    double       sphere_mass = 0;           // [kg]
-    bool         has_material_damping = false; // any viscous material
-    bool         has_internal_variables = false; // any Maxwell body
-    double       yield_strength[2] = {0, 0}; // sphere, plate [Pa]; 0: none
-    double       hertz_contact_time = 0;    // [s]
-    double       initial_energy = 0;        // [J]
-    double       contact_velocity = 0;      // speed at first contact [m/s]
-
-    SpherePlateMesh mesh;
-    Newmark         time_integrator;
-    MortarContact   contact;
-
-    // Output
-    std::string output_directory;
-    double      snapshot_interval = 0; // [s], 0 = none
-    double      progress_interval = 1; // [s] of wall time
+    Parameters                                   parameters;
+    SpherePlateMesh                              mesh;
+    MortarContact                                contact;
+    std::unique_ptr<time_integration::Interface> time_stepper;
+    std::vector<std::pair<std::string, std::unique_ptr<postprocess::Interface>>>
+      postprocessors;
 
     parallel::distributed::Triangulation<2> triangulation;
     std::unique_ptr<FESystem<2>>            fe;
     std::unique_ptr<MappingQ<2>>            mapping;
+    std::unique_ptr<Quadrature<2>>          quadrature;
     DoFHandler<2>                           dof_handler;
     IndexSet                                locally_owned_dofs;
     IndexSet                                locally_relevant_dofs;
     AffineConstraints<double>               constraints;
 
-    TrilinosWrappers::SparseMatrix mass_matrix;
-    TrilinosWrappers::SparseMatrix stiffness_matrix;
-    TrilinosWrappers::SparseMatrix boundary_damping_matrix; // dashpots
-    TrilinosWrappers::SparseMatrix material_damping_matrix; // viscosity
-    TrilinosWrappers::SparseMatrix internal_stiffness_matrix; // Maxwell arms
-    TrilinosWrappers::SparseMatrix effective_stiffness;
+    SystemMatrices                                  system;
+    Functionals                                     weights;
+    TrilinosWrappers::SparseMatrix                  effective_stiffness;
     std::unique_ptr<TrilinosWrappers::SolverDirect> direct_solver;
     SolverControl                                   solver_control;
-    std::string                                     direct_solver_name;
 
-    // State (condensed: constrained entries are zero)
-    TrilinosWrappers::MPI::Vector displacement, velocity, acceleration;
-    TrilinosWrappers::MPI::Vector body_force;
-    TrilinosWrappers::MPI::Vector sphere_momentum_weights; // M e_z on the sphere
-    TrilinosWrappers::MPI::Vector plate_bottom_weights;    // mean u_z of bottom
-    TrilinosWrappers::MPI::Vector sphere_mask;             // 1 on sphere dofs
-    // Right-hand side part of the Maxwell arms' forces at the next step:
-    // int B^T internal_stress_predictor dV.
-    TrilinosWrappers::MPI::Vector internal_force_predictor;
-
-    /// Strain and internal variables at one quadrature point, at the end of
-    /// the last completed step (bodies with internal variables only, on the
-    /// locally owned cells).
-    struct QuadraturePointState
-    {
-      SymmetricTensor<2, 3>              strain;
-      std::vector<SymmetricTensor<2, 3>> internal;
-    };
-    CellDataStorage<typename Triangulation<2>::cell_iterator,
-                    QuadraturePointState>
-      material_states;
-    double internal_energy[2] = {0, 0}; // stored in the arms: sphere, plate [J]
-
-    double         time = 0;
-    unsigned int   step = 0;
-    Vector<double> contact_pressures, weighted_gaps;
-    double         contact_work = 0, radiated_energy = 0, dissipated_energy = 0;
-    double         gravity_work = 0;
+    materials::InternalVariables arms;
+    // Right-hand side part of the Maxwell arms' forces at the next step.
+    VectorType     internal_force_predictor;
+    VectorType     ghosted_u, ghosted_v;
+    Vector<double> pressures;
+    double         first_contact_speed = 0;
 
     History history;
-    std::vector<std::pair<double, std::string>> snapshot_records; // (time, .pvtu)
-    std::chrono::steady_clock::time_point wall_start, last_progress;
-    double       end_time = 0;
-    double       separation_time = -1;
-    double       largest_force   = -1;
-    bool         contact_started = false;
-
-    /// Largest von Mises stress of a body over the run, and where the yield
-    /// strength was first exceeded.
-    struct StressPeak
-    {
-      double   value = 0, time = 0;
-      Point<2> location;
-      double   first_yield_time = -1;
-      Point<2> first_yield_location;
-    };
-    StressPeak stress_peak[2]; // sphere, plate
+    std::chrono::steady_clock::time_point wall_start;
+    double end_time        = 0;
+    double separation_time = -1;
+    double first_force_time = -1;
   };
 } // namespace impact_fem
 

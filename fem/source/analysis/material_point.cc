@@ -1,4 +1,5 @@
 #include <impact_fem/analysis/material_point.h>
+#include <impact_fem/quadrature.h>
 #include <impact_fem/axisymmetric_strain.h>
 #include <impact_fem/materials/interface.h>
 #include <impact_fem/output/history.h>
@@ -357,14 +358,14 @@ namespace impact_fem
     const FESystem<2> fe(FE_Q<2>(degree), 2);
     DoFHandler<2>     dof_handler(triangulation);
     dof_handler.distribute_dofs(fe);
-    const QGauss<2>     quadrature(degree + 1);
-    const QGauss<1>     face_quadrature(degree + 1);
+    const QGauss<2>     quadrature      = cell_quadrature(fe);
+    const QGauss<1>     face_rule       = face_quadrature(fe);
     FEValues<2>         fe_values(fe,
                           quadrature,
                           update_values | update_gradients |
                             update_quadrature_points | update_JxW_values);
     FEFaceValues<2>     fe_face_values(fe,
-                                   face_quadrature,
+                                   face_rule,
                                    update_values | update_quadrature_points |
                                      update_JxW_values);
     const FEValuesExtractors::Vector u(0);
@@ -463,7 +464,7 @@ namespace impact_fem
                   cell->face(face)->boundary_id() == 3)
                 {
                   fe_face_values.reinit(cell, face);
-                  for (unsigned int q = 0; q < face_quadrature.size(); ++q)
+                  for (unsigned int q = 0; q < face_rule.size(); ++q)
                     for (unsigned int i = 0; i < dofs_per_cell; ++i)
                       cell_rhs(i) += stress_hat[1] * fe_face_values[u].value(i, q)[1] *
                                      2 * M_PI * fe_face_values.quadrature_point(q)[0] *

@@ -12,14 +12,7 @@ namespace impact_fem
   {
     namespace
     {
-      // Function-local static: safe to use from other translation units'
-      // static initialisers (the registrations).
-      std::map<std::string, Registration> &
-      registry()
-      {
-        static std::map<std::string, Registration> kinds;
-        return kinds;
-      }
+      using Kinds = Registry<Interface>;
 
       // The subsection of a kind is its name with an upper-case first letter
       // ("elastic" -> "Elastic"), as in the parameter files.
@@ -96,40 +89,16 @@ namespace impact_fem
     }
 
 
-    bool
-    register_material(const Registration &registration)
-    {
-      registry()[registration.name] = registration;
-      return true;
-    }
-
-
-    std::vector<std::string>
-    registered_names()
-    {
-      std::vector<std::string> names;
-      for (const auto &kind : registry())
-        names.push_back(kind.first);
-      return names;
-    }
-
-
     void
     declare_parameters(ParameterHandler &prm, const std::string &default_model)
     {
-      std::string selection, help;
-      for (const auto &kind : registry())
-        {
-          selection += (selection.empty() ? "" : "|") + kind.first;
-          help += "\n  " + kind.first + ": " + kind.second.description;
-        }
       prm.declare_entry("Material model",
                         default_model,
-                        Patterns::Selection(selection),
+                        Patterns::Selection(Kinds::selection()),
                         "Constitutive law of this body; its constants are in "
                         "the subsection of the same name. Known models:" +
-                          help);
-      for (const auto &kind : registry())
+                          Kinds::descriptions());
+      for (const auto &kind : Kinds::all())
         {
           prm.enter_subsection(subsection_name(kind.first));
           kind.second.declare_parameters(prm);
@@ -142,10 +111,7 @@ namespace impact_fem
     create_material(ParameterHandler &prm)
     {
       const std::string name = prm.get("Material model");
-      const auto        kind = registry().find(name);
-      AssertThrow(kind != registry().end(),
-                  ExcMessage("Unknown material model <" + name + ">."));
-      std::unique_ptr<Interface> material = kind->second.create();
+      std::unique_ptr<Interface> material = Kinds::get(name).create();
       prm.enter_subsection(subsection_name(name));
       material->parse_parameters(prm);
       prm.leave_subsection();

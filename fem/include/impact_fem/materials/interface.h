@@ -1,6 +1,8 @@
 #ifndef IMPACT_FEM_MATERIALS_INTERFACE_H
 #define IMPACT_FEM_MATERIALS_INTERFACE_H
 
+#include <impact_fem/registry.h>
+
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/symmetric_tensor.h>
 
@@ -152,24 +154,6 @@ namespace impact_fem
                             const double density);
 
 
-    /// Everything the registry knows about one kind of material.
-    struct Registration
-    {
-      std::string                                 name;
-      std::string                                 description;
-      std::function<void(ParameterHandler &)>     declare_parameters;
-      std::function<std::unique_ptr<Interface>()> create;
-    };
-
-    /// Add a kind of material; called once per kind at static initialisation
-    /// through IMPACT_FEM_REGISTER_MATERIAL. Returns true.
-    bool
-    register_material(const Registration &registration);
-
-    /// Names of all registered kinds, sorted.
-    std::vector<std::string>
-    registered_names();
-
     /**
      * Declare, inside the current subsection (one per body), the entry
      * "Material model" and one subsection per registered kind.
@@ -197,7 +181,7 @@ namespace impact_fem
   namespace                                                                 \
   {                                                                         \
     const bool impact_fem_material_registered_##classname =                 \
-      impact_fem::materials::register_material(                             \
+      impact_fem::Registry<impact_fem::materials::Interface>::add(          \
         {name,                                                              \
          description,                                                       \
          &classname::declare_parameters,                                    \

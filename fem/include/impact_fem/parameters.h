@@ -1,0 +1,95 @@
+#ifndef IMPACT_FEM_PARAMETERS_H
+#define IMPACT_FEM_PARAMETERS_H
+
+#include <impact_fem/hertz.h>
+#include <impact_fem/materials/interface.h>
+#include <impact_fem/mesh/sphere_plate_mesh.h>
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <memory>
+#include <string>
+
+namespace impact_fem
+{
+  using namespace dealii;
+
+  /// Index of a body in per-body arrays.
+  enum Body : unsigned int
+  {
+    sphere = 0,
+    plate  = 1
+  };
+
+  /// "sphere" or "plate": the names used in result keys.
+  inline const char *
+  body_name(const unsigned int body)
+  {
+    return body == sphere ? "sphere" : "plate";
+  }
+
+
+  /**
+   * The scenario of an impact run, read and checked in one place: analysis,
+   * geometry, materials and yield strengths of both bodies, time control,
+   * solver and output directory, and the Hertz estimates derived from them.
+   * The components (mesh, contact, time stepper, postprocessors) declare and
+   * read their own entries; declare_parameters() declares them all.
+   */
+  struct Parameters
+  {
+    /// Every entry of an impact run (of this struct and of the components).
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    /// Read and check; an ExcMessage names the entry and its allowed range.
+    explicit Parameters(ParameterHandler &prm);
+
+    /**
+     * The time step for a scheme whose effective mass coefficient is
+     * mass_weight / dt^2 [s]: Hertz contact time / Steps per contact time,
+     * or the prescribed Time step; for the static press the step that ties
+     * the free sphere to the ground by soft springs (see the .cc).
+     */
+    double
+    time_step(const double mass_weight) const;
+
+    /// Hard end of the run [s] (before the end after separation).
+    double
+    end_time(const double time_step) const;
+
+    // Scenario
+    bool     static_press    = false; ///< quasi-static press, no impact
+    double   static_force    = 0;     ///< [N]
+    double   impact_velocity = 0;     ///< [m/s]
+    double   gravity         = 0;     ///< on the sphere [m/s^2]
+    Geometry geometry;
+    bool     absorbing_boundaries = true;
+
+    // Bodies, indexed by Body
+    std::unique_ptr<materials::Interface> material[2];
+    double                                yield_strength[2] = {0, 0}; ///< [Pa], 0: none
+
+    // Time control
+    std::string scheme; ///< Time integration/Scheme
+    double steps_per_contact_time = 0; ///< [-]
+    double prescribed_time_step   = 0; ///< [s], 0: from steps_per_contact_time
+    double time_after_separation  = 0; ///< fraction of the contact time [-]
+    double maximum_time           = 0; ///< [s], 0: automatic
+
+    std::string direct_solver;
+    std::string output_directory;
+
+    // Derived
+    double      sphere_mass = 0; ///< [kg]
+    HertzImpact hertz;           ///< estimates: step, run length, contact zone
+
+    /// Any viscous (Kelvin-Voigt) body, any body with internal variables.
+    bool
+    has_material_damping() const;
+    bool
+    has_internal_variables() const;
+  };
+} // namespace impact_fem
+
+#endif

@@ -1,0 +1,115 @@
+#ifndef IMPACT_FEM_SUMMARY_IMPACT_SUMMARY_H
+#define IMPACT_FEM_SUMMARY_IMPACT_SUMMARY_H
+
+#include <cstddef>
+#include <vector>
+
+namespace impact_fem
+{
+  /**
+   * The derived quantities of an impact as pure functions of its discrete
+   * history (time t_i at a constant step h, contact force F_i >= 0, approach
+   * x_i, sphere velocity v_i downward positive). No deal.II, no MPI: unit
+   * tested on synthetic histories (tests/fem/test_impact_summary.cpp).
+   *
+   * None of them depends on where a step falls beyond the accuracy of the
+   * history itself:
+   * - the contact phase is the first run of samples with F > 0; it ends at
+   *   the first zero sample after the peak;
+   * - first contact and release are the zeros of the local power law
+   *   F = A |t - t*|^p through the three samples next to each end (p and t*
+   *   from the samples: an exponent-free fit, exact for Hertz's p = 3/2 as
+   *   for the p = 1/2 of a viscous start), kept within the step that
+   *   brackets the change;
+   * - the peaks of force and approach are the vertices of the parabola
+   *   through the largest sample and its neighbours (error O(h^3)).
+   */
+  namespace summary
+  {
+    constexpr double nan = __builtin_nan("");
+
+    /// First and last sample of the contact phase (both n if no contact).
+    struct ContactPhase
+    {
+      std::size_t first = 0, last = 0;
+      bool        ended = false; ///< a zero sample follows the last one
+      bool
+      empty(const std::size_t n) const
+      {
+        return first == n;
+      }
+    };
+
+    ContactPhase
+    contact_phase(const std::vector<double> &force);
+
+    /**
+     * Zero t* of F = A (t - t*)^p (rising, @p rising) or A (t* - t)^p
+     * (falling) through the samples (t_k, F_k), k = 0, 1, 2, equally spaced
+     * and all positive, the zero kept within [t_0 - h, t_0] (rising) or
+     * [t_2, t_2 + h] (falling). When the samples are not those of such a
+     * power law (not monotone, or curved the wrong way) the nearest bracket
+     * end is returned.
+     */
+    double
+    power_law_zero(const double t[3], const double F[3], const bool rising);
+
+    /// (time, value) of a peak from the parabola through the largest sample
+    /// and its neighbours; the sample itself at either end of the series.
+    struct Peak
+    {
+      double time = nan, value = nan;
+    };
+
+    Peak
+    interpolated_peak(const std::vector<double> &time,
+                      const std::vector<double> &values);
+
+    /**
+     * max |F_i - (F_{i-1} + F_{i+1}) / 2| / max F over the contact phase,
+     * @p excluded samples at each end left out: zero for a history that is
+     * linear over three steps, O(h^2 F'') for a smooth one, large for a
+     * step-to-step oscillation. NaN if the phase is too short.
+     */
+    double
+    step_oscillation(const std::vector<double> &force,
+                     const unsigned int          excluded = 5);
+
+    /// max F after the first zero sample that follows the peak, / max F
+    /// (0 for a clean release; NaN if the force never returns to zero).
+    double
+    force_after_release(const std::vector<double> &force);
+
+    /// Everything a run reports about its impact.
+    struct ImpactSummary
+    {
+      double first_contact_time = nan; ///< [s]
+      double separation_time    = nan; ///< [s], NaN: no separation
+      double contact_time       = nan; ///< [s]
+      double force_max          = nan; ///< [N]
+      double time_force_max     = nan; ///< [s]
+      double approach_max       = nan; ///< [m]
+      double time_approach_max  = nan; ///< [s]
+      double rebound_velocity   = nan; ///< [m/s], upward at separation
+      double restitution        = nan; ///< rebound / contact velocity
+      double force_oscillation  = nan; ///< step_oscillation()
+      double force_after_release = nan; ///< force_after_release()
+    };
+
+    /**
+     * The summary of a history; @p contact_velocity is the sphere's speed
+     * at first contact, @p gravity [m/s^2] acts on the free sphere after
+     * separation (its effect on the final velocity is taken back to the
+     * release instant).
+     */
+    ImpactSummary
+    summarize_impact(const std::vector<double> &time,
+                     const std::vector<double> &force,
+                     const std::vector<double> &approach,
+                     const std::vector<double> &sphere_velocity,
+                     const double               contact_velocity,
+                     const double               gravity);
+  } // namespace summary
+} // namespace impact_fem
+
+#endif

@@ -1,0 +1,46 @@
+#ifndef IMPACT_FEM_VERIFICATION_VERIFICATION_H
+#define IMPACT_FEM_VERIFICATION_VERIFICATION_H
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/parameter_handler.h>
+
+#include <iostream>
+#include <string>
+
+namespace impact_fem
+{
+  namespace verification
+  {
+    using namespace dealii;
+
+    /// The entries of the subsection "Verification".
+    void
+    declare_parameters(ParameterHandler &prm);
+
+    /// Verification/Verify: is every run to be verified.
+    bool
+    enabled(ParameterHandler &prm);
+
+    /**
+     * The numerical uncertainty of the impact of @p prm: the run itself is
+     * the fine level (Output/Directory), two systematically coarser ones go
+     * to Output/Directory/verification/level1 and level2. Space and time are
+     * coarsened together by the refinement ratio r per level: the mesh size
+     * field h(d) = min(hmax, hc + (g - 1) max(0, d - rz)) becomes r h(d)
+     * (Contact element size and Maximum element size times r, Growth factor
+     * 1 + (g - 1) r, the uniform zone kept) and the time step r dt. For
+     * contact_time, force_max, time_force_max, approach_max and restitution
+     * it writes Output/Directory/verification.json (observed order,
+     * Richardson extrapolation, GCI: grid_convergence.h) and prints the
+     * table. With @p fine_done the fine run is taken from its summary.json
+     * instead of being run again.
+     */
+    void
+    verify(ParameterHandler &prm,
+           const MPI_Comm    comm,
+           std::ostream     &log,
+           const bool        fine_done = false);
+  } // namespace verification
+} // namespace impact_fem
+
+#endif

@@ -1,0 +1,282 @@
+#include <impact_fem/contact/mortar_contact.h>
+#include <impact_fem/parameters.h>
+#include <impact_fem/postprocess/interface.h>
+#include <impact_fem/time_integration/interface.h>
+
+#include <cmath>
+
+namespace impact_fem
+{
+  namespace
+  {
+    std::string
+    text(const double x)
+    {
+      std::ostringstream s;
+      s << x;
+      return s.str();
+    }
+  } // namespace
+
+
+  void
+  Parameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Scenario");
+    prm.declare_entry("Analysis",
+                      "impact",
+                      Patterns::Selection(
+                        "impact|static press|material point|specimen"),
+                      "'material point': the sphere's material at one point "
+                      "under the history of the subsection 'Material point' "
+                      "(no mesh, no contact). 'specimen': the same history "
+                      "on a homogeneous cylinder of the sphere's material, "
+                      "finite elements, quasi-static. "
+                      "'impact': the sphere hits the plate at the impact "
+                      "velocity. 'static press': the sphere, at rest, is "
+                      "pressed into the plate by a uniform body force of "
+                      "resultant 'Static force' (use with a clamped far "
+                      "boundary); one quasi-static solve, the Hertz check.");
+    prm.declare_entry("Static force",
+                      "1000",
+                      Patterns::Double(),
+                      "Resultant of the body force pressing the sphere in "
+                      "the 'static press' analysis [N], > 0.");
+    prm.declare_entry("Impact velocity",
+                      "1",
+                      Patterns::Double(),
+                      "Speed of the sphere towards the plate at t = 0 [m/s], "
+                      "in (0, 100].");
+    prm.declare_entry("Initial gap",
+                      "0",
+                      Patterns::Double(),
+                      "Distance between sphere and plate at t = 0 [m], >= 0.");
+    prm.declare_entry("Sphere radius",
+                      "0.01452",
+                      Patterns::Double(),
+                      "Radius R of the sphere [m], > 0 (0.01452 m: a 0.1 kg "
+                      "steel ball).");
+    prm.declare_entry("Plate radius",
+                      "0.1",
+                      Patterns::Double(),
+                      "Radius Rp of the plate [m], > 2 R.");
+    prm.declare_entry("Plate thickness",
+                      "0.05",
+                      Patterns::Double(),
+                      "Thickness H of the plate [m], > 0.");
+    prm.declare_entry("Far boundary",
+                      "absorbing",
+                      Patterns::Selection("absorbing|clamped"),
+                      "Side and bottom of the plate: 'absorbing' "
+                      "(Lysmer-Kuhlemeyer dashpots rho c_p and rho c_s, so "
+                      "the finite plate stands in for a half-space) or "
+                      "'clamped' (zero displacement).");
+    prm.declare_entry("Gravity",
+                      "0",
+                      Patterns::Double(),
+                      "Gravitational acceleration acting on the sphere "
+                      "[m/s^2], >= 0 (the plate is taken as pre-stressed "
+                      "by its own weight).");
+    prm.leave_subsection();
+
+    for (const auto *body : {"Sphere", "Plate"})
+      {
+        prm.enter_subsection(body);
+        materials::declare_parameters(prm, "elastic");
+        prm.declare_entry("Yield strength",
+                          "0",
+                          Patterns::Double(0),
+                          "Yield strength of the body [Pa], >= 0; 0: none. "
+                          "The summary reports whether, when and where the "
+                          "von Mises stress exceeded it (the viscoelastic "
+                          "model is not valid beyond).");
+        prm.leave_subsection();
+      }
+
+    prm.enter_subsection("Time integration");
+    prm.declare_entry("Steps per contact time",
+                      "300",
+                      Patterns::Double(),
+                      "Time step = Hertz contact time / this number [-], "
+                      ">= 10.");
+    prm.declare_entry("Time step",
+                      "0",
+                      Patterns::Double(),
+                      "Fixed time step [s], >= 0; 0 takes it from "
+                      "'Steps per contact time'.");
+    prm.declare_entry("Time after separation",
+                      "0.1",
+                      Patterns::Double(),
+                      "How long the run continues after the bodies separate, "
+                      "as a fraction of the contact time [-], in [0, 10]; "
+                      "the rebound velocity is read at the end.");
+    prm.declare_entry("Maximum time",
+                      "0",
+                      Patterns::Double(),
+                      "Hard end of the run [s], >= 0; 0 means the time of "
+                      "flight to the plate plus three Hertz contact times.");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Solver");
+    prm.declare_entry("Direct solver",
+                      "Amesos_Mumps",
+                      Patterns::Selection("Amesos_Mumps|Amesos_Klu"),
+                      "Trilinos/Amesos sparse direct solver of the "
+                      "effective stiffness (factorised once per run): "
+                      "Amesos_Mumps (parallel) or Amesos_Klu (serial).");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Output");
+    prm.declare_entry("Directory",
+                      "results/default",
+                      Patterns::Anything(),
+                      "Directory of the run's files (history.h5, "
+                      "summary.json, mesh, snapshots); created if needed.");
+    prm.leave_subsection();
+
+    SpherePlateMesh::declare_parameters(prm);
+    MortarContact::declare_parameters(prm);
+    time_integration::declare_parameters(prm);
+    postprocess::declare_parameters(prm);
+  }
+
+
+  Parameters::Parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Scenario");
+    static_press             = prm.get("Analysis") == "static press";
+    static_force             = prm.get_double("Static force");
+    impact_velocity          = prm.get_double("Impact velocity");
+    geometry.initial_gap     = prm.get_double("Initial gap");
+    geometry.sphere_radius   = prm.get_double("Sphere radius");
+    geometry.plate_radius    = prm.get_double("Plate radius");
+    geometry.plate_thickness = prm.get_double("Plate thickness");
+    absorbing_boundaries     = prm.get("Far boundary") == "absorbing";
+    gravity                  = prm.get_double("Gravity");
+    prm.leave_subsection();
+
+    AssertThrow(impact_velocity > 0 && impact_velocity <= 100,
+                ExcMessage("Scenario/Impact velocity must lie in (0, 100] "
+                           "m/s, got " + text(impact_velocity) + "."));
+    AssertThrow(geometry.initial_gap >= 0,
+                ExcMessage("Scenario/Initial gap must not be negative, got " +
+                           text(geometry.initial_gap) + " m."));
+    AssertThrow(geometry.sphere_radius > 0,
+                ExcMessage("Scenario/Sphere radius must be positive, got " +
+                           text(geometry.sphere_radius) + " m."));
+    AssertThrow(geometry.plate_thickness > 0,
+                ExcMessage("Scenario/Plate thickness must be positive, got " +
+                           text(geometry.plate_thickness) + " m."));
+    AssertThrow(geometry.plate_radius > 2 * geometry.sphere_radius,
+                ExcMessage("Scenario/Plate radius must exceed twice the "
+                           "sphere radius, got " +
+                           text(geometry.plate_radius) + " m."));
+    AssertThrow(gravity >= 0,
+                ExcMessage("Scenario/Gravity must not be negative, got " +
+                           text(gravity) + " m/s^2."));
+    AssertThrow(!static_press || static_force > 0,
+                ExcMessage("Scenario/Static force must be positive, got " +
+                           text(static_force) + " N."));
+    AssertThrow(!static_press || !absorbing_boundaries,
+                ExcMessage("The 'static press' analysis needs Scenario/Far "
+                           "boundary = clamped: dashpots carry no static "
+                           "load."));
+
+    for (const unsigned int body : {sphere, plate})
+      {
+        prm.enter_subsection(body == sphere ? "Sphere" : "Plate");
+        material[body]       = materials::create_material(prm);
+        yield_strength[body] = prm.get_double("Yield strength");
+        prm.leave_subsection();
+      }
+
+    prm.enter_subsection("Time integration");
+    scheme                 = prm.get("Scheme");
+    steps_per_contact_time = prm.get_double("Steps per contact time");
+    prescribed_time_step   = prm.get_double("Time step");
+    time_after_separation  = prm.get_double("Time after separation");
+    maximum_time           = prm.get_double("Maximum time");
+    prm.leave_subsection();
+    AssertThrow(steps_per_contact_time >= 10,
+                ExcMessage("Time integration/Steps per contact time must be "
+                           "at least 10, got " +
+                           text(steps_per_contact_time) + "."));
+    AssertThrow(prescribed_time_step >= 0,
+                ExcMessage("Time integration/Time step must not be negative, "
+                           "got " + text(prescribed_time_step) + " s."));
+    AssertThrow(time_after_separation >= 0 && time_after_separation <= 10,
+                ExcMessage("Time integration/Time after separation must lie "
+                           "in [0, 10], got " +
+                           text(time_after_separation) + "."));
+    AssertThrow(maximum_time >= 0,
+                ExcMessage("Time integration/Maximum time must not be "
+                           "negative, got " + text(maximum_time) + " s."));
+
+    prm.enter_subsection("Solver");
+    direct_solver = prm.get("Direct solver");
+    prm.leave_subsection();
+    prm.enter_subsection("Output");
+    output_directory = prm.get("Directory");
+    prm.leave_subsection();
+    AssertThrow(!output_directory.empty(),
+                ExcMessage("Output/Directory must not be empty."));
+
+    const double R = geometry.sphere_radius;
+    sphere_mass    = material[sphere]->density() * 4. / 3. * M_PI * R * R * R;
+    auto compliance = [](const materials::Interface &m) {
+      return (1 - m.poissons_ratio() * m.poissons_ratio()) / m.youngs_modulus();
+    };
+    hertz = HertzImpact{1 / (compliance(*material[sphere]) +
+                             compliance(*material[plate])),
+                        R,
+                        sphere_mass,
+                        impact_velocity};
+  }
+
+
+  double
+  Parameters::time_step(const double mass_weight) const
+  {
+    if (static_press)
+      {
+        // One step of length dt from rest is the static problem with every
+        // degree of freedom tied to the ground by a spring of stiffness
+        // mass_weight / dt^2 times its mass: chosen soft (a rigid-sphere
+        // compliance 1000 times the contact's) they only regularise the free
+        // sphere's rigid motion, and the contact force is measured anyway.
+        const double contact_compliance =
+          std::pow(hertz.stiffness() * hertz.stiffness() * static_force,
+                   -1. / 3.) / 1.5;
+        return std::sqrt(1e3 * contact_compliance * sphere_mass * mass_weight);
+      }
+    return prescribed_time_step > 0 ? prescribed_time_step :
+                                      hertz.contact_time() / steps_per_contact_time;
+  }
+
+
+  double
+  Parameters::end_time(const double time_step) const
+  {
+    if (static_press)
+      return time_step;
+    return maximum_time > 0 ? maximum_time :
+                              geometry.initial_gap / impact_velocity +
+                                3 * hertz.contact_time();
+  }
+
+
+  bool
+  Parameters::has_material_damping() const
+  {
+    return material[sphere]->damping_tangent().norm() > 0 ||
+           material[plate]->damping_tangent().norm() > 0;
+  }
+
+
+  bool
+  Parameters::has_internal_variables() const
+  {
+    return material[sphere]->n_internal_variables() > 0 ||
+           material[plate]->n_internal_variables() > 0;
+  }
+} // namespace impact_fem
