@@ -555,7 +555,9 @@ namespace impact_fem
                                 history["approach"],
                                 history["sphere_velocity"],
                                 first_contact_speed,
-                                parameters.gravity);
+                                parameters.gravity,
+                                parameters.static_press ? summary::nan :
+                                                          history["time"].front());
 
     nlohmann::json     result;
     std::ostringstream report;

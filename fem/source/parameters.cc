@@ -57,11 +57,11 @@ namespace impact_fem
                       "Radius R of the sphere [m], > 0 (0.01452 m: a 0.1 kg "
                       "steel ball).");
     prm.declare_entry("Plate radius",
-                      "0.1",
+                      "0.35",
                       Patterns::Double(),
                       "Radius Rp of the plate [m], > 2 R.");
     prm.declare_entry("Plate thickness",
-                      "0.05",
+                      "0.35",
                       Patterns::Double(),
                       "Thickness H of the plate [m], > 0.");
     prm.declare_entry("Far boundary",

@@ -36,7 +36,7 @@ namespace impact_fem
                       "this factor from one element to the next [-], in "
                       "[1, 3].");
     prm.declare_entry("Maximum element size",
-                      "5e-3",
+                      "20e-3",
                       Patterns::Double(),
                       "Largest element edge length [m], >= the contact "
                       "element size.");

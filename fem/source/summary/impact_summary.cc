@@ -29,36 +29,59 @@ namespace impact_fem
 
 
     double
-    power_law_zero(const double t[3], const double F[3], const bool rising)
+    power_law_zero(const std::vector<double> &t,
+                   const std::vector<double> &F,
+                   const bool                 rising)
     {
-      // Distances s_k = |t_k - t*| grow (rising) or shrink (falling) by h
-      // per sample. With sigma = s_near / h (s_near: the distance of the
-      // sample next to the zero) the ratio
-      //   R = ln(F_far / F_mid) / ln(F_mid / F_near)
-      //     = ln((sigma + 2) / (sigma + 1)) / ln((sigma + 1) / sigma)
-      // does not depend on A or p and rises from 0 (sigma -> 0) to 1
-      // (sigma -> infinity): one bisection in sigma in (0, 1].
-      const double h      = (t[2] - t[0]) / 2;
-      const double F_near = rising ? F[0] : F[2];
-      const double F_far  = rising ? F[2] : F[0];
-      const double t_near = rising ? t[0] : t[2];
-      const double sign   = rising ? -1 : 1; // t* = t_near + sign sigma h
-      const double F_mid  = F[1];
-      if (!(F_near > 0 && F_mid > F_near && F_far > F_mid))
-        return t_near + sign * h; // not a growing power law: bracket end
-      const double measured = std::log(F_far / F_mid) / std::log(F_mid / F_near);
-      auto ratio = [](const double sigma) {
-        return std::log((sigma + 2) / (sigma + 1)) / std::log((sigma + 1) / sigma);
+      const std::size_t n = t.size();
+      std::vector<double> log_force(n);
+      for (std::size_t k = 0; k < n; ++k)
+        log_force[k] = std::log(F[k]);
+      // Residual of the best (ln A, p) for a given zero.
+      auto residual = [&](const double zero) {
+        double sx = 0, sy = 0, sxx = 0, sxy = 0;
+        std::vector<double> x(n);
+        for (std::size_t k = 0; k < n; ++k)
+          {
+            x[k] = std::log(rising ? t[k] - zero : zero - t[k]);
+            sx += x[k];
+            sy += log_force[k];
+            sxx += x[k] * x[k];
+            sxy += x[k] * log_force[k];
+          }
+        const double p = (n * sxy - sx * sy) / (n * sxx - sx * sx);
+        const double c = (sy - p * sx) / n;
+        double       r = 0;
+        for (std::size_t k = 0; k < n; ++k)
+          r += (log_force[k] - c - p * x[k]) * (log_force[k] - c - p * x[k]);
+        return r;
       };
-      if (measured >= ratio(1.))
-        return t_near + sign * h;
-      double low = 0, high = 1;
-      for (unsigned int it = 0; it < 200 && high - low > 1e-15; ++it)
-        {
-          const double middle = 0.5 * (low + high);
-          (ratio(middle) < measured ? low : high) = middle;
-        }
-      return t_near + sign * 0.5 * (low + high) * h;
+      const double h    = (t[n - 1] - t[0]) / (n - 1);
+      const double end  = rising ? t[0] : t[n - 1];
+      const double sign = rising ? -1 : 1;
+      // t* = end + sign s, s in (0, 20 h]: golden section on s.
+      double low = 1e-9 * h, high = 20 * h;
+      const double golden = 0.5 * (std::sqrt(5.) - 1);
+      double a = high - golden * (high - low), b = low + golden * (high - low);
+      double ra = residual(end + sign * a), rb = residual(end + sign * b);
+      for (unsigned int it = 0; it < 200 && high - low > 1e-12 * h; ++it)
+        if (ra < rb)
+          {
+            high = b;
+            b    = a;
+            rb   = ra;
+            a    = high - golden * (high - low);
+            ra   = residual(end + sign * a);
+          }
+        else
+          {
+            low = a;
+            a   = b;
+            ra  = rb;
+            b   = low + golden * (high - low);
+            rb  = residual(end + sign * b);
+          }
+      return end + sign * 0.5 * (low + high);
     }
 
 
@@ -126,7 +149,8 @@ namespace impact_fem
                      const std::vector<double> &approach,
                      const std::vector<double> &sphere_velocity,
                      const double               contact_velocity,
-                     const double               gravity)
+                     const double               gravity,
+                     const double               contact_start)
     {
       ImpactSummary      s;
       const std::size_t  n     = time.size();
@@ -134,17 +158,29 @@ namespace impact_fem
       if (phase.empty(n))
         return s;
 
-      // Three positive samples at each end when there are; a shorter
-      // contact is bracketed by its steps.
+      // The flanks: samples up to flank_fraction of the peak force.
       const std::size_t first = phase.first, last = phase.last;
-      if (last >= first + 2)
-        s.first_contact_time = power_law_zero(&time[first], &force[first], true);
-      else
-        s.first_contact_time = first > 0 ? time[first - 1] : time[first];
+      const std::size_t peak =
+        std::max_element(force.begin() + first, force.begin() + last + 1) -
+        force.begin();
+      auto flank_zero = [&](const bool rising) {
+        std::vector<double> t, F;
+        for (std::size_t i = rising ? first : peak; i <= (rising ? peak : last); ++i)
+          if (force[i] <= flank_fraction * force[peak])
+            {
+              t.push_back(time[i]);
+              F.push_back(force[i]);
+            }
+        if (t.size() >= 3)
+          return power_law_zero(t, F, rising);
+        // Too few samples: the step that brackets the change.
+        return rising ? (first > 0 ? time[first - 1] : time[first]) :
+                        (last + 1 < n ? time[last + 1] : time[last]);
+      };
+      s.first_contact_time =
+        std::isfinite(contact_start) ? contact_start : flank_zero(true);
       if (phase.ended)
-        s.separation_time = last >= first + 2 ?
-                              power_law_zero(&time[last - 2], &force[last - 2], false) :
-                              time[last + 1];
+        s.separation_time = flank_zero(false);
       s.contact_time = s.separation_time - s.first_contact_time;
 
       const Peak force_peak = interpolated_peak(time, force);

@@ -16,11 +16,13 @@ namespace impact_fem
    * history itself:
    * - the contact phase is the first run of samples with F > 0; it ends at
    *   the first zero sample after the peak;
-   * - first contact and release are the zeros of the local power law
-   *   F = A |t - t*|^p through the three samples next to each end (p and t*
-   *   from the samples: an exponent-free fit, exact for Hertz's p = 3/2 as
-   *   for the p = 1/2 of a viscous start), kept within the step that
-   *   brackets the change;
+   * - first contact is the instant the bodies touch when the run knows it
+   *   (impact-fem starts every run there: the initial gap is crossed
+   *   analytically); otherwise, like the release, the zero t* of the power
+   *   law F = A |t - t*|^p fitted (least squares in ln F, A, p and t* free)
+   *   to the samples of that flank with F <= 25 % of the peak: a fit over
+   *   tens of samples, not the last one, so the instant does not depend on
+   *   which step the last contact node lets go in;
    * - the peaks of force and approach are the vertices of the parabola
    *   through the largest sample and its neighbours (error O(h^3)).
    */
@@ -44,15 +46,22 @@ namespace impact_fem
     contact_phase(const std::vector<double> &force);
 
     /**
-     * Zero t* of F = A (t - t*)^p (rising, @p rising) or A (t* - t)^p
-     * (falling) through the samples (t_k, F_k), k = 0, 1, 2, equally spaced
-     * and all positive, the zero kept within [t_0 - h, t_0] (rising) or
-     * [t_2, t_2 + h] (falling). When the samples are not those of such a
-     * power law (not monotone, or curved the wrong way) the nearest bracket
-     * end is returned.
+     * Zero t* of F = A (t - t*)^p (@p rising) or A (t* - t)^p (falling)
+     * fitted by least squares in ln F to the samples (t_k, F_k), k = 0..n-1
+     * (increasing times, all F_k > 0, at least 3): for each t* the best
+     * (ln A, p) is linear least squares, t* minimises the residual (golden
+     * section within 20 mean sample spacings before the first sample,
+     * rising, or after the last, falling). Exact for noise-free power-law
+     * samples of any exponent.
      */
     double
-    power_law_zero(const double t[3], const double F[3], const bool rising);
+    power_law_zero(const std::vector<double> &t,
+                   const std::vector<double> &F,
+                   const bool                 rising);
+
+    /// The flank of the contact phase used by power_law_zero: samples with
+    /// 0 < F <= fraction * max F on the rising (falling) side of the peak.
+    constexpr double flank_fraction = 0.25;
 
     /// (time, value) of a peak from the parabola through the largest sample
     /// and its neighbours; the sample itself at either end of the series.
@@ -100,7 +109,8 @@ namespace impact_fem
      * The summary of a history; @p contact_velocity is the sphere's speed
      * at first contact, @p gravity [m/s^2] acts on the free sphere after
      * separation (its effect on the final velocity is taken back to the
-     * release instant).
+     * release instant); @p contact_start the instant the bodies touch if
+     * known (NaN: from the rising flank).
      */
     ImpactSummary
     summarize_impact(const std::vector<double> &time,
@@ -108,7 +118,8 @@ namespace impact_fem
                      const std::vector<double> &approach,
                      const std::vector<double> &sphere_velocity,
                      const double               contact_velocity,
-                     const double               gravity);
+                     const double               gravity,
+                     const double               contact_start = nan);
   } // namespace summary
 } // namespace impact_fem
 
