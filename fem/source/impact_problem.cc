@@ -662,6 +662,9 @@ namespace impact_fem
   void
   ImpactProblem::run()
   {
+    // Installed before anything else: a signal during the setup is kept
+    // and stops the run at the first step, leaving history.incomplete.h5.
+    const ScopedInterruptHandler interrupt_handler;
     wall_start      = std::chrono::steady_clock::now();
     computing_timer = std::make_unique<TimerOutput>(mpi_communicator,
                                                     pcout,
@@ -693,7 +696,6 @@ namespace impact_fem
     // An interrupted run (SIGINT, SIGTERM) and a failing one keep what they
     // computed in history.incomplete.h5, which is also refreshed every
     // minute so that even a killed run leaves its history behind.
-    const ScopedInterruptHandler interrupt_handler;
     // Checked before every step and once more after the last one, so that a
     // signal received at any time of the loop leaves the run incomplete.
     const auto stop_if_interrupted = [&]() {

@@ -1,0 +1,121 @@
+"""The verification mode (issue 8 item 4) on a small case.
+
+impact-fem --verify runs the scenario (the fine level) and two coarser ones
+(element sizes and time step times 1.5 and 2.25) and writes
+verification.json: checked here for its format, the three levels, the
+fine level being the run itself, and the observed order, Richardson
+extrapolation and GCI of each quantity recomputed from the three values
+(Celik et al. 2008, Fs = 1.25, order capped at 2; Fs = 3 on the largest
+difference for a non-monotone sequence). A campaign with --verify links
+each run's verification.json from index.json, and a restart skips the
+verified runs; a complete campaign verified later keeps its runs. Bad input
+(refinement ratio below 1.5, a coarsest level with fewer than 10 steps per
+contact time) stops with a message naming the entry and writes no
+verification.json.
+"""
+import math
+import os
+import shutil
+import subprocess
+from fem_test_lib import *
+
+binary, work, _ = parse_common_arguments()
+checks = Checks()
+SMALL = {"Mesh/Contact element size": 100e-6, "Time integration/Steps per contact time": 150,
+         "Scenario/Plate radius": 0.05, "Scenario/Plate thickness": 0.05,
+         "Mesh/Maximum element size": 5e-3}
+for body in ("Sphere", "Plate"):
+    SMALL.update({f"{body}/Material model": "kelvin-voigt",
+                  f"{body}/Kelvin-voigt/Retardation time": 1.147e-6})
+QUANTITIES = ("contact_time", "force_max", "time_force_max", "approach_max", "restitution")
+
+
+def verify(directory, settings, extra=()):
+    if os.path.isdir(directory):
+        shutil.rmtree(directory)
+    command = [binary, "--set", "Output/Directory=" + directory, "--verify", *extra]
+    for key, value in settings.items():
+        command += ["--set", f"{key}={value}"]
+    return subprocess.run(command, capture_output=True, text=True)
+
+
+def expected(f1, f2, f3, r):
+    """(order, extrapolated, absolute GCI, convergence) by the formulas."""
+    e21, e32 = f2 - f1, f3 - f2
+    if e21 == 0:
+        return None, f1, 0.0, "monotone"
+    R = e21 / e32 if e32 != 0 else math.inf
+    if 0 < R < 1:
+        p = math.log(e32 / e21) / math.log(r)
+        return p, (r ** p * f1 - f2) / (r ** p - 1), 1.25 * abs(e21) / (r ** min(p, 2) - 1), "monotone"
+    return None, None, 3 * max(abs(e21), abs(e32)), "oscillatory" if R < 0 else "divergent"
+
+
+directory = f"{work}/verification_single"
+result = verify(directory, SMALL)
+print(result.stdout[-1500:])
+checks.check(result.returncode == 0, "--verify runs")
+with open(f"{directory}/verification.json") as f:
+    v = json.load(f)
+checks.check(v["format"] == "impact-verification" and v["format_version"] == 1, "format and version")
+r = v["refinement_ratio"]
+checks.check(r == 1.5 and [level["name"] for level in v["levels"]] == ["fine", "medium", "coarse"],
+             "three levels fine/medium/coarse, r = 1.5")
+steps = [level["time_step"] for level in v["levels"]]
+sizes = [level["contact_element_size"] for level in v["levels"]]
+dofs = [level["dofs"] for level in v["levels"]]
+checks.check(all(abs(steps[i + 1] / steps[i] - r) < 1e-9 and abs(sizes[i + 1] / sizes[i] - r) < 1e-12
+                 for i in range(2)), f"time step and contact element size grow by r: {steps}, {sizes}")
+checks.check(dofs[0] > dofs[1] > dofs[2], f"the levels get coarser: {dofs} dofs")
+run_summary = summary(directory)
+for name in QUANTITIES:
+    q = v["quantities"][name]
+    checks.check(q["fine"] == run_summary[name], f"{name}: the fine level is the run itself")
+    order, extrapolated, gci, convergence = expected(q["fine"], q["medium"], q["coarse"], r)
+    same = (q["convergence"] == convergence and abs(q["gci_fine_absolute"] - gci) <= 1e-12 * abs(q["fine"])
+            and (order is None) == (q["observed_order"] is None)
+            and (order is None or abs(q["observed_order"] - order) < 1e-9)
+            and (extrapolated is None or abs(q["extrapolated"] - extrapolated) <= 1e-12 * abs(q["fine"])))
+    print(f"{name}: {q['fine']:.8g} {q['medium']:.8g} {q['coarse']:.8g}, {q['convergence']}, "
+          f"observed order {q['observed_order']}, extrapolated {q['extrapolated']}, GCI {q['gci_fine']:.3%}")
+    checks.check(same, f"{name}: order, extrapolation and GCI as recomputed")
+    checks.check(abs(q["gci_fine"] - q["gci_fine_absolute"] / abs(q["fine"])) < 1e-15,
+                 f"{name}: relative GCI = absolute / |fine|")
+
+# A campaign verifies every run and links the files; a restart skips them.
+campaign = f"{work}/verification_campaign"
+result = verify(campaign, SMALL, ("--velocities", "1,2"))
+checks.check(result.returncode == 0, "a verified campaign runs")
+with open(f"{campaign}/index.json") as f:
+    index = json.load(f)
+checks.check([run.get("verification") for run in index["runs"]] == ["v1/verification.json", "v2/verification.json"],
+             "index.json links each run's verification.json")
+again = subprocess.run([binary, "--set", f"Output/Directory={campaign}", "--verify", "--velocities", "1,2"]
+                       + sum((["--set", f"{k}={x}"] for k, x in SMALL.items()), []),
+                       capture_output=True, text=True)
+checks.check(again.returncode == 0 and again.stdout.count("complete, skipped") == 2,
+             "a restart skips the verified runs")
+# Unverified runs are verified later without running them again.
+plain = f"{work}/verification_later"
+if os.path.isdir(plain):
+    shutil.rmtree(plain)
+base = [binary, "--set", f"Output/Directory={plain}", "--velocities", "1"] + \
+       sum((["--set", f"{k}={x}"] for k, x in SMALL.items()), [])
+first = subprocess.run(base, capture_output=True, text=True)
+wall = summary(f"{plain}/v1")["wall_time"]
+later = subprocess.run(base + ["--verify"], capture_output=True, text=True)
+checks.check(later.returncode == 0 and "complete, verifying" in later.stdout and
+             os.path.exists(f"{plain}/v1/verification.json") and summary(f"{plain}/v1")["wall_time"] == wall,
+             "a complete run is verified later and kept")
+
+# Bad input.
+for entry, value, words in (("Verification/Refinement ratio", 1.2, "Refinement ratio"),
+                            ("Time integration/Steps per contact time", 20, "Steps per contact time")):
+    directory = f"{work}/verification_bad"
+    result = verify(directory, dict(SMALL, **{entry: value}))
+    message = result.stderr.strip().splitlines()[-1] if result.stderr.strip() else ""
+    print(f"{entry} = {value}: exit {result.returncode}: {message}")
+    checks.check(result.returncode != 0 and words in result.stderr and
+                 not os.path.exists(f"{directory}/verification.json"),
+                 f"{entry} = {value} is refused, naming the entry, without verification.json")
+checks.finish()
