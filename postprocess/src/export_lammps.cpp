@@ -82,7 +82,8 @@ std::string lammps_file(const ExportCampaign& campaign, const HertzLawFit& law,
       << "# kuwabara_kono.in and tsuji.in; "
       << (recommended ? "this one" : "the other one")
       << " has the smaller residual against the FEM.\n"
-      << "# Neither law is clamped: near separation the damping pulls (F < 0), as in the fit.\n"
+      << "# Neither law is clamped: near separation the damping pulls (F < 0), as in the fit,\n"
+      << "# so LAMMPS's limit_damping keyword (which cuts the pull) is not used.\n"
       << "# Velocities of the campaign: " << rounded(campaign.runs.front().velocity) << " to "
       << rounded(campaign.runs.back().velocity) << " m/s. The law against the FEM:\n"
       << error_table("#", campaign, model)
