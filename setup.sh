@@ -14,6 +14,7 @@ packages=(
   numdiff                                   # tolerant comparison of outputs in tests
   python3 python3-matplotlib python3-h5py   # figures of the report, HDF5 checks in fem tests
   chromium fonts-dejavu-core                # the report's rendering test (headless screenshot)
+  libsimbody-dev libmujoco-dev lammps       # the exports run in Simbody, MuJoCo, LAMMPS (tests/consumers)
 )
 
 missing=()
