@@ -35,4 +35,15 @@ for i in range(1, len(time) - 1):
     worst = max(worst, abs(momentum_force - 0.5 * (force[i] + force[i + 1])))
 print(f"largest |F - (-m dv/dt)| = {worst:.3g} N ({worst/s['force_max']*100:.2g} % of the peak)")
 checks.check(worst < 1e-3 * s["force_max"], "contact force = -m dv/dt of the sphere")
+# With gravity and an initial gap the energy left in the sphere's vibration
+# is still its energy beyond the rigid motion: never negative.
+directory = f"{work}/impact_gravity_gap"
+run(binary, directory, {"Scenario/Impact velocity": 1, "Scenario/Gravity": 9.81,
+                        "Scenario/Initial gap": 1e-3, "Mesh/Contact element size": 100e-6})
+g = summary(directory)
+print(f"gravity and a 1 mm gap: contact velocity {g['contact_velocity']:.6f} m/s, sphere vibration "
+      f"{g['sphere_vibration_energy_fraction']*100:.5f} % of the energy, restitution {g['restitution']:.5f}")
+checks.check(g["sphere_vibration_energy_fraction"] >= 0, "sphere vibration energy >= 0 with gravity and a gap")
+checks.check(abs(g["contact_velocity"] - (1 + 2 * 9.81 * 1e-3) ** 0.5) < 1e-12,
+             "contact velocity after the gap: sqrt(V^2 + 2 g g0)")
 checks.finish()
