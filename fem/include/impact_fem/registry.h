@@ -87,4 +87,22 @@ namespace impact_fem
   };
 } // namespace impact_fem
 
+/**
+ * Register @p classname (default constructible, with a static
+ * declare_parameters(ParameterHandler &)) as a kind of @p interface under
+ * @p name. Used inside the class's namespace.
+ */
+#define IMPACT_FEM_REGISTER(interface, classname, name, description)        \
+  namespace                                                                 \
+  {                                                                         \
+    const bool impact_fem_registered_##classname =                          \
+      impact_fem::Registry<interface>::add(                                 \
+        {name,                                                              \
+         description,                                                       \
+         &classname::declare_parameters,                                    \
+         []() -> std::unique_ptr<interface> {                               \
+           return std::make_unique<classname>();                            \
+         }});                                                               \
+  }
+
 #endif

@@ -21,11 +21,7 @@ namespace impact_fem
       void
       initialize(const ImpactProblem &problem, History &history) override
       {
-        struct Quantity
-        {
-          const char *name, *unit, *description;
-        };
-        for (const auto &[name, unit, description] : std::vector<Quantity>{
+        history.declare({
                {"contact_force", "N", "total normal contact force, 2 pi int p r dr"},
                {"sphere_displacement", "m", "centre-of-mass displacement of the sphere, downward positive"},
                {"sphere_velocity", "m/s", "centre-of-mass velocity of the sphere, downward positive"},
@@ -33,8 +29,7 @@ namespace impact_fem
                {"approach", "m", "sphere_displacement - initial gap - plate_displacement"},
                {"contact_radius", "m", "contact radius: between the outermost loaded node and the next, where p^2 extrapolated linearly in r^2 vanishes"},
                {"max_pressure", "Pa", "largest nodal contact pressure"},
-               {"penetration", "m", "largest pointwise penetration of a contact node (the constraint holds in the weighted sense)"}})
-          history.declare(name, unit, description);
+               {"penetration", "m", "largest pointwise penetration of a contact node (the constraint holds in the weighted sense)"}});
         history.set_profile("contact_node_radius",
                             "m",
                             "radius of the contact nodes (vertices of the "

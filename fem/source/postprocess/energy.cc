@@ -29,11 +29,7 @@ namespace impact_fem
       void
       initialize(const ImpactProblem &problem, History &history) override
       {
-        struct Quantity
-        {
-          const char *name, *unit, *description;
-        };
-        for (const auto &[name, unit, description] : std::vector<Quantity>{
+        history.declare({
                {"kinetic_energy", "J", "kinetic energy of both bodies"},
                {"strain_energy", "J", "stored elastic energy of both bodies, including internal_energy"},
                {"internal_energy", "J", "elastic energy stored in the springs of the Maxwell arms (part of strain_energy)"},
@@ -43,8 +39,7 @@ namespace impact_fem
                {"contact_work", "J", "cumulative work of the contact forces (zero for an ideal constraint)"},
                {"energy_error", "1", "(kinetic + strain + dissipated + radiated - initial - gravity work) / initial energy"},
                {"sphere_kinetic_energy", "J", "kinetic energy of the sphere"},
-               {"sphere_strain_energy", "J", "strain energy of the sphere"}})
-          history.declare(name, unit, description);
+               {"sphere_strain_energy", "J", "strain energy of the sphere"}});
         const auto &stepper = problem.stepper();
         product.reinit(stepper.velocity());
         masked.reinit(stepper.velocity());

@@ -31,11 +31,7 @@ namespace impact_fem
       void
       initialize(const ImpactProblem &problem, History &history) override
       {
-        struct Quantity
-        {
-          std::string name, unit, description;
-        };
-        std::vector<Quantity> quantities = {
+        std::vector<History::Column> quantities = {
           {"max_von_mises", "Pa", "largest von Mises stress in both bodies within 2 contact surface radii of the contact point"},
           {"max_von_mises_r", "m", "radial position of max_von_mises"},
           {"max_von_mises_z", "m", "axial position of max_von_mises (reference configuration)"}};
@@ -46,8 +42,7 @@ namespace impact_fem
             quantities.push_back({name + "_r", "m", "radial position of " + name});
             quantities.push_back({name + "_z", "m", "axial position of " + name + " (reference configuration)"});
           }
-        for (const auto &q : quantities)
-          history.declare(q.name, q.unit, q.description);
+        history.declare(quantities);
 
         const double   zone = 2 * problem.mesh_parameters().contact_surface_radius;
         const Point<2> contact_points[2] = {

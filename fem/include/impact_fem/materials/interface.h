@@ -177,17 +177,7 @@ namespace impact_fem
  * declare_parameters(ParameterHandler &), which declares the entries of the
  * model's own subsection.
  */
-#define IMPACT_FEM_REGISTER_MATERIAL(classname, name, description)          \
-  namespace                                                                 \
-  {                                                                         \
-    const bool impact_fem_material_registered_##classname =                 \
-      impact_fem::Registry<impact_fem::materials::Interface>::add(          \
-        {name,                                                              \
-         description,                                                       \
-         &classname::declare_parameters,                                    \
-         []() -> std::unique_ptr<impact_fem::materials::Interface> {        \
-           return std::make_unique<classname>();                            \
-         }});                                                               \
-  }
+#define IMPACT_FEM_REGISTER_MATERIAL(classname, name, description) \
+  IMPACT_FEM_REGISTER(impact_fem::materials::Interface, classname, name, description)
 
 #endif

@@ -25,6 +25,20 @@ namespace impact_fem
             const std::string &unit,
             const std::string &description);
 
+    /// A quantity as declared: name, unit, description.
+    struct Column
+    {
+      std::string name, unit, description;
+    };
+
+    /// Declare several quantities, in order.
+    void
+    declare(const std::vector<Column> &columns)
+    {
+      for (const auto &c : columns)
+        declare(c.name, c.unit, c.description);
+    }
+
     /// Append the value of a declared quantity for the current step.
     void
     append(const std::string &name, const double value);

@@ -71,17 +71,7 @@ namespace impact_fem
 
 /// Register a postprocessor class (default constructible, with a static
 /// declare_parameters(ParameterHandler &)).
-#define IMPACT_FEM_REGISTER_POSTPROCESSOR(classname, name, description)     \
-  namespace                                                                 \
-  {                                                                         \
-    const bool impact_fem_postprocessor_registered_##classname =            \
-      impact_fem::Registry<impact_fem::postprocess::Interface>::add(        \
-        {name,                                                              \
-         description,                                                       \
-         &classname::declare_parameters,                                    \
-         []() -> std::unique_ptr<impact_fem::postprocess::Interface> {      \
-           return std::make_unique<classname>();                            \
-         }});                                                               \
-  }
+#define IMPACT_FEM_REGISTER_POSTPROCESSOR(classname, name, description) \
+  IMPACT_FEM_REGISTER(impact_fem::postprocess::Interface, classname, name, description)
 
 #endif

@@ -140,17 +140,7 @@ namespace impact_fem
 } // namespace impact_fem
 
 /// Register a scheme under a name usable in "Time integration/Scheme".
-#define IMPACT_FEM_REGISTER_TIME_STEPPER(classname, name, description)      \
-  namespace                                                                 \
-  {                                                                         \
-    const bool impact_fem_time_stepper_registered_##classname =             \
-      impact_fem::Registry<impact_fem::time_integration::Interface>::add(   \
-        {name,                                                              \
-         description,                                                       \
-         &classname::declare_parameters,                                    \
-         []() -> std::unique_ptr<impact_fem::time_integration::Interface> { \
-           return std::make_unique<classname>();                            \
-         }});                                                               \
-  }
+#define IMPACT_FEM_REGISTER_TIME_STEPPER(classname, name, description) \
+  IMPACT_FEM_REGISTER(impact_fem::time_integration::Interface, classname, name, description)
 
 #endif
