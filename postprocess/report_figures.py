@@ -3,10 +3,13 @@
 
 usage: report_figures.py DATA.json OUTPUT_DIRECTORY
 
-DATA.json = {"figures": [{"file", "title", "columns", "panels": [panel, ...]}, ...]}, a panel =
-{"title", "xlabel", "ylabel", "series": [{"label", "x", "y", "color", "linestyle", "marker",
-"yerr": [lower, upper] (optional)}], "hlines": [{"y", "label", "color", "linestyle"}],
-"bands": [{"y0", "y1", "color", "alpha", "label"}], "note"}. Every number is computed by
+DATA.json = {"figures": [{"file", "title", "columns", "shared_legend" (optional: one legend
+below the panels instead of one per panel), "panels": [panel, ...]}, ...]}, a panel =
+{"title", "xlabel", "ylabel", "xscale", "yscale" ("linear" or "log"), "series": [series, ...],
+"xticks" (optional: tick positions, labelled as plain numbers), "hlines": [{"y", "label",
+"color", "linestyle"}], "bands": [{"y0", "y1", "color", "alpha", "label"}], "note"}; a series is a line {"label", "x", "y", "color", "linestyle", "marker",
+"markerfacecolor" (optional), "yerr": [lower, upper] (optional)} or a shaded band
+{"fill": true, "label", "x", "y0", "y1", "color", "alpha"}. Every number is computed by
 impact-report (C++); this script only draws (null = missing value, not drawn).
 Exit codes: 0 all figures written, 1 an error (message on stderr).
 """
@@ -26,14 +29,23 @@ def values(items):
     return [math.nan if v is None else float(v) for v in items]
 
 
-def draw_panel(axes, panel):
+def draw_panel(axes, panel, legend=True):
     for series in panel.get("series", []):
+        if series.get("fill"):
+            x, y0, y1 = values(series["x"]), values(series["y0"]), values(series["y1"])
+            if any(math.isfinite(v) for v in y0 + y1):
+                axes.fill_between(x, y0, y1, color=series.get("color", "grey"),
+                                  alpha=series.get("alpha", 0.2), label=series.get("label"),
+                                  linewidth=0)
+            continue
         x, y = values(series["x"]), values(series["y"])
         if not any(math.isfinite(v) for v in y):
             continue
         style = dict(color=series.get("color", "black"), label=series.get("label"),
                      linestyle=series.get("linestyle", "-") or "-",
                      marker=series.get("marker") or None, markersize=5)
+        if series.get("markerfacecolor"):
+            style["markerfacecolor"] = series["markerfacecolor"]
         if "yerr" in series:
             lower, upper = values(series["yerr"][0]), values(series["yerr"][1])
             errors = [[0 if not math.isfinite(v) else v for v in lower],
@@ -51,11 +63,19 @@ def draw_panel(axes, panel):
     if panel.get("note"):
         axes.text(0.5, 0.5, panel["note"], transform=axes.transAxes, ha="center",
                   va="center", fontsize=8, wrap=True, color="tab:red")
+    axes.set_xscale(panel.get("xscale", "linear"))
+    axes.set_yscale(panel.get("yscale", "linear"))
+    if panel.get("xticks"):
+        ticks = values(panel["xticks"])
+        axes.set_xticks(ticks)
+        axes.set_xticklabels(["%g" % tick for tick in ticks])
+        if panel.get("xscale") == "log":
+            axes.minorticks_off()
     axes.set_title(panel.get("title", ""), fontsize=10)
     axes.set_xlabel(panel.get("xlabel", ""))
     axes.set_ylabel(panel.get("ylabel", ""))
     axes.grid(True, alpha=0.3)
-    if axes.get_legend_handles_labels()[0]:
+    if legend and axes.get_legend_handles_labels()[0]:
         axes.legend(fontsize=7)
 
 
@@ -64,13 +84,25 @@ def draw_figure(figure, directory):
     columns = max(1, min(int(figure.get("columns", 2)), len(panels)))
     rows = max(1, math.ceil(len(panels) / columns))
     width = 5.0 * columns if columns > 1 else 8.0
-    fig, axes = plt.subplots(rows, columns, figsize=(width, 3.6 * rows), squeeze=False)
+    shared = bool(figure.get("shared_legend"))
+    fig, axes = plt.subplots(rows, columns, figsize=(width, 3.6 * rows + (0.9 if shared else 0)),
+                             squeeze=False)
     for index, panel in enumerate(panels):
-        draw_panel(axes[index // columns][index % columns], panel)
+        draw_panel(axes[index // columns][index % columns], panel, legend=not shared)
     for index in range(len(panels), rows * columns):
         axes[index // columns][index % columns].set_visible(False)
     fig.suptitle(figure.get("title", ""))
-    fig.tight_layout()
+    if shared:
+        labelled = {}
+        for row in axes:
+            for panel_axes in row:
+                for handle, label in zip(*panel_axes.get_legend_handles_labels()):
+                    labelled.setdefault(label, handle)
+        fig.tight_layout(rect=(0, 0.9 / (3.6 * rows + 0.9) + 0.06, 1, 1))
+        fig.legend(list(labelled.values()), list(labelled.keys()), loc="lower center",
+                   ncol=min(3, len(labelled)), fontsize=8, frameon=False)
+    else:
+        fig.tight_layout()
     path = os.path.join(directory, figure["file"])
     fig.savefig(path, dpi=90)
     plt.close(fig)

@@ -1,14 +1,19 @@
 #pragma once
 // FEM-format runs made by the reduced library itself: the Hunt–Crossley impact with known
 // (c, n, b), sampled like impact-fem (300 steps per contact time, continued after
-// separation), optionally with Gaussian noise of a given fraction of each history's peak.
+// separation), optionally with Gaussian noise of a given fraction of each history's peak;
+// and the same for any comparison law (e.g. Kuwabara–Kono without tension), with the
+// bodies' materials recorded as impact-fem records its parameters.
 
 #include "impact_postprocess/fem_run.hpp"
 
+#include <impact_reduced/comparison_laws.hpp>
 #include <impact_reduced/hunt_crossley.hpp>
+#include <impact_reduced/impact_ode.hpp>
 
 #include <filesystem>
 #include <random>
+#include <sstream>
 #include <string>
 #include <unistd.h>
 
@@ -62,6 +67,69 @@ inline postprocess::FemRun synthetic_run(const HuntCrossleyTruth& truth, double 
     }
   }
   return run;
+}
+
+/// An impact of comparison law `law` (damping constant `damping`, c and n of `setup`) at
+/// `velocity`, sampled like synthetic_run: 300 steps over the contact, 60 after separation
+/// (free flight at the rebound speed from the approach at separation).
+inline postprocess::FemRun synthetic_law_run(const reduced::ComparisonLaw& law,
+                                             const reduced::ContactSetup& setup, double damping,
+                                             double velocity) {
+  const auto force = law.force_law(damping, setup);
+  const auto impact =
+      reduced::integrate_impact(setup.mass, velocity, force, 1e-12, law.contact_end);
+  const std::size_t steps = 300;
+  const auto history = reduced::integrate_impact_history(setup.mass, velocity, force, steps + 1,
+                                                         1e-12, law.contact_end);
+  postprocess::FemRun run;
+  run.impact_velocity = velocity;
+  run.mass = setup.mass;
+  run.restitution = impact.restitution;
+  run.first_contact_time = 0;
+  run.contact_time = impact.contact_time;
+  run.force_max = impact.force_max;
+  run.time_force_max = impact.time_force_max;
+  run.approach_max = impact.approach_max;
+  for (const auto& sample : history) {
+    run.time.push_back(sample.time);
+    run.contact_force.push_back(std::max(sample.force, 0.0));
+    run.approach.push_back(sample.approach);
+    run.sphere_velocity.push_back(sample.approach_rate);
+  }
+  const double step = impact.contact_time / double(steps);
+  for (std::size_t k = steps + 1; k <= steps + 60; ++k) {
+    const double t = double(k) * step;
+    run.time.push_back(t);
+    run.contact_force.push_back(0);
+    run.approach.push_back(impact.approach_at_separation +
+                           impact.rebound_velocity * (t - impact.contact_time));
+    run.sphere_velocity.push_back(impact.rebound_velocity);
+  }
+  return run;
+}
+
+/// A number as text with every digit (impact-fem's parameters are text attributes).
+inline std::string exact_text(double value) {
+  std::ostringstream text;
+  text.precision(17);
+  text << value;
+  return text.str();
+}
+
+/// The scenario parameters of two Kelvin–Voigt bodies and the sphere radius, as impact-fem
+/// stores them (text attributes of the run file).
+inline void record_kelvin_voigt_materials(postprocess::FemRun& run, double youngs_modulus,
+                                          double poisson_ratio, double deviatoric_time,
+                                          double volumetric_time, double sphere_radius) {
+  for (const std::string body : {"Sphere", "Plate"}) {
+    run.text_attributes[body + "/Material model"] = "kelvin-voigt";
+    run.text_attributes[body + "/Kelvin-voigt/Young's modulus"] = exact_text(youngs_modulus);
+    run.text_attributes[body + "/Kelvin-voigt/Poisson's ratio"] = exact_text(poisson_ratio);
+    run.text_attributes[body + "/Kelvin-voigt/Retardation time"] = exact_text(deviatoric_time);
+    run.text_attributes[body + "/Kelvin-voigt/Volumetric retardation time"] =
+        exact_text(volumetric_time);
+  }
+  run.text_attributes["Scenario/Sphere radius"] = exact_text(sphere_radius);
 }
 
 /// A fresh directory for one test's files.
