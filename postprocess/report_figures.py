@@ -7,7 +7,8 @@ DATA.json = {"figures": [{"file", "title", "columns", "shared_legend" (optional:
 below the panels instead of one per panel), "panels": [panel, ...]}, ...]}, a panel =
 {"title", "xlabel", "ylabel", "xscale", "yscale" ("linear" or "log"), "series": [series, ...],
 "xticks" (optional: tick positions, labelled as plain numbers), "hlines": [{"y", "label",
-"color", "linestyle"}], "bands": [{"y0", "y1", "color", "alpha", "label"}], "note"}; a series is a line {"label", "x", "y", "color", "linestyle", "marker",
+"color", "linestyle"}], "bands": [{"y0", "y1", "color", "alpha", "label"}], "vbands": [{"x0",
+"x1", "color", "alpha", "hatch", "label"}] (spans of x), "note"}; a series is a line {"label", "x", "y", "color", "linestyle", "marker",
 "markerfacecolor" (optional), "yerr": [lower, upper] (optional)} or a shaded band
 {"fill": true, "label", "x", "y0", "y1", "color", "alpha"}. Every number is computed by
 impact-report (C++); this script only draws (null = missing value, not drawn).
@@ -56,6 +57,10 @@ def draw_panel(axes, panel, legend=True):
     for band in panel.get("bands", []):
         axes.axhspan(band["y0"], band["y1"], color=band.get("color", "grey"),
                      alpha=band.get("alpha", 0.15), label=band.get("label"))
+    for band in panel.get("vbands", []):
+        axes.axvspan(band["x0"], band["x1"], facecolor=band.get("color", "grey"),
+                     alpha=band.get("alpha", 0.1), hatch=band.get("hatch"),
+                     edgecolor=band.get("edgecolor", "0.75"), linewidth=0, label=band.get("label"))
     for line in panel.get("hlines", []):
         if line.get("y") is not None:
             axes.axhline(line["y"], color=line.get("color", "grey"),
@@ -79,30 +84,41 @@ def draw_panel(axes, panel, legend=True):
         axes.legend(fontsize=7)
 
 
+def legend_entries(axes_grid):
+    labelled = {}
+    for row in axes_grid:
+        for panel_axes in row:
+            for handle, label in zip(*panel_axes.get_legend_handles_labels()):
+                labelled.setdefault(label, handle)
+    return labelled
+
+
 def draw_figure(figure, directory):
     panels = figure["panels"]
     columns = max(1, min(int(figure.get("columns", 2)), len(panels)))
     rows = max(1, math.ceil(len(panels) / columns))
-    width = 5.0 * columns if columns > 1 else 8.0
+    width = 5.0 * columns if columns > 1 else 9.0
     shared = bool(figure.get("shared_legend"))
-    fig, axes = plt.subplots(rows, columns, figsize=(width, 3.6 * rows + (0.9 if shared else 0)),
-                             squeeze=False)
+    height = 3.6 * rows + 0.4  # 0.4 in for the title
+    fig, axes = plt.subplots(rows, columns, figsize=(width, height), squeeze=False)
+    top = 1 - 0.4 / height
     for index, panel in enumerate(panels):
         draw_panel(axes[index // columns][index % columns], panel, legend=not shared)
     for index in range(len(panels), rows * columns):
         axes[index // columns][index % columns].set_visible(False)
     fig.suptitle(figure.get("title", ""))
     if shared:
-        labelled = {}
-        for row in axes:
-            for panel_axes in row:
-                for handle, label in zip(*panel_axes.get_legend_handles_labels()):
-                    labelled.setdefault(label, handle)
-        fig.tight_layout(rect=(0, 0.9 / (3.6 * rows + 0.9) + 0.06, 1, 1))
+        # One legend below the panels: the figure grows by the legend's height.
+        labelled = legend_entries(axes)
+        legend_columns = 2
+        legend_height = 0.25 * math.ceil(len(labelled) / legend_columns) + 0.2
+        fig.set_size_inches(width, height + legend_height)
+        fig.tight_layout(rect=(0, legend_height / (height + legend_height), 1,
+                               1 - 0.4 / (height + legend_height)))
         fig.legend(list(labelled.values()), list(labelled.keys()), loc="lower center",
-                   ncol=min(3, len(labelled)), fontsize=8, frameon=False)
+                   ncol=legend_columns, fontsize=8, frameon=False)
     else:
-        fig.tight_layout()
+        fig.tight_layout(rect=(0, 0, 1, top))
     path = os.path.join(directory, figure["file"])
     fig.savefig(path, dpi=90)
     plt.close(fig)

@@ -61,25 +61,24 @@ std::string percent(double fraction) {
   return text;
 }
 
-// The warnings on the FEM history itself (kind "quality": the report stays complete).
+// The warning on the FEM history itself (kind "quality": the report stays complete), one per
+// run.
 void add_quality_warnings(const ReportRun& run, std::vector<ReportProblem>& problems) {
   const ForceSmoothness& smoothness = run.record.smoothness;
-  const std::string where = "V = " + detail::short_number(run.velocity) + " m/s";
+  std::string message;
   if (std::isfinite(smoothness.oscillation) && smoothness.oscillation > force_oscillation_warning)
-    problems.push_back(
-        {run.source, "quality",
-         where + ": the FEM contact force oscillates from step to step by " +
-             percent(smoothness.oscillation) + " of its peak (" + run.record.smoothness_source +
-             "; warning above " + percent(force_oscillation_warning) +
-             "): its peak force is uncertain by as much, and the verdict does not claim a "
-             "smaller difference"});
+    message = "the contact force oscillates from step to step by " +
+              percent(smoothness.oscillation) + " of its peak (" + run.record.smoothness_source +
+              "; warning above " + percent(force_oscillation_warning) +
+              "): the peak force is uncertain by as much";
   if (std::isfinite(smoothness.after_release) && smoothness.after_release > release_warning)
+    message += (message.empty() ? "" : "; ") + std::string("after the first zero that follows ") +
+               "the peak the force returns to " + percent(smoothness.after_release) +
+               " of the peak (release chatter): the contact time is uncertain by its length";
+  if (!message.empty())
     problems.push_back({run.source, "quality",
-                        where + ": after the first zero of the contact force that follows the "
-                                "peak the force returns to " +
-                            percent(smoothness.after_release) +
-                            " of the peak (release chatter): the contact time is uncertain by "
-                            "the length of the chatter"});
+                        "V = " + detail::short_number(run.velocity) + " m/s: " + message +
+                            ". The verdict does not claim a smaller difference."});
   if (!run.record.verification_problem.empty())
     problems.push_back({run.source, "input", run.record.verification_problem});
 }

@@ -151,6 +151,21 @@ void add_model_curve(json& panel, const ReportModel& model, Quantity quantity, d
                                    ""));
 }
 
+// The velocities above the FEM's yield onset, shaded in every figure against V.
+void add_yield_band(json& panel, const Report& report) {
+  const auto& plasticity = report.plasticity;
+  if (!plasticity.first_yielding_velocity || report.runs.empty()) return;
+  const double from = plasticity.onset_estimate.value_or(*plasticity.first_yielding_velocity);
+  const double to = report.runs.back().velocity;
+  panel["vbands"] = json::array({{{"x0", std::max(from, report.runs.front().velocity)},
+                                  {"x1", to},
+                                  {"color", "0.9"},
+                                  {"alpha", 0.3},
+                                  {"hatch", "//"},
+                                  {"label", "FEM above the yield strength: viscoelastic model "
+                                            "not valid"}}});
+}
+
 json fem_points(const Report& report, Quantity quantity, double scale) {
   std::vector<double> velocities, values, errors;
   for (const auto& run : report.runs) {
@@ -176,6 +191,7 @@ json quantities_figure(const Report& report) {
       add_model_curve(panel, model, quantity, scale,
                       model.key == "calibrated" || model.key == "best-law");
     panel["series"].push_back(fem_points(report, quantity, scale));
+    add_yield_band(panel, report);
     panels.push_back(panel);
   }
   return {{"file", "quantities.png"}, {"title", "Impact quantities against V"}, {"columns", 2},
@@ -219,7 +235,7 @@ json energy_loss_figure(const Report& report) {
       std::vector<double> y;
       for (double v : ends) y.push_back(std::exp(mean_y + reference.slope * (std::log(v) - mean_v)));
       panel["series"].push_back(series("reference slope " + detail::short_number(reference.slope) +
-                                           ": " + reference.family,
+                                           " (" + reference.family + ")",
                                        scaled(ends, 1), scaled(y, 1), "0.55", dashes[k % 3], ""));
     }
     if (report.trend) {
@@ -233,6 +249,7 @@ json energy_loss_figure(const Report& report) {
   }
   json fem = fem_points(report, Quantity::restitution_deficit, 1);
   panel["series"].push_back(fem);
+  add_yield_band(panel, report);
   return {{"file", "energy_loss.png"}, {"title", "Energy loss against V"}, {"columns", 1},
           {"shared_legend", true}, {"panels", json::array({panel})}};
 }
@@ -338,6 +355,7 @@ json errors_figure(const Report& report) {
         panel["series"].push_back(in);
       }
     }
+    add_yield_band(panel, report);
     panels.push_back(panel);
   }
   return {{"file", "errors.png"}, {"title", "Errors against the FEM"}, {"columns", 2},

@@ -102,8 +102,84 @@ ToleranceVerdict tolerance_verdict(const Report& report, const ReportModel& mode
             ": the FEM's numerical uncertainty is as large as the margin to the band.";
   if (!unknown.empty())
     text += " Not decided at V = " + velocity_list(unknown) + " (prediction missing).";
+  std::vector<double> yielding;
+  for (std::size_t i = 0; i < count; ++i)
+    if (verdict.decisions[i] == Decision::within && report.runs[i].yields)
+      yielding.push_back(report.runs[i].velocity);
+  if (!yielding.empty())
+    text += " At V = " + velocity_list(yielding) +
+            " the FEM exceeds the yield strength: the agreement is with a viscoelastic model "
+            "that is itself not valid there.";
   verdict.text = text;
   return verdict;
+}
+
+// "within 5 % at V = ..." of one model, for the summary.
+std::string range_words(const Report& report, const ModelVerdict& verdict) {
+  const ToleranceVerdict& loose = verdict.tolerances.back();
+  std::vector<double> within, undecided;
+  for (std::size_t i = 0; i < loose.decisions.size(); ++i) {
+    if (loose.decisions[i] == Decision::within) within.push_back(report.runs[i].velocity);
+    if (loose.decisions[i] == Decision::undecided) undecided.push_back(report.runs[i].velocity);
+  }
+  std::string text = "within " + band_name(loose.tolerance) + " " +
+                     (within.empty() ? std::string("at no tested velocity")
+                                     : "at V = " + velocity_list(within));
+  if (!undecided.empty()) text += ", not decided at V = " + velocity_list(undecided);
+  return text;
+}
+
+std::string summary_of(const Report& report) {
+  const ReportModel& calibrated = report.models.front();
+  const ModelVerdict* verdict = report.verdict(calibrated.key);
+  if (!verdict) return "";
+  double low = INFINITY, high = -INFINITY;
+  for (std::size_t i = 0; i < report.runs.size(); ++i)
+    if (const auto& judged = calibrated.runs[i].judged()) {
+      const double error = relative_error(*judged, report.runs[i].fem, Quantity::energy_loss);
+      low = std::min(low, error);
+      high = std::max(high, error);
+    }
+  std::string text = "Summary: the calibrated Hunt–Crossley model (constant b) is " +
+                     range_words(report, *verdict) + " (" +
+                     (calibrated.out_of_sample ? "out of sample" : "in sample") +
+                     "); its energy loss is off by " + percent(low) + " to " + percent(high) + ".";
+  const auto& ranking = report.calibration->campaign.ranking;
+  if (!ranking.empty()) {
+    const RankedModel& best = ranking.front();
+    const ReportModel* shown = nullptr;
+    for (const auto& model : report.models)
+      if (model.calibration_key == best.key) shown = &model;
+    text += " Ranked first by " +
+            std::string(best.out_of_sample ? "out-of-sample" : "in-sample") + " error: " +
+            (shown ? shown->label : best.key) + " (" + std::to_string(best.free_parameters) +
+            " free parameters, RMS error " + unsigned_percent(best.score) + ")";
+    if (shown && report.verdict(shown->key))
+      text += ", " + range_words(report, *report.verdict(shown->key));
+    text += ".";
+  }
+  bool undecided = false;
+  for (const auto& entry : report.verdicts)
+    for (const auto& band : entry.tolerances)
+      for (Decision decision : band.decisions) undecided = undecided || decision == Decision::undecided;
+  if (undecided)
+    text += " Where a velocity is not decided, the FEM's own numerical uncertainty (its force "
+            "oscillation, its time step) is as large as the margin: a cleaner or verified FEM is "
+            "needed to decide.";
+  if (report.trend) {
+    const ReferenceSlope& nearest = nearest_reference(*report.trend);
+    text += " The FEM's 1 - e grows as V^" + format(report.trend->exponent, 3) + " [" +
+            format(report.trend->lower, 3) + ", " + format(report.trend->upper, 3) +
+            "]: the nearest reference family is " + nearest.family + " (V^" +
+            format(nearest.slope, 3) + ")" +
+            (nearest.slope == 1.0 ? "." : ", not Hunt–Crossley with a constant b (V^1).");
+  }
+  if (report.plasticity.first_yielding_velocity)
+    text += " Above " +
+            format(report.plasticity.onset_estimate.value_or(*report.plasticity.first_yielding_velocity), 3) +
+            " m/s the FEM exceeds the yield strength: there no viscoelastic model, reduced or "
+            "FEM, is valid.";
+  return text;
 }
 
 // The quantity with the fewest velocities inside the tightest band breaks first.
@@ -382,6 +458,7 @@ void add_verdict(Report& report) {
   }
   report.verdict_available = true;
   report.cause = cause_of(report, calibrated);
+  report.summary = summary_of(report);
   if (!trend.empty()) report.cause += " " + trend;
   const auto& ranking = report.calibration->campaign.ranking;
   if (!ranking.empty() && ranking.front().key != calibrated.calibration_key) {

@@ -61,12 +61,17 @@ const std::vector<ReferenceSlope>& reference_slopes() {
   return slopes;
 }
 
-std::string trend_family(const PowerLawTrend& trend) {
+const ReferenceSlope& nearest_reference(const PowerLawTrend& trend) {
   const ReferenceSlope* nearest = nullptr;
   for (const auto& reference : reference_slopes())
     if (!nearest ||
         std::abs(reference.slope - trend.exponent) < std::abs(nearest->slope - trend.exponent))
       nearest = &reference;
+  return *nearest;
+}
+
+std::string trend_family(const PowerLawTrend& trend) {
+  const ReferenceSlope* nearest = &nearest_reference(trend);
   const auto inside = [&](const ReferenceSlope& reference) {
     return reference.slope >= trend.lower && reference.slope <= trend.upper;
   };

@@ -151,6 +151,7 @@ struct Report {
   std::string trend_text;
   PlasticityCheck plasticity;
   std::string uncertainty_text;         ///< what the FEM's uncertainty does to the verdict
+  std::string summary;                  ///< the verdict in a few sentences
 
   /// The model of this key, or null.
   const ReportModel* model(const std::string& key) const;

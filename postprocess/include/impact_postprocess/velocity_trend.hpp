@@ -34,6 +34,9 @@ struct ReferenceSlope {
 /// Hunt–Crossley (1), Kuwabara–Kono / Brilliantov (1/5), constant e (0).
 const std::vector<ReferenceSlope>& reference_slopes();
 
+/// The reference slope nearest to the fitted exponent.
+const ReferenceSlope& nearest_reference(const PowerLawTrend& trend);
+
 /// Which family the fitted trend follows, in a sentence: the one with the nearest reference
 /// slope (with its distance when the interval excludes it), and the families the interval
 /// excludes.
