@@ -448,6 +448,21 @@ json to_json(const Calibration& calibration) {
                  {"basis", basis},
                  {"converged", recommended->converged}};
 
+  // b(V): one line more in a multibody code, and what the campaign shows the FEM needs.
+  json velocity_damping = nullptr;
+  if (const auto& fit = campaign.hunt_crossley_velocity_damping)
+    velocity_damping = {
+        {"model", "hunt-crossley-velocity-damping"},
+        {"force_law", "F = c x^n (1 + b dx/dt) for approach x > 0, else F = 0, with "
+                      "b = b_1 (V_0 / 1 m/s)^(-q), V_0 the approach speed at first contact"},
+        {"c", number(fit->fit.stiffness.value)},
+        {"n", number(fit->fit.exponent.value)},
+        {"b_1", number(fit->fit.parameter.value)},
+        {"q", number(fit->fit.extra.empty() ? nan : fit->fit.extra.front().estimate.value)},
+        {"units", {{"c", "N/m^n"}, {"n", "1"}, {"b_1", "s/m"}, {"q", "1"}}},
+        {"basis", "campaign fit of " + fit->label},
+        {"converged", fit->fit.converged}};
+
   return {
       {"format", "impact-calibration"},
       {"format_version", calibration_format_version},
@@ -474,6 +489,7 @@ json to_json(const Calibration& calibration) {
         {"r_squared", "1"},
         {"score", "1 (RMS of the relative errors of 1 - e^2, t_c, F_max, x_max over the runs)"}}},
       {"multibody", multibody},
+      {"multibody_velocity_damping", velocity_damping},
       {"runs", runs},
       {"campaign",
        {{"fitted", campaign.fitted},

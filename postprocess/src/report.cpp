@@ -55,12 +55,6 @@ const RunCalibration* calibrated_run(const Calibration& calibration, const FemRu
   return found;
 }
 
-std::string percent(double fraction) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.3g %%", fraction * 100);
-  return text;
-}
-
 // The warning on the FEM history itself (kind "quality": the report stays complete), one per
 // run.
 void add_quality_warnings(const ReportRun& run, std::vector<ReportProblem>& problems) {
@@ -68,12 +62,12 @@ void add_quality_warnings(const ReportRun& run, std::vector<ReportProblem>& prob
   std::string message;
   if (std::isfinite(smoothness.oscillation) && smoothness.oscillation > force_oscillation_warning)
     message = "the contact force oscillates from step to step by " +
-              percent(smoothness.oscillation) + " of its peak (" + run.record.smoothness_source +
-              "; warning above " + percent(force_oscillation_warning) +
+              detail::unsigned_percent(smoothness.oscillation) + " of its peak (" + run.record.smoothness_source +
+              "; warning above " + detail::unsigned_percent(force_oscillation_warning) +
               "): the peak force is uncertain by as much";
   if (std::isfinite(smoothness.after_release) && smoothness.after_release > release_warning)
     message += (message.empty() ? "" : "; ") + std::string("after the first zero that follows ") +
-               "the peak the force returns to " + percent(smoothness.after_release) +
+               "the peak the force returns to " + detail::unsigned_percent(smoothness.after_release) +
                " of the peak (release chatter): the contact time is uncertain by its length";
   if (!message.empty())
     problems.push_back({run.source, "quality",

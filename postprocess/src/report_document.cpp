@@ -296,6 +296,13 @@ void parameters_section(Document& doc, const Report& report) {
              cell(recommended->stiffness.value) + " N/m^n\n  n = " +
              cell(recommended->exponent.value) + "\n  b = " + cell(recommended->parameter.value) +
              " s/m");
+  if (const auto& fit = campaign.hunt_crossley_velocity_damping)
+    if (!fit->fit.extra.empty())
+      doc.code("With a velocity-dependent damping (" + fit->label + "; one line more: b from the "
+               "approach speed V_0 at first contact):\n  F = c x^n (1 + b dx/dt),  b = b_1 "
+               "(V_0 / 1 m/s)^(-q)\n  c = " + cell(fit->fit.stiffness.value) + " N/m^n\n  n = " +
+               cell(fit->fit.exponent.value) + "\n  b_1 = " + cell(fit->fit.parameter.value) +
+               " s/m\n  q = " + cell(fit->fit.extra.front().estimate.value));
 }
 
 void trend_section(Document& doc, const Report& report,

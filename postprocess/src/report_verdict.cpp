@@ -24,14 +24,6 @@ std::string format(double value, int digits = 4) {
   return text.str();
 }
 
-std::string percent(double fraction, int digits = 3) {
-  if (!std::isfinite(fraction)) return "n/a";
-  std::ostringstream text;
-  text.precision(digits);
-  text << (fraction >= 0 ? "+" : "") << fraction * 100 << " %";
-  return text.str();
-}
-
 std::string band_name(double tolerance) { return format(tolerance * 100) + " %"; }
 
 // Within when |error| + U <= tolerance for every verdict quantity, outside when
@@ -143,7 +135,7 @@ std::string summary_of(const Report& report) {
   std::string text = "Summary: the calibrated Hunt–Crossley model (constant b) is " +
                      range_words(report, *verdict) + " (" +
                      (calibrated.out_of_sample ? "out of sample" : "in sample") +
-                     "); its energy loss is off by " + percent(low) + " to " + percent(high) + ".";
+                     "); its energy loss is off by " + percent_cell(low) + " to " + percent_cell(high) + ".";
   const auto& ranking = report.calibration->campaign.ranking;
   if (!ranking.empty()) {
     const RankedModel& best = ranking.front();
@@ -205,7 +197,7 @@ std::string cause_of(const Report& report, const ReportModel& model) {
   if (worst <= tight) {
     cause << "The calibrated Hunt–Crossley model holds within " << band_name(tight)
           << " at every tested velocity (" << basis << "); the largest error is "
-          << percent(error(worst_run, worst_quantity)) << " ("
+          << percent_cell(error(worst_run, worst_quantity)) << " ("
           << quantity_words(worst_quantity) << " at V = "
           << format(report.runs[worst_run].velocity) << " m/s).";
     return cause.str();
@@ -231,9 +223,9 @@ std::string cause_of(const Report& report, const ReportModel& model) {
         << ") breaks first: " << basis << " it is within " << band_name(tight) << " at "
         << fewest << " of " << count << " velocities, with errors";
   for (std::size_t i = 0; i < count; ++i)
-    cause << (i ? "," : "") << " " << percent(error(i, first)) << " at "
+    cause << (i ? "," : "") << " " << percent_cell(error(i, first)) << " at "
           << format(report.runs[i].velocity) << " m/s";
-  cause << ". The largest error of all is " << percent(error(worst_run, worst_quantity)) << " ("
+  cause << ". The largest error of all is " << percent_cell(error(worst_run, worst_quantity)) << " ("
         << quantity_words(worst_quantity) << " at V = "
         << format(report.runs[worst_run].velocity) << " m/s).";
   const bool low_end = worst_run == 0, high_end = worst_run + 1 == count;
@@ -271,7 +263,7 @@ std::string damping_trend(const std::vector<ReportRun>& runs) {
   text << "Per-run b from the restitution: " << format(b.front()) << " s/m at "
        << format(v.front()) << " m/s to " << format(b.back()) << " s/m at " << format(v.back())
        << " m/s (range " << format(*low) << " to " << format(*high)
-       << " s/m); the least-squares line changes by " << percent(change)
+       << " s/m); the least-squares line changes by " << percent_cell(change)
        << " of the mean over the tested range. ";
   if (std::abs(change) <= 0.02 && (*high - *low) <= 0.04 * mb)
     text << "b is constant within 2 %: the dissipation has the velocity dependence of "
@@ -302,14 +294,14 @@ std::string hertz_offsets(const Report& report) {
   if (campaign.hunt_crossley_hertz_exponent) {
     const ModelFit& fixed = campaign.hunt_crossley_hertz_exponent->fit;
     const double c_fixed = fixed.stiffness.value;
-    note += "; c / c_Hertz - 1 = " + percent(c_fixed / hertz - 1) +
+    note += "; c / c_Hertz - 1 = " + percent_cell(c_fixed / hertz - 1) +
             " (fit with n fixed at 3/2, c and b free: c = " + format(c_fixed, 6) + " N/m^1.5" +
             not_converged(fixed) + "); for information, the free fit's c / c_Hertz - 1 = " +
-            percent(c / hertz - 1) + " (c = " + format(c, 6) +
+            percent_cell(c / hertz - 1) + " (c = " + format(c, 6) +
             " N/m^n at the fitted n: its unit depends on n, so it is not comparable with "
             "c_Hertz).";
   } else {
-    note += "; the free fit's c / c_Hertz - 1 = " + percent(c / hertz - 1) + " (c = " +
+    note += "; the free fit's c / c_Hertz - 1 = " + percent_cell(c / hertz - 1) + " (c = " +
             format(c, 6) +
             " N/m^n: its unit depends on n, so this offset means most when n is close to 3/2; "
             "the calibration has no fit with n fixed at 3/2).";

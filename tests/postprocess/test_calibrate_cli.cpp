@@ -117,6 +117,12 @@ TEST_F(CalibrateCli, CampaignGivesEveryKey) {
   EXPECT_NEAR(multibody["c"].get<double>() / truth.stiffness, 1, 1e-6);
   EXPECT_NEAR(multibody["n"].get<double>(), truth.exponent, 1e-6);
   EXPECT_NEAR(multibody["b"].get<double>(), truth.damping, 1e-7);
+  // b(V) for a multibody code: the data have a constant b, so q = 0 and b_1 = b.
+  const json& velocity_damping = calibration["multibody_velocity_damping"];
+  for (const char* key : {"model", "force_law", "c", "n", "b_1", "q", "units", "basis", "converged"})
+    EXPECT_TRUE(velocity_damping.contains(key)) << "multibody_velocity_damping has no '" << key << "'";
+  EXPECT_NEAR(velocity_damping["q"].get<double>(), 0, 1e-6);
+  EXPECT_NEAR(velocity_damping["b_1"].get<double>(), truth.damping, 1e-7);
 
   ASSERT_EQ(calibration["runs"].size(), 3u);
   for (const auto& entry : calibration["runs"]) {

@@ -655,6 +655,25 @@ TEST(ReportCli, CalibratesTheCampaignItselfWithoutACalibrationFile) {
   fs::remove_all(directory);
 }
 
+// The tolerance bands and the published b are options, not constants of the code.
+TEST_F(ReportBadInput, ToleranceBandsAndPublishedDampingAreOptions) {
+  add_run(1.0);
+  add_run(2.0);
+  const fs::path calibration = calibrate({"--laws", "none", "--published-damping", "0.05"});
+  const CliRun run = report({"--calibration", calibration.string(), "--tolerances", "1,10"});
+  EXPECT_EQ(run.exit_code, 0) << run.err;
+  const std::string markdown = read_text(output / "report.md");
+  EXPECT_TRUE(contains(markdown, "- Within 1 %:")) << markdown;
+  EXPECT_TRUE(contains(markdown, "- Within 10 %:"));
+  EXPECT_FALSE(contains(markdown, "- Within 2 %:"));
+  EXPECT_TRUE(contains(markdown, "Hunt–Crossley (b = 0.05 s/m)"));
+  // Two velocities: no out-of-sample errors, and the page says so.
+  EXPECT_TRUE(contains(markdown, "The errors are in sample")) << markdown;
+  const CliRun bad = report({"--calibration", calibration.string(), "--tolerances", "2,abc"});
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_TRUE(contains(bad.err, "--tolerances must be per cents in (0, 100)")) << bad.err;
+}
+
 TEST(ReportCli, UsageErrors) {
   const fs::path directory = impact::testing::scratch_directory("report_usage");
   EXPECT_EQ(run_tool(IMPACT_REPORT_CLI, {"--help"}, directory).exit_code, 0);
