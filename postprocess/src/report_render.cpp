@@ -140,7 +140,8 @@ void write_report_html(const Report& report, const fs::path& file,
          "tr:nth-child(even) td{background:#fafafa}\n"
          "figure{margin:1em 0}figure img{max-width:100%;border:1px solid #ddd}\n"
          "figcaption{font-style:italic;color:#555}\n"
-         "pre{background:#f4f4f4;padding:.8em;border-left:4px solid #b22}\n"
+         "pre{background:#f4f4f4;padding:.8em;border-left:4px solid #b22;white-space:pre-wrap}\n"
+         "table{display:block;max-width:100%;overflow-x:auto}\n"
          ".missing{color:#b22;font-weight:bold}\n"
          "</style>\n</head>\n<body>\n";
   for (const auto& block : doc.blocks) {
