@@ -3,10 +3,14 @@
 
 usage: report_figures.py DATA.json OUTPUT_DIRECTORY
 
-DATA.json = {"figures": [{"file", "title", "columns", "panels": [panel, ...]}, ...]}, a panel =
-{"title", "xlabel", "ylabel", "series": [{"label", "x", "y", "color", "linestyle", "marker",
-"yerr": [lower, upper] (optional)}], "hlines": [{"y", "label", "color", "linestyle"}],
-"bands": [{"y0", "y1", "color", "alpha", "label"}], "note"}. Every number is computed by
+DATA.json = {"figures": [{"file", "title", "columns", "shared_legend" (optional: one legend
+below the panels instead of one per panel), "panels": [panel, ...]}, ...]}, a panel =
+{"title", "xlabel", "ylabel", "xscale", "yscale" ("linear" or "log"), "series": [series, ...],
+"xticks" (optional: tick positions, labelled as plain numbers), "hlines": [{"y", "label",
+"color", "linestyle"}], "bands": [{"y0", "y1", "color", "alpha", "label"}], "vbands": [{"x0",
+"x1", "color", "alpha", "hatch", "label"}] (spans of x), "note"}; a series is a line {"label", "x", "y", "color", "linestyle", "marker",
+"markerfacecolor" (optional), "yerr": [lower, upper] (optional)} or a shaded band
+{"fill": true, "label", "x", "y0", "y1", "color", "alpha"}. Every number is computed by
 impact-report (C++); this script only draws (null = missing value, not drawn).
 Exit codes: 0 all figures written, 1 an error (message on stderr).
 """
@@ -26,14 +30,23 @@ def values(items):
     return [math.nan if v is None else float(v) for v in items]
 
 
-def draw_panel(axes, panel):
+def draw_panel(axes, panel, legend=True):
     for series in panel.get("series", []):
+        if series.get("fill"):
+            x, y0, y1 = values(series["x"]), values(series["y0"]), values(series["y1"])
+            if any(math.isfinite(v) for v in y0 + y1):
+                axes.fill_between(x, y0, y1, color=series.get("color", "grey"),
+                                  alpha=series.get("alpha", 0.2), label=series.get("label"),
+                                  linewidth=0)
+            continue
         x, y = values(series["x"]), values(series["y"])
         if not any(math.isfinite(v) for v in y):
             continue
         style = dict(color=series.get("color", "black"), label=series.get("label"),
                      linestyle=series.get("linestyle", "-") or "-",
                      marker=series.get("marker") or None, markersize=5)
+        if series.get("markerfacecolor"):
+            style["markerfacecolor"] = series["markerfacecolor"]
         if "yerr" in series:
             lower, upper = values(series["yerr"][0]), values(series["yerr"][1])
             errors = [[0 if not math.isfinite(v) else v for v in lower],
@@ -44,6 +57,10 @@ def draw_panel(axes, panel):
     for band in panel.get("bands", []):
         axes.axhspan(band["y0"], band["y1"], color=band.get("color", "grey"),
                      alpha=band.get("alpha", 0.15), label=band.get("label"))
+    for band in panel.get("vbands", []):
+        axes.axvspan(band["x0"], band["x1"], facecolor=band.get("color", "grey"),
+                     alpha=band.get("alpha", 0.1), hatch=band.get("hatch"),
+                     edgecolor=band.get("edgecolor", "0.75"), linewidth=0, label=band.get("label"))
     for line in panel.get("hlines", []):
         if line.get("y") is not None:
             axes.axhline(line["y"], color=line.get("color", "grey"),
@@ -51,26 +68,57 @@ def draw_panel(axes, panel):
     if panel.get("note"):
         axes.text(0.5, 0.5, panel["note"], transform=axes.transAxes, ha="center",
                   va="center", fontsize=8, wrap=True, color="tab:red")
+    axes.set_xscale(panel.get("xscale", "linear"))
+    axes.set_yscale(panel.get("yscale", "linear"))
+    if panel.get("xticks"):
+        ticks = values(panel["xticks"])
+        axes.set_xticks(ticks)
+        axes.set_xticklabels(["%g" % tick for tick in ticks])
+        if panel.get("xscale") == "log":
+            axes.minorticks_off()
     axes.set_title(panel.get("title", ""), fontsize=10)
     axes.set_xlabel(panel.get("xlabel", ""))
     axes.set_ylabel(panel.get("ylabel", ""))
     axes.grid(True, alpha=0.3)
-    if axes.get_legend_handles_labels()[0]:
+    if legend and axes.get_legend_handles_labels()[0]:
         axes.legend(fontsize=7)
+
+
+def legend_entries(axes_grid):
+    labelled = {}
+    for row in axes_grid:
+        for panel_axes in row:
+            for handle, label in zip(*panel_axes.get_legend_handles_labels()):
+                labelled.setdefault(label, handle)
+    return labelled
 
 
 def draw_figure(figure, directory):
     panels = figure["panels"]
     columns = max(1, min(int(figure.get("columns", 2)), len(panels)))
     rows = max(1, math.ceil(len(panels) / columns))
-    width = 5.0 * columns if columns > 1 else 8.0
-    fig, axes = plt.subplots(rows, columns, figsize=(width, 3.6 * rows), squeeze=False)
+    width = 5.0 * columns if columns > 1 else 9.0
+    shared = bool(figure.get("shared_legend"))
+    height = 3.6 * rows + 0.4  # 0.4 in for the title
+    fig, axes = plt.subplots(rows, columns, figsize=(width, height), squeeze=False)
+    top = 1 - 0.4 / height
     for index, panel in enumerate(panels):
-        draw_panel(axes[index // columns][index % columns], panel)
+        draw_panel(axes[index // columns][index % columns], panel, legend=not shared)
     for index in range(len(panels), rows * columns):
         axes[index // columns][index % columns].set_visible(False)
     fig.suptitle(figure.get("title", ""))
-    fig.tight_layout()
+    if shared:
+        # One legend below the panels: the figure grows by the legend's height.
+        labelled = legend_entries(axes)
+        legend_columns = 2
+        legend_height = 0.25 * math.ceil(len(labelled) / legend_columns) + 0.2
+        fig.set_size_inches(width, height + legend_height)
+        fig.tight_layout(rect=(0, legend_height / (height + legend_height), 1,
+                               1 - 0.4 / (height + legend_height)))
+        fig.legend(list(labelled.values()), list(labelled.keys()), loc="lower center",
+                   ncol=legend_columns, fontsize=8, frameon=False)
+    else:
+        fig.tight_layout(rect=(0, 0, 1, top))
     path = os.path.join(directory, figure["file"])
     fig.savefig(path, dpi=90)
     plt.close(fig)

@@ -44,6 +44,11 @@ of the reduced library) from impact-fem runs and writes the result as JSON.
                        'all' (default) or 'none'
   --max-iterations N   iteration limit of each least-squares fit (default 100)
   --confidence LEVEL   level of the confidence intervals, in (0, 1) (default 0.95)
+  --energy-weight W    weight of the energy-loss residuals of the combined fits, >= 0
+                       (default 1: a 1 % error in 1 - e^2 costs as much as a 1 % RMS force
+                       residual; 0 fits the force histories only)
+  --published-damping B  b [s/m] of the published Hunt-Crossley reference model (c from
+                       Hertz, n = 3/2), >= 0 (default 0.1, the published steel example)
   --quiet              no progress messages on stderr
   --help               this text
 
@@ -55,6 +60,8 @@ struct Arguments : cli::RunArguments {
   std::vector<std::string> laws = impact::reduced::comparison_law_names();
   int max_iterations = 100;
   double confidence = 0.95;
+  double energy_weight = CalibrationOptions{}.energy_weight;
+  double published_damping = CalibrationOptions{}.published_damping;
 };
 
 std::vector<std::string> split(const std::string& text) {
@@ -118,6 +125,19 @@ Arguments parse(int argc, char** argv) {
       if (!level || !(*level > 0 && *level < 1))
         throw UsageError("--confidence must be a number in (0, 1) (got '" + text + "')");
       arguments.confidence = *level;
+    } else if (argument == "--energy-weight") {
+      const std::string text = value();
+      const auto weight = whole_number<double>(text);
+      if (!weight || !(*weight >= 0 && *weight <= 1e6))
+        throw UsageError("--energy-weight must be a number in [0, 1e6] (got '" + text + "')");
+      arguments.energy_weight = *weight;
+    } else if (argument == "--published-damping") {
+      const std::string text = value();
+      const auto damping = whole_number<double>(text);
+      if (!damping || !(*damping >= 0 && *damping <= 1e3))
+        throw UsageError("--published-damping must be a number of s/m in [0, 1000] (got '" +
+                         text + "')");
+      arguments.published_damping = *damping;
     } else {
       return false;
     }
@@ -153,6 +173,8 @@ int execute(const Arguments& arguments) {
   options.laws = arguments.laws;
   options.max_iterations = arguments.max_iterations;
   options.confidence_level = arguments.confidence;
+  options.energy_weight = arguments.energy_weight;
+  options.published_damping = arguments.published_damping;
   if (!arguments.quiet)
     options.progress = [](const std::string& line) {
       std::cerr << "impact-calibrate: " << line << std::endl;
@@ -194,6 +216,19 @@ int execute(const Arguments& arguments) {
               << fixed->fit.stiffness.value << " N/m^" << hertz_exponent
               << ", b = " << fixed->fit.parameter.value << " s/m (RMS residual "
               << fixed->fit.quality.rms_residual * 100 << " % of the peak force)\n";
+  }
+  if (const auto& energy = calibration.campaign.hunt_crossley_energy) {
+    std::cout.precision(6);
+    std::cout << "Hunt-Crossley fitted to force histories and energy loss: c = "
+              << energy->fit.stiffness.value << " N/m^n, n = " << energy->fit.exponent.value
+              << ", b = " << energy->fit.parameter.value << " s/m\n";
+  }
+  if (!calibration.campaign.ranking.empty()) {
+    const auto& best = calibration.campaign.ranking.front();
+    std::cout.precision(4);
+    std::cout << "ranked first by " << (best.out_of_sample ? "out-of-sample" : "in-sample")
+              << " error: " << best.key << " (RMS error " << best.score * 100
+              << " % in 1 - e^2, t_c, F_max, x_max)\n";
   }
   std::cout << "calibration written to " << arguments.output->string() << '\n';
   if (input_problem) return 2;

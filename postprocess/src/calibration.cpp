@@ -1,12 +1,14 @@
 // The fits of calibration.hpp. Every fit works on the internal parameters
-//     theta = (ln F_ref, n, p / p_scale),   F_ref = c x_ref^n,
+//     theta = (ln F_ref, n, p / p_scale, extra...),   F_ref = c x_ref^n,
 // with x_ref a typical approach of the data: ln c and n are almost perfectly correlated
 // (ln F = ln c + n ln x with ln x ~ -10), ln F_ref and n are not, so the solver and the
-// covariance work on a well-conditioned problem; the covariance is mapped back to (c, n, p)
-// by the Jacobian of that change of variables.
+// covariance work on a well-conditioned problem; the covariance is mapped back to
+// (c, n, p, ...) by the Jacobian of that change of variables.
 
 #include "impact_postprocess/calibration.hpp"
 
+#include "impact_postprocess/contact_models.hpp"
+#include "impact_postprocess/scenario_materials.hpp"
 #include "least_squares.hpp"
 #include "simulated_force.hpp"
 
@@ -37,10 +39,12 @@ struct PreparedRun {
   std::vector<double> loading_approach; // m, first contact to peak approach
   std::vector<double> loading_force;    // N
   std::size_t points;          // samples of the simulated impact
+  double energy_loss;          // 1 - e^2 of the FEM
 };
 
 PreparedRun prepare(const FemRun& run) {
-  PreparedRun prepared{&run, {}, {}, run.force_max, {}, {}, 0};
+  PreparedRun prepared{&run, {}, {}, run.force_max, {}, {}, 0,
+                       1 - run.restitution * run.restitution};
   const double t0 = run.first_contact_time;
   const double tc = run.contact_time;
   std::size_t in_contact = 0;
@@ -66,19 +70,24 @@ PreparedRun prepare(const FemRun& run) {
   return prepared;
 }
 
-// theta = (ln F_ref, n, p / p_scale).
+// theta = (ln F_ref, n, p_1 / scale_1, p_2 / scale_2, ...).
 struct Parametrisation {
   double reference_approach;
-  double parameter_scale;
+  std::vector<double> scales; // of the dissipation parameters
 
   double stiffness(const double* theta) const {
     return std::exp(theta[0] - theta[1] * std::log(reference_approach));
   }
   double exponent(const double* theta) const { return theta[1]; }
-  double parameter(const double* theta) const { return theta[2] * parameter_scale; }
+  std::vector<double> dissipation(const double* theta) const {
+    std::vector<double> values(scales.size());
+    for (std::size_t i = 0; i < scales.size(); ++i) values[i] = theta[2 + i] * scales[i];
+    return values;
+  }
   double log_reference_force(double stiffness, double exponent) const {
     return std::log(stiffness) + exponent * std::log(reference_approach);
   }
+  std::size_t size() const { return 2 + scales.size(); }
 };
 
 double student_quantile(double level, std::size_t degrees_of_freedom) {
@@ -104,6 +113,7 @@ ModelFit to_model_fit(const FitSetup& setup, const detail::LeastSquaresResult& r
                       double confidence_level) {
   const double* theta = result.theta.data();
   const Parametrisation& map = setup.parametrisation;
+  const std::size_t k = map.size();
   ModelFit fit;
   fit.model = setup.model->name;
   fit.parameter_name = setup.model->parameter_name();
@@ -116,34 +126,42 @@ ModelFit to_model_fit(const FitSetup& setup, const detail::LeastSquaresResult& r
   fit.reference_approach = map.reference_approach;
 
   const double c = map.stiffness(theta);
-  // d(c, n, p) / d theta.
-  const double g[3][3] = {{c, -c * std::log(map.reference_approach), 0},
-                          {0, 1, 0},
-                          {0, 0, map.parameter_scale}};
-  std::array<double, 9> covariance{};
-  const bool have_covariance = result.covariance.size() == 9;
+  // d(c, n, p, ...) / d theta: c depends on theta_0 and theta_1, the rest are scaled.
+  std::vector<double> g(k * k, 0.0);
+  g[0 * k + 0] = c;
+  g[0 * k + 1] = -c * std::log(map.reference_approach);
+  g[1 * k + 1] = 1;
+  for (std::size_t i = 2; i < k; ++i) g[i * k + i] = map.scales[i - 2];
+  std::vector<double> covariance(k * k, nan);
+  const bool have_covariance = result.covariance.size() == k * k;
   if (have_covariance)
-    for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 3; ++j) {
+    for (std::size_t i = 0; i < k; ++i)
+      for (std::size_t j = 0; j < k; ++j) {
         double sum = 0;
-        for (int k = 0; k < 3; ++k)
-          for (int l = 0; l < 3; ++l) sum += g[i][k] * result.covariance[k * 3 + l] * g[j][l];
-        covariance[i * 3 + j] = sum;
+        for (std::size_t a = 0; a < k; ++a)
+          for (std::size_t b = 0; b < k; ++b)
+            sum += g[i * k + a] * result.covariance[a * k + b] * g[j * k + b];
+        covariance[i * k + j] = sum;
       }
-  else
-    covariance.fill(nan);
   fit.covariance = covariance;
   const std::size_t dof = result.residual_count > result.free_parameters
                               ? result.residual_count - result.free_parameters
                               : 0;
   const double quantile = student_quantile(confidence_level, dof);
+  const std::vector<double> dissipation = map.dissipation(theta);
   fit.stiffness = estimate(c, covariance[0], quantile);
-  fit.exponent = estimate(map.exponent(theta), covariance[4], quantile);
-  fit.parameter = estimate(map.parameter(theta), covariance[8], quantile);
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) {
-      const double scale = std::sqrt(covariance[i * 3 + i] * covariance[j * 3 + j]);
-      fit.correlation[i * 3 + j] = scale > 0 ? covariance[i * 3 + j] / scale : nan;
+  fit.exponent = estimate(map.exponent(theta), covariance[1 * k + 1], quantile);
+  fit.parameter = estimate(dissipation[0], covariance[2 * k + 2], quantile);
+  for (std::size_t i = 1; i < dissipation.size(); ++i) {
+    const auto& spec = setup.model->extra_parameters.at(i - 1);
+    fit.extra.push_back({spec.name, spec.unit,
+                         estimate(dissipation[i], covariance[(i + 2) * k + i + 2], quantile)});
+  }
+  fit.correlation.assign(k * k, nan);
+  for (std::size_t i = 0; i < k; ++i)
+    for (std::size_t j = 0; j < k; ++j) {
+      const double scale = std::sqrt(covariance[i * k + i] * covariance[j * k + j]);
+      fit.correlation[i * k + j] = scale > 0 ? covariance[i * k + j] / scale : nan;
     }
   const double reference_force = std::exp(theta[0]);
   fit.force_at_reference =
@@ -178,7 +196,7 @@ FitQuality combine(const std::vector<FitQuality>& parts) {
   return {std::sqrt(squares / double(samples)), r_squared / weights, samples};
 }
 
-// ---- Force histories of a model -------------------------------------------------------
+// ---- Force histories and energy loss of a model ---------------------------------------
 
 struct HistoryEvaluator {
   const ContactModel* model;
@@ -189,18 +207,20 @@ struct HistoryEvaluator {
   bool force(const double* theta, double* force) const {
     const double c = map.stiffness(theta);
     const double n = map.exponent(theta);
-    const double p = map.parameter(theta);
-    if (!(std::isfinite(c) && c > 0 && n > 0 && std::isfinite(p))) return false;
+    if (!(std::isfinite(c) && c > 0 && n > 0)) return false;
+    const std::vector<double> dissipation = map.dissipation(theta);
+    for (double p : dissipation)
+      if (!std::isfinite(p)) return false;
     const reduced::ContactSetup setup{run->run->mass, c, n};
     double damping;
     try {
-      damping = model->damping(p, run->run->impact_velocity, setup);
+      damping = model->damping(dissipation, run->run->impact_velocity, setup);
     } catch (const std::exception&) {
       return false;
     }
     return detail::simulate_force(model->force_law(damping, setup), run->run->mass,
                                   run->run->impact_velocity, run->times, run->points, tolerance,
-                                  force);
+                                  model->contact_end, force);
   }
 
   bool residuals(const double* theta, double* residual) const {
@@ -215,36 +235,21 @@ struct HistoryEvaluator {
     if (!force(theta, model_force.data())) return {nan, nan, run->times.size()};
     return quality_of(model_force, run->forces, run->force_scale);
   }
-};
 
-ImpactPrediction predict(const ContactModel& model, const FemRun& run, double c, double n,
-                         double p, double tolerance) {
-  const reduced::ContactSetup setup{run.mass, c, n};
-  ImpactPrediction prediction{nan, nan, nan, nan, nan, nan};
-  try {
-    prediction.damping = model.damping(p, run.impact_velocity, setup);
-    if (model.name == "hunt-crossley" && prediction.damping >= 0) {
-      const reduced::HuntCrossleyImpact impact(run.mass, c, n, prediction.damping,
-                                               run.impact_velocity);
-      const auto response = impact.response();
-      prediction.restitution = response.restitution;
-      prediction.contact_time = response.contact_time;
-      prediction.force_max = response.force_max;
-      prediction.time_force_max = response.time_force_max;
-      prediction.approach_max = response.approach_max;
-    } else {
-      const auto impact = reduced::integrate_impact(
-          run.mass, run.impact_velocity, model.force_law(prediction.damping, setup), tolerance);
-      prediction.restitution = impact.restitution;
-      prediction.contact_time = impact.contact_time;
-      prediction.force_max = impact.force_max;
-      prediction.time_force_max = impact.time_force_max;
-      prediction.approach_max = impact.approach_max;
-    }
-  } catch (const std::exception&) {
+  // The run's energy-loss residual: weight sqrt(N) (L_model - L_FEM) / L_FEM, so that it
+  // counts against the run's N force residuals as a relative error against their RMS.
+  bool energy_residual(const double* theta, double weight, double* residual) const {
+    const double restitution =
+        predict_restitution(*model, run->run->mass, run->run->impact_velocity,
+                            map.stiffness(theta), map.exponent(theta), map.dissipation(theta),
+                            tolerance);
+    if (!std::isfinite(restitution)) return false;
+    const double loss = 1 - restitution * restitution;
+    *residual = weight * std::sqrt(double(run->times.size())) * (loss - run->energy_loss) /
+                run->energy_loss;
+    return true;
   }
-  return prediction;
-}
+};
 
 std::string format_number(double value) {
   std::ostringstream text;
@@ -318,7 +323,7 @@ std::optional<ModelFit> fit_loading(const PreparedRun& run, double damping,
   }
   const auto [c0, n0] = log_space_start(run);
   static const ContactModel model = hunt_crossley_model();
-  FitSetup setup{&model, {fem.approach_max, damping > 0 ? damping : 1.0}, {}};
+  FitSetup setup{&model, {fem.approach_max, {damping > 0 ? damping : 1.0}}, {}};
   setup.parameters = {{setup.parametrisation.log_reference_force(
                            std::isfinite(c0) ? c0 : fem.force_max / std::pow(fem.approach_max, n0),
                            n0)},
@@ -331,7 +336,7 @@ std::optional<ModelFit> fit_loading(const PreparedRun& run, double damping,
                                                                double* out) -> bool {
     const double c = map.stiffness(theta);
     const double n = map.exponent(theta);
-    const double b = map.parameter(theta);
+    const double b = map.dissipation(theta)[0];
     if (!(std::isfinite(c) && c > 0 && n > 0)) return false;
     try {
       const reduced::HuntCrossleyImpact impact(fem.mass, c, n, b, fem.impact_velocity);
@@ -375,7 +380,7 @@ std::optional<ModelFit> fit_history(const PreparedRun& run, double c0, double n0
   static const ContactModel model = hunt_crossley_model();
   const double scale =
       model.damping_for_restitution(std::min(fem.restitution, 0.95), fem.impact_velocity, {});
-  FitSetup setup{&model, {fem.approach_max, scale}, {}};
+  FitSetup setup{&model, {fem.approach_max, {scale}}, {}};
   setup.parameters = {{setup.parametrisation.log_reference_force(c0, n0)},
                       exponent_parameter(n0, false),
                       {b0 / scale}};
@@ -420,12 +425,11 @@ RunCalibration calibrate_run(const PreparedRun& run, const CalibrationOptions& o
     c0 = fem.force_max / std::pow(fem.approach_max, n0);
   }
   result.history = fit_history(run, c0, n0, result.damping_from_restitution, options, problems);
-  if (result.history) {
-    static const ContactModel model = hunt_crossley_model();
+  if (result.history)
     result.history_prediction =
-        predict(model, fem, result.history->stiffness.value, result.history->exponent.value,
-                result.history->parameter.value, options.ode_tolerance);
-  }
+        predict_impact(hunt_crossley_model(), fem.mass, fem.impact_velocity,
+                       result.history->stiffness.value, result.history->exponent.value,
+                       result.history->dissipation(), options.ode_tolerance);
   return result;
 }
 
@@ -447,6 +451,8 @@ double geometric_mean(const std::vector<double>& values) {
   return std::exp(sum / double(values.size()));
 }
 
+bool same_velocity(double a, double b) { return std::abs(a - b) <= 1e-6 * std::max(a, b); }
+
 struct CampaignStart {
   double reference_approach;
   double log_reference_force;
@@ -456,15 +462,62 @@ struct CampaignStart {
   double mass;         // median
 };
 
-// One (c, n, p) of `model` for all runs. n is held fixed at the model's required exponent,
-// else at `exponent` when given (Hunt–Crossley at the Hertz value), else fitted.
-CampaignModelFit fit_campaign_model(const ContactModel& model,
+// What distinguishes the campaign fits of one model.
+struct CampaignFitRequest {
+  std::string key;
+  std::string label;
+  std::optional<double> exponent;  // n held here (else the model's required one, else free)
+  double energy_weight = 0;
+  double initial_damping = nan;    // else from the median restitution
+  std::vector<double> initial_extra;
+};
+
+// The residual blocks of `runs` for parameters mapped by `setup`.
+std::vector<detail::ResidualBlock> residual_blocks(const std::vector<HistoryEvaluator>& evaluators,
+                                                   double energy_weight) {
+  std::vector<detail::ResidualBlock> blocks;
+  for (const auto& evaluator : evaluators) {
+    blocks.push_back({evaluator.run->times.size(), [evaluator](const double* theta, double* r) {
+                        return evaluator.residuals(theta, r);
+                      }});
+    if (energy_weight > 0 && evaluator.run->energy_loss > 0)
+      blocks.push_back({1, [evaluator, energy_weight](const double* theta, double* r) {
+                          return evaluator.energy_residual(theta, energy_weight, r);
+                        }});
+  }
+  return blocks;
+}
+
+// Jackknife over the held-out fits: standard error sqrt((g-1)/g sum (theta_i - mean)^2).
+std::vector<Estimate> jackknife(const std::vector<HeldOutFit>& held_out,
+                                const std::vector<double>& full, const std::vector<bool>& fixed,
+                                double confidence_level) {
+  const std::size_t g = held_out.size();
+  const double quantile = student_quantile(confidence_level, g - 1);
+  std::vector<Estimate> estimates;
+  for (std::size_t j = 0; j < full.size(); ++j) {
+    if (fixed[j]) {
+      estimates.push_back({full[j], nan, nan, nan});
+      continue;
+    }
+    double mean = 0;
+    for (const auto& fit : held_out) mean += fit.parameters[j] / double(g);
+    double sum = 0;
+    for (const auto& fit : held_out) sum += (fit.parameters[j] - mean) * (fit.parameters[j] - mean);
+    estimates.push_back(estimate(full[j], double(g - 1) / double(g) * sum, quantile));
+  }
+  return estimates;
+}
+
+// One campaign fit of `model` to all runs, then, with at least three velocities, one fit
+// per velocity with that velocity's runs left out (started from the full fit).
+CampaignModelFit fit_campaign_model(const ContactModel& model, const CampaignFitRequest& request,
                                     const std::vector<PreparedRun>& runs,
-                                    const CampaignStart& start, double initial_damping,
-                                    const CalibrationOptions& options,
-                                    std::vector<CalibrationProblem>& problems,
-                                    std::optional<double> exponent = std::nullopt) {
-  if (model.required_exponent) exponent = model.required_exponent;
+                                    const std::vector<double>& velocities,
+                                    const CampaignStart& start, const CalibrationOptions& options,
+                                    std::vector<CalibrationProblem>& problems) {
+  const std::optional<double> exponent =
+      model.required_exponent ? model.required_exponent : request.exponent;
   const bool fixed_exponent = exponent.has_value();
   const double n0 = fixed_exponent ? *exponent : start.exponent;
   const double c0 = std::exp(start.log_reference_force - n0 * std::log(start.reference_approach));
@@ -473,13 +526,13 @@ CampaignModelFit fit_campaign_model(const ContactModel& model,
   if (model.parameter == DissipationParameter::damping) {
     scale = model.damping_for_restitution(std::min(start.restitution, 0.95), start.velocity,
                                           reference_setup);
-    p0 = std::isfinite(initial_damping)
-             ? initial_damping
+    p0 = std::isfinite(request.initial_damping)
+             ? request.initial_damping
              : (start.restitution < 1 ? model.damping_for_restitution(
                                             start.restitution, start.velocity, reference_setup)
                                       : 0.0);
   }
-  FitSetup setup{&model, {start.reference_approach, scale}, {}};
+  FitSetup setup{&model, {start.reference_approach, {scale}}, {}};
   setup.parameters = {{start.log_reference_force}, exponent_parameter(n0, fixed_exponent),
                       {p0 / scale}};
   if (model.parameter == DissipationParameter::damping) {
@@ -489,54 +542,307 @@ CampaignModelFit fit_campaign_model(const ContactModel& model,
     setup.parameters[2].lower = 1e-3;
     setup.parameters[2].upper = 1;
   }
-
-  std::vector<HistoryEvaluator> evaluators;
-  std::vector<detail::ResidualBlock> blocks;
-  for (const auto& run : runs) {
-    evaluators.push_back({&model, &run, setup.parametrisation, options.ode_tolerance});
-    blocks.push_back({run.times.size(), [evaluator = evaluators.back()](const double* theta,
-                                                                         double* r) {
-                        return evaluator.residuals(theta, r);
-                      }});
+  for (std::size_t i = 0; i < model.extra_parameters.size(); ++i) {
+    const auto& spec = model.extra_parameters[i];
+    setup.parametrisation.scales.push_back(1.0);
+    detail::FitParameter parameter{i < request.initial_extra.size() ? request.initial_extra[i]
+                                                                    : spec.initial};
+    parameter.lower = spec.lower;
+    parameter.upper = spec.upper;
+    setup.parameters.push_back(parameter);
   }
-  const auto result = detail::solve_least_squares(setup.parameters, blocks,
-                                                  {options.max_iterations, options.threads});
+
+  const auto evaluators_of = [&](const std::function<bool(const PreparedRun&)>& take) {
+    std::vector<HistoryEvaluator> evaluators;
+    for (const auto& run : runs)
+      if (take(run))
+        evaluators.push_back({&model, &run, setup.parametrisation, options.ode_tolerance});
+    return evaluators;
+  };
+  const std::vector<HistoryEvaluator> evaluators = evaluators_of([](const PreparedRun&) {
+    return true;
+  });
+  const auto result =
+      detail::solve_least_squares(setup.parameters, residual_blocks(evaluators, request.energy_weight),
+                                  {options.max_iterations, options.threads});
   CampaignModelFit campaign_fit;
+  campaign_fit.key = request.key;
+  campaign_fit.label = request.label;
   campaign_fit.fit = to_model_fit(setup, result, options.confidence_level);
   campaign_fit.formula = model.formula;
   campaign_fit.reference = model.reference;
   campaign_fit.damping_name = model.damping_name;
   campaign_fit.damping_unit = model.damping_unit;
+  campaign_fit.energy_weight = request.energy_weight;
   std::vector<FitQuality> parts;
   const ModelFit& fit = campaign_fit.fit;
   for (std::size_t i = 0; i < runs.size(); ++i) {
     const FemRun& fem = *runs[i].run;
     RunResidual residual{fem.source, fem.impact_velocity,
                          evaluators[i].quality(result.theta.data()),
-                         predict(model, fem, fit.stiffness.value, fit.exponent.value,
-                                 fit.parameter.value, options.ode_tolerance)};
+                         predict_impact(model, fem.mass, fem.impact_velocity, fit.stiffness.value,
+                                        fit.exponent.value, fit.dissipation(),
+                                        options.ode_tolerance),
+                         std::nullopt};
     parts.push_back(residual.quality);
     campaign_fit.runs.push_back(residual);
   }
   campaign_fit.fit.quality = combine(parts);
+  const std::string what =
+      "the campaign fit of " + request.label + " (" + request.key + ")";
   if (!fit.converged)
-    problems.push_back(
-        {model.name, "convergence",
-         "the campaign fit of " + model.name +
-             (fixed_exponent && !model.required_exponent
-                  ? " with n fixed at " + format_number(*exponent)
-                  : std::string()) +
-             " did not converge: " + fit.solver_message});
+    problems.push_back({request.key, "convergence", what + " did not converge: " +
+                                                        fit.solver_message});
+
+  // Leave one velocity out: the prediction at each velocity by the fit to the others.
+  if (velocities.size() < 3) return campaign_fit;
+  std::vector<detail::FitParameter> restart = setup.parameters;
+  for (std::size_t j = 0; j < restart.size(); ++j) restart[j].initial = result.theta[j];
+  for (double left_out : velocities) {
+    const auto others = evaluators_of([left_out](const PreparedRun& run) {
+      return !same_velocity(run.run->impact_velocity, left_out);
+    });
+    const auto held = detail::solve_least_squares(
+        restart, residual_blocks(others, request.energy_weight),
+        {options.max_iterations, options.threads});
+    const ModelFit held_fit = to_model_fit(setup, held, options.confidence_level);
+    campaign_fit.held_out.push_back({left_out, held_fit.parameter_values(), held.converged});
+    if (!held.converged)
+      problems.push_back({request.key, "convergence",
+                          what + " without V = " + format_number(left_out) +
+                              " m/s did not converge: " + held.message});
+    for (std::size_t i = 0; i < runs.size(); ++i)
+      if (same_velocity(runs[i].run->impact_velocity, left_out))
+        campaign_fit.runs[i].out_of_sample =
+            predict_impact(model, runs[i].run->mass, runs[i].run->impact_velocity,
+                           held_fit.stiffness.value, held_fit.exponent.value,
+                           held_fit.dissipation(), options.ode_tolerance);
+  }
+  std::vector<bool> fixed;
+  for (const auto& parameter : setup.parameters) fixed.push_back(parameter.fixed);
+  campaign_fit.jackknife = jackknife(campaign_fit.held_out, campaign_fit.fit.parameter_values(),
+                                     fixed, options.confidence_level);
   return campaign_fit;
 }
 
+// A model evaluated with given parameters at every run: no fit.
+ReferenceModel reference_model(std::string key, std::string label, const ContactModel& model,
+                               std::string basis, double stiffness, double exponent,
+                               std::vector<double> dissipation,
+                               const std::vector<PreparedRun>& runs,
+                               const CalibrationOptions& options) {
+  ReferenceModel reference{std::move(key),    std::move(label), model.name,
+                           std::move(basis),  stiffness,        exponent,
+                           dissipation,       model.parameter_name(), model.parameter_unit(),
+                           {}};
+  Parametrisation map{1.0, std::vector<double>(dissipation.size(), 1.0)};
+  std::vector<double> theta{map.log_reference_force(stiffness, exponent), exponent};
+  theta.insert(theta.end(), dissipation.begin(), dissipation.end());
+  for (const auto& run : runs) {
+    const FemRun& fem = *run.run;
+    const HistoryEvaluator evaluator{&model, &run, map, options.ode_tolerance};
+    const ImpactPrediction prediction =
+        predict_impact(model, fem.mass, fem.impact_velocity, stiffness, exponent, dissipation,
+                       options.ode_tolerance);
+    reference.runs.push_back({fem.source, fem.impact_velocity, evaluator.quality(theta.data()),
+                              prediction, prediction});
+  }
+  return reference;
+}
+
+void add_reference_models(CampaignCalibration& campaign, const std::vector<FemRun>& fem_runs,
+                          const std::vector<PreparedRun>& runs,
+                          const CalibrationOptions& options) {
+  const ScenarioMaterials materials = scenario_materials(fem_runs);
+  campaign.hertz_stiffness = materials.hertz_stiffness;
+  campaign.hertz_basis = materials.hertz_basis;
+  campaign.material_dissipative_constant = materials.dissipative_constant;
+  campaign.material_basis = materials.dissipative_basis;
+  campaign.published_damping = options.published_damping;
+  const double c = materials.hertz_stiffness;
+  const ContactModel hunt_crossley = hunt_crossley_model();
+  campaign.reference_models.push_back(
+      reference_model("hertz", "Hertz (b = 0)", hunt_crossley,
+                      "elastic Hertz impact: n = 3/2, c = " + materials.hertz_basis +
+                          ", no damping",
+                      c, hertz_exponent, {0.0}, runs, options));
+  campaign.reference_models.push_back(reference_model(
+      "hunt-crossley-published", "Hunt–Crossley (b = " + format_number(options.published_damping) +
+                                     " s/m)",
+      hunt_crossley,
+      "the published example: b = " + format_number(options.published_damping) +
+          " s/m, n = 3/2, c = " + materials.hertz_basis,
+      c, hertz_exponent, {options.published_damping}, runs, options));
+  if (materials.dissipative_constant)
+    campaign.reference_models.push_back(reference_model(
+        "kuwabara-kono-material", "Kuwabara–Kono, no tension, A from the material (no fit)",
+        comparison_model("kuwabara-kono-no-tension"),
+        "no fit: c = " + materials.hertz_basis + ", n = 3/2, A = " +
+            format_number(*materials.dissipative_constant) + " s from " +
+            materials.dissipative_basis,
+        c, hertz_exponent, {*materials.dissipative_constant}, runs, options));
+
+  // The restitution maps as users apply them: the FEM's e at each run, c from Hertz.
+  for (const auto& name : restitution_parametrised_laws()) {
+    const ContactModel law = comparison_model(name);
+    RestitutionMapEvaluation evaluation{name, law.formula, {}};
+    for (const auto& run : runs) {
+      const FemRun& fem = *run.run;
+      evaluation.runs.push_back(
+          {fem.source, fem.impact_velocity, fem.restitution,
+           fem.restitution > 0 && fem.restitution <= 1
+               ? predict_impact(law, fem.mass, fem.impact_velocity, c, hertz_exponent,
+                                {fem.restitution}, options.ode_tolerance)
+               : ImpactPrediction{nan, nan, nan, nan, nan, nan}});
+    }
+    campaign.restitution_maps.push_back(std::move(evaluation));
+  }
+}
+
+// A model's ranking entry from its per-run predictions.
+RankedModel ranked(const std::string& key, const std::vector<RunResidual>& residuals,
+                   const std::vector<RunCalibration>& runs, std::size_t free_parameters,
+                   double rms_residual, bool converged) {
+  std::vector<ImpactQuantities> in_sample, out_of_sample, measured;
+  bool all_out_of_sample = true;
+  for (const auto& residual : residuals) {
+    const auto run = std::find_if(runs.begin(), runs.end(), [&](const RunCalibration& r) {
+      return r.source == residual.source;
+    });
+    if (run == runs.end()) continue;
+    measured.push_back(run->measured);
+    in_sample.push_back(residual.prediction.quantities());
+    if (residual.out_of_sample) out_of_sample.push_back(residual.out_of_sample->quantities());
+    else all_out_of_sample = false;
+  }
+  all_out_of_sample = all_out_of_sample && !out_of_sample.empty();
+  const RankingScore inside = ranking_score(in_sample, measured);
+  const RankingScore outside = all_out_of_sample ? ranking_score(out_of_sample, measured) : inside;
+  return {key, free_parameters, outside.rms, all_out_of_sample, outside.worst, inside.rms,
+          rms_residual, converged, {}};
+}
+
+// The ranking of the campaign and reference models by out-of-sample error; the fitted
+// restitution-parametrised laws, which share one force history, as one family.
+std::vector<RankedModel> rank_campaign(const CampaignCalibration& campaign,
+                                       const std::vector<RunCalibration>& runs) {
+  std::vector<RankedModel> ranking;
+  std::optional<std::size_t> family;
+  const auto& maps = restitution_parametrised_laws();
+  for (const CampaignModelFit* model : campaign.models()) {
+    const bool in_family = std::find(maps.begin(), maps.end(), model->key) != maps.end();
+    if (in_family && family) {
+      ranking[*family].family.push_back(model->key);
+      continue;
+    }
+    ranking.push_back(ranked(model->key, model->runs, runs, model->fit.free_parameters(),
+                             model->fit.quality.rms_residual, model->fit.converged));
+    if (in_family) {
+      ranking.back().family = {model->key};
+      family = ranking.size() - 1;
+    }
+  }
+  for (const auto& reference : campaign.reference_models) {
+    FitQuality quality{0, 0, 0};
+    std::vector<FitQuality> parts;
+    for (const auto& run : reference.runs) parts.push_back(run.quality);
+    if (!parts.empty()) quality = combine(parts);
+    ranking.push_back(ranked(reference.key, reference.runs, runs, 0, quality.rms_residual, true));
+  }
+  rank(ranking);
+  return ranking;
+}
+
 } // namespace
+
+std::vector<double> ModelFit::dissipation() const {
+  std::vector<double> values{parameter.value};
+  for (const auto& entry : extra) values.push_back(entry.estimate.value);
+  return values;
+}
+
+std::vector<double> ModelFit::parameter_values() const {
+  std::vector<double> values{stiffness.value, exponent.value};
+  for (double p : dissipation()) values.push_back(p);
+  return values;
+}
+
+std::vector<std::string> ModelFit::parameter_names() const {
+  std::vector<std::string> names{"c", "n", parameter_name};
+  for (const auto& entry : extra) names.push_back(entry.name);
+  return names;
+}
+
+std::size_t ModelFit::free_parameters() const {
+  return 1 + (exponent_fixed ? 0 : 1) + (parameter_fixed ? 0 : 1) + extra.size();
+}
+
+std::vector<const CampaignModelFit*> CampaignCalibration::models() const {
+  std::vector<const CampaignModelFit*> all;
+  for (const auto* fit : {&hunt_crossley, &hunt_crossley_energy, &hunt_crossley_hertz_exponent,
+                          &hunt_crossley_velocity_damping})
+    if (*fit) all.push_back(&**fit);
+  for (const auto& law : comparison_laws) all.push_back(&law);
+  return all;
+}
+
+const CampaignModelFit* CampaignCalibration::find(const std::string& key) const {
+  for (const CampaignModelFit* model : models())
+    if (model->key == key) return model;
+  return nullptr;
+}
+
+RankingScore ranking_score(const std::vector<ImpactQuantities>& predicted,
+                           const std::vector<ImpactQuantities>& measured) {
+  double squares = 0, worst = 0;
+  std::size_t count = 0;
+  for (std::size_t i = 0; i < predicted.size() && i < measured.size(); ++i)
+    for (Quantity quantity : verdict_quantities) {
+      const double error = relative_error(predicted[i], measured[i], quantity);
+      if (!std::isfinite(error)) continue;
+      squares += error * error;
+      worst = std::max(worst, std::abs(error));
+      ++count;
+    }
+  if (count == 0) return {nan, nan};
+  return {std::sqrt(squares / double(count)), worst};
+}
+
+void rank(std::vector<RankedModel>& models, double tie) {
+  std::vector<std::pair<std::size_t, RankedModel>> indexed;
+  for (std::size_t i = 0; i < models.size(); ++i) indexed.emplace_back(i, models[i]);
+  std::stable_sort(indexed.begin(), indexed.end(), [](const auto& a, const auto& b) {
+    if (std::isnan(a.second.score)) return false;
+    if (std::isnan(b.second.score)) return true;
+    return a.second.score < b.second.score;
+  });
+  // Groups of scores within `tie` of the group's best: fewer free parameters first, then the
+  // given order.
+  for (std::size_t begin = 0; begin < indexed.size();) {
+    std::size_t end = begin + 1;
+    while (end < indexed.size() && std::isfinite(indexed[begin].second.score) &&
+           indexed[end].second.score - indexed[begin].second.score <= tie)
+      ++end;
+    std::sort(indexed.begin() + std::ptrdiff_t(begin), indexed.begin() + std::ptrdiff_t(end),
+              [](const auto& a, const auto& b) {
+                if (a.second.free_parameters != b.second.free_parameters)
+                  return a.second.free_parameters < b.second.free_parameters;
+                return a.first < b.first;
+              });
+    begin = end;
+  }
+  for (std::size_t i = 0; i < models.size(); ++i) models[i] = indexed[i].second;
+}
 
 Calibration calibrate(const std::vector<FemRun>& runs, const CalibrationOptions& options) {
   if (!(options.confidence_level > 0 && options.confidence_level < 1))
     throw reduced::InvalidInput("confidence_level", "the confidence level must be in (0, 1)");
   if (options.max_iterations < 1)
     throw reduced::InvalidInput("max_iterations", "the iteration limit must be at least 1");
+  if (!(options.energy_weight >= 0) || !std::isfinite(options.energy_weight))
+    throw reduced::InvalidInput("energy_weight", "the energy weight must be a number >= 0");
+  if (!(options.published_damping >= 0) || !std::isfinite(options.published_damping))
+    throw reduced::InvalidInput("published_damping", "the published damping must be >= 0 s/m");
   std::vector<ContactModel> laws;
   for (const auto& name : options.laws) laws.push_back(comparison_model(name));
 
@@ -556,12 +862,11 @@ Calibration calibrate(const std::vector<FemRun>& runs, const CalibrationOptions&
 
   // The campaign needs two distinct velocities to tell a constant b from a constant e.
   CampaignCalibration& campaign = calibration.campaign;
+  campaign.energy_weight = options.energy_weight;
+  add_reference_models(campaign, runs, prepared, options);
   for (const auto& run : runs) {
     const bool known = std::any_of(campaign.velocities.begin(), campaign.velocities.end(),
-                                   [&](double v) {
-                                     return std::abs(v - run.impact_velocity) <=
-                                            1e-6 * run.impact_velocity;
-                                   });
+                                   [&](double v) { return same_velocity(v, run.impact_velocity); });
     if (!known) campaign.velocities.push_back(run.impact_velocity);
   }
   std::sort(campaign.velocities.begin(), campaign.velocities.end());
@@ -603,37 +908,57 @@ Calibration calibrate(const std::vector<FemRun>& runs, const CalibrationOptions&
     start.log_reference_force = std::log(median(std::vector<double>{runs.front().force_max}));
   }
 
-  progress.start();
-  campaign.hunt_crossley = fit_campaign_model(hunt_crossley_model(), prepared, start,
-                                              median(dampings), options, calibration.problems);
-  progress("campaign: hunt-crossley fitted to " + std::to_string(runs.size()) + " runs in " +
-           progress.elapsed());
-  // The comparison laws start from the Hunt–Crossley elastic part.
+  const auto fit = [&](const ContactModel& model, const CampaignFitRequest& request) {
+    progress.start();
+    CampaignModelFit result = fit_campaign_model(model, request, prepared, campaign.velocities,
+                                                 start, options, calibration.problems);
+    progress("campaign: " + request.key + " fitted to " + std::to_string(runs.size()) +
+             " runs" +
+             (result.held_out.empty()
+                  ? std::string()
+                  : " and once without each of the " + std::to_string(result.held_out.size()) +
+                        " velocities") +
+             " in " + progress.elapsed());
+    return result;
+  };
+  const ContactModel hunt_crossley = hunt_crossley_model();
+  campaign.hunt_crossley = fit(hunt_crossley, {"hunt-crossley", "Hunt–Crossley, force histories",
+                                               std::nullopt, 0, median(dampings), {}});
+  // The other fits start from the Hunt–Crossley elastic part and damping.
   const ModelFit& hc = campaign.hunt_crossley->fit;
+  const double hc_damping = hc.parameter.value;
   if (hc.stiffness.value > 0 && std::isfinite(hc.exponent.value)) {
     start.exponent = hc.exponent.value;
     start.log_reference_force =
         std::log(hc.stiffness.value) + hc.exponent.value * std::log(start.reference_approach);
   }
+  if (options.energy_weight > 0)
+    campaign.hunt_crossley_energy =
+        fit(hunt_crossley, {"hunt-crossley-energy",
+                            "Hunt–Crossley, force histories and energy loss", std::nullopt,
+                            options.energy_weight, hc_damping, {}});
   // Hunt–Crossley with n at the Hertz value: its c (N/m^1.5) is the one to compare with the
-  // Hertz stiffness. Starts from the free fit's F_ref and b.
-  progress.start();
+  // Hertz stiffness.
   campaign.hunt_crossley_hertz_exponent =
-      fit_campaign_model(hunt_crossley_model(), prepared, start, hc.parameter.value, options,
-                         calibration.problems, hertz_exponent);
-  progress("campaign: hunt-crossley with n = " + format_number(hertz_exponent) +
-           " fitted in " + progress.elapsed());
+      fit(hunt_crossley, {"hunt-crossley-hertz-exponent",
+                          "Hunt–Crossley with n = 3/2, force histories", hertz_exponent, 0,
+                          hc_damping, {}});
+  campaign.hunt_crossley_velocity_damping =
+      fit(velocity_damped_hunt_crossley_model(),
+          {"hunt-crossley-velocity-damping",
+           options.energy_weight > 0 ? "Hunt–Crossley with b(V), force histories and energy loss"
+                                     : "Hunt–Crossley with b(V), force histories",
+           std::nullopt, options.energy_weight, hc_damping, {0.0}});
   for (const auto& law : laws) {
-    progress.start();
     try {
       campaign.comparison_laws.push_back(
-          fit_campaign_model(law, prepared, start, nan, options, calibration.problems));
-      progress("campaign: " + law.name + " fitted in " + progress.elapsed());
+          fit(law, {law.name, law.name + ", force histories", std::nullopt, 0, nan, {}}));
     } catch (const std::exception& error) {
       calibration.problems.push_back(
           {law.name, "convergence", "the campaign fit of " + law.name + " failed: " + error.what()});
     }
   }
+  campaign.ranking = rank_campaign(campaign, calibration.runs);
   campaign.fitted = true;
   return calibration;
 }

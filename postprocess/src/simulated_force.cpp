@@ -8,19 +8,19 @@ namespace impact::postprocess::detail {
 
 bool simulate_force(const reduced::ContactForceLaw& law, double mass, double velocity,
                     const std::vector<double>& times, std::size_t points, double tolerance,
-                    double* force) {
+                    reduced::ContactEnd end, double* force) {
   std::vector<reduced::ImpactSample> samples;
   try {
-    samples = reduced::integrate_impact_history(mass, velocity, law, points, tolerance);
+    samples = reduced::integrate_impact_history(mass, velocity, law, points, tolerance, end);
   } catch (const std::exception&) {
     return false;
   }
   const std::size_t last = samples.size() - 1;
-  const double end = samples[last].time;
-  const double spacing = end / double(last);
+  const double separation = samples[last].time;
+  const double spacing = separation / double(last);
   for (std::size_t i = 0; i < times.size(); ++i) {
     const double t = times[i];
-    if (!(t > 0 && t < end)) {
+    if (!(t > 0 && t < separation)) {
       force[i] = 0;
       continue;
     }

@@ -13,11 +13,12 @@
 
 namespace impact::postprocess::detail {
 
-/// F at each time in `times` [s since first contact]; 0 before contact and after separation.
+/// F at each time in `times` [s since first contact]; 0 before contact and after separation
+/// (`end`: the law's end of contact).
 /// Returns false if the impact cannot be integrated (the law holds the body, non-finite
 /// force, invalid parameters).
 bool simulate_force(const reduced::ContactForceLaw& law, double mass, double velocity,
                     const std::vector<double>& times, std::size_t points, double tolerance,
-                    double* force);
+                    reduced::ContactEnd end, double* force);
 
 } // namespace impact::postprocess::detail

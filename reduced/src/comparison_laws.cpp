@@ -14,6 +14,7 @@ const std::vector<ComparisonLaw>& comparison_laws() {
       laws::kelvin_voigt(), laws::lankarani_nikravesh(), laws::flores(),
       laws::gonthier(),     laws::hu_guo(),              laws::zhiying_qishao(),
       laws::tsuji(),        laws::tsuji_clamped(),       laws::kuwabara_kono(),
+      laws::kuwabara_kono_no_tension(),
   };
   return registry;
 }
@@ -60,8 +61,8 @@ ComparisonLawImpact evaluate_comparison_law(const ComparisonLaw& law, const Cont
                                             double relative_tolerance) {
   const double damping = comparison_law_damping(law, setup, restitution, velocity);
   try {
-    const auto impact =
-        integrate_impact(setup.mass, velocity, law.force_law(damping, setup), relative_tolerance);
+    const auto impact = integrate_impact(setup.mass, velocity, law.force_law(damping, setup),
+                                         relative_tolerance, law.contact_end);
     return {damping, impact, (impact.restitution - restitution) / restitution};
   } catch (const ContactDoesNotEnd& error) {
     std::ostringstream message;

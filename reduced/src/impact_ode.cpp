@@ -97,8 +97,9 @@ struct Step {
 class ImpactIntegration {
 public:
   ImpactIntegration(double mass, double velocity, const ContactForceLaw& force,
-                    double relative_tolerance)
-    : mass_(mass), velocity_(velocity), force_(force), tolerance_(relative_tolerance) {
+                    double relative_tolerance, ContactEnd end)
+    : mass_(mass), velocity_(velocity), force_(force), tolerance_(relative_tolerance),
+      end_(end) {
     require_positive("mass", mass);
     require_positive("velocity", velocity);
     if (!(relative_tolerance >= 1e-14 && relative_tolerance <= 1e-3))
@@ -121,8 +122,9 @@ public:
     result.contact_time = time_ * contact_time_;
     result.rebound_velocity = velocity_ * separation_rate_;
     result.restitution = -separation_rate_;
-    result.force_at_separation = force_at(State{0.0, separation_rate_});
+    result.force_at_separation = force_at(separation_);
     result.steps = steps_.size();
+    result.approach_at_separation = length_ * separation_[0];
     return result;
   }
 
@@ -130,7 +132,7 @@ public:
     std::vector<ImpactSample> samples;
     samples.reserve(points);
     for (std::size_t i = 0; i < points; ++i) {
-      State state{0.0, separation_rate_};
+      State state = separation_;
       double tau = contact_time_;
       if (i + 1 < points) {
         tau = contact_time_ * static_cast<double>(i) / static_cast<double>(points - 1);
@@ -235,13 +237,26 @@ private:
         compressing = false;
         event_start = h;
       }
-      if (!compressing && y[0] <= 0) {
-        const double h =
-            locate(start, event_start, length, [](const State& s) { return s[0]; });
-        const State end = advance(start, h);
+      // End of contact: x back at 0, or (no tension) the force back at 0, whichever first.
+      const bool released = !compressing && end_ == ContactEnd::zero_force && force_at(y) <= 0;
+      if (!compressing && (y[0] <= 0 || released)) {
+        double h = length;
+        bool at_zero_approach = y[0] <= 0;
+        if (at_zero_approach)
+          h = locate(start, event_start, length, [](const State& s) { return s[0]; });
+        if (end_ == ContactEnd::zero_force) {
+          const auto force = [this](const State& s) { return force_at(s); };
+          if (force(advance(start, h)) <= 0) {
+            const double released_at = locate(start, event_start, h, force);
+            at_zero_approach = at_zero_approach && released_at == h;
+            h = released_at;
+          }
+        }
+        separation_ = advance(start, h);
+        if (at_zero_approach) separation_[0] = 0; // the located root, without its rounding
         steps_.push_back({start_time, start, h});
         contact_time_ = start_time + h;
-        separation_rate_ = end[1];
+        separation_rate_ = separation_[1];
         return;
       }
       steps_.push_back({start_time, start, length});
@@ -274,7 +289,7 @@ private:
     const std::size_t count = steps_.size();
     std::vector<double> node_force(count + 1);
     for (std::size_t i = 0; i < count; ++i) node_force[i] = force_at(steps_[i].state);
-    node_force[count] = force_at(State{0.0, separation_rate_});
+    node_force[count] = force_at(separation_);
     const std::size_t j = static_cast<std::size_t>(
         std::max_element(node_force.begin(), node_force.end()) - node_force.begin());
     force_max_ = node_force[j];
@@ -297,6 +312,7 @@ private:
   double velocity_;
   const ContactForceLaw& force_;
   double tolerance_;
+  ContactEnd end_;
   double length_ = 0;
   double time_ = 0;
   std::vector<Step> steps_;
@@ -304,6 +320,7 @@ private:
   double compression_time_ = 0;
   double contact_time_ = 0;
   double separation_rate_ = 0;
+  State separation_{0.0, 0.0}; // scaled state at the end of contact
   double force_max_ = 0;
   double time_force_max_ = 0;
 };
@@ -311,18 +328,18 @@ private:
 } // namespace
 
 OdeImpactResult integrate_impact(double mass, double velocity, const ContactForceLaw& force,
-                                 double relative_tolerance) {
-  return ImpactIntegration(mass, velocity, force, relative_tolerance).result();
+                                 double relative_tolerance, ContactEnd end) {
+  return ImpactIntegration(mass, velocity, force, relative_tolerance, end).result();
 }
 
 std::vector<ImpactSample> integrate_impact_history(double mass, double velocity,
                                                    const ContactForceLaw& force,
                                                    std::size_t points,
-                                                   double relative_tolerance) {
+                                                   double relative_tolerance, ContactEnd end) {
   if (points < 2)
     throw InvalidInput("points", "points must be a whole number >= 2 (got " +
                                      std::to_string(points) + ")");
-  return ImpactIntegration(mass, velocity, force, relative_tolerance).history(points);
+  return ImpactIntegration(mass, velocity, force, relative_tolerance, end).history(points);
 }
 
 } // namespace impact::reduced

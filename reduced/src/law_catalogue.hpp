@@ -16,5 +16,6 @@ ComparisonLaw zhiying_qishao();      // law_hertz_damped.cpp
 ComparisonLaw tsuji();               // law_tsuji.cpp
 ComparisonLaw tsuji_clamped();       // law_tsuji.cpp
 ComparisonLaw kuwabara_kono();       // law_kuwabara_kono.cpp
+ComparisonLaw kuwabara_kono_no_tension(); // law_kuwabara_kono.cpp (separation at F = 0)
 
 } // namespace impact::reduced::laws

@@ -11,6 +11,12 @@
 // and gamma2 = (3/5) gamma1^2 (Ramírez et al.). No closed form of e(q) exists: the damping
 // for a target restitution is found by root finding (TOMS 748) on the exactly integrated
 // restitution of the scaled problem (m = c = V = 1, A = q).
+//
+// "kuwabara-kono-no-tension" is the same force with the contact ending where it returns to
+// 0 (ContactEnd::zero_force). The law as written pulls during the last part of the
+// restitution (x + (3/2) A x' < 0); a real contact, like the finite-element one, cannot,
+// so the bodies separate there with the surfaces not yet recovered. The scaling argument
+// holds for that end of contact too, so e still depends on q alone.
 
 #include "impact_reduced/comparison_laws.hpp"
 
@@ -23,6 +29,7 @@
 #include <cmath>
 #include <cstdint>
 #include <stdexcept>
+#include <string>
 
 namespace impact::reduced {
 
@@ -36,19 +43,19 @@ ContactForceLaw viscoelastic_force(double stiffness, double dissipative_constant
 }
 
 // Restitution of the scaled problem as a function of q; 0 if the law holds the body.
-double scaled_restitution(double q) {
+double scaled_restitution(double q, ContactEnd end) {
   if (q == 0) return 1.0;
   try {
-    return integrate_impact(1.0, 1.0, viscoelastic_force(1.0, q), 1e-12).restitution;
+    return integrate_impact(1.0, 1.0, viscoelastic_force(1.0, q), 1e-12, end).restitution;
   } catch (const ContactDoesNotEnd&) {
     return 0.0;
   }
 }
 
 // q with scaled_restitution(q) = e, to ~1e-11 relative.
-double scaled_damping_for_restitution(double restitution) {
+double scaled_damping_for_restitution(double restitution, ContactEnd end) {
   if (restitution >= 1) return 0.0;
-  const auto gap = [=](double q) { return scaled_restitution(q) - restitution; };
+  const auto gap = [=](double q) { return scaled_restitution(q, end) - restitution; };
   double lower = 0;
   double lower_gap = 1 - restitution;
   double upper = (1 - restitution) / brilliantov_gamma1();
@@ -92,25 +99,36 @@ double brilliantov_restitution_series(double dissipative_constant, const Contact
 
 namespace laws {
 
-ComparisonLaw kuwabara_kono() {
+namespace {
+
+ComparisonLaw viscoelastic_sphere_law(ContactEnd end) {
+  const bool no_tension = end == ContactEnd::zero_force;
   ComparisonLaw law;
-  law.name = "kuwabara-kono";
-  law.formula = "F = c x^(3/2) + (3/2) A c x^(1/2) x', A from the exactly integrated "
-                "restitution (root finding; e depends on A (c/m)^(2/5) V^(1/5) only)";
+  law.name = no_tension ? "kuwabara-kono-no-tension" : "kuwabara-kono";
+  law.formula = std::string("F = c x^(3/2) + (3/2) A c x^(1/2) x'") +
+                (no_tension ? ", contact ends when F returns to 0 (no tension)" : "") +
+                ", A from the exactly integrated restitution (root finding; e depends on "
+                "A (c/m)^(2/5) V^(1/5) only)";
   law.reference = "Kuwabara and Kono, Jpn. J. Appl. Phys. 26 (1987) 1230; Brilliantov et al., "
                   "Phys. Rev. E 53 (1996) 5382; Ramirez et al., Phys. Rev. E 60 (1999) 4465";
   law.damping_name = "A";
   law.damping_unit = "s";
   law.required_exponent = 1.5;
-  law.damping_for_restitution = [](double restitution, double velocity,
-                                   const ContactSetup& setup) {
-    return scaled_damping_for_restitution(restitution) / scale_of_q(setup, velocity);
+  law.damping_for_restitution = [end](double restitution, double velocity,
+                                      const ContactSetup& setup) {
+    return scaled_damping_for_restitution(restitution, end) / scale_of_q(setup, velocity);
   };
   law.force_law = [](double dissipative_constant, const ContactSetup& setup) {
     return viscoelastic_force(setup.stiffness, dissipative_constant);
   };
+  law.contact_end = end;
   return law;
 }
+
+} // namespace
+
+ComparisonLaw kuwabara_kono() { return viscoelastic_sphere_law(ContactEnd::zero_approach); }
+ComparisonLaw kuwabara_kono_no_tension() { return viscoelastic_sphere_law(ContactEnd::zero_force); }
 
 } // namespace laws
 } // namespace impact::reduced

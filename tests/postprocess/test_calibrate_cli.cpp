@@ -117,6 +117,12 @@ TEST_F(CalibrateCli, CampaignGivesEveryKey) {
   EXPECT_NEAR(multibody["c"].get<double>() / truth.stiffness, 1, 1e-6);
   EXPECT_NEAR(multibody["n"].get<double>(), truth.exponent, 1e-6);
   EXPECT_NEAR(multibody["b"].get<double>(), truth.damping, 1e-7);
+  // b(V) for a multibody code: the data have a constant b, so q = 0 and b_1 = b.
+  const json& velocity_damping = calibration["multibody_velocity_damping"];
+  for (const char* key : {"model", "force_law", "c", "n", "b_1", "q", "units", "basis", "converged"})
+    EXPECT_TRUE(velocity_damping.contains(key)) << "multibody_velocity_damping has no '" << key << "'";
+  EXPECT_NEAR(velocity_damping["q"].get<double>(), 0, 1e-6);
+  EXPECT_NEAR(velocity_damping["b_1"].get<double>(), truth.damping, 1e-7);
 
   ASSERT_EQ(calibration["runs"].size(), 3u);
   for (const auto& entry : calibration["runs"]) {
@@ -160,8 +166,28 @@ TEST_F(CalibrateCli, CampaignGivesEveryKey) {
   }
   EXPECT_EQ(campaign["comparison_laws"][1]["parameters"].count("A"), 1u); // Kuwabara–Kono
   EXPECT_EQ(campaign["comparison_laws"][0]["parameters"].count("e"), 1u); // Lankarani–Nikravesh
-  ASSERT_EQ(campaign["ranking"].size(), 3u);
+  // The ranking holds every campaign fit (Hunt–Crossley on the histories, with the energy
+  // loss, with n = 3/2, with b(V), the two laws) and the reference models that fit nothing
+  // (Hertz, the published b; no material A: the runs record no retardation times).
+  ASSERT_EQ(campaign["ranking"].size(), 8u);
   EXPECT_EQ(campaign["ranking"][0]["model"], "hunt-crossley"); // the law that made the data
+  for (const auto& entry : campaign["ranking"])
+    for (const char* key : {"model", "free_parameters", "score", "out_of_sample", "worst_error",
+                            "in_sample_score", "rms_residual", "converged", "family", "parameter"})
+      EXPECT_TRUE(entry.contains(key)) << entry["model"] << " has no '" << key << "'";
+  // Three velocities: every campaign fit is repeated without each, for out-of-sample
+  // predictions and jackknife intervals.
+  for (const char* key : {"hunt_crossley", "hunt_crossley_energy", "hunt_crossley_velocity_damping"}) {
+    const json& fit = campaign[key];
+    ASSERT_TRUE(fit.is_object()) << key;
+    EXPECT_EQ(fit["held_out"].size(), 3u) << key;
+    EXPECT_TRUE(fit["jackknife"].is_object()) << key;
+    for (const auto& entry : fit["runs"]) EXPECT_TRUE(entry["out_of_sample"].is_object()) << key;
+  }
+  EXPECT_EQ(campaign["hunt_crossley_velocity_damping"]["parameters"].size(), 4u); // c, n, b_1, q
+  EXPECT_EQ(campaign["energy_weight"], 1.0);
+  EXPECT_EQ(campaign["published_damping"], 0.1);
+  EXPECT_EQ(campaign["restitution_maps"].size(), 5u);
 }
 
 TEST_F(CalibrateCli, SingleVelocityCampaign) {
@@ -248,6 +274,9 @@ TEST_F(CalibrateCli, UsageErrorsNameTheProblem) {
       {{file.string(), "--output", output.string(), "--laws", "nonsense"}, "unknown law 'nonsense'"},
       {{file.string(), "--output", output.string(), "--max-iterations", "0"}, "--max-iterations"},
       {{file.string(), "--output", output.string(), "--confidence", "1.5"}, "--confidence"},
+      {{file.string(), "--output", output.string(), "--energy-weight", "-1"}, "--energy-weight"},
+      {{file.string(), "--output", output.string(), "--published-damping", "fast"},
+       "--published-damping"},
       {{file.string(), "--output", (directory / "no" / "c.json").string()}, "does not exist"},
       {{file.string(), "--output"}, "needs a value"}};
   for (const auto& [arguments, message] : cases) {

@@ -182,6 +182,9 @@ struct ReportOfCampaign {
                    {{"energy_error", 0.0012}, {"max_von_mises", 1.2e9},
                     {"yield_strength", 1.5e9}, {"dissipated_energy_fraction", 0.05},
                     {"radiated_energy_fraction", 0.01}});
+    // V = 4 m/s yields: the report must flag it.
+    add_to_summary(campaign / ("v" + std::to_string(4.0)),
+                   {{"max_von_mises", 1.8e9}, {"yield_strength", 1.5e9}});
     calibrate = new CliRun(run_tool(IMPACT_CALIBRATE_CLI,
                                     {"--campaign", campaign.string(), "--output",
                                      (*directory / "calibration.json").string(), "--laws",
@@ -216,8 +219,9 @@ fs::path* ReportOfCampaign::directory = nullptr;
 CliRun* ReportOfCampaign::calibrate = nullptr;
 CliRun* ReportOfCampaign::report = nullptr;
 
-const std::vector<std::string> figure_files = {"loops.png", "histories.png", "quantities.png",
-                                               "damping.png", "errors.png"};
+const std::vector<std::string> figure_files = {"loops.png",      "histories.png", "residuals.png",
+                                               "quantities.png", "energy_loss.png", "damping.png",
+                                               "errors.png"};
 
 void check_HtmlAndMarkdownExist() {
   EXPECT_TRUE(contains(ReportOfCampaign::report->out, "report written to " + (ReportOfCampaign::output() / "report.html").string()))
@@ -303,15 +307,18 @@ void check_TablesHoldTheNumbersOfTheCalibration() {
   const MarkdownTable* restitution = find_table(tables, {"V [m/s]", "FEM restitution e [1]"});
   ASSERT_NE(restitution, nullptr);
   const json& ranking = calibration_json["campaign"]["ranking"];
+  // The best law: the comparison law ranked first (the ranking also holds the Hunt–Crossley
+  // variants and the reference models).
   std::string best;
-  for (const auto& entry : ranking)
-    if (entry["model"] != "hunt-crossley") {
+  const json* best_fit = nullptr;
+  for (const auto& entry : ranking) {
+    for (const auto& law : calibration_json["campaign"]["comparison_laws"])
+      if (law["key"] == entry["model"]) best_fit = &law;
+    if (best_fit) {
       best = entry["model"].get<std::string>();
       break;
     }
-  const json* best_fit = nullptr;
-  for (const auto& law : calibration_json["campaign"]["comparison_laws"])
-    if (law["model"] == best) best_fit = &law;
+  }
   ASSERT_NE(best_fit, nullptr);
   for (std::size_t i = 0; i < velocities.size(); ++i) {
     const auto& cells = (*restitution)[i + 1];
@@ -355,11 +362,38 @@ void check_StatesTheVerdictTheModelsAndTheChecks() {
   expect_same(cell_number((*energy)[2][1]), 0.12, "energy error");
   EXPECT_TRUE(contains((*energy)[2].back(), "elastic: 80 % of the yield strength"));
   EXPECT_TRUE(contains((*energy)[1].back(), "not recorded"));
-  // The table of errors: every model, every quantity, every velocity.
+  // The table of errors: every model (seven: Hunt–Crossley calibrated, with the energy loss,
+  // with b(V), the best law, the published b, Hertz — the synthetic runs record no
+  // retardation times, so no Kuwabara–Kono from the material), every quantity (seven: 1 - e^2,
+  // 1 - e, e, t_c, F_max, t(F_max), x_max), every velocity.
   const MarkdownTable* errors = find_table(tables, {"model", "quantity"});
   ASSERT_NE(errors, nullptr);
-  EXPECT_EQ(errors->size(), 1 + 4 * 4u);
+  EXPECT_EQ(errors->size(), 1 + 6 * 7u);
   EXPECT_EQ(errors->front().size(), 2 + velocities.size());
+  for (const char* label : {"Hunt–Crossley (calibrated)", "Hunt–Crossley (force + energy)",
+                            "Hunt–Crossley b(V)", "Hunt–Crossley (b = 0.1 s/m)", "Hertz (b = 0)"}) {
+    std::size_t rows = 0;
+    for (const auto& row : *errors) rows += row.front() == label;
+    EXPECT_EQ(rows, 7u) << label;
+  }
+  // The verdict judges the energy loss out of sample, names it and the FEM's uncertainty.
+  EXPECT_TRUE(contains(markdown, "The errors are out of sample")) << markdown;
+  EXPECT_TRUE(contains(markdown, "(out of sample)"));
+  EXPECT_TRUE(contains(markdown, "Velocity trend of the FEM's energy loss: 1 - e ∝ V^p with p = "));
+  EXPECT_TRUE(contains(markdown, "## Ranking of the models"));
+  EXPECT_TRUE(contains(markdown, "## FEM quality per run"));
+  EXPECT_TRUE(contains(markdown, "## The laws as their users apply them"));
+  EXPECT_TRUE(contains(markdown, "CONDITIONAL ON THE MODEL"));
+  EXPECT_TRUE(find_table(tables, {"parameter", "value", "jackknife standard error"}) != nullptr);
+  // The run above the recorded yield strength is flagged in every table.
+  EXPECT_TRUE(contains(markdown, "The FEM exceeds the yield strength (1.5 GPa, yield_strength) "
+                                 "from V = 4 m/s on")) << markdown;
+  EXPECT_TRUE(contains((*energy)[4].back(), "YIELDS: 120 % of the yield strength")) << (*energy)[4].back();
+  for (const auto& table : tables)
+    for (const auto& row : table)
+      if (row.front().rfind("4", 0) == 0 && row.front().size() > 1 && row.front()[1] != '.') {
+        EXPECT_EQ(row.front(), "4 (yields)");
+      }
 }
 
 // The offsets from Hertz: n - 3/2 from the free campaign fit, c / c_Hertz - 1 from the fit
@@ -619,6 +653,25 @@ TEST(ReportCli, CalibratesTheCampaignItselfWithoutACalibrationFile) {
   EXPECT_EQ(calibration["status"], "complete");
   EXPECT_TRUE(contains(read_text(directory / "report" / "report.md"), "calibrated by impact-report"));
   fs::remove_all(directory);
+}
+
+// The tolerance bands and the published b are options, not constants of the code.
+TEST_F(ReportBadInput, ToleranceBandsAndPublishedDampingAreOptions) {
+  add_run(1.0);
+  add_run(2.0);
+  const fs::path calibration = calibrate({"--laws", "none", "--published-damping", "0.05"});
+  const CliRun run = report({"--calibration", calibration.string(), "--tolerances", "1,10"});
+  EXPECT_EQ(run.exit_code, 0) << run.err;
+  const std::string markdown = read_text(output / "report.md");
+  EXPECT_TRUE(contains(markdown, "- Within 1 %:")) << markdown;
+  EXPECT_TRUE(contains(markdown, "- Within 10 %:"));
+  EXPECT_FALSE(contains(markdown, "- Within 2 %:"));
+  EXPECT_TRUE(contains(markdown, "Hunt–Crossley (b = 0.05 s/m)"));
+  // Two velocities: no out-of-sample errors, and the page says so.
+  EXPECT_TRUE(contains(markdown, "The errors are in sample")) << markdown;
+  const CliRun bad = report({"--calibration", calibration.string(), "--tolerances", "2,abc"});
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_TRUE(contains(bad.err, "--tolerances must be per cents in (0, 100)")) << bad.err;
 }
 
 TEST(ReportCli, UsageErrors) {

@@ -78,6 +78,48 @@ TEST(ImpactOde, LinearKelvinVoigtMatchesClosedForm) {
   }
 }
 
+// Separation where the force returns to 0 (no tension): for the linear Kelvin–Voigt law
+// F = k x + mu x' = -m x'' vanishes first after the compression at w_d t + 2 theta = 2 pi,
+// where x > 0 still; the body leaves with x'(t*) (closed form above).
+TEST(ImpactOde, SeparationAtZeroForceMatchesTheClosedForm) {
+  using impact::reduced::ContactEnd;
+  for (const double zeta : {0.02, 0.1, 0.3}) {
+    const LinearOscillator exact{2.0, 3e5, zeta * 2 * std::sqrt(3e5 * 2.0), 0.7};
+    const double release = (2 * pi - 2 * exact.theta()) / exact.damped();
+    const auto law = kelvin_voigt(exact.stiffness, exact.damping);
+    const auto result = integrate_impact(exact.mass, exact.velocity, law, 1e-10,
+                                         ContactEnd::zero_force);
+    const auto history = integrate_impact_history(exact.mass, exact.velocity, law, 51, 1e-10,
+                                                  ContactEnd::zero_force);
+    const double errors[] = {
+        relative_error(result.contact_time, release),
+        relative_error(result.restitution, -exact.derivative(1, release) / exact.velocity),
+        relative_error(result.approach_at_separation, exact.derivative(0, release)),
+        relative_error(result.compression_time, exact.compression_time()),
+        relative_error(history.back().approach, exact.derivative(0, release)),
+        relative_error(history.back().time, release),
+    };
+    double worst = 0;
+    for (double e : errors) worst = std::max(worst, e);
+    std::printf("Kelvin-Voigt zeta %.2f, no tension: released at %.6f of the x = 0 time, "
+                "x = %.3e m, e = %.12f (%.12f with tension), worst relative error %.2e\n",
+                zeta, release / exact.contact_time(), result.approach_at_separation,
+                result.restitution, exact.restitution(), worst);
+    for (double e : errors) EXPECT_LT(e, 1e-9);
+    EXPECT_LT(std::abs(result.force_at_separation), 1e-9 * result.force_max);
+    EXPECT_LT(release, exact.contact_time());
+    EXPECT_GT(result.restitution, exact.restitution()); // no tension to slow it down
+    for (const auto& sample : history) EXPECT_GE(sample.force, -1e-9 * result.force_max);
+  }
+  // A law that stays compressive until x = 0 ends there with either rule.
+  const auto hertz = [](double x, double v) { return 1.7135e10 * std::pow(x, 1.5) * (1 + 0.1 * v); };
+  const auto at_zero_force = integrate_impact(0.1, 1.0, hertz, 1e-10, ContactEnd::zero_force);
+  const auto at_zero_approach = integrate_impact(0.1, 1.0, hertz, 1e-10);
+  EXPECT_EQ(at_zero_force.contact_time, at_zero_approach.contact_time);
+  EXPECT_EQ(at_zero_force.restitution, at_zero_approach.restitution);
+  EXPECT_EQ(at_zero_force.approach_at_separation, 0.0);
+}
+
 TEST(ImpactOde, KelvinVoigtForceMaximumAtFirstTouchWhenStronglyDamped) {
   // zeta > 1/2: F = k x + mu x' only falls from its initial value mu V.
   const LinearOscillator exact{1.0, 1e4, 0.6 * 2 * std::sqrt(1e4), 2.0};

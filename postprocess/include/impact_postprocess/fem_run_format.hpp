@@ -49,6 +49,14 @@ inline constexpr const char* time_force_max_key = "time_force_max";     // s
 inline constexpr const char* approach_max_key = "approach_max";         // m
 inline constexpr const char* rebound_velocity_key = "rebound_velocity"; // m/s
 inline constexpr const char* energy_error_key = "energy_error";         // 1
+inline constexpr const char* time_step_key = "time_step";               // s
+// Smoothness of the force history (fractions of the peak force; force_smoothness.hpp).
+inline constexpr const char* force_oscillation_key = "force_oscillation";
+inline constexpr const char* force_after_release_key = "force_after_release";
+
+// The numerical uncertainty of a run, beside its summary when the run was verified on three
+// discretisations (verification.hpp).
+inline constexpr const char* verification_file = "verification.json";
 
 // A campaign directory may hold an index of its runs (see postprocess/README.md).
 inline constexpr const char* campaign_index_json = "index.json";

@@ -1,23 +1,24 @@
 #pragma once
 /// @file
 /// The model-validity report of impact-report: every number of the page, computed from a
-/// campaign of FEM runs and its calibration (the JSON of impact-calibrate, layout in
-/// postprocess/README.md), and the writers of the page (HTML and a Markdown twin) and of the
+/// campaign of FEM runs and its calibration (impact-calibrate's JSON, read through
+/// calibration_from_json), and the writers of the page (HTML and a Markdown twin) and of the
 /// data file from which postprocess/report_figures.py draws the figures. The Python script
 /// only draws: no number of the report is computed there.
 ///
-/// Models compared with the FEM at each run:
-///   - calibrated Hunt–Crossley: the campaign fit (c, n, b) of the calibration (or, when there
-///     is none, each run's own force-history fit, and the page says so);
-///   - published Hunt–Crossley: b = 0.1 s/m, n = 3/2, c = Hertz stiffness of the scenario's
-///     materials (1.7135e10 N/m^1.5, the published steel example, when the runs do not
-///     record them);
-///   - Hertz: the same c and n with b = 0;
-///   - the best comparison law of the calibration's ranking.
-/// Predicted values of the calibrated models are the calibration's (so the tables hold the
-/// JSON's numbers); the curves and the published/Hertz values come from impact::reduced.
+/// The verdict: for each model and velocity the relative errors of the energy loss 1 - e^2,
+/// t_c, F_max and x_max, out of sample (each velocity predicted by the fit without it) where
+/// the campaign has three velocities or more; a velocity is within a tolerance when every
+/// error plus the FEM's numerical uncertainty of that quantity is within it, outside when
+/// one error minus that uncertainty exceeds it, and not decided otherwise. Velocities at
+/// which the FEM exceeds the yield strength are flagged: the viscoelastic model itself is not
+/// valid there.
 
+#include "impact_postprocess/calibration.hpp"
 #include "impact_postprocess/fem_run.hpp"
+#include "impact_postprocess/fem_run_record.hpp"
+#include "impact_postprocess/impact_quantities.hpp"
+#include "impact_postprocess/velocity_trend.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -30,17 +31,10 @@
 
 namespace impact::postprocess {
 
-/// The quantities compared between the FEM and the reduced models, in this order.
-enum class ImpactQuantity : std::size_t { restitution, contact_time, force_max, approach_max };
-inline constexpr std::size_t impact_quantity_count = 4;
-/// restitution [1], contact_time [s], force_max [N], approach_max [m].
-using QuantityValues = std::array<double, impact_quantity_count>;
-/// "restitution", "contact_time", "force_max", "approach_max" (the calibration JSON's keys).
-const char* quantity_key(std::size_t quantity);
-
 /// A problem the page reports: kind "input" (a run or file missing or unusable, a campaign
-/// that cannot be fitted), "convergence" (a fit did not converge) or "figures" (they could
-/// not be drawn). `source` names the file, run or model concerned.
+/// that cannot be fitted), "convergence" (a fit did not converge), "figures" (they could not
+/// be drawn) or "quality" (the FEM history itself is not clean: a warning, the report is
+/// complete). `source` names the file, run or model concerned.
 struct ReportProblem {
   std::string source;
   std::string kind;
@@ -54,34 +48,42 @@ struct ImpactHistory {
   std::vector<double> force;
 };
 
-/// One reduced model at one run: its predicted quantities and its history, or why not.
+/// One reduced model at one run.
 struct ModelAtRun {
-  std::optional<QuantityValues> values;
-  ImpactHistory history;
-  std::string missing; ///< why there are no values (empty when there are)
+  std::optional<ImpactQuantities> in_sample;     ///< fitted to all runs (or not fitted at all)
+  std::optional<ImpactQuantities> out_of_sample; ///< fitted without this velocity
+  ImpactHistory history;   ///< of the in-sample model
+  std::vector<double> residual; ///< (F_model - F_FEM) / F_max at the FEM history's times
+  std::string missing;     ///< why there are no values (empty when there are)
+  /// The errors the verdict uses: out of sample when there are, else in sample.
+  const std::optional<ImpactQuantities>& judged() const {
+    return out_of_sample ? out_of_sample : in_sample;
+  }
+};
+
+/// Jackknife prediction band of a fitted model over the tested velocity range: the full
+/// fit's prediction and, at each velocity, +- t_{g-1} times the jackknife standard error of
+/// the held-out fits' predictions.
+struct PredictionBand {
+  std::vector<double> velocity;
+  std::array<std::vector<double>, quantity_count> center, lower, upper; ///< by Quantity
 };
 
 struct ReportModel {
-  std::string key;        ///< "calibrated", "published", "hertz", "best-law"
+  std::string key;        ///< "calibrated", the calibration's key, "best-law", ...
   std::string label;      ///< short name for legends and tables
   std::string parameters; ///< the parameter values, as text with units
   std::string basis;      ///< where the parameters come from
+  std::string calibration_key; ///< the model's key in the calibration ("" if none)
+  std::size_t free_parameters = 0;
   bool converged = true;  ///< false when its fit did not converge (numbers marked so)
+  bool out_of_sample = false; ///< its judged errors are out of sample
   std::vector<ModelAtRun> runs; ///< parallel to Report::runs
+  std::optional<PredictionBand> band;
+  /// The model's curve over the tested range (no band): velocity and each quantity.
+  std::optional<PredictionBand> curve;
 };
 
-/// What a run records beyond the histories (summary.json or "result: ..." attributes).
-struct RunRecord {
-  std::optional<double> energy_error;        ///< max |balance error| / initial energy
-  std::optional<double> lost_energy_fraction;
-  std::optional<double> dissipated_energy_fraction;
-  std::optional<double> radiated_energy_fraction;
-  std::optional<double> max_von_mises;       ///< Pa
-  std::optional<double> yield_strength;      ///< Pa (smallest recorded)
-  std::string yield_source;                  ///< the key it was read from
-};
-
-/// A parameter estimate from the calibration JSON (NaN where absent).
 struct ReportEstimate {
   double value;
   double lower;
@@ -92,49 +94,81 @@ struct ReportRun {
   std::string source;
   double velocity;                 ///< m/s
   double mass;                     ///< kg
-  QuantityValues fem;              ///< measured (the calibration's numbers when it has the run)
+  ImpactQuantities fem;            ///< measured (the calibration's numbers when it has the run)
   ImpactHistory fem_history;       ///< window around the contact, at most ~1500 samples
-  bool calibrated = false;         ///< the calibration JSON holds this run
+  bool calibrated = false;         ///< the calibration holds this run
   double damping_from_restitution; ///< b [s/m] of the run (NaN when not calibrated)
   ReportEstimate history_damping;  ///< b of the run's force-history fit
   ReportEstimate history_stiffness;
   ReportEstimate history_exponent;
-  RunRecord record;
+  FemRunRecord record;
+  FemUncertainty uncertainty;      ///< of each FEM quantity (relative)
+  bool yields = false;             ///< the FEM exceeds the yield strength at this run
 };
 
-/// The velocity range in which the calibrated Hunt–Crossley model predicts restitution,
-/// contact time and peak force within `tolerance` (relative) of the FEM.
+/// The decision for one model at one run and tolerance.
+enum class Decision { within, outside, undecided, unknown };
+
+/// Where a model holds within one tolerance.
 struct ToleranceVerdict {
   double tolerance;
-  std::vector<int> passes;    ///< per run: 1 within, 0 outside, -1 unknown
-  std::optional<std::array<double, 2>> range; ///< widest contiguous passing velocity range
-  std::string text;           ///< the verdict in words
+  std::vector<Decision> decisions;  ///< per run
+  std::optional<std::array<double, 2>> range; ///< widest contiguous velocity range within
+  std::string text;                 ///< the verdict in words
+};
+
+struct ModelVerdict {
+  std::string model_key;             ///< ReportModel::key
+  bool out_of_sample = false;
+  std::vector<ToleranceVerdict> tolerances;
+};
+
+/// Where the viscoelastic FEM model itself is not valid: the runs above the yield strength.
+struct PlasticityCheck {
+  bool recorded = false;            ///< some run records a yield strength and its stress
+  std::optional<double> first_yielding_velocity; ///< m/s, the lowest tested velocity that yields
+  std::optional<double> onset_estimate; ///< m/s, log-log interpolation of the stress to the yield strength
+  std::string text;
 };
 
 struct Report {
   std::string campaign_source;
   std::string calibration_source;
-  std::vector<ReportProblem> problems;
-  std::vector<ReportRun> runs;      ///< ordered by velocity
-  std::vector<ReportModel> models;  ///< calibrated, published, hertz, best-law
-  nlohmann::json calibration;       ///< as read (null when none)
+  std::vector<ReportProblem> problems;  ///< includes the "quality" warnings
+  std::vector<ReportRun> runs;          ///< ordered by velocity
+  std::vector<ReportModel> models;      ///< calibrated first; see report.cpp for the list
+  std::optional<Calibration> calibration; ///< as read
+  std::vector<double> tolerances;       ///< of the verdict, increasing
   bool campaign_fitted = false;
-  std::string campaign_reason;      ///< why not, when not fitted
-  double hertz_stiffness;           ///< N/m^1.5
-  std::string hertz_basis;          ///< how it was obtained
+  std::string campaign_reason;          ///< why not, when not fitted
+  double hertz_stiffness;               ///< N/m^1.5
+  std::string hertz_basis;              ///< how it was obtained
   std::vector<std::string> parameter_notes; ///< offsets of c, n from Hertz, trend of b, ...
-  std::vector<ToleranceVerdict> verdicts;   ///< 2 % and 5 %
-  std::string cause;                ///< why and where the calibrated model fails
+  std::vector<ModelVerdict> verdicts;   ///< one per model, parallel to models
+  std::string cause;                    ///< why and where the calibrated model fails
   bool verdict_available = false;
+  std::optional<PowerLawTrend> trend;   ///< 1 - e ~ V^p of the FEM
+  std::string trend_text;
+  PlasticityCheck plasticity;
+  std::string uncertainty_text;         ///< what the FEM's uncertainty does to the verdict
+  std::string summary;                  ///< the verdict in a few sentences
+
+  /// The model of this key, or null.
+  const ReportModel* model(const std::string& key) const;
+  const ModelVerdict* verdict(const std::string& key) const;
 };
 
-/// Builds every number of the report. `calibration` is the JSON of impact-calibrate (null
-/// when there is none; the page then says what is missing). `problems` are those met
-/// before (reading the campaign or the calibration). Never throws for bad input: what
-/// cannot be computed is recorded in Report::problems and left out of the numbers.
-Report build_report(const Campaign& campaign, const nlohmann::json& calibration,
+struct ReportOptions {
+  std::vector<double> tolerances = default_tolerances;
+};
+
+/// Builds every number of the report. `calibration` is the calibration read from the JSON
+/// of impact-calibrate (none when there is none; the page then says what is missing).
+/// `problems` are those met before (reading the campaign or the calibration). Never throws
+/// for bad input: what cannot be computed is recorded in Report::problems and left out.
+Report build_report(const Campaign& campaign, const std::optional<Calibration>& calibration,
                     std::vector<ReportProblem> problems, const std::string& campaign_source,
-                    const std::string& calibration_source);
+                    const std::string& calibration_source, const ReportOptions& options = {});
 
 /// A figure of the page: file name (in the figures directory) and caption.
 struct ReportFigure {

@@ -13,7 +13,9 @@
 /// `formula` and `reference` and in reduced/src/law_*.cpp.
 ///
 /// Laws (names for `impact-reduced law --model`): kelvin-voigt, lankarani-nikravesh, flores,
-/// gonthier, hu-guo, zhiying-qishao, tsuji, tsuji-clamped, kuwabara-kono.
+/// gonthier, hu-guo, zhiying-qishao, tsuji, tsuji-clamped, kuwabara-kono,
+/// kuwabara-kono-no-tension (the same force, but the bodies separate when it returns to 0:
+/// ContactEnd::zero_force).
 
 #include "impact_reduced/impact_ode.hpp"
 
@@ -46,6 +48,8 @@ struct ComparisonLaw {
       damping_for_restitution;
   /// The contact force law for a damping parameter (>= 0).
   std::function<ContactForceLaw(double damping, const ContactSetup& setup)> force_law;
+  /// When its contact ends (integrate_impact's `end`).
+  ContactEnd contact_end = ContactEnd::zero_approach;
 };
 
 /// All registered laws, in a fixed order.

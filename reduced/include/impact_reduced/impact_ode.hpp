@@ -45,6 +45,16 @@ namespace impact::reduced {
 /// allowed and is integrated as given.
 using ContactForceLaw = std::function<double(double approach, double approach_rate)>;
 
+/// When the contact ends.
+///   - zero_approach: when x returns to 0 (the law as written: a law that can pull, e.g.
+///     Kuwabara–Kono or Tsuji, integrates its tension until x = 0);
+///   - zero_force: at the first instant after the maximum approach where the force has fallen
+///     to 0 (or x has returned to 0): the contact cannot pull, so the bodies separate there, as
+///     in a finite-element contact with a non-negative pressure. The approach at separation
+///     is then >= 0 (the surfaces have not recovered yet); the body leaves at constant speed.
+/// For a law that stays compressive until x = 0 (Hunt–Crossley) both give the same impact.
+enum class ContactEnd { zero_approach, zero_force };
+
 /// The body never returns to x = 0 (the law sticks, or holds it for an unbounded time).
 /// Thrown by integrate_impact after a bounded effort, with the state reached in the message.
 class ContactDoesNotEnd : public std::runtime_error {
@@ -65,6 +75,7 @@ struct OdeImpactResult {
                               ///< the linear Kelvin–Voigt law gives mu x' < 0 (tension), its
                               ///< known defect
   std::size_t steps;          ///< accepted integration steps
+  double approach_at_separation; ///< m, x at the end of contact: 0 for ContactEnd::zero_approach
 };
 
 /// One point of the time history of an impact.
@@ -76,7 +87,8 @@ struct ImpactSample {
 };
 
 /// Integrates the impact of a body of `mass` (kg, > 0) arriving at `velocity` (m/s, > 0)
-/// under `force` until the end of contact.
+/// under `force` until the end of contact (`end`, see ContactEnd; the instant F = 0 is
+/// located like the other events, to machine precision in the step).
 ///
 /// `relative_tolerance` in [1e-14, 1e-3] (default 1e-10): local error tolerance of the
 /// adaptive stepper on the scaled state. With 1e-13 the results agree with exact solutions
@@ -87,16 +99,18 @@ struct ImpactSample {
 /// resistance to the approach; ContactDoesNotEnd if the body is not back at x = 0 within
 /// 1e5 characteristic times of the impact (or 1e6 steps).
 OdeImpactResult integrate_impact(double mass, double velocity, const ContactForceLaw& force,
-                                 double relative_tolerance = 1e-10);
+                                 double relative_tolerance = 1e-10,
+                                 ContactEnd end = ContactEnd::zero_approach);
 
 /// The time history of the same integration: `points` (>= 2) samples uniformly spaced in
 /// time from t = 0 to the end of contact (both included). Each sample is obtained by
 /// re-taking the integration step that contains it from that step's start, so the samples
 /// carry the accuracy of the integration itself (no interpolation). The last sample is the
-/// separation state (approach 0).
+/// separation state (approach 0, or approach_at_separation for ContactEnd::zero_force).
 std::vector<ImpactSample> integrate_impact_history(double mass, double velocity,
                                                    const ContactForceLaw& force,
                                                    std::size_t points,
-                                                   double relative_tolerance = 1e-10);
+                                                   double relative_tolerance = 1e-10,
+                                                   ContactEnd end = ContactEnd::zero_approach);
 
 } // namespace impact::reduced

@@ -1,0 +1,83 @@
+#pragma once
+/// @file
+/// The quantities by which a reduced model is compared with the FEM, in one place: the
+/// figures of an impact, the derived energy loss, their names, the relative error and the
+/// tolerance bands of the validity verdict.
+///
+/// The energy loss 1 - e^2 is the fraction of the kinetic energy that the impact takes. Near
+/// e = 1 it, not e, is what a model must get right: e = 0.9907 against 0.9461 is +4.7 % in e
+/// but -83 % in 1 - e^2.
+
+#include <array>
+#include <cstddef>
+#include <vector>
+
+namespace impact::postprocess {
+
+/// The figures of one impact (FEM or model). SI units; times from first contact.
+struct ImpactQuantities {
+  double restitution;     ///< e = rebound speed / V [1]
+  double contact_time;    ///< t_c [s]
+  double force_max;       ///< F_max [N]
+  double time_force_max;  ///< t(F_max) [s since first contact]
+  double approach_max;    ///< x_max [m]
+};
+
+/// What a model predicts for one impact: its figures and the law's damping constant there.
+struct ImpactPrediction {
+  double damping;          ///< the law's damping constant at this velocity
+  double restitution;
+  double contact_time;     ///< s
+  double force_max;        ///< N
+  double time_force_max;   ///< s since first contact
+  double approach_max;     ///< m
+  ImpactQuantities quantities() const {
+    return {restitution, contact_time, force_max, time_force_max, approach_max};
+  }
+};
+
+/// Everything the report compares, in the order of its tables.
+enum class Quantity : std::size_t {
+  energy_loss,          ///< 1 - e^2 [1]
+  restitution_deficit,  ///< 1 - e [1]
+  restitution,          ///< e [1]
+  contact_time,         ///< t_c [s]
+  force_max,            ///< F_max [N]
+  time_force_max,       ///< t(F_max) [s]
+  approach_max,         ///< x_max [m]
+};
+inline constexpr std::size_t quantity_count = 7;
+inline constexpr std::array<Quantity, quantity_count> all_quantities = {
+    Quantity::energy_loss,  Quantity::restitution_deficit, Quantity::restitution,
+    Quantity::contact_time, Quantity::force_max,           Quantity::time_force_max,
+    Quantity::approach_max};
+/// The quantities the validity verdict judges together (energy loss, not e).
+inline constexpr std::array<Quantity, 4> verdict_quantities = {
+    Quantity::energy_loss, Quantity::contact_time, Quantity::force_max, Quantity::approach_max};
+
+/// The value of `quantity` for an impact (1 - e^2 and 1 - e derived from e).
+double value(const ImpactQuantities& impact, Quantity quantity);
+/// "energy_loss", "restitution_deficit", "restitution", "contact_time", "force_max",
+/// "time_force_max", "approach_max".
+const char* quantity_key(Quantity quantity);
+/// "1 - e^2", "1 - e", "e", "t_c", "F_max", "t(F_max)", "x_max".
+const char* quantity_symbol(Quantity quantity);
+/// "energy loss", "1 - e", "restitution", "contact time", "peak force", "time of the peak
+/// force", "peak approach".
+const char* quantity_words(Quantity quantity);
+
+/// (model - reference) / |reference|: the one relative error of the project's comparisons.
+/// NaN when either value is not finite or the reference is 0.
+double relative_error(double model, double reference);
+double relative_error(const ImpactQuantities& model, const ImpactQuantities& reference,
+                      Quantity quantity);
+
+/// The tolerance bands of the verdict (fractions, increasing): 2 % and 5 % unless
+/// impact-report is told otherwise (--tolerances).
+inline const std::vector<double> default_tolerances = {0.02, 0.05};
+
+/// The step-to-step oscillation of the FEM force (a fraction of the peak force) above which
+/// the report warns that the FEM history is not clean.
+inline constexpr double force_oscillation_warning = 0.005;
+
+} // namespace impact::postprocess

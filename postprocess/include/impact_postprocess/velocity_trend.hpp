@@ -1,0 +1,45 @@
+#pragma once
+/// @file
+/// The velocity trend of the energy loss as physics: the exponent p of 1 - e ∝ V^p, fitted
+/// by least squares on (ln V, ln(1 - e)) with a Student-t interval (N - 2 degrees of
+/// freedom), and the reference slopes of the model families: Hunt–Crossley with a constant b,
+/// 1 - e = (2/3) b V + ..., slope 1 at small b V; the viscoelastic sphere (Kuwabara–Kono,
+/// Brilliantov), 1 - e = gamma1 A (c/m)^(2/5) V^(1/5) + ..., slope 1/5; a constant
+/// restitution (the e-parametrised maps), slope 0.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace impact::postprocess {
+
+struct PowerLawTrend {
+  double exponent;        ///< p
+  double standard_error;
+  double lower, upper;    ///< interval at the requested level
+  double prefactor;       ///< a of 1 - e = a (V / 1 m/s)^p
+  std::size_t points;
+  double level;
+};
+
+/// The fit over the runs with 0 < e < 1 (at least three, at two or more velocities), or none.
+std::optional<PowerLawTrend> fit_restitution_trend(const std::vector<double>& velocity,
+                                                   const std::vector<double>& restitution,
+                                                   double level = 0.95);
+
+struct ReferenceSlope {
+  std::string family;
+  double slope;
+};
+/// Hunt–Crossley (1), Kuwabara–Kono / Brilliantov (1/5), constant e (0).
+const std::vector<ReferenceSlope>& reference_slopes();
+
+/// The reference slope nearest to the fitted exponent.
+const ReferenceSlope& nearest_reference(const PowerLawTrend& trend);
+
+/// Which family the fitted trend follows, in a sentence: the one with the nearest reference
+/// slope (with its distance when the interval excludes it), and the families the interval
+/// excludes.
+std::string trend_family(const PowerLawTrend& trend);
+
+} // namespace impact::postprocess

@@ -1,0 +1,88 @@
+#pragma once
+// The pieces of the report (report.hpp), one file each: the models compared
+// (report_models.cpp), the verdict (report_verdict.cpp), the page as a list of blocks
+// (report_document.cpp), its two renderings (report_render.cpp) and the figure data
+// (report_figures.cpp). Shared here: the number formats of the page.
+
+#include "impact_postprocess/report.hpp"
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace impact::postprocess::detail {
+
+// ---- Number formats -----------------------------------------------------------------------
+
+/// Six significant digits: enough to compare with the calibration JSON to 1e-5.
+std::string cell(double value);
+/// "+1.23 %" (three significant digits), "n/a" when not finite.
+std::string percent_cell(double fraction);
+/// "1.23 %" (three significant digits, no sign), "not known" when not finite.
+std::string unsigned_percent(double fraction);
+/// Four significant digits.
+std::string short_number(double value);
+/// "V = 1 m/s".
+std::string velocity_label(double velocity);
+/// "0.5, 1 and 2 m/s".
+std::string velocity_list(const std::vector<double>& velocities);
+
+// ---- Models (report_models.cpp) ---------------------------------------------------------
+
+/// The same run in another list: the entry with the same source file, else the only one at
+/// the same velocity; -1 if none.
+bool same_source(const std::string& a, const std::string& b);
+bool same_velocity(double a, double b);
+
+/// The models compared at the runs, calibrated Hunt–Crossley first (see report_models.cpp).
+std::vector<ReportModel> report_models(const std::vector<ReportRun>& runs,
+                                       const std::optional<Calibration>& calibration,
+                                       std::vector<ReportProblem>& problems);
+
+// ---- Verdict (report_verdict.cpp) -------------------------------------------------------
+
+/// The verdicts, cause, trend, plasticity and the notes on the parameters.
+void add_verdict(Report& report);
+
+// ---- Page (report_document.cpp, report_render.cpp) --------------------------------------
+
+struct Table {
+  std::vector<std::string> header;
+  std::vector<std::vector<std::string>> rows;
+};
+
+struct Block {
+  enum class Kind { heading, paragraph, warning, list, table, figure, code } kind;
+  int level = 2;
+  std::string text;
+  std::vector<std::string> items;
+  Table table;
+  ReportFigure figure;
+};
+
+class Document {
+public:
+  void heading(const std::string& text, int level = 2) {
+    blocks.push_back({Block::Kind::heading, level, text, {}, {}, {}});
+  }
+  void paragraph(const std::string& text) {
+    blocks.push_back({Block::Kind::paragraph, 0, text, {}, {}, {}});
+  }
+  /// A paragraph shown as a warning (red in the HTML).
+  void warning(const std::string& text) {
+    blocks.push_back({Block::Kind::warning, 0, text, {}, {}, {}});
+  }
+  void list(std::vector<std::string> items) {
+    if (!items.empty()) blocks.push_back({Block::Kind::list, 0, "", std::move(items), {}, {}});
+  }
+  void table(Table table) { blocks.push_back({Block::Kind::table, 0, "", {}, std::move(table), {}}); }
+  void figure(const ReportFigure& figure) {
+    blocks.push_back({Block::Kind::figure, 0, "", {}, {}, figure});
+  }
+  void code(const std::string& text) { blocks.push_back({Block::Kind::code, 0, text, {}, {}, {}}); }
+  std::vector<Block> blocks;
+};
+
+Document build_document(const Report& report, const std::filesystem::path& figures_directory);
+
+} // namespace impact::postprocess::detail
