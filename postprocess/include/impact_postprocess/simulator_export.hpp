@@ -59,7 +59,7 @@ struct ExportCampaign {
   std::optional<HertzLawFit> tsuji;
 };
 
-/// Reads the calibration JSON of impact-calibrate (format_version 1) for the export. The
+/// Reads the calibration JSON of impact-calibrate (through calibration_from_json) for the export. The
 /// sphere radius [m] comes from the runs (impact-fem's "Scenario/Sphere radius"). Throws
 /// ExportInputError when the calibration has no converged campaign fit of Hunt–Crossley with
 /// n = 3/2, no kuwabara-kono and no tsuji fit (LAMMPS needs one), or a run without its
