@@ -12,6 +12,20 @@ POISSON = 0.25
 EFFECTIVE_MODULUS = YOUNG / (2 * (1 - POISSON ** 2))
 
 
+def maxwell_bodies():
+    """Both bodies generalised Maxwell: two shear and one bulk Prony term."""
+    settings = {}
+    for body in ("Sphere", "Plate"):
+        settings.update({f"{body}/Material model": "maxwell",
+                         f"{body}/Maxwell/Long-term shear modulus": 7e10,
+                         f"{body}/Maxwell/Shear moduli": "5e9,5e9",
+                         f"{body}/Maxwell/Shear relaxation times": "1e-6,3e-5",
+                         f"{body}/Maxwell/Long-term bulk modulus": 1.2e11,
+                         f"{body}/Maxwell/Bulk moduli": "1.3333333333333333e10",
+                         f"{body}/Maxwell/Bulk relaxation times": "1e-5"})
+    return settings
+
+
 def parse_common_arguments():
     """argv: impact-fem binary, work directory, mpiexec (may be empty)."""
     if len(sys.argv) < 3:

@@ -14,15 +14,7 @@ binary, work, mpiexec = parse_common_arguments()
 checks = Checks()
 coarse = {"Mesh/Contact element size": 100e-6,
           "Time integration/Steps per contact time": 150}
-maxwell = dict(coarse)
-for body in ("Sphere", "Plate"):
-    maxwell.update({f"{body}/Material model": "maxwell",
-                    f"{body}/Maxwell/Long-term shear modulus": 7e10,
-                    f"{body}/Maxwell/Shear moduli": "5e9,5e9",
-                    f"{body}/Maxwell/Shear relaxation times": "1e-6,3e-5",
-                    f"{body}/Maxwell/Long-term bulk modulus": 1.2e11,
-                    f"{body}/Maxwell/Bulk moduli": "1.3333333333333333e10",
-                    f"{body}/Maxwell/Bulk relaxation times": "1e-5"})
+maxwell = dict(coarse, **maxwell_bodies())
 runs = {}
 for ranks in (1, 2):
     directory = f"{work}/maxwell_{ranks}"

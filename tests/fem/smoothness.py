@@ -30,19 +30,6 @@ def kelvin_voigt():
     return settings
 
 
-def maxwell():
-    settings = {}
-    for body in ("Sphere", "Plate"):
-        settings.update({f"{body}/Material model": "maxwell",
-                         f"{body}/Maxwell/Long-term shear modulus": 7e10,
-                         f"{body}/Maxwell/Shear moduli": "5e9,5e9",
-                         f"{body}/Maxwell/Shear relaxation times": "1e-6,3e-5",
-                         f"{body}/Maxwell/Long-term bulk modulus": 1.2e11,
-                         f"{body}/Maxwell/Bulk moduli": "1.3333333333333333e10",
-                         f"{body}/Maxwell/Bulk relaxation times": "1e-5"})
-    return settings
-
-
 def measure(force):
     """(oscillation, after release) as fractions of the peak force."""
     on = [i for i, f in enumerate(force) if f > 0]
@@ -61,7 +48,7 @@ def measure(force):
 cases = {"kelvin-voigt 1 m/s": (dict(SMALL, **kelvin_voigt(), **{"Scenario/Impact velocity": 1}), True),
          "kelvin-voigt 4 m/s": (dict(SMALL, **kelvin_voigt(), **{"Scenario/Impact velocity": 4}), True),
          "elastic 2 m/s": (dict(SMALL, **{"Scenario/Impact velocity": 2}), True),
-         "maxwell 2 m/s": (dict(SMALL, **maxwell(), **{"Scenario/Impact velocity": 2}), True),
+         "maxwell 2 m/s": (dict(SMALL, **maxwell_bodies(), **{"Scenario/Impact velocity": 2}), True),
          "kelvin-voigt 1 m/s, newmark": (dict(SMALL, **kelvin_voigt(), **{"Scenario/Impact velocity": 1,
                                                                          "Time integration/Scheme": "newmark"}), False)}
 for name, (settings, smooth) in cases.items():
