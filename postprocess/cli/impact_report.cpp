@@ -1,9 +1,9 @@
 // impact-report: the model-validity report of a campaign of FEM impact runs (HTML page with
 // embedded figures, Markdown twin, figure PNGs beside them).
 // Exit codes: 0 complete report (possibly with warnings on the FEM's quality); 2 bad input
-// (the report says what is missing); 3 a fit did not converge (numbers marked so); 4 the
-// figures could not be drawn (report without them); 1 internal error. A report is written in
-// every case but a usage error and exit 1.
+// (a run, the calibration, the simulators' results: the report says what is missing); 3 a
+// fit did not converge (numbers marked so); 4 the figures could not be drawn (report without
+// them); 1 internal error. A report is written in every case but a usage error and exit 1.
 
 #include "command_line.hpp"
 
@@ -54,20 +54,25 @@ energy loss 1 - e^2, contact time, peak force and peak approach, judged out of s
                        each in (0, 100) (default 2,5)
   --published-damping B  b [s/m] of the published Hunt-Crossley model when the runs are
                        calibrated here (default 0.1; with --calibration the calibration's)
+  --simulators DIR     the result files of tests/consumers/run_in_simulators.sh (every
+                       DIR/*.json, format impact-simulator-run): the section "In your
+                       simulator" (without it the section gives the commands)
   --quiet              no progress messages on stderr
   --help               this text
 
 Environment: IMPACT_REPORT_PYTHON, the Python 3 with matplotlib that draws the figures
 (default: the one found when the project was configured).
 
-Exit codes: 0 complete report, 2 bad input (the report says what is missing), 3 a fit did
-not converge, 4 the figures could not be drawn, 1 internal error.
+Exit codes: 0 complete report, 2 bad input (a run, the calibration, the simulators
+directory or one of its result files; the report says what is missing), 3 a fit did not
+converge, 4 the figures could not be drawn, 1 internal error.
 )";
 
 struct Arguments : cli::RunArguments {
   std::optional<fs::path> calibration;
   std::vector<double> tolerances = default_tolerances;
   double published_damping = CalibrationOptions{}.published_damping;
+  std::optional<fs::path> simulators;
 };
 
 // A number spelled in full, or none.
@@ -87,6 +92,7 @@ Arguments parse(int argc, char** argv) {
                           const std::function<std::string()>& value) {
     if (argument == "--campaign") arguments.campaign = value();
     else if (argument == "--calibration") arguments.calibration = value();
+    else if (argument == "--simulators") arguments.simulators = value();
     else if (argument == "--tolerances") {
       const std::string list = value();
       arguments.tolerances.clear();
@@ -271,6 +277,7 @@ int execute(const Arguments& arguments) {
   const auto calibration = obtain_calibration(arguments, input, problems, calibration_source);
   ReportOptions options;
   options.tolerances = arguments.tolerances;
+  options.simulators = arguments.simulators;
   Report report =
       build_report(input, calibration, problems, campaign_source, calibration_source, options);
 

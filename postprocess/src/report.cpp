@@ -1,6 +1,6 @@
 // build_report (report.hpp): the runs with what they record, the calibration's problems,
-// the FEM's quality warnings, the models (report_models.cpp) and the verdict
-// (report_verdict.cpp).
+// the FEM's quality warnings, the models (report_models.cpp), the verdict
+// (report_verdict.cpp) and the simulators' own runs of the exports (report_simulators.cpp).
 
 #include "impact_postprocess/report.hpp"
 
@@ -170,6 +170,7 @@ Report build_report(const Campaign& campaign, const std::optional<Calibration>& 
   }
   report.problems = std::move(problems);
   detail::add_verdict(report);
+  if (options.simulators) detail::add_simulators(report, *options.simulators);
   return report;
 }
 

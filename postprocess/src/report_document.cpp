@@ -24,11 +24,6 @@ const std::array<const char*, quantity_count> display_name = {
     "contact time t_c [µs]",   "peak force F_max [kN]", "time of peak force t(F_max) [µs]",
     "peak approach x_max [µm]"};
 
-// The velocity cell of every table: flagged where the FEM itself yields.
-std::string velocity_cell(const ReportRun& run) {
-  return cell(run.velocity) + (run.yields ? " (yields)" : "");
-}
-
 std::string decision_word(Decision decision) {
   switch (decision) {
   case Decision::within: return "yes";
@@ -71,19 +66,6 @@ void status_section(Document& doc, const Report& report) {
   }
   items.insert(items.end(), warnings.begin(), warnings.end());
   doc.list(items);
-}
-
-std::string range_text(const ToleranceVerdict& verdict, const Report& report) {
-  std::string text = !verdict.range ? std::string("none")
-                     : (*verdict.range)[0] == (*verdict.range)[1]
-                         ? short_number((*verdict.range)[0]) + " m/s only"
-                         : short_number((*verdict.range)[0]) + " to " +
-                               short_number((*verdict.range)[1]) + " m/s";
-  std::vector<double> undecided;
-  for (std::size_t i = 0; i < verdict.decisions.size(); ++i)
-    if (verdict.decisions[i] == Decision::undecided) undecided.push_back(report.runs[i].velocity);
-  if (!undecided.empty()) text += "; not decided at " + velocity_list(undecided);
-  return text;
 }
 
 void verdict_section(Document& doc, const Report& report) {
@@ -613,6 +595,7 @@ Document build_document(const Report& report, const fs::path& figures_directory)
   parameters_section(doc, report);
   trend_section(doc, report, figure);
   users_section(doc, report);
+  simulators_section(doc, report);
   quality_section(doc, report);
   runs_section(doc, report);
   models_section(doc, report);
@@ -634,6 +617,23 @@ Document build_document(const Report& report, const fs::path& figures_directory)
   errors_section(doc, report, figure);
   energy_section(doc, report);
   return doc;
+}
+
+std::string velocity_cell(const ReportRun& run) {
+  return cell(run.velocity) + (run.yields ? " (yields)" : "");
+}
+
+std::string range_text(const ToleranceVerdict& verdict, const Report& report) {
+  std::string text = !verdict.range ? std::string("none")
+                     : (*verdict.range)[0] == (*verdict.range)[1]
+                         ? short_number((*verdict.range)[0]) + " m/s only"
+                         : short_number((*verdict.range)[0]) + " to " +
+                               short_number((*verdict.range)[1]) + " m/s";
+  std::vector<double> undecided;
+  for (std::size_t i = 0; i < verdict.decisions.size(); ++i)
+    if (verdict.decisions[i] == Decision::undecided) undecided.push_back(report.runs[i].velocity);
+  if (!undecided.empty()) text += "; not decided at " + velocity_list(undecided);
+  return text;
 }
 
 // ---- Number formats -----------------------------------------------------------------------

@@ -1,8 +1,9 @@
 #pragma once
 // The pieces of the report (report.hpp), one file each: the models compared
 // (report_models.cpp), the verdict (report_verdict.cpp), the page as a list of blocks
-// (report_document.cpp), its two renderings (report_render.cpp) and the figure data
-// (report_figures.cpp). Shared here: the number formats of the page.
+// (report_document.cpp), its two renderings (report_render.cpp), the figure data
+// (report_figures.cpp) and the tools' own runs of the exports (report_simulators.cpp).
+// Shared here: the number formats of the page and the rule of the decisions.
 
 #include "impact_postprocess/report.hpp"
 
@@ -26,6 +27,10 @@ std::string short_number(double value);
 std::string velocity_label(double velocity);
 /// "0.5, 1 and 2 m/s".
 std::string velocity_list(const std::vector<double>& velocities);
+/// The velocity cell of every table: flagged "(yields)" where the FEM itself yields.
+std::string velocity_cell(const ReportRun& run);
+/// The range within a band in a table cell: "0.5 to 2 m/s; not decided at 3 m/s", "none".
+std::string range_text(const ToleranceVerdict& verdict, const Report& report);
 
 // ---- Models (report_models.cpp) ---------------------------------------------------------
 
@@ -43,6 +48,26 @@ std::vector<ReportModel> report_models(const std::vector<ReportRun>& runs,
 
 /// The verdicts, cause, trend, plasticity and the notes on the parameters.
 void add_verdict(Report& report);
+
+/// "2 %".
+std::string band_name(double tolerance);
+/// The decision at one run: within when every |error| + U of `quantities` is within the
+/// tolerance, outside when one |error| - U exceeds it, not decided in between (U: the FEM's
+/// uncertainty of the run), unknown without values. The one rule of every decision on the page.
+Decision decide(const std::optional<ImpactQuantities>& judged, const ReportRun& run,
+                double tolerance, const std::vector<Quantity>& quantities);
+/// The decisions at every run (`judged` parallel to report.runs), the widest range within and
+/// the sentence ("Within 2 %: V = ... m/s" + basis + ...).
+ToleranceVerdict tolerance_verdict(const Report& report,
+                                   const std::vector<std::optional<ImpactQuantities>>& judged,
+                                   double tolerance, const std::vector<Quantity>& quantities,
+                                   const std::string& basis);
+
+// ---- In your simulator (report_simulators.cpp) ------------------------------------------
+
+/// Reads the simulators' result files of `directory` into report.simulators, judges them
+/// against the report's FEM runs, and records every unusable file in report.problems.
+void add_simulators(Report& report, const std::filesystem::path& directory);
 
 // ---- Page (report_document.cpp, report_render.cpp) --------------------------------------
 
@@ -84,5 +109,8 @@ public:
 };
 
 Document build_document(const Report& report, const std::filesystem::path& figures_directory);
+
+/// The section "In your simulator" (report_simulators.cpp).
+void simulators_section(Document& doc, const Report& report);
 
 } // namespace impact::postprocess::detail

@@ -17,9 +17,16 @@ using detail::Document;
 
 // ---- Rendering ------------------------------------------------------------------------
 
+// The space before a "%" is a non-breaking one, so that a narrow table cell never splits a
+// number from its unit ("+4.67" over "%").
 std::string escape_html(const std::string& text) {
   std::string out;
-  for (char c : text) {
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (c == ' ' && i + 1 < text.size() && text[i + 1] == '%') {
+      out += "&nbsp;";
+      continue;
+    }
     switch (c) {
     case '&': out += "&amp;"; break;
     case '<': out += "&lt;"; break;

@@ -24,16 +24,18 @@ std::string format(double value, int digits = 4) {
   return text.str();
 }
 
+} // namespace
+
 std::string band_name(double tolerance) { return format(tolerance * 100) + " %"; }
 
-// Within when |error| + U <= tolerance for every verdict quantity, outside when
+// Within when |error| + U <= tolerance for every quantity judged, outside when
 // |error| - U > tolerance for one, not decided in between (U: the FEM's uncertainty of the
 // quantity, 0 where it is not known), unknown without a prediction.
-Decision decide(const ModelAtRun& at, const ReportRun& run, double tolerance) {
-  const auto& judged = at.judged();
+Decision decide(const std::optional<ImpactQuantities>& judged, const ReportRun& run,
+                double tolerance, const std::vector<Quantity>& quantities) {
   if (!judged) return Decision::unknown;
   bool undecided = false;
-  for (Quantity quantity : verdict_quantities) {
+  for (Quantity quantity : quantities) {
     const double error = std::abs(relative_error(*judged, run.fem, quantity));
     if (!std::isfinite(error)) return Decision::unknown;
     const double uncertainty = run.uncertainty[std::size_t(quantity)].relative;
@@ -44,12 +46,14 @@ Decision decide(const ModelAtRun& at, const ReportRun& run, double tolerance) {
   return undecided ? Decision::undecided : Decision::within;
 }
 
-ToleranceVerdict tolerance_verdict(const Report& report, const ReportModel& model,
-                                   double tolerance) {
+ToleranceVerdict tolerance_verdict(const Report& report,
+                                   const std::vector<std::optional<ImpactQuantities>>& judged,
+                                   double tolerance, const std::vector<Quantity>& quantities,
+                                   const std::string& basis) {
   ToleranceVerdict verdict{tolerance, {}, std::nullopt, {}};
   const std::size_t count = report.runs.size();
   for (std::size_t i = 0; i < count; ++i)
-    verdict.decisions.push_back(decide(model.runs[i], report.runs[i], tolerance));
+    verdict.decisions.push_back(decide(judged[i], report.runs[i], tolerance, quantities));
   std::size_t best_begin = 0, best_length = 0;
   for (std::size_t i = 0; i < count;) {
     if (verdict.decisions[i] != Decision::within) {
@@ -71,7 +75,6 @@ ToleranceVerdict tolerance_verdict(const Report& report, const ReportModel& mode
     if (verdict.decisions[i] == Decision::unknown) unknown.push_back(report.runs[i].velocity);
   }
   const std::string band = band_name(tolerance);
-  const std::string basis = model.out_of_sample ? " (out of sample)" : " (in sample)";
   std::string text;
   if (best_length == 0) {
     text = "Within " + band + ": at no tested velocity" + basis + ".";
@@ -104,6 +107,16 @@ ToleranceVerdict tolerance_verdict(const Report& report, const ReportModel& mode
             "that is itself not valid there.";
   verdict.text = text;
   return verdict;
+}
+
+namespace {
+
+ToleranceVerdict model_verdict(const Report& report, const ReportModel& model, double tolerance) {
+  std::vector<std::optional<ImpactQuantities>> judged;
+  for (const auto& at : model.runs) judged.push_back(at.judged());
+  return tolerance_verdict(report, judged, tolerance,
+                           {verdict_quantities.begin(), verdict_quantities.end()},
+                           model.out_of_sample ? " (out of sample)" : " (in sample)");
 }
 
 // "within 5 % at V = ..." of one model, for the summary.
@@ -425,7 +438,7 @@ void add_verdict(Report& report) {
   for (const auto& model : report.models) {
     ModelVerdict verdict{model.key, model.out_of_sample, {}};
     for (double tolerance : report.tolerances)
-      verdict.tolerances.push_back(tolerance_verdict(report, model, tolerance));
+      verdict.tolerances.push_back(model_verdict(report, model, tolerance));
     report.verdicts.push_back(std::move(verdict));
   }
 

@@ -5,6 +5,7 @@
 // calibration JSON's numbers, and the page renders in headless Chromium (not blank). Each
 // bad input gives its exit code, a message, and a report that says what is missing.
 
+#include "report_cli_testing.hpp"
 #include "synthetic_runs.hpp"
 
 #include "impact_postprocess/fem_run.hpp"
@@ -25,42 +26,9 @@
 namespace {
 
 using namespace impact::postprocess;
+using namespace impact::testing;
 using json = nlohmann::json;
 namespace fs = std::filesystem;
-
-struct CliRun {
-  int exit_code;
-  std::string out;
-  std::string err;
-};
-
-std::string read_text(const fs::path& path) {
-  std::ifstream file(path, std::ios::binary);
-  std::stringstream text;
-  text << file.rdbuf();
-  return text.str();
-}
-
-std::string quote(const std::string& text) { return "'" + text + "'"; }
-
-CliRun run_command(const std::string& command, const fs::path& scratch) {
-  const std::string full = command + " >" + quote((scratch / "out.txt").string()) + " 2>" +
-                           quote((scratch / "err.txt").string());
-  const int status = std::system(full.c_str());
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, read_text(scratch / "out.txt"),
-          read_text(scratch / "err.txt")};
-}
-
-CliRun run_tool(const char* tool, const std::vector<std::string>& arguments,
-                const fs::path& scratch, const std::string& environment = "") {
-  std::string command = environment + quote(tool);
-  for (const auto& argument : arguments) command += " " + quote(argument);
-  return run_command(command, scratch);
-}
-
-bool contains(const std::string& text, const std::string& part) {
-  return text.find(part) != std::string::npos;
-}
 
 // The synthetic FEM: Hunt–Crossley with b growing with V (so that one constant b cannot
 // hold everywhere), and the scenario's materials recorded as impact-fem records them.
@@ -85,7 +53,7 @@ void add_to_summary(const fs::path& run_directory, const json& extra) {
   std::ofstream(file) << summary.dump(2);
 }
 
-// ---- PNG and Markdown readers ---------------------------------------------------------
+// ---- PNG reader ---------------------------------------------------------------------------
 
 struct PngSize {
   bool valid;
@@ -101,69 +69,6 @@ PngSize png_size(const std::string& bytes) {
            unsigned((unsigned char)bytes[at + 2]) << 8 | unsigned((unsigned char)bytes[at + 3]);
   };
   return {true, word(16), word(20)};
-}
-
-using MarkdownTable = std::vector<std::vector<std::string>>; // header row first
-
-std::vector<std::string> split_row(const std::string& line) {
-  std::vector<std::string> cells;
-  std::string cell;
-  for (std::size_t i = 1; i < line.size(); ++i) {
-    if (line[i] == '\\' && i + 1 < line.size() && line[i + 1] == '|') {
-      cell += '|';
-      ++i;
-    } else if (line[i] == '|') {
-      const auto begin = cell.find_first_not_of(' ');
-      const auto end = cell.find_last_not_of(' ');
-      cells.push_back(begin == std::string::npos ? "" : cell.substr(begin, end - begin + 1));
-      cell.clear();
-    } else {
-      cell += line[i];
-    }
-  }
-  return cells;
-}
-
-std::vector<MarkdownTable> markdown_tables(const std::string& markdown) {
-  std::vector<MarkdownTable> tables;
-  std::stringstream stream(markdown);
-  std::string line;
-  MarkdownTable current;
-  while (std::getline(stream, line)) {
-    if (line.rfind("|", 0) == 0) {
-      if (line.rfind("|---", 0) == 0) continue;
-      current.push_back(split_row(line));
-    } else if (!current.empty()) {
-      tables.push_back(current);
-      current.clear();
-    }
-  }
-  if (!current.empty()) tables.push_back(current);
-  return tables;
-}
-
-// The table whose header starts with these cells.
-const MarkdownTable* find_table(const std::vector<MarkdownTable>& tables,
-                                const std::vector<std::string>& header_start) {
-  for (const auto& table : tables)
-    if (table.front().size() >= header_start.size() &&
-        std::equal(header_start.begin(), header_start.end(), table.front().begin()))
-      return &table;
-  return nullptr;
-}
-
-std::size_t column(const MarkdownTable& table, const std::string& name) {
-  for (std::size_t i = 0; i < table.front().size(); ++i)
-    if (table.front()[i] == name) return i;
-  ADD_FAILURE() << "no column '" << name << "'";
-  return 0;
-}
-
-double cell_number(const std::string& cell) { return std::stod(cell); }
-
-// Six significant digits are printed.
-void expect_same(double shown, double expected, const std::string& what) {
-  EXPECT_NEAR(shown, expected, 1e-5 * std::abs(expected)) << what;
 }
 
 // ---- The good campaign, made once ---------------------------------------------------------
@@ -234,11 +139,21 @@ void check_HtmlAndMarkdownExist() {
   for (const char* section : {"Validity verdict", "Calibrated parameters", "Runs",
                               "Force–approach loops", "Approach and force against time",
                               "Per-run damping b against V", "Errors of the reduced models",
-                              "Energy balance and yield check"}) {
+                              "Energy balance and yield check", "In your simulator"}) {
     EXPECT_TRUE(contains(markdown, std::string("## ") + section)) << section;
     EXPECT_TRUE(contains(html, std::string("<h2>") + section)) << section;
   }
   EXPECT_TRUE(contains(markdown, "Complete:"));
+  // Without --simulators the section gives the commands that produce it, with this campaign.
+  const fs::path campaign = *ReportOfCampaign::directory / "campaign";
+  const fs::path calibration = *ReportOfCampaign::directory / "calibration.json";
+  EXPECT_TRUE(contains(markdown, "build/bin/impact-export --campaign " + campaign.string() +
+                                     " --calibration " + calibration.string() +
+                                     " --output EXPORT_DIR\n"
+                                     "tests/consumers/run_in_simulators.sh EXPORT_DIR RESULTS_DIR\n"
+                                     "build/bin/impact-report --campaign " + campaign.string()))
+      << markdown;
+  EXPECT_TRUE(contains(markdown, "--simulators RESULTS_DIR"));
 }
 
 void check_EveryFigureIsAValidImage() {

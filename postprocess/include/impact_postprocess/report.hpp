@@ -131,6 +131,32 @@ struct PlasticityCheck {
   std::string text;
 };
 
+/// What a simulator measured at one velocity with a file of impact-export (a result file of
+/// tests/consumers/run_in_simulators.sh, format "impact-simulator-run", postprocess/README.md).
+/// The tools measure e, t_c and F_max: t(F_max) and x_max are NaN.
+struct SimulatorRunAt {
+  double velocity;                ///< m/s
+  ImpactQuantities tool;          ///< measured by the tool from its own state
+  ImpactQuantities reduced_model; ///< the exported model's prediction (export.json)
+  ImpactQuantities fem;           ///< the FEM as the file holds it (the calibration's numbers)
+};
+
+/// One result file: one tool (and deck) run at the campaign's velocities.
+struct SimulatorResult {
+  std::string source;          ///< the result file
+  std::string tool;            ///< "simbody", "mujoco", "lammps" (or another tool's name)
+  std::string tool_version;
+  std::string model;           ///< the exported model: "hunt-crossley", "linear-spring-damper", ...
+  std::string export_manifest; ///< the export.json the file was run from
+  std::string file;            ///< the exported file, relative to the export directory
+  std::optional<double> reference_velocity; ///< m/s, where the export was matched (MuJoCo)
+  std::vector<SimulatorRunAt> runs;         ///< ordered by velocity
+  /// Against the FEM of the report's runs, judged like the verdict (with the FEM's
+  /// uncertainty) in 1 - e^2, t_c and F_max: one per tolerance, decisions parallel to
+  /// Report::runs.
+  std::vector<ToleranceVerdict> against_fem;
+};
+
 struct Report {
   std::string campaign_source;
   std::string calibration_source;
@@ -152,6 +178,9 @@ struct Report {
   PlasticityCheck plasticity;
   std::string uncertainty_text;         ///< what the FEM's uncertainty does to the verdict
   std::string summary;                  ///< the verdict in a few sentences
+  /// The directory of the simulators' result files (--simulators), none when not given.
+  std::optional<std::string> simulators_source;
+  std::vector<SimulatorResult> simulators; ///< the usable result files, Simbody, MuJoCo, LAMMPS
 
   /// The model of this key, or null.
   const ReportModel* model(const std::string& key) const;
@@ -160,12 +189,17 @@ struct Report {
 
 struct ReportOptions {
   std::vector<double> tolerances = default_tolerances;
+  /// The directory of the simulators' result files (impact-simulator-run, every *.json in it)
+  /// for the section "In your simulator"; none: the section says how to make them.
+  std::optional<std::filesystem::path> simulators;
 };
 
 /// Builds every number of the report. `calibration` is the calibration read from the JSON
 /// of impact-calibrate (none when there is none; the page then says what is missing).
 /// `problems` are those met before (reading the campaign or the calibration). Never throws
-/// for bad input: what cannot be computed is recorded in Report::problems and left out.
+/// for bad input: what cannot be computed is recorded in Report::problems and left out (a
+/// missing simulators directory, a result file that is not one or that was made from another
+/// campaign: kind "input", naming the file).
 Report build_report(const Campaign& campaign, const std::optional<Calibration>& calibration,
                     std::vector<ReportProblem> problems, const std::string& campaign_source,
                     const std::string& calibration_source, const ReportOptions& options = {});
