@@ -167,10 +167,16 @@ std::string summary_of(const Report& report) {
   for (const auto& entry : report.verdicts)
     for (const auto& band : entry.tolerances)
       for (Decision decision : band.decisions) undecided = undecided || decision == Decision::undecided;
+  bool all_verified = !report.runs.empty();
+  for (const auto& run : report.runs) all_verified = all_verified && run.record.verification;
   if (undecided)
-    text += " Where a velocity is not decided, the FEM's own numerical uncertainty (its force "
-            "oscillation, its time step) is as large as the margin: a cleaner or verified FEM is "
-            "needed to decide.";
+    text += all_verified
+                ? " Where a velocity is not decided, the FEM's numerical uncertainty (the grid "
+                  "convergence index of its verification) is as large as the margin: a finer "
+                  "FEM is needed to decide."
+                : " Where a velocity is not decided, the FEM's own numerical uncertainty (its "
+                  "force oscillation, its time step) is as large as the margin: a cleaner or "
+                  "verified FEM is needed to decide.";
   if (report.trend) {
     const ReferenceSlope& nearest = nearest_reference(*report.trend);
     text += " The FEM's 1 - e grows as V^" + format(report.trend->exponent, 3) + " [" +
