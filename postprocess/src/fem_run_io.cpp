@@ -373,7 +373,8 @@ Campaign read_campaign(const fs::path& directory) {
         found.push_back(path);
     }
     std::sort(found.begin(), found.end());
-    for (const auto& path : found) entries.push_back({path, std::nullopt});
+    // Relative to the campaign directory, as the entries of an index are.
+    for (const auto& path : found) entries.push_back({path.filename(), std::nullopt});
   }
   if (entries.empty())
     throw RunInputError("campaign directory " + quoted(directory) + " holds no run" +

@@ -140,6 +140,17 @@ TEST_F(FemRunIo, CampaignFromSubdirectories) {
   EXPECT_EQ(campaign.runs[2].impact_velocity, 2.0);
 }
 
+TEST_F(FemRunIo, CampaignFromSubdirectoriesGivenAsARelativePath) {
+  for (double velocity : {0.5, 1.0})
+    write_fem_run(example(velocity), directory / ("v" + std::to_string(velocity)));
+  const fs::path here = fs::current_path();
+  fs::current_path(directory.parent_path());
+  const Campaign campaign = read_campaign(directory.filename());
+  fs::current_path(here);
+  EXPECT_TRUE(campaign.problems.empty());
+  EXPECT_EQ(campaign.runs.size(), 2u);
+}
+
 TEST_F(FemRunIo, CampaignIndexListsAMissingAndAnIncompleteRun) {
   write_fem_run(example(1), directory / "v1");
   write_fem_run(example(2), directory / "v2", false);
