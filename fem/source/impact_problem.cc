@@ -186,7 +186,7 @@ namespace impact_fem
     locally_owned_dofs = dof_handler.locally_owned_dofs();
     DoFTools::extract_locally_relevant_dofs(dof_handler, locally_relevant_dofs);
 
-    // u_r = 0 on the axis; a clamped plate is fixed at its side and bottom.
+    // u_r = 0 on the axis; a clamped face of the plate is fixed.
     constraints.clear();
     constraints.reinit(locally_relevant_dofs);
     DoFTools::make_hanging_node_constraints(dof_handler, constraints);
@@ -197,8 +197,8 @@ namespace impact_fem
                                              Functions::ZeroFunction<2>(2),
                                              constraints,
                                              fe->component_mask(radial));
-    if (!parameters.absorbing_boundaries)
-      for (const auto id : {boundary_ids::plate_side, boundary_ids::plate_bottom})
+    for (const auto id : {boundary_ids::plate_side, boundary_ids::plate_bottom})
+      if (parameters.plate_faces.of(id) == FaceCondition::clamped)
         VectorTools::interpolate_boundary_values(*mapping,
                                                  dof_handler,
                                                  id,
@@ -225,6 +225,7 @@ namespace impact_fem
                          &effective_stiffness})
       matrix->reinit(sparsity);
     for (auto *vector : {&weights.sphere_momentum,
+                         &weights.plate_momentum,
                          &weights.plate_bottom_mean,
                          &weights.sphere_mask,
                          &weights.body_force,
@@ -315,8 +316,7 @@ namespace impact_fem
                       cell_matrix[3](i, j) += (stress_i[1] * strain[j]) * dV;
                       cell_matrix[4](i, j) += (stress_i[2] * strain[j]) * dV;
                     }
-                  if (on_sphere)
-                    cell_momentum(i) += rho * phi[i][1] * dV;
+                  cell_momentum(i) += rho * phi[i][1] * dV;
                 }
             }
 
@@ -326,10 +326,23 @@ namespace impact_fem
                  cell->face(face)->boundary_id() == boundary_ids::plate_bottom))
               {
                 fe_face_values.reinit(cell, face);
-                const bool   bottom = cell->face(face)->boundary_id() ==
+                const bool bottom = cell->face(face)->boundary_id() ==
                                     boundary_ids::plate_bottom;
-                const double rho_cp = rho * material.p_wave_speed();
-                const double rho_cs = rho * material.s_wave_speed();
+                const FaceCondition condition =
+                  parameters.plate_faces.of(cell->face(face)->boundary_id());
+                // Normal and tangential coefficients of the face term:
+                // dashpots rho c_p, rho c_s into C_boundary (absorbing), a
+                // normal spring k into K (support).
+                const bool   absorbing = condition == FaceCondition::absorbing;
+                const bool   support   = condition == FaceCondition::support;
+                const double normal_coefficient =
+                  absorbing ? rho * material.p_wave_speed() :
+                  support   ? parameters.plate_faces.support_stiffness :
+                              0;
+                const double tangential_coefficient =
+                  absorbing ? rho * material.s_wave_speed() : 0;
+                FullMatrix<double> &face_matrix =
+                  support ? cell_matrix[1] : cell_matrix[2];
                 for (unsigned int q = 0; q < face_rule.size(); ++q)
                   {
                     const double r  = fe_face_values.quadrature_point(q)[0];
@@ -340,16 +353,18 @@ namespace impact_fem
                         const Tensor<1, 2> phi_i = fe_face_values[u].value(i, q);
                         if (bottom)
                           cell_bottom(i) += phi_i[1] * dA / bottom_area;
-                        if (!parameters.absorbing_boundaries)
+                        if (!absorbing && !support)
                           continue;
-                        // Lysmer-Kuhlemeyer: t = -rho c_p v_n n - rho c_s v_t.
+                        // Lysmer-Kuhlemeyer t = -rho c_p v_n n - rho c_s v_t;
+                        // Winkler t = -k u_n n.
                         for (unsigned int j = 0; j < dofs_per_cell; ++j)
                           {
                             const Tensor<1, 2> phi_j = fe_face_values[u].value(j, q);
                             const double normal_i = phi_i * n, normal_j = phi_j * n;
-                            cell_matrix[2](i, j) +=
-                              (rho_cp * normal_i * normal_j +
-                               rho_cs * (phi_i * phi_j - normal_i * normal_j)) *
+                            face_matrix(i, j) +=
+                              (normal_coefficient * normal_i * normal_j +
+                               tangential_coefficient *
+                                 (phi_i * phi_j - normal_i * normal_j)) *
                               dA;
                           }
                       }
@@ -363,7 +378,9 @@ namespace impact_fem
                                                    *global_matrix[m]);
           constraints.distribute_local_to_global(cell_momentum,
                                                  local_dofs,
-                                                 weights.sphere_momentum);
+                                                 on_sphere ?
+                                                   weights.sphere_momentum :
+                                                   weights.plate_momentum);
           constraints.distribute_local_to_global(cell_bottom,
                                                  local_dofs,
                                                  weights.plate_bottom_mean);
@@ -375,6 +392,7 @@ namespace impact_fem
     for (auto *matrix : global_matrix)
       matrix->compress(VectorOperation::add);
     weights.sphere_momentum.compress(VectorOperation::add);
+    weights.plate_momentum.compress(VectorOperation::add);
     weights.plate_bottom_mean.compress(VectorOperation::add);
     weights.sphere_mask.compress(VectorOperation::insert);
 

@@ -64,13 +64,36 @@ namespace impact_fem
                       "0.35",
                       Patterns::Double(),
                       "Thickness H of the plate [m], > 0.");
-    prm.declare_entry("Far boundary",
+    prm.declare_entry("Plate side",
                       "absorbing",
-                      Patterns::Selection("absorbing|clamped"),
-                      "Side and bottom of the plate: 'absorbing' "
-                      "(Lysmer-Kuhlemeyer dashpots rho c_p and rho c_s, so "
-                      "the finite plate stands in for a half-space) or "
-                      "'clamped' (zero displacement).");
+                      Patterns::Selection("free|clamped|absorbing"),
+                      "Condition on the plate's side face r = Rp: 'free' "
+                      "(traction-free), 'clamped' (zero displacement) or "
+                      "'absorbing' (Lysmer-Kuhlemeyer dashpots rho c_p on the "
+                      "normal and rho c_s on the tangential velocity: the "
+                      "finite plate stands in for an infinite one).");
+    prm.declare_entry("Plate bottom",
+                      "absorbing",
+                      Patterns::Selection("free|clamped|absorbing|support"),
+                      "Condition on the plate's bottom face z = -H: 'free', "
+                      "'clamped', 'absorbing' (as Plate side: the plate "
+                      "stands in for a half-space) or 'support' (an elastic "
+                      "foundation pushing back on the normal displacement "
+                      "with Support stiffness per area).");
+    prm.declare_entry("Support stiffness",
+                      "0",
+                      Patterns::Double(0),
+                      "Normal stiffness per area k of a Plate bottom = "
+                      "support [N/m^3 = Pa/m], > 0 (read only then): traction -k u_z on "
+                      "the bottom (Winkler foundation; e.g. E/t of a soft "
+                      "layer of modulus E and thickness t on a rigid floor).");
+    // Replaced by Plate side and Plate bottom (issue 11): declared only to
+    // refuse it with a message saying what to write instead.
+    prm.declare_entry("Far boundary",
+                      "",
+                      Patterns::Anything(),
+                      "Replaced by 'Plate side' and 'Plate bottom'; must not "
+                      "be set.");
     prm.declare_entry("Gravity",
                       "0",
                       Patterns::Double(),
@@ -151,7 +174,21 @@ namespace impact_fem
     geometry.sphere_radius   = prm.get_double("Sphere radius");
     geometry.plate_radius    = prm.get_double("Plate radius");
     geometry.plate_thickness = prm.get_double("Plate thickness");
-    absorbing_boundaries     = prm.get("Far boundary") == "absorbing";
+    const std::string far_boundary = prm.get("Far boundary");
+    AssertThrow(far_boundary.empty(),
+                ExcMessage("Scenario/Far boundary was replaced by Scenario/"
+                           "Plate side and Scenario/Plate bottom: write 'set "
+                           "Plate side = " + far_boundary + "' and 'set Plate "
+                           "bottom = " + far_boundary + "' instead."));
+    const auto condition = [](const std::string &name) {
+      return name == "free"     ? FaceCondition::free :
+             name == "clamped"  ? FaceCondition::clamped :
+             name == "absorbing" ? FaceCondition::absorbing :
+                                  FaceCondition::support;
+    };
+    plate_faces.side              = condition(prm.get("Plate side"));
+    plate_faces.bottom            = condition(prm.get("Plate bottom"));
+    plate_faces.support_stiffness = prm.get_double("Support stiffness");
     gravity                  = prm.get_double("Gravity");
     prm.leave_subsection();
 
@@ -177,10 +214,19 @@ namespace impact_fem
     AssertThrow(!static_press || static_force > 0,
                 ExcMessage("Scenario/Static force must be positive, got " +
                            text(static_force) + " N."));
-    AssertThrow(!static_press || !absorbing_boundaries,
-                ExcMessage("The 'static press' analysis needs Scenario/Far "
-                           "boundary = clamped: dashpots carry no static "
-                           "load."));
+    AssertThrow(plate_faces.bottom != FaceCondition::support ||
+                  plate_faces.support_stiffness > 0,
+                ExcMessage("Scenario/Support stiffness must be positive for "
+                           "Plate bottom = support, got " +
+                           text(plate_faces.support_stiffness) + " N/m^3."));
+    AssertThrow(!static_press ||
+                  plate_faces.side == FaceCondition::clamped ||
+                  plate_faces.bottom == FaceCondition::clamped ||
+                  plate_faces.bottom == FaceCondition::support,
+                ExcMessage("The 'static press' analysis needs a plate held "
+                           "against the load: Scenario/Plate bottom = clamped "
+                           "or support, or Plate side = clamped (dashpots and "
+                           "free faces carry no static load)."));
 
     for (const unsigned int body : {sphere, plate})
       {

@@ -23,7 +23,7 @@ BEFORE = {0.5: (117.71e-6, 1565.3, 20.029e-6),
 HERTZ_CONSTANT = 2.9432  # t_c = 2.9432 x_max / V
 for v, (t_c, f_max, x_max) in BEFORE.items():
     directory = f"{work}/elastic_regression_v{v}"
-    run(binary, directory, {"Scenario/Impact velocity": v, "Scenario/Far boundary": "clamped",
+    run(binary, directory, {"Scenario/Impact velocity": v, "Scenario/Plate side": "clamped", "Scenario/Plate bottom": "clamped",
                             "Scenario/Plate radius": 0.1, "Scenario/Plate thickness": 0.05,
                             "Mesh/Maximum element size": 5e-3})
     s = summary(directory)

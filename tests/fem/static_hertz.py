@@ -16,7 +16,7 @@ for load in (1000.0, 3000.0):
     run(binary, directory, {
         "Scenario/Analysis": "static press",
         "Scenario/Static force": load,
-        "Scenario/Far boundary": "clamped",
+        "Scenario/Plate side": "clamped", "Scenario/Plate bottom": "clamped",
         "Mesh/Contact element size": element,
         "Mesh/Uniform zone radius": 1e-3,
     })

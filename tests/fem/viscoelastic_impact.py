@@ -53,7 +53,7 @@ cases["kv_tau0_v1"] = dict({"Scenario/Impact velocity": 1},
                            **kelvin_voigt("Sphere", 1e-12), **kelvin_voigt("Plate", 1e-12))
 KK_VELOCITIES = (0.5, 1, 2, 4)
 for v in KK_VELOCITIES:
-    clamped = {"Scenario/Impact velocity": v, "Scenario/Far boundary": "clamped",
+    clamped = {"Scenario/Impact velocity": v, "Scenario/Plate side": "clamped", "Scenario/Plate bottom": "clamped",
                "Scenario/Plate radius": 0.1, "Scenario/Plate thickness": 0.05,
                "Mesh/Maximum element size": 5e-3}
     cases[f"clamped_elastic_v{v}"] = clamped

@@ -136,12 +136,14 @@ namespace impact_fem
       return system;
     }
 
-    /// Functionals of the state: M e_z on the sphere (momentum), the mean
-    /// vertical displacement of the plate bottom, 1 on the sphere's dofs,
-    /// the body force (gravity on the sphere).
+    /// Functionals of the state: M e_z on the sphere and on the plate
+    /// (their momenta from the velocity), the mean vertical displacement of
+    /// the plate bottom, 1 on the sphere's dofs, the body force (gravity on
+    /// the sphere).
     struct Functionals
     {
-      VectorType sphere_momentum, plate_bottom_mean, sphere_mask, body_force;
+      VectorType sphere_momentum, plate_momentum, plate_bottom_mean,
+        sphere_mask, body_force;
     };
     const Functionals &
     functionals() const

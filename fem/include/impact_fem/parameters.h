@@ -21,6 +21,37 @@ namespace impact_fem
     plate  = 1
   };
 
+  /**
+   * What holds a face of the plate (its side or its bottom): nothing
+   * ('free': traction-free), zero displacement ('clamped'), viscous dashpots
+   * rho c_p on the normal and rho c_s on the tangential velocity ('absorbing',
+   * Lysmer-Kuhlemeyer: the finite plate stands in for a half-space), or, for
+   * the bottom, an elastic foundation of normal stiffness k per area
+   * ('support', Winkler: t = -k u_n n; a plate lying on something soft).
+   */
+  enum class FaceCondition
+  {
+    free,
+    clamped,
+    absorbing,
+    support
+  };
+
+  /// The conditions of the plate's side and bottom faces.
+  struct PlateFaces
+  {
+    FaceCondition side   = FaceCondition::absorbing;
+    FaceCondition bottom = FaceCondition::absorbing;
+    double support_stiffness = 0; ///< k of a 'support' bottom [N/m^3 = Pa/m]
+
+    /// The condition of the face plate_side or plate_bottom.
+    FaceCondition
+    of(const types::boundary_id face) const
+    {
+      return face == boundary_ids::plate_bottom ? bottom : side;
+    }
+  };
+
   /// "sphere" or "plate": the names used in result keys.
   inline const char *
   body_name(const unsigned int body)
@@ -63,8 +94,8 @@ namespace impact_fem
     double   static_force    = 0;     ///< [N]
     double   impact_velocity = 0;     ///< [m/s]
     double   gravity         = 0;     ///< on the sphere [m/s^2]
-    Geometry geometry;
-    bool     absorbing_boundaries = true;
+    Geometry   geometry;
+    PlateFaces plate_faces;
 
     // Bodies, indexed by Body
     std::unique_ptr<materials::Interface> material[2];

@@ -40,6 +40,14 @@ namespace impact_fem
                       Patterns::Double(),
                       "Largest element edge length [m], >= the contact "
                       "element size.");
+    prm.declare_entry("Elements across the plate thickness",
+                      "4",
+                      Patterns::Double(),
+                      "Least number of elements across the plate thickness "
+                      "H [-], >= 1: the element size is at most H / this "
+                      "(a thin plate bends; 4 elements of degree 2 resolve "
+                      "its bending, fem/README.md). Need not be an integer "
+                      "(the verification divides it by its ratio).");
     prm.declare_entry("Contact surface radius",
                       "2.5e-3",
                       Patterns::Double(),
@@ -85,6 +93,8 @@ namespace impact_fem
     uniform_zone_radius    = prm.get_double("Uniform zone radius");
     growth_factor          = prm.get_double("Growth factor");
     maximum_element_size   = prm.get_double("Maximum element size");
+    elements_across_thickness =
+      prm.get_double("Elements across the plate thickness");
     contact_surface_radius = prm.get_double("Contact surface radius");
     global_refinements     = prm.get_integer("Global refinements");
     contact_refinements    = prm.get_integer("Contact refinements");
@@ -110,6 +120,16 @@ namespace impact_fem
     AssertThrow(maximum_element_size >= contact_element_size,
                 ExcMessage("Mesh/Maximum element size must not be smaller "
                            "than the contact element size."));
+    AssertThrow(elements_across_thickness >= 1 && elements_across_thickness <= 1000,
+                ExcMessage("Mesh/Elements across the plate thickness must lie "
+                           "in [1, 1000], got " +
+                           std::to_string(elements_across_thickness) + "."));
+    AssertThrow(contact_element_size <= far_field_element_size(),
+                ExcMessage("Mesh/Contact element size (" +
+                           std::to_string(contact_element_size) +
+                           " m) exceeds the plate thickness / Elements across "
+                           "the plate thickness (" +
+                           std::to_string(far_field_element_size()) + " m)."));
     AssertThrow(contact_surface_radius > 0 && contact_surface_radius <= 0.5 * R,
                 ExcMessage("Mesh/Contact surface radius must lie in (0, R/2] "
                            "= (0, " + std::to_string(0.5 * R) + "] m, got " +
@@ -151,7 +171,7 @@ namespace impact_fem
                 << " -setnumber hc " << contact_element_size
                 << " -setnumber rz " << uniform_zone_radius
                 << " -setnumber growth " << growth_factor
-                << " -setnumber hmax " << maximum_element_size << " \""
+                << " -setnumber hmax " << far_field_element_size() << " \""
                 << geometry_file << "\" -o \"" << msh_file << "\" > \""
                 << log_file << "\" 2>&1";
         std::filesystem::remove(msh_file);

@@ -26,6 +26,7 @@ namespace impact_fem
                {"sphere_displacement", "m", "centre-of-mass displacement of the sphere, downward positive"},
                {"sphere_velocity", "m/s", "centre-of-mass velocity of the sphere, downward positive"},
                {"plate_displacement", "m", "mean vertical displacement of the plate bottom, downward positive"},
+               {"plate_momentum", "kg m/s", "axial momentum of the plate, int rho v_z dV, downward positive (the sphere's is sphere_velocity times its mass)"},
                {"approach", "m", "sphere_displacement - initial gap - plate_displacement"},
                {"contact_radius", "m", "contact radius: between the outermost loaded node and the next, where p^2 extrapolated linearly in r^2 vanishes"},
                {"max_pressure", "Pa", "largest nodal contact pressure"},
@@ -62,6 +63,7 @@ namespace impact_fem
         history.append("sphere_displacement", sphere_displacement);
         history.append("sphere_velocity", sphere_velocity);
         history.append("plate_displacement", plate_displacement);
+        history.append("plate_momentum", -(w.plate_momentum * stepper.velocity()));
         history.append("approach",
                        sphere_displacement - problem.scenario().geometry.initial_gap -
                          plate_displacement);

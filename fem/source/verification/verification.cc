@@ -6,6 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -118,6 +119,8 @@ namespace impact_fem
       const double hc   = get_number(prm, "Mesh", "Contact element size");
       const double hmax = get_number(prm, "Mesh", "Maximum element size");
       const double g    = get_number(prm, "Mesh", "Growth factor");
+      const double across =
+        get_number(prm, "Mesh", "Elements across the plate thickness");
       const double dt   = get_number(prm, "Time integration", "Time step");
       const double n    = get_number(prm, "Time integration", "Steps per contact time");
       AssertThrow(dt > 0 || n / (r * r) >= 10,
@@ -131,6 +134,7 @@ namespace impact_fem
         {"Mesh", "Contact element size"},
         {"Mesh", "Maximum element size"},
         {"Mesh", "Growth factor"},
+        {"Mesh", "Elements across the plate thickness"},
         {"Time integration", "Time step"},
         {"Time integration", "Steps per contact time"},
         {"Output", "Directory"}};
@@ -164,6 +168,10 @@ namespace impact_fem
                   set_number(prm, "Mesh", "Contact element size", hc * scale);
                   set_number(prm, "Mesh", "Maximum element size", hmax * scale);
                   set_number(prm, "Mesh", "Growth factor", 1 + (g - 1) * scale);
+                  set_number(prm,
+                             "Mesh",
+                             "Elements across the plate thickness",
+                             std::max(1.0, across / scale));
                   if (dt > 0)
                     set_number(prm, "Time integration", "Time step", dt * scale);
                   else

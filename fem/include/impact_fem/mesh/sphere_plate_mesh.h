@@ -5,6 +5,7 @@
 #include <deal.II/base/point.h>
 #include <deal.II/distributed/tria.h>
 
+#include <algorithm>
 #include <string>
 
 namespace impact_fem
@@ -74,6 +75,16 @@ namespace impact_fem
     double uniform_zone_radius  = 0; ///< [m]
     double growth_factor        = 0; ///< [-]
     double maximum_element_size = 0; ///< [m]
+    double elements_across_thickness = 4; ///< least number across H [-]
+
+    /// The largest element size used: Maximum element size, or less on a
+    /// plate too thin for it (H / Elements across the plate thickness).
+    double
+    far_field_element_size() const
+    {
+      return std::min(maximum_element_size,
+                      geometry.plate_thickness / elements_across_thickness);
+    }
     unsigned int global_refinements  = 0;
     unsigned int contact_refinements = 0;
     unsigned int polynomial_degree   = 2;
