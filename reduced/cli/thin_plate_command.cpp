@@ -20,10 +20,9 @@ constexpr double pi = 3.14159265358979323846;
 void require_one_of(const CommandLine& options, const std::string& direct,
                     const std::string& derived, const std::string& what) {
   if (options.has(direct) && options.has(derived))
-    throw UsageError("--" + direct + " and --" + derived + " exclude each other: give " + what +
-                     " one way");
+    throw UsageError("--" + direct + " and --" + derived + " exclude each other: give " + what);
   if (!options.has(direct) && !options.has(derived))
-    throw UsageError("--" + direct + " or --" + derived + " is required (" + what + ")");
+    throw UsageError("--" + direct + " or --" + derived + " is required: give " + what);
 }
 
 } // namespace
@@ -37,10 +36,10 @@ int run_thin_plate_command(CommandLine& options, std::ostream& out) {
                              options.real("thickness", Range::positive())};
 
   require_one_of(options, "stiffness", "sphere-modulus",
-                 "the contact: --stiffness [--exponent], or --sphere-modulus, --sphere-poisson "
-                 "and --radius");
+                 "the contact either by --stiffness [--exponent] or by --sphere-modulus, "
+                 "--sphere-poisson and --radius");
   require_one_of(options, "mass", "sphere-density",
-                 "the sphere's mass: --mass, or --sphere-density and --radius");
+                 "the sphere's mass either by --mass or by --sphere-density and --radius");
   const bool needs_radius = options.has("sphere-modulus") || options.has("sphere-density");
   const double radius = needs_radius ? options.real("radius", Range::positive()) : 0.0;
   double stiffness = 0;
