@@ -55,10 +55,10 @@ def gci(run, name):
     path = os.path.join(d, "campaign", run["path"], "verification.json")
     if not os.path.exists(path):
         return float("nan")
-    for q in json.load(open(path)).get("quantities", []):
-        if q.get("name") == name and q.get("gci") is not None:
-            return q["gci"]
-    return float("nan")
+    q = json.load(open(path))["quantities"].get(name, {})
+    # Relative GCI; for the restitution the absolute one (e -> 0 on thin plates).
+    value = q.get("gci_fine_absolute" if name == "restitution" else "gci_fine")
+    return float("nan") if value is None else value
 
 
 fmt = lambda x, f: ("-" if x is None or (isinstance(x, float) and math.isnan(x)) else format(x, f))
