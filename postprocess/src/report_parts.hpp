@@ -8,6 +8,8 @@
 #include "impact_postprocess/report.hpp"
 
 #include <filesystem>
+#include <functional>
+#include <utility>
 #include <string>
 #include <vector>
 
@@ -69,6 +71,29 @@ ToleranceVerdict tolerance_verdict(const Report& report,
 /// against the report's FEM runs, and records every unusable file in report.problems.
 void add_simulators(Report& report, const std::filesystem::path& directory);
 
+// ---- Validity map (report_map.cpp, report_thin_plate.cpp) ------------------------------
+
+/// The thin-plate model (Zener) at one run: Hertz contact with the run's materials on an
+/// infinite Kirchhoff plate of the run's thickness and material, Hunt–Crossley damping b.
+struct ThinPlatePrediction {
+  std::optional<ImpactQuantities> quantities;
+  std::string missing;     ///< why there are none (the run does not record the plate, ...)
+  std::string parameters;  ///< c, Z, lambda as text
+};
+ThinPlatePrediction thin_plate_prediction(const FemRun& run, double damping);
+
+/// The map of a campaign with sweep axes into report.map (nothing for a velocity campaign).
+void add_validity_map(Report& report, const Campaign& campaign, const ReportOptions& options);
+/// A cell's class: 0 .. bands-1 within that band (the tightest), bands outside the loosest,
+/// bands + 1 not decided, bands + 2 not evaluated; and its name ("within 2 %", ...).
+std::size_t map_class(const MapCell& cell);
+std::string map_class_name(const MapCell& cell, const std::vector<double>& tolerances);
+/// The largest FEM uncertainty of the judged quantities at the cell (NaN if none known).
+double map_uncertainty(const MapCell& cell);
+/// The judged quantity with the largest |error| at the cell, and that error.
+std::optional<std::pair<Quantity, double>> map_worst_error(const MapCell& cell);
+std::string map_figure_file(const MapModel& model);
+
 // ---- Page (report_document.cpp, report_render.cpp) --------------------------------------
 
 struct Table {
@@ -109,6 +134,10 @@ public:
 };
 
 Document build_document(const Report& report, const std::filesystem::path& figures_directory);
+
+/// The section "Validity map" (report_map.cpp); `figure` adds a figure by file name.
+void map_section(Document& doc, const Report& report,
+                 const std::function<void(const std::string&)>& figure);
 
 /// The section "In your simulator" (report_simulators.cpp).
 void simulators_section(Document& doc, const Report& report);
