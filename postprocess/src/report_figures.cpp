@@ -397,9 +397,9 @@ std::vector<json> map_figures(const Report& report) {
           text = detail::percent_cell(worst->second) + "\n" + quantity_symbol(worst->first);
         else
           text = "n/a";
-        text += "\nU " + detail::unsigned_percent(detail::map_uncertainty(cell));
+        text += "\nU " + detail::unsigned_percent(map_uncertainty(cell));
         if (cell.yields) text += "\n(yields)";
-        cells.push_back({{"column", column}, {"row", r}, {"class", detail::map_class(cell)},
+        cells.push_back({{"column", column}, {"row", r}, {"class", map_class(cell)},
                          {"text", text}});
       }
     }

@@ -51,7 +51,7 @@ double row_thickness(const std::string& parameter, const SweepValue& value,
 // The tightest band in which the cell is within; else outside the loosest, not decided or
 // not evaluated. The class index: 0 .. bands-1 within that band, bands outside, bands + 1
 // not decided, bands + 2 not evaluated.
-std::size_t class_index(const MapCell& cell) {
+std::size_t class_index_of(const MapCell& cell) {
   const std::size_t bands = cell.decisions.size();
   if (!cell.missing.empty() || cell.decisions.empty()) return bands + 2;
   for (std::size_t k = 0; k < bands; ++k)
@@ -194,6 +194,8 @@ std::optional<double> damping_for(const Calibration& calibration, double velocit
 }
 
 } // namespace
+
+std::size_t class_index(const MapCell& cell) { return class_index_of(cell); }
 
 void add_validity_map(Report& report, const Campaign& campaign, const ReportOptions& options) {
   if (campaign.axes.size() <= 1) return; // a velocity campaign: the report as before
@@ -361,25 +363,6 @@ void add_validity_map(Report& report, const Campaign& campaign, const ReportOpti
   report.map = std::move(map);
 }
 
-std::string map_class_name(const MapCell& cell, const std::vector<double>& tolerances) {
-  const std::size_t index = class_index(cell);
-  if (index < tolerances.size()) return "within " + band_name(tolerances[index]);
-  if (index == tolerances.size()) return "outside " + band_name(tolerances.back());
-  if (index == tolerances.size() + 1) return "not decided";
-  return "not evaluated";
-}
-
-std::size_t map_class(const MapCell& cell) { return class_index(cell); }
-
-double map_uncertainty(const MapCell& cell) {
-  double largest = nan;
-  for (Quantity quantity : verdict_quantities) {
-    const double u = cell.uncertainty[std::size_t(quantity)].relative;
-    if (std::isfinite(u)) largest = std::isfinite(largest) ? std::max(largest, u) : u;
-  }
-  return largest;
-}
-
 std::optional<std::pair<Quantity, double>> map_worst_error(const MapCell& cell) {
   if (!cell.judged || !cell.fem) return std::nullopt;
   std::optional<std::pair<Quantity, double>> worst;
@@ -458,3 +441,27 @@ void map_section(Document& doc, const Report& report,
 }
 
 } // namespace impact::postprocess::detail
+
+namespace impact::postprocess {
+
+std::string map_class_name(const MapCell& cell, const std::vector<double>& tolerances) {
+  const std::size_t index = detail::class_index(cell);
+  if (index < tolerances.size()) return "within " + detail::band_name(tolerances[index]);
+  if (index == tolerances.size()) return "outside " + detail::band_name(tolerances.back());
+  if (index == tolerances.size() + 1) return "not decided";
+  return "not evaluated";
+}
+
+std::size_t map_class(const MapCell& cell) { return detail::class_index(cell); }
+
+double map_uncertainty(const MapCell& cell) {
+  double largest = std::numeric_limits<double>::quiet_NaN();
+  for (Quantity quantity : verdict_quantities) {
+    const double u = cell.uncertainty[std::size_t(quantity)].relative;
+    if (std::isfinite(u)) largest = std::isfinite(largest) ? std::max(largest, u) : u;
+  }
+  return largest;
+}
+
+
+} // namespace impact::postprocess

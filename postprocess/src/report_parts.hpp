@@ -84,12 +84,8 @@ ThinPlatePrediction thin_plate_prediction(const FemRun& run, double damping);
 
 /// The map of a campaign with sweep axes into report.map (nothing for a velocity campaign).
 void add_validity_map(Report& report, const Campaign& campaign, const ReportOptions& options);
-/// A cell's class: 0 .. bands-1 within that band (the tightest), bands outside the loosest,
-/// bands + 1 not decided, bands + 2 not evaluated; and its name ("within 2 %", ...).
-std::size_t map_class(const MapCell& cell);
-std::string map_class_name(const MapCell& cell, const std::vector<double>& tolerances);
-/// The largest FEM uncertainty of the judged quantities at the cell (NaN if none known).
-double map_uncertainty(const MapCell& cell);
+/// The class index of map_class (report.hpp).
+std::size_t class_index(const MapCell& cell);
 /// The judged quantity with the largest |error| at the cell, and that error.
 std::optional<std::pair<Quantity, double>> map_worst_error(const MapCell& cell);
 std::string map_figure_file(const MapModel& model);

@@ -205,6 +205,16 @@ struct ValidityMap {
   std::size_t reference_row = 0; ///< the row whose Hunt–Crossley b the thin-plate model takes
 };
 
+/// A cell's class by the verdict's decisions: 0 .. bands-1 within that band (the tightest one
+/// in which it is within), bands outside the loosest, bands + 1 not decided (the FEM's
+/// uncertainty as large as the margin), bands + 2 not evaluated (no prediction); and its
+/// name ("within 2 %", "outside 5 %", "not decided", "not evaluated").
+std::size_t map_class(const MapCell& cell);
+std::string map_class_name(const MapCell& cell, const std::vector<double>& tolerances);
+/// The largest FEM uncertainty (relative) of the judged quantities at the cell, NaN if none
+/// is known.
+double map_uncertainty(const MapCell& cell);
+
 struct Report {
   std::string campaign_source;
   std::string calibration_source;
