@@ -11,50 +11,24 @@
 
 #include "impact_reduced/invalid_input.hpp"
 
-#include <boost/math/tools/toms748_solve.hpp>
-// GCC 12 flags the implicit copy of Odeint's stepper temporaries (uninitialised scratch
-// arrays, overwritten before use) as -Wuninitialized; the warning is Boost's, not ours.
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wuninitialized"
-#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
-#include <boost/numeric/odeint/stepper/controlled_runge_kutta.hpp>
-#include <boost/numeric/odeint/stepper/runge_kutta_cash_karp54.hpp>
-#pragma GCC diagnostic pop
+#include "event_stepping.hpp"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
-#include <cstdint>
-#include <limits>
+#include <optional>
 #include <sstream>
+#include <tuple>
 
 namespace impact::reduced {
 
 namespace {
 
-namespace odeint = boost::numeric::odeint;
-
-using State = std::array<double, 2>; // scaled approach X, scaled approach rate U
-// Cash-Karp 5(4). Not Fehlberg 7(8): its error estimate is a multiple of
-// k1 + k11 - k12 - k13, which vanishes when the right-hand side depends on time only
-// (quadrature), and the start and end of a contact are nearly that (x ~ V t, F ~ t^n with a
-// fractional n): it accepted steps with 2e-8 error at a 1e-13 tolerance on the Hertz
-// impact. Cash-Karp's embedded estimate stays honest there (1e-12 at 1e-13).
-using ErrorStepper = odeint::runge_kutta_cash_karp54<State>;
-using ErrorChecker =
-    odeint::default_error_checker<double, ErrorStepper::algebra_type, ErrorStepper::operations_type>;
-using ControlledStepper = odeint::controlled_runge_kutta<ErrorStepper, ErrorChecker>;
+using detail::describe;
+using Stepper = detail::EventStepper<2>;
+using State = Stepper::State; // scaled approach X, scaled approach rate U
 
 constexpr double time_limit = 1e5;            // in characteristic times T
 constexpr std::size_t step_limit = 1000000;   // accepted steps
-constexpr std::size_t rejection_limit = 1000; // consecutive rejected steps
-
-std::string describe(double value) {
-  std::ostringstream text;
-  text.precision(17);
-  text << value;
-  return text.str();
-}
 
 // The approach L with L * F(L, V) = m V^2, by a decade scan and bisection in log L.
 // Fails if the law offers (almost) no resistance to the approach.
@@ -87,19 +61,11 @@ double characteristic_length(double mass, double velocity, const ContactForceLaw
   return std::sqrt(lower * upper);
 }
 
-// One accepted step: start time, start state and length (scaled).
-struct Step {
-  double start;
-  State state;
-  double length;
-};
-
 class ImpactIntegration {
 public:
   ImpactIntegration(double mass, double velocity, const ContactForceLaw& force,
                     double relative_tolerance, ContactEnd end)
-    : mass_(mass), velocity_(velocity), force_(force), tolerance_(relative_tolerance),
-      end_(end) {
+    : mass_(mass), velocity_(velocity), force_(force), end_(end) {
     require_positive("mass", mass);
     require_positive("velocity", velocity);
     if (!(relative_tolerance >= 1e-14 && relative_tolerance <= 1e-3))
@@ -109,6 +75,8 @@ public:
     if (!force) throw InvalidInput("force", "force must be a contact force law (got an empty one)");
     length_ = characteristic_length(mass, velocity, force);
     time_ = length_ / velocity;
+    stepper_.emplace([this](const State& y, State& dydt) { rhs(y, dydt); }, relative_tolerance,
+                     time_);
     run();
     locate_force_maximum();
   }
@@ -123,7 +91,7 @@ public:
     result.rebound_velocity = velocity_ * separation_rate_;
     result.restitution = -separation_rate_;
     result.force_at_separation = force_at(separation_);
-    result.steps = steps_.size();
+    result.steps = stepper_->steps().size();
     result.approach_at_separation = length_ * separation_[0];
     return result;
   }
@@ -136,11 +104,7 @@ public:
       double tau = contact_time_;
       if (i + 1 < points) {
         tau = contact_time_ * static_cast<double>(i) / static_cast<double>(points - 1);
-        // The last step whose start is <= tau.
-        const auto after = std::upper_bound(steps_.begin(), steps_.end(), tau,
-                                            [](double t, const Step& s) { return t < s.start; });
-        const Step& step = *std::prev(after);
-        state = advance(step.state, tau - step.start);
+        state = stepper_->sample(tau);
       }
       samples.push_back({time_ * tau, length_ * state[0], velocity_ * state[1], force_at(state)});
     }
@@ -165,69 +129,33 @@ private:
     dydt[1] = -force_at(y) * time_ / (mass_ * velocity_);
   }
 
-  // The state reached from `start` after a single step of length h (no error control): the
-  // "re-step" used for event location and sampling. h never exceeds an accepted step, so
-  // its error is within the tolerance.
-  State advance(const State& start, double h) const {
-    if (h == 0) return start;
-    State rate;
-    rhs(start, rate);
-    State end;
-    ErrorStepper stepper;
-    stepper.do_step([this](const State& s, State& d, double) { rhs(s, d); }, start, rate, 0.0,
-                    end, h);
-    return end;
-  }
+  State advance(const State& start, double h) const { return stepper_->advance(start, h); }
 
-  // Root in (0, h] of event(advance(start, s)), given event(start) and event at h of
-  // opposite signs (or zero at h).
   template <class Event>
   double locate(const State& start, double lower, double h, Event event) const {
-    const double at_lower = event(advance(start, lower));
-    const double at_upper = event(advance(start, h));
-    if (at_upper == 0 || (at_upper > 0) == (at_lower > 0)) return h; // the sign change is at h
-    if (at_lower == 0) return lower;
-    std::uintmax_t iterations = 200;
-    const auto root = boost::math::tools::toms748_solve(
-        [&](double s) { return event(advance(start, s)); }, lower, h, at_lower, at_upper,
-        boost::math::tools::eps_tolerance<double>(std::numeric_limits<double>::digits),
-        iterations);
-    return 0.5 * (root.first + root.second);
+    return stepper_->locate(start, lower, h, event);
   }
 
   void run() {
-    ControlledStepper stepper(
-        ErrorChecker(tolerance_, tolerance_, 1.0, 0.0)); // abs = rel on the scaled state
-    const auto system = [this](const State& s, State& d, double) { rhs(s, d); };
     State y{0.0, 1.0};
     double tau = 0;
     double dtau = 1e-3;
     bool compressing = true;
-    std::size_t rejections = 0;
     while (true) {
-      if (steps_.size() >= step_limit || tau > time_limit) {
+      if (stepper_->steps().size() >= step_limit || tau > time_limit) {
         std::ostringstream message;
         message.precision(6);
-        message << "the body does not return to x = 0: after " << steps_.size()
+        message << "the body does not return to x = 0: after " << stepper_->steps().size()
                 << " steps, at t = " << time_ * tau << " s (" << tau
                 << " characteristic times), approach = " << length_ * y[0]
                 << " m, approach rate = " << velocity_ * y[1]
                 << " m/s; the contact force law sticks";
         throw ContactDoesNotEnd(message.str());
       }
-      const State start = y;
-      const double start_time = tau;
-      if (stepper.try_step(system, y, tau, dtau) == odeint::fail) {
-        if (++rejections > rejection_limit || !(dtau > 1e-300))
-          throw std::runtime_error("impact integration cannot satisfy the tolerance at t = " +
-                                   describe(time_ * tau) + " s");
-        continue;
-      }
-      rejections = 0;
-      if (!std::isfinite(y[0]) || !std::isfinite(y[1]) || !std::isfinite(tau))
-        throw std::runtime_error("impact integration diverged at t = " +
-                                 describe(time_ * start_time) + " s");
-      double length = tau - start_time;
+      const auto& step = stepper_->step(y, tau, dtau);
+      const State start = step.state;
+      const double start_time = step.start;
+      const double length = step.length;
       double event_start = 0; // where the search for a later event in this step begins
       if (compressing && y[1] <= 0) {
         const double h =
@@ -254,12 +182,11 @@ private:
         }
         separation_ = advance(start, h);
         if (at_zero_approach) separation_[0] = 0; // the located root, without its rounding
-        steps_.push_back({start_time, start, h});
+        stepper_->truncate_last_step(h);
         contact_time_ = start_time + h;
         separation_rate_ = separation_[1];
         return;
       }
-      steps_.push_back({start_time, start, length});
     }
   }
 
@@ -284,38 +211,20 @@ private:
   }
 
   // The force maximum lies next to the largest node value, in one of the two adjacent
-  // steps (or at that node): locate dF/dt = 0 there by re-stepping.
+  // steps (or at that node): located where dF/dt = 0 by re-stepping.
   void locate_force_maximum() {
-    const std::size_t count = steps_.size();
-    std::vector<double> node_force(count + 1);
-    for (std::size_t i = 0; i < count; ++i) node_force[i] = force_at(steps_[i].state);
-    node_force[count] = force_at(separation_);
-    const std::size_t j = static_cast<std::size_t>(
-        std::max_element(node_force.begin(), node_force.end()) - node_force.begin());
-    force_max_ = node_force[j];
-    time_force_max_ = j < count ? steps_[j].start : contact_time_;
-    for (std::size_t s = (j > 0 ? j - 1 : 0); s <= j && s < count; ++s) {
-      const Step& step = steps_[s];
-      const auto rate_at = [&](double h) { return force_rate(advance(step.state, h)); };
-      if (!(rate_at(0) > 0 && rate_at(step.length) < 0)) continue;
-      const double h = locate(step.state, 0.0, step.length,
-                              [&](const State& y) { return force_rate(y); });
-      const double value = force_at(advance(step.state, h));
-      if (value > force_max_) {
-        force_max_ = value;
-        time_force_max_ = step.start + h;
-      }
-    }
+    std::tie(force_max_, time_force_max_) = stepper_->locate_maximum(
+        separation_, [this](const State& y) { return force_at(y); },
+        [this](const State& y) { return force_rate(y); });
   }
 
   double mass_;
   double velocity_;
   const ContactForceLaw& force_;
-  double tolerance_;
   ContactEnd end_;
   double length_ = 0;
   double time_ = 0;
-  std::vector<Step> steps_;
+  std::optional<Stepper> stepper_;
   double approach_max_ = 0;
   double compression_time_ = 0;
   double contact_time_ = 0;
