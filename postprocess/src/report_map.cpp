@@ -102,18 +102,24 @@ std::string rows_words(const ValidityMap& map, std::size_t model, std::size_t ba
 std::string region_of(const ValidityMap& map, std::size_t model,
                       const std::vector<double>& tolerances) {
   const MapModel& entry = map.models[model];
-  std::string text;
-  for (std::size_t band = tolerances.size(); band-- > 0;) {
+  std::string text, previous;
+  for (std::size_t band = 0; band < tolerances.size(); ++band) {
     std::vector<std::string> partial;
     const std::string full = rows_words(map, model, band, partial);
-    std::string part = "within " + band_name(tolerances[band]) + " " +
-                       (full.empty() ? std::string("at every velocity for no tested value")
-                                     : "for " + full + " at every velocity");
+    std::string where = full.empty() ? std::string("at every velocity for no tested value")
+                                     : "for " + full + " at every velocity";
     if (!partial.empty()) {
-      part += "; in part at ";
-      for (std::size_t k = 0; k < partial.size(); ++k) part += (k ? "; " : "") + partial[k];
+      where += " (in part at ";
+      for (std::size_t k = 0; k < partial.size(); ++k) where += (k ? "; " : "") + partial[k];
+      where += ")";
     }
-    text += (text.empty() ? entry.label + " is " : "; ") + part;
+    if (where == previous) {
+      text += " (and so within " + band_name(tolerances[band]) + ")";
+      continue;
+    }
+    text += (text.empty() ? entry.label + " is " : "; ") + std::string("within ") +
+            band_name(tolerances[band]) + " " + where;
+    previous = where;
   }
   std::vector<std::string> missing, undecided;
   for (const auto& row : map.rows) {

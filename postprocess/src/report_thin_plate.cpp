@@ -6,10 +6,7 @@
 
 #include "impact_postprocess/scenario_materials.hpp"
 
-#if __has_include(<impact_reduced/thin_plate.hpp>)
 #include <impact_reduced/thin_plate.hpp>
-#define IMPACT_HAS_THIN_PLATE 1
-#endif
 
 #include <cmath>
 #include <sstream>
@@ -29,7 +26,6 @@ ThinPlatePrediction thin_plate_prediction(const FemRun& run, double damping) {
                          "thickness) or the sphere's (Sphere/..., Scenario/Sphere radius)";
     return prediction;
   }
-#ifdef IMPACT_HAS_THIN_PLATE
   try {
     const reduced::KirchhoffPlate plate{*youngs_modulus, *poisson_ratio, *density, *thickness};
     const double impedance = reduced::plate_point_impedance(plate);
@@ -47,10 +43,6 @@ ThinPlatePrediction thin_plate_prediction(const FemRun& run, double damping) {
   } catch (const std::exception& error) {
     prediction.missing = std::string("the thin-plate model cannot be evaluated: ") + error.what();
   }
-#else
-  (void)damping;
-  prediction.missing = "the thin-plate model is not built into this impact-report";
-#endif
   return prediction;
 }
 
