@@ -25,6 +25,11 @@ commands:
   oscillator  free decay of a damped oscillator with power-law stiffness (Olshanskiy)
               --mass M --viscous K --c1 C1 --c2 C2 --power NU --a0 A0 --count N
               --method numeric|implicit|lambert|lambert-approx
+  thin-plate  a sphere on an infinite thin (Kirchhoff) plate, Zener's model: restitution,
+              contact time, peaks, energy into the plate, Zener's lambda
+              --plate-modulus E --plate-poisson NU --plate-density RHO --thickness H
+              (--stiffness C [--exponent N] | --sphere-modulus E --sphere-poisson NU --radius R)
+              (--mass M | --sphere-density RHO --radius R) [--damping B] --velocity V[,V...]
 
 Units are SI. Output is JSON, or CSV where it is a table (--format csv).
 Exit codes: 0 success, 2 bad input (the message names the parameter), 1 internal error.
@@ -39,6 +44,7 @@ int main(int argc, char** argv) {
       {"damping", run_damping_command},
       {"law", run_law_command},
       {"oscillator", run_oscillator_command},
+      {"thin-plate", run_thin_plate_command},
   };
   if (argc < 2 || std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h") {
     (argc < 2 ? std::cerr : std::cout) << usage;

@@ -126,6 +126,20 @@ public:
     return advance(step.state, tau - step.start);
   }
 
+  /// `points` >= 2 (scaled time, state) pairs equally spaced over [0, end_time], both ends
+  /// included; the last is `end` (the located final state, not re-stepped).
+  std::vector<std::pair<double, State>> sample_uniformly(std::size_t points, double end_time,
+                                                         const State& end) const {
+    std::vector<std::pair<double, State>> samples;
+    samples.reserve(points);
+    for (std::size_t i = 0; i + 1 < points; ++i) {
+      const double tau = end_time * static_cast<double>(i) / static_cast<double>(points - 1);
+      samples.emplace_back(tau, sample(tau));
+    }
+    samples.emplace_back(end_time, end);
+    return samples;
+  }
+
   /// The maximum of value(state) over the recorded trajectory ending in `end` (the state at
   /// the end of the last step): the largest node value, refined where rate(state) (the
   /// derivative of the value along the flow) changes from + to - in one of the two steps

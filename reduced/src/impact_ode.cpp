@@ -98,16 +98,8 @@ public:
 
   std::vector<ImpactSample> history(std::size_t points) const {
     std::vector<ImpactSample> samples;
-    samples.reserve(points);
-    for (std::size_t i = 0; i < points; ++i) {
-      State state = separation_;
-      double tau = contact_time_;
-      if (i + 1 < points) {
-        tau = contact_time_ * static_cast<double>(i) / static_cast<double>(points - 1);
-        state = stepper_->sample(tau);
-      }
+    for (const auto& [tau, state] : stepper_->sample_uniformly(points, contact_time_, separation_))
       samples.push_back({time_ * tau, length_ * state[0], velocity_ * state[1], force_at(state)});
-    }
     return samples;
   }
 

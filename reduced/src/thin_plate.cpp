@@ -84,17 +84,9 @@ public:
 
   std::vector<ThinPlateSample> history(std::size_t points) const {
     std::vector<ThinPlateSample> samples;
-    samples.reserve(points);
-    for (std::size_t i = 0; i < points; ++i) {
-      State y = separation_;
-      double tau = contact_time_;
-      if (i + 1 < points) {
-        tau = contact_time_ * static_cast<double>(i) / static_cast<double>(points - 1);
-        y = stepper_->sample(tau);
-      }
+    for (const auto& [tau, y] : stepper_->sample_uniformly(points, contact_time_, separation_))
       samples.push_back({time_unit_ * tau, length_unit_ * y[0], length_unit_ / time_unit_ * y[1],
                          length_unit_ * (y[2] - y[0]), force_unit_ * force(y)});
-    }
     return samples;
   }
 
