@@ -10,7 +10,12 @@ below the panels instead of one per panel), "panels": [panel, ...]}, ...]}, a pa
 "color", "linestyle"}], "bands": [{"y0", "y1", "color", "alpha", "label"}], "vbands": [{"x0",
 "x1", "color", "alpha", "hatch", "label"}] (spans of x), "note"}; a series is a line {"label", "x", "y", "color", "linestyle", "marker",
 "markerfacecolor" (optional), "yerr": [lower, upper] (optional)} or a shaded band
-{"fill": true, "label", "x", "y0", "y1", "color", "alpha"}. Every number is computed by
+{"fill": true, "label", "x", "y0", "y1", "color", "alpha"}.
+A validity map is a figure {"kind": "map", "file", "title", "xlabel", "ylabel", "yscale",
+"columns_values" (the velocities), "rows_values" (the other axis, null when not a number),
+"rows_labels", "classes": [{"name", "color"}], "cells": [{"column", "row", "class" (index into
+classes), "text"}], "note"}: one coloured rectangle per cell, its text written in it; with
+"yscale" "log" the rows sit at their values on a log axis. Every number is computed by
 impact-report (C++); this script only draws (null = missing value, not drawn).
 Exit codes: 0 all figures written, 1 an error (message on stderr).
 """
@@ -93,7 +98,70 @@ def legend_entries(axes_grid):
     return labelled
 
 
+def row_edges(values, logarithmic):
+    """Cell boundaries between the rows: geometric (log) or arithmetic midpoints."""
+    if len(values) == 1:
+        v = values[0]
+        return [v / 1.5, v * 1.5] if logarithmic else [v - 0.5 * abs(v or 1), v + 0.5 * abs(v or 1)]
+    if logarithmic:
+        logs = [math.log(v) for v in values]
+    else:
+        logs = list(values)
+    middles = [(a + b) / 2 for a, b in zip(logs, logs[1:])]
+    edges = [logs[0] - (middles[0] - logs[0])] + middles + [logs[-1] + (logs[-1] - middles[-1])]
+    return [math.exp(e) for e in edges] if logarithmic else edges
+
+
+def draw_map(figure, directory):
+    from matplotlib.patches import Patch, Rectangle
+
+    velocities = values(figure["columns_values"])
+    labels = figure["rows_labels"]
+    numeric = all(v is not None for v in figure["rows_values"])
+    rows = values(figure["rows_values"]) if numeric else list(range(len(labels)))
+    logarithmic = numeric and figure.get("yscale") == "log"
+    edges = row_edges(rows, logarithmic)
+    classes = figure["classes"]
+    width = max(6.0, 1.35 * len(velocities) + 2.5)
+    height = max(3.0, 0.95 * len(rows) + 2.2)
+    fig, axes = plt.subplots(figsize=(width, height))
+    for cell in figure["cells"]:
+        column, row = cell["column"], cell["row"]
+        kind = classes[cell["class"]]
+        axes.add_patch(Rectangle((column - 0.5, edges[row]), 1, edges[row + 1] - edges[row],
+                                 facecolor=kind["color"], edgecolor="0.35", linewidth=0.8))
+        middle = math.sqrt(edges[row] * edges[row + 1]) if logarithmic else \
+            (edges[row] + edges[row + 1]) / 2
+        axes.text(column, middle, cell["text"], ha="center", va="center", fontsize=7.5)
+    axes.set_xlim(-0.5, len(velocities) - 0.5)
+    axes.set_xticks(range(len(velocities)))
+    axes.set_xticklabels(["%g" % v for v in velocities])
+    if logarithmic:
+        axes.set_yscale("log")
+    axes.set_ylim(edges[0], edges[-1])
+    axes.set_yticks(rows)
+    axes.set_yticklabels(labels)
+    axes.minorticks_off()
+    axes.set_xlabel(figure.get("xlabel", ""))
+    axes.set_ylabel(figure.get("ylabel", "") + (" (log scale)" if logarithmic else ""))
+    axes.set_title(figure.get("title", ""), fontsize=11)
+    handles = [Patch(facecolor=kind["color"], edgecolor="0.35", label=kind["name"])
+               for kind in classes]
+    fig.legend(handles=handles, loc="lower center", ncol=min(len(handles), 3), fontsize=8,
+               frameon=False)
+    if figure.get("note"):
+        fig.text(0.5, 1 - 0.12 / height, figure["note"], ha="center", va="top", fontsize=7.5,
+                 color="0.3")
+    legend_rows = math.ceil(len(handles) / 3)
+    fig.tight_layout(rect=(0, (0.3 * legend_rows + 0.15) / height, 1, 1 - 0.25 / height))
+    fig.savefig(os.path.join(directory, figure["file"]), dpi=90)
+    plt.close(fig)
+
+
 def draw_figure(figure, directory):
+    if figure.get("kind") == "map":
+        draw_map(figure, directory)
+        return
     panels = figure["panels"]
     columns = max(1, min(int(figure.get("columns", 2)), len(panels)))
     rows = max(1, math.ceil(len(panels) / columns))

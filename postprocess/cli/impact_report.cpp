@@ -278,6 +278,13 @@ int execute(const Arguments& arguments) {
   ReportOptions options;
   options.tolerances = arguments.tolerances;
   options.simulators = arguments.simulators;
+  // The rows of a validity map (a two-axis campaign) are calibrated here, every law.
+  options.map_calibration.published_damping =
+      calibration ? calibration->campaign.published_damping : arguments.published_damping;
+  if (!arguments.quiet)
+    options.map_calibration.progress = [](const std::string& line) {
+      std::cerr << "impact-report: " << line << std::endl;
+    };
   Report report =
       build_report(input, calibration, problems, campaign_source, calibration_source, options);
 

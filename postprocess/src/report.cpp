@@ -170,6 +170,7 @@ Report build_report(const Campaign& campaign, const std::optional<Calibration>& 
   }
   report.problems = std::move(problems);
   detail::add_verdict(report);
+  detail::add_validity_map(report, campaign, options);
   if (options.simulators) detail::add_simulators(report, *options.simulators);
   return report;
 }

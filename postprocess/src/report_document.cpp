@@ -590,6 +590,7 @@ Document build_document(const Report& report, const fs::path& figures_directory)
     for (const auto& f : figures)
       if (f.file == file) doc.figure({(figures_directory / f.file).string(), f.caption});
   };
+  map_section(doc, report, figure);
   verdict_section(doc, report);
   ranking_section(doc, report);
   parameters_section(doc, report);

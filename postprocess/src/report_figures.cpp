@@ -362,6 +362,65 @@ json errors_figure(const Report& report) {
           {"shared_legend", true}, {"panels", panels}};
 }
 
+// One validity map per model: a grid of cells (velocity on x, the other axis on y), coloured
+// by class, each with its largest error.
+std::vector<json> map_figures(const Report& report) {
+  std::vector<json> figures;
+  if (!report.map || !report.map->available) return figures;
+  const ValidityMap& map = *report.map;
+  const std::size_t bands = report.tolerances.size();
+  json classes = json::array();
+  const std::vector<std::string> within_colors = {"#1a9641", "#a6d96a", "#d9ef8b", "#ffffbf"};
+  for (std::size_t k = 0; k < bands; ++k)
+    classes.push_back({{"name", "within " + detail::band_name(report.tolerances[k])},
+                       {"color", within_colors[std::min(k, within_colors.size() - 1)]}});
+  classes.push_back({{"name", "outside " + detail::band_name(report.tolerances.back())},
+                     {"color", "#e66a5c"}});
+  classes.push_back({{"name", "not decided (FEM uncertainty)"}, {"color", "#bdbdbd"}});
+  classes.push_back({{"name", "not evaluated"}, {"color", "#ffffff"}});
+  const auto slash = map.parameter.rfind('/');
+  const std::string name =
+      slash == std::string::npos ? map.parameter : map.parameter.substr(slash + 1);
+  for (std::size_t m = 0; m < map.models.size(); ++m) {
+    json cells = json::array(), rows = json::array(), labels = json::array();
+    for (std::size_t r = 0; r < map.rows.size(); ++r) {
+      const MapRow& row = map.rows[r];
+      rows.push_back(row.value.number ? json(*row.value.number) : json(nullptr));
+      labels.push_back(row.value.text);
+      for (const auto& cell : row.models[m].cells) {
+        std::size_t column = 0;
+        while (column < map.velocities.size() &&
+               !detail::same_velocity(map.velocities[column], cell.velocity))
+          ++column;
+        std::string text;
+        if (const auto worst = detail::map_worst_error(cell))
+          text = detail::percent_cell(worst->second) + "\n" + quantity_symbol(worst->first);
+        else
+          text = "n/a";
+        text += "\nU " + detail::unsigned_percent(map_uncertainty(cell));
+        if (cell.yields) text += "\n(yields)";
+        cells.push_back({{"column", column}, {"row", r}, {"class", map_class(cell)},
+                         {"text", text}});
+      }
+    }
+    figures.push_back(
+        {{"file", detail::map_figure_file(map.models[m])},
+         {"kind", "map"},
+         {"title", "Validity map: " + map.models[m].label},
+         {"xlabel", "impact velocity V [m/s]"},
+         {"ylabel", name + (map.unit.empty() ? "" : " [" + map.unit + "]")},
+         {"yscale", map.logarithmic ? "log" : "linear"},
+         {"columns_values", scaled(map.velocities, 1)},
+         {"rows_values", rows},
+         {"rows_labels", labels},
+         {"classes", classes},
+         {"cells", cells},
+         {"note", "cell: the largest out-of-sample error of 1 - e², t_c, F_max, x_max (which), "
+                  "U = the FEM's largest uncertainty there"}});
+  }
+  return figures;
+}
+
 } // namespace
 
 std::vector<ReportFigure> report_figures(const Report& report) {
@@ -384,6 +443,11 @@ std::vector<ReportFigure> report_figures(const Report& report) {
                                       "k) and from each run's force-history fit (with its "
                                       "interval), the campaign b with its jackknife interval, "
                                       "the b(V) fit and the published b."});
+  for (const auto& map : map_figures(report))
+    figures.push_back({map["file"].get<std::string>(),
+                       map["title"].get<std::string>() +
+                           ": the class of each cell (one run) by the verdict's rule, with its "
+                           "largest error and the FEM's uncertainty."});
   figures.push_back({"errors.png", "Relative errors of the energy loss, contact time, peak force "
                                    "and peak approach against V for the calibrated Hunt–Crossley "
                                    "model and the best comparison law (out of sample, solid; in "
@@ -400,6 +464,7 @@ json figure_specification(const Report& report) {
   figures.push_back(energy_loss_figure(report));
   if (report.calibration) figures.push_back(damping_figure(report));
   figures.push_back(errors_figure(report));
+  for (auto& map : map_figures(report)) figures.push_back(std::move(map));
   return {{"figures", figures}};
 }
 

@@ -8,6 +8,8 @@
 #include "impact_postprocess/report.hpp"
 
 #include <filesystem>
+#include <functional>
+#include <utility>
 #include <string>
 #include <vector>
 
@@ -69,6 +71,25 @@ ToleranceVerdict tolerance_verdict(const Report& report,
 /// against the report's FEM runs, and records every unusable file in report.problems.
 void add_simulators(Report& report, const std::filesystem::path& directory);
 
+// ---- Validity map (report_map.cpp, report_thin_plate.cpp) ------------------------------
+
+/// The thin-plate model (Zener) at one run: Hertz contact with the run's materials on an
+/// infinite Kirchhoff plate of the run's thickness and material, Hunt–Crossley damping b.
+struct ThinPlatePrediction {
+  std::optional<ImpactQuantities> quantities;
+  std::string missing;     ///< why there are none (the run does not record the plate, ...)
+  std::string parameters;  ///< c, Z, lambda as text
+};
+ThinPlatePrediction thin_plate_prediction(const FemRun& run, double damping);
+
+/// The map of a campaign with sweep axes into report.map (nothing for a velocity campaign).
+void add_validity_map(Report& report, const Campaign& campaign, const ReportOptions& options);
+/// The class index of map_class (report.hpp).
+std::size_t class_index(const MapCell& cell);
+/// The judged quantity with the largest |error| at the cell, and that error.
+std::optional<std::pair<Quantity, double>> map_worst_error(const MapCell& cell);
+std::string map_figure_file(const MapModel& model);
+
 // ---- Page (report_document.cpp, report_render.cpp) --------------------------------------
 
 struct Table {
@@ -109,6 +130,10 @@ public:
 };
 
 Document build_document(const Report& report, const std::filesystem::path& figures_directory);
+
+/// The section "Validity map" (report_map.cpp); `figure` adds a figure by file name.
+void map_section(Document& doc, const Report& report,
+                 const std::function<void(const std::string&)>& figure);
 
 /// The section "In your simulator" (report_simulators.cpp).
 void simulators_section(Document& doc, const Report& report);

@@ -74,6 +74,15 @@ std::optional<double> text_number(const FemRun& run, const std::string& key) {
   return std::nullopt;
 }
 
+std::optional<double> material_constant(const FemRun& run, const std::string& body,
+                                        const std::string& entry) {
+  const auto model = run.text_attributes.find(body + "/Material model");
+  if (model == run.text_attributes.end() || model->second.empty()) return std::nullopt;
+  std::string section = model->second;
+  section[0] = char(std::toupper((unsigned char)section[0]));
+  return text_number(run, body + "/" + section + "/" + entry);
+}
+
 ScenarioMaterials scenario_materials(const std::vector<FemRun>& runs) {
   ScenarioMaterials materials{published_hertz_stiffness,
                               "the runs do not record the scenario's materials, so the published "

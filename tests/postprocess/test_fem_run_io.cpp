@@ -6,10 +6,13 @@
 #include "impact_postprocess/fem_run.hpp"
 #include "impact_postprocess/fem_run_format.hpp"
 
+#include <nlohmann/json.hpp>
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <fstream>
+#include <functional>
 #include <limits>
 
 namespace {
@@ -183,6 +186,139 @@ TEST_F(FemRunIo, CampaignDirectoryMissingOrEmpty) {
   } catch (const RunInputError& error) {
     EXPECT_NE(std::string(error.what()).find("holds no run"), std::string::npos);
   }
+}
+
+// ---- Sweep campaigns (index.json with axes and points) ----------------------------------
+
+// Two thicknesses x two velocities; `point` edits each index entry.
+fs::path sweep_campaign(const fs::path& directory,
+                        const std::function<void(nlohmann::json&, double, double)>& point) {
+  nlohmann::json index{{"axes",
+                        {{{"parameter", "Scenario/Plate thickness"}, {"values", {0.005, 0.01}}},
+                         {{"parameter", "Scenario/Impact velocity"}, {"values", {0.5, 1}}}}},
+                       {"runs", nlohmann::json::array()}};
+  for (double h : {0.005, 0.01})
+    for (double v : {0.5, 1.0}) {
+      FemRun run = example(v);
+      run.text_attributes["Scenario/Plate thickness"] = h == 0.005 ? "0.005" : "0.01";
+      const std::string name = "plate-thickness-" + run.text_attributes["Scenario/Plate thickness"] +
+                               (v == 0.5 ? "_v0.5" : "_v1");
+      write_fem_run(run, directory / name);
+      nlohmann::json entry{{"path", name}, {"velocity", v},
+                           {"point", {{"Scenario/Plate thickness", h}, {"Scenario/Impact velocity", v}}}};
+      point(entry, h, v);
+      index["runs"].push_back(entry);
+    }
+  std::ofstream(directory / "index.json") << index.dump(2);
+  return directory;
+}
+
+std::string campaign_error(const fs::path& directory) {
+  try {
+    read_campaign(directory);
+  } catch (const RunInputError& error) {
+    return error.what();
+  }
+  return "";
+}
+
+TEST_F(FemRunIo, SweepIndexGivesAxesAndPoints) {
+  sweep_campaign(directory, [](nlohmann::json&, double, double) {});
+  const Campaign campaign = read_campaign(directory);
+  EXPECT_TRUE(campaign.problems.empty());
+  ASSERT_EQ(campaign.axes.size(), 2u);
+  EXPECT_EQ(campaign.axes[0].parameter, "Scenario/Plate thickness");
+  EXPECT_EQ(*campaign.axes[0].values[1].number, 0.01);
+  ASSERT_EQ(campaign.runs.size(), 4u);
+  for (const auto& run : campaign.runs) {
+    const double h = *run.sweep_point.at("Scenario/Plate thickness").number;
+    EXPECT_EQ(run.text_attributes.at("Scenario/Plate thickness"), h == 0.005 ? "0.005" : "0.01");
+    EXPECT_EQ(*run.sweep_point.at("Scenario/Impact velocity").number, run.impact_velocity);
+  }
+}
+
+TEST_F(FemRunIo, SweepPointsFromTheRunsWhenTheIndexHasNone) {
+  sweep_campaign(directory, [](nlohmann::json& entry, double, double) { entry.erase("point"); });
+  const Campaign campaign = read_campaign(directory);
+  ASSERT_EQ(campaign.runs.size(), 4u);
+  for (const auto& run : campaign.runs)
+    EXPECT_EQ(run.sweep_point.at("Scenario/Plate thickness").text,
+              run.text_attributes.at("Scenario/Plate thickness"));
+}
+
+TEST_F(FemRunIo, OlderIndexWithoutAxesIsReadAsBefore) {
+  write_fem_run(example(1), directory / "v1");
+  write_fem_run(example(2), directory / "v2");
+  std::ofstream(directory / "index.json")
+      << R"({"runs": [{"velocity": 1, "path": "v1"}, {"velocity": 2, "path": "v2"}]})";
+  const Campaign campaign = read_campaign(directory);
+  EXPECT_TRUE(campaign.axes.empty());
+  ASSERT_EQ(campaign.runs.size(), 2u);
+  EXPECT_TRUE(campaign.runs[0].sweep_point.empty());
+}
+
+TEST_F(FemRunIo, BadSweepIndexNamesTheFileAndTheProblem) {
+  const auto expect = [&](const std::function<void(nlohmann::json&, double, double)>& edit,
+                          const std::string& part, const std::string& file) {
+    fs::remove_all(directory);
+    fs::create_directories(directory);
+    sweep_campaign(directory, edit);
+    const std::string message = campaign_error(directory);
+    EXPECT_NE(message.find(part), std::string::npos) << message;
+    EXPECT_NE(message.find(file), std::string::npos) << message;
+  };
+  // A point missing an axis.
+  expect([](nlohmann::json& entry, double, double) { entry["point"].erase("Scenario/Plate thickness"); },
+         "has no value of the axis 'Scenario/Plate thickness'", "index.json");
+  // A point whose value is not one of the axis's.
+  expect([](nlohmann::json& entry, double h, double) {
+           if (h == 0.01) entry["point"]["Scenario/Plate thickness"] = 0.02;
+         },
+         "= '0.02', which is not one of the axis's values", "index.json");
+  // A point with a parameter that is not an axis.
+  expect([](nlohmann::json& entry, double, double) { entry["point"]["Sphere/Radius"] = 0.01; },
+         "'Sphere/Radius', which is not an axis", "index.json");
+  // A point that is not an object; a velocity that differs from the entry's.
+  expect([](nlohmann::json& entry, double, double) { entry["point"] = 3; }, "is not an object",
+         "index.json");
+  expect([](nlohmann::json& entry, double, double v) {
+           if (v == 1) entry["velocity"] = 2;
+         },
+         "but the entry's \"velocity\" is 2", "index.json");
+  // The run's own parameter differs from its point (the index swapped two thicknesses).
+  expect([](nlohmann::json& entry, double h, double) {
+           entry["point"]["Scenario/Plate thickness"] = h == 0.005 ? 0.01 : 0.005;
+         },
+         "differs from its point in the campaign index", "history.h5");
+}
+
+TEST_F(FemRunIo, BadSweepAxes) {
+  const auto expect = [&](const std::string& axes, const std::string& part) {
+    fs::remove_all(directory);
+    fs::create_directories(directory);
+    write_fem_run(example(1), directory / "v1");
+    std::ofstream(directory / "index.json")
+        << R"({"axes": )" + axes + R"(, "runs": [{"path": "v1", "velocity": 1}]})";
+    const std::string message = campaign_error(directory);
+    EXPECT_NE(message.find(part), std::string::npos) << message;
+    EXPECT_NE(message.find("index.json"), std::string::npos) << message;
+  };
+  expect("{}", "\"axes\" must be a non-empty list");
+  expect(R"([{"values": [1]}])", "has no \"parameter\"");
+  expect(R"([{"parameter": "Scenario/Impact velocity"}])", "has no \"values\"");
+  expect(R"([{"parameter": "Scenario/Impact velocity", "values": [1, 1]}])", "lists the value '1' twice");
+  expect(R"([{"parameter": "Scenario/Impact velocity", "values": [true]}])", "must be a number or a string");
+  // A run without point whose parameter is missing: named by its file.
+  fs::remove_all(directory);
+  fs::create_directories(directory);
+  write_fem_run(example(1), directory / "v1");
+  std::ofstream(directory / "index.json")
+      << R"({"axes": [{"parameter": "Scenario/Plate thickness", "values": [0.01]},
+                      {"parameter": "Scenario/Impact velocity", "values": [1]}],
+             "runs": [{"path": "v1", "velocity": 1}]})";
+  const std::string message = campaign_error(directory);
+  EXPECT_NE(message.find("has no parameter 'Scenario/Plate thickness'"), std::string::npos) << message;
+  EXPECT_NE(message.find("history.h5"), std::string::npos) << message;
 }
 
 } // namespace

@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -18,6 +19,25 @@ class RunInputError : public std::runtime_error {
 public:
   using std::runtime_error::runtime_error;
 };
+
+/// The value of a swept parameter at one run (index.json of a sweep campaign,
+/// /work/notes/sweep_format.md): a number when its text parses completely as one, else text.
+struct SweepValue {
+  std::string text;               ///< as written ("0.005", "free")
+  std::optional<double> number;   ///< the number, when it is one
+  /// Same value: numbers equal to 1e-9 (relative), else the same text.
+  bool matches(const SweepValue& other) const;
+};
+
+/// One axis of a sweep campaign: a parameter ("Scenario/Plate thickness") and its values, in
+/// the order of the index.
+struct SweepAxis {
+  std::string parameter;
+  std::vector<SweepValue> values;
+};
+
+/// The parameter of the impact-velocity axis (always the last axis of a sweep).
+inline constexpr const char* velocity_axis = "Scenario/Impact velocity";
 
 /// The measured quantities of one run. SI units; times from the start of the run.
 struct FemRun {
@@ -38,6 +58,9 @@ struct FemRun {
   /// Root attributes of the file: the scenario parameters (text) and results (numbers).
   std::map<std::string, std::string> text_attributes;
   std::map<std::string, double> numeric_attributes;
+  /// The run's point in its campaign's sweep, by axis parameter (empty outside a sweep
+  /// campaign): from the index's "point", else from the run's text attributes.
+  std::map<std::string, SweepValue> sweep_point;
 };
 
 /// Reads one run: `path` is the run's HDF5 file or its directory (holding history.h5).
@@ -59,6 +82,9 @@ struct InputProblem {
 struct Campaign {
   std::vector<FemRun> runs;          ///< ordered by impact velocity
   std::vector<InputProblem> problems;
+  /// The axes of a sweep campaign (index.json "axes"); empty for an older index, a CSV
+  /// index, a directory without index or runs given one by one.
+  std::vector<SweepAxis> axes;
 };
 
 /// Reads a list of runs (files or run directories), collecting the problems instead of
@@ -69,7 +95,10 @@ Campaign read_runs(const std::vector<std::filesystem::path>& paths);
 /// postprocess/README.md), else every subdirectory holding history.h5 or
 /// history.incomplete.h5 and every *.h5 file directly in it. A run listed in the index but
 /// absent is a problem. Throws RunInputError if the directory does not exist or holds no run
-/// at all.
+/// at all, and for an index whose sweep is inconsistent (an axis without parameter or values,
+/// a run's point without one of the axes or with a value that is not one of the axis's, a
+/// run whose parameter differs from its point, a run without point nor the parameter),
+/// naming the index or run file and the problem.
 Campaign read_campaign(const std::filesystem::path& directory);
 
 /// Writes `run` in impact-fem's format into `directory` (created if needed): history.h5 with

@@ -157,6 +157,64 @@ struct SimulatorResult {
   std::vector<ToleranceVerdict> against_fem;
 };
 
+/// One cell of a validity map: one run (a value of the other axis, a velocity) and one model.
+struct MapCell {
+  double velocity;                              ///< m/s
+  std::string source;                           ///< the FEM run
+  std::optional<ImpactQuantities> fem;          ///< measured
+  std::optional<ImpactQuantities> judged;       ///< the model's prediction judged (out of sample where the row allows)
+  FemUncertainty uncertainty;                   ///< the FEM's, of each quantity (relative)
+  std::vector<Decision> decisions;              ///< per tolerance of the report (increasing)
+  bool yields = false;
+  std::string missing;                          ///< why the model has no value here ("" if it has)
+};
+
+/// A model on one row (the runs at one value of the other axis).
+struct MapModelRow {
+  std::string parameters;  ///< the values used on this row, as text with units
+  bool out_of_sample = false;
+  std::string missing;     ///< why the model cannot be evaluated on this row ("" if it can)
+  std::vector<MapCell> cells; ///< one per run of the row, ordered by velocity
+};
+
+struct MapRow {
+  SweepValue value;                 ///< of the other axis
+  std::vector<MapModelRow> models;  ///< parallel to ValidityMap::models
+  std::string calibration_problems; ///< the row calibration's problems, in words ("" if none)
+};
+
+/// A model of the map.
+struct MapModel {
+  std::string key;    ///< "calibrated", "best-law", "thin-plate"
+  std::string label;
+  std::string basis;  ///< how it is obtained on each row
+  std::string region; ///< where it is valid, in a sentence
+};
+
+/// The validity map of a two-axis campaign (velocity x one other parameter): every row is
+/// calibrated and judged as a velocity campaign, by the verdict's rule (postprocess/README.md).
+struct ValidityMap {
+  bool available = false;
+  std::string reason;          ///< why there is no map, when not available
+  std::string parameter;       ///< the other axis ("Scenario/Plate thickness")
+  std::string unit;            ///< its unit, when known ("m")
+  bool logarithmic = false;    ///< the other axis drawn on a log scale
+  std::vector<double> velocities; ///< every velocity of the campaign, increasing
+  std::vector<MapModel> models;
+  std::vector<MapRow> rows;    ///< in the order of the axis's values
+  std::size_t reference_row = 0; ///< the row whose Hunt–Crossley b the thin-plate model takes
+};
+
+/// A cell's class by the verdict's decisions: 0 .. bands-1 within that band (the tightest one
+/// in which it is within), bands outside the loosest, bands + 1 not decided (the FEM's
+/// uncertainty as large as the margin), bands + 2 not evaluated (no prediction); and its
+/// name ("within 2 %", "outside 5 %", "not decided", "not evaluated").
+std::size_t map_class(const MapCell& cell);
+std::string map_class_name(const MapCell& cell, const std::vector<double>& tolerances);
+/// The largest FEM uncertainty (relative) of the judged quantities at the cell, NaN if none
+/// is known.
+double map_uncertainty(const MapCell& cell);
+
 struct Report {
   std::string campaign_source;
   std::string calibration_source;
@@ -181,6 +239,8 @@ struct Report {
   /// The directory of the simulators' result files (--simulators), none when not given.
   std::optional<std::string> simulators_source;
   std::vector<SimulatorResult> simulators; ///< the usable result files, Simbody, MuJoCo, LAMMPS
+  /// The validity map, for a campaign with sweep axes (none for a velocity-only campaign).
+  std::optional<ValidityMap> map;
 
   /// The model of this key, or null.
   const ReportModel* model(const std::string& key) const;
@@ -192,6 +252,8 @@ struct ReportOptions {
   /// The directory of the simulators' result files (impact-simulator-run, every *.json in it)
   /// for the section "In your simulator"; none: the section says how to make them.
   std::optional<std::filesystem::path> simulators;
+  /// How each row of a validity map is calibrated (the map of a two-axis campaign).
+  CalibrationOptions map_calibration;
 };
 
 /// Builds every number of the report. `calibration` is the calibration read from the JSON

@@ -31,6 +31,12 @@ struct ScenarioMaterials {
 /// The materials of the first run that records them all.
 ScenarioMaterials scenario_materials(const std::vector<FemRun>& runs);
 
+/// A constant of one body's material model, "<Body>/<Model>/<entry>" with <Model> the value
+/// of "<Body>/Material model" capitalised (e.g. body "Plate", entry "Density" reads
+/// "Plate/Elastic/Density" for an elastic plate), or none.
+std::optional<double> material_constant(const FemRun& run, const std::string& body,
+                                        const std::string& entry);
+
 /// A number stored as a text attribute of the run (its parameters), or none.
 std::optional<double> text_number(const FemRun& run, const std::string& key);
 

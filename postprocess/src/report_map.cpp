@@ -1,0 +1,473 @@
+// The validity map of a two-axis campaign (report.hpp, ValidityMap): each value of the other
+// axis is a row, a velocity campaign of its own that is calibrated and judged by the verdict
+// itself (build_report on the row's runs); the thin-plate model is judged on the same rows
+// by the same rule (tolerance_verdict). The region sentences and the section of the page.
+
+#include "report_parts.hpp"
+
+#include "impact_postprocess/scenario_materials.hpp"
+
+#include <impact_reduced/invalid_input.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+namespace impact::postprocess::detail {
+
+namespace {
+
+constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+constexpr const char* plate_thickness_parameter = "Scenario/Plate thickness";
+
+std::string unit_of(const std::string& parameter) {
+  for (const char* length : {"thickness", "radius", "Thickness", "Radius"})
+    if (parameter.find(length) != std::string::npos) return "m";
+  if (parameter == velocity_axis) return "m/s";
+  return "";
+}
+
+// "Plate thickness" of "Scenario/Plate thickness".
+std::string short_name(const std::string& parameter) {
+  const auto slash = parameter.rfind('/');
+  return slash == std::string::npos ? parameter : parameter.substr(slash + 1);
+}
+
+std::string with_unit(const SweepValue& value, const std::string& unit) {
+  return value.text + (unit.empty() || !value.number ? "" : " " + unit);
+}
+
+// The plate thickness of a row: the axis value when the axis is the thickness, else the
+// runs' own parameter (NaN when they do not record it).
+double row_thickness(const std::string& parameter, const SweepValue& value,
+                     const std::vector<FemRun>& runs) {
+  if (parameter == plate_thickness_parameter && value.number) return *value.number;
+  for (const auto& run : runs)
+    if (const auto thickness = text_number(run, plate_thickness_parameter)) return *thickness;
+  return nan;
+}
+
+// The tightest band in which the cell is within; else outside the loosest, not decided or
+// not evaluated. The class index: 0 .. bands-1 within that band, bands outside, bands + 1
+// not decided, bands + 2 not evaluated.
+std::size_t class_index_of(const MapCell& cell) {
+  const std::size_t bands = cell.decisions.size();
+  if (!cell.missing.empty() || cell.decisions.empty()) return bands + 2;
+  for (std::size_t k = 0; k < bands; ++k)
+    if (cell.decisions[k] == Decision::within) return k;
+  switch (cell.decisions.back()) {
+  case Decision::outside: return bands;
+  case Decision::undecided: return bands + 1;
+  default: return bands + 2;
+  }
+}
+
+// The row values where every cell of the model is within `band` (by class), as a sentence
+// part: "Plate thickness >= 0.02 m", "Plate thickness = 0.005 and 0.05 m", "no value".
+std::string rows_words(const ValidityMap& map, std::size_t model, std::size_t band,
+                       std::vector<std::string>& partial) {
+  std::vector<std::size_t> full;
+  for (std::size_t r = 0; r < map.rows.size(); ++r) {
+    const MapModelRow& row = map.rows[r].models[model];
+    if (row.cells.empty()) continue;
+    std::size_t inside = 0;
+    for (const auto& cell : row.cells) inside += class_index(cell) <= band ? 1 : 0;
+    if (inside == row.cells.size()) full.push_back(r);
+    else if (inside > 0) {
+      std::vector<double> velocities;
+      for (const auto& cell : row.cells)
+        if (class_index(cell) <= band) velocities.push_back(cell.velocity);
+      partial.push_back(with_unit(map.rows[r].value, map.unit) + " at V = " +
+                        velocity_list(velocities));
+    }
+  }
+  const std::string name = short_name(map.parameter);
+  if (full.empty()) return "";
+  const bool contiguous = full.back() - full.front() + 1 == full.size();
+  const bool ordered = std::all_of(map.rows.begin(), map.rows.end(),
+                                   [](const MapRow& row) { return bool(row.value.number); });
+  if (contiguous && ordered && full.size() < map.rows.size()) {
+    if (full.back() + 1 == map.rows.size())
+      return name + " >= " + with_unit(map.rows[full.front()].value, map.unit);
+    if (full.front() == 0) return name + " <= " + with_unit(map.rows[full.back()].value, map.unit);
+  }
+  if (full.size() == map.rows.size()) return "every " + name + " tested";
+  std::string list;
+  for (std::size_t k = 0; k < full.size(); ++k)
+    list += (k == 0 ? "" : k + 1 == full.size() ? " and " : ", ") + map.rows[full[k]].value.text;
+  return name + " = " + list + (map.unit.empty() ? "" : " " + map.unit);
+}
+
+std::string region_of(const ValidityMap& map, std::size_t model,
+                      const std::vector<double>& tolerances) {
+  const MapModel& entry = map.models[model];
+  std::string text, previous;
+  for (std::size_t band = 0; band < tolerances.size(); ++band) {
+    std::vector<std::string> partial;
+    const std::string full = rows_words(map, model, band, partial);
+    std::string where = full.empty() ? std::string("at every velocity for no tested value")
+                                     : "for " + full + " at every velocity";
+    if (!partial.empty()) {
+      where += " (in part at ";
+      for (std::size_t k = 0; k < partial.size(); ++k) where += (k ? "; " : "") + partial[k];
+      where += ")";
+    }
+    if (where == previous) {
+      text += " (and so within " + band_name(tolerances[band]) + ")";
+      continue;
+    }
+    text += (text.empty() ? entry.label + " is " : "; ") + std::string("within ") +
+            band_name(tolerances[band]) + " " + where;
+    previous = where;
+  }
+  std::vector<std::string> missing, undecided;
+  for (const auto& row : map.rows) {
+    const MapModelRow& at = row.models[model];
+    if (!at.missing.empty()) missing.push_back(with_unit(row.value, map.unit));
+    for (const auto& cell : at.cells)
+      if (at.missing.empty() && class_index(cell) == tolerances.size() + 1) {
+        undecided.push_back(with_unit(row.value, map.unit));
+        break;
+      }
+  }
+  text += ".";
+  if (!undecided.empty()) {
+    text += " Not decided (FEM uncertainty as large as the margin) at some velocities of " +
+            short_name(map.parameter) + " = ";
+    for (std::size_t k = 0; k < undecided.size(); ++k) text += (k ? ", " : "") + undecided[k];
+    text += ".";
+  }
+  if (!missing.empty()) {
+    text += " Not evaluated at " + short_name(map.parameter) + " = ";
+    for (std::size_t k = 0; k < missing.size(); ++k) text += (k ? ", " : "") + missing[k];
+    text += " (see the table).";
+  }
+  return text;
+}
+
+// A row's model cells from the row's own report: the judged predictions and the verdict's
+// decisions.
+MapModelRow row_model(const Report& row, const std::string& key) {
+  MapModelRow result;
+  const ReportModel* model = row.model(key);
+  const ModelVerdict* verdict = row.verdict(key);
+  if (!model || !verdict) {
+    result.missing = key == "best-law" ? "the row's calibration has no comparison law"
+                                       : "the row's calibration has no such model";
+  } else if (key == "calibrated" && !row.verdict_available) {
+    result.missing = row.cause;
+  }
+  if (model) {
+    result.parameters = model->parameters;
+    result.out_of_sample = model->out_of_sample;
+  }
+  for (std::size_t i = 0; i < row.runs.size(); ++i) {
+    const ReportRun& run = row.runs[i];
+    MapCell cell{run.velocity, run.source, run.fem, std::nullopt, run.uncertainty, {}, run.yields, ""};
+    if (model && verdict && result.missing.empty()) {
+      cell.judged = model->runs[i].judged();
+      cell.missing = model->runs[i].missing;
+      if (!cell.judged && cell.missing.empty()) cell.missing = "no prediction";
+      for (const auto& band : verdict->tolerances) cell.decisions.push_back(band.decisions[i]);
+    } else {
+      cell.missing = result.missing;
+    }
+    result.cells.push_back(std::move(cell));
+  }
+  if (model && result.missing.empty() &&
+      std::all_of(result.cells.begin(), result.cells.end(),
+                  [](const MapCell& cell) { return !cell.missing.empty(); }))
+    result.missing = result.cells.front().missing;
+  return result;
+}
+
+// The Hunt–Crossley b of a row's calibration for velocity V, out of sample: the fit without
+// V where there is one, else the full fit (then in sample only if the row has V).
+std::optional<double> damping_for(const Calibration& calibration, double velocity,
+                                  bool& out_of_sample) {
+  const CampaignCalibration& campaign = calibration.campaign;
+  if (!campaign.fitted || !campaign.hunt_crossley || !campaign.hunt_crossley->fit.converged)
+    return std::nullopt;
+  for (const auto& held : campaign.hunt_crossley->held_out)
+    if (same_velocity(held.velocity, velocity) && held.converged && held.parameters.size() > 2) {
+      out_of_sample = true;
+      return held.parameters[2];
+    }
+  out_of_sample = std::none_of(campaign.velocities.begin(), campaign.velocities.end(),
+                               [&](double v) { return same_velocity(v, velocity); });
+  return campaign.hunt_crossley->fit.parameter.value;
+}
+
+} // namespace
+
+std::size_t class_index(const MapCell& cell) { return class_index_of(cell); }
+
+void add_validity_map(Report& report, const Campaign& campaign, const ReportOptions& options) {
+  if (campaign.axes.size() <= 1) return; // a velocity campaign: the report as before
+  ValidityMap map;
+  std::vector<const SweepAxis*> others;
+  bool has_velocity = false;
+  for (const auto& axis : campaign.axes) {
+    if (axis.parameter == velocity_axis) has_velocity = true;
+    else others.push_back(&axis);
+  }
+  if (campaign.axes.size() != 2 || !has_velocity) {
+    std::string names;
+    for (const auto& axis : campaign.axes) names += (names.empty() ? "" : ", ") + axis.parameter;
+    map.reason = "the campaign has " + std::to_string(campaign.axes.size()) + " axes (" + names +
+                 "); a validity map needs exactly two: " + velocity_axis +
+                 " and one other parameter. No map is shown; the sections below treat all runs "
+                 "as one velocity campaign.";
+    report.map = std::move(map);
+    return;
+  }
+  const SweepAxis& axis = *others.front();
+  map.available = true;
+  map.parameter = axis.parameter;
+  map.unit = unit_of(axis.parameter);
+  std::vector<SweepValue> values = axis.values;
+  const bool numeric = std::all_of(values.begin(), values.end(),
+                                   [](const SweepValue& value) { return bool(value.number); });
+  if (numeric) {
+    std::stable_sort(values.begin(), values.end(), [](const SweepValue& a, const SweepValue& b) {
+      return *a.number < *b.number;
+    });
+    map.logarithmic = values.front().number > 0.0 && *values.back().number > 10 * *values.front().number;
+  }
+  for (const auto& run : campaign.runs)
+    if (std::none_of(map.velocities.begin(), map.velocities.end(),
+                     [&](double v) { return same_velocity(v, run.impact_velocity); }))
+      map.velocities.push_back(run.impact_velocity);
+  std::sort(map.velocities.begin(), map.velocities.end());
+  map.models = {
+      {"calibrated", "calibrated Hunt–Crossley",
+       "the row's campaign fit of c, n, b to the force histories, each velocity judged by the "
+       "fit without it",
+       ""},
+      {"best-law", "the row's best law",
+       "the comparison law ranked first on the row by out-of-sample error, judged out of sample",
+       ""},
+      {"thin-plate", "thin-plate model",
+       "Zener: Hertz contact (c from the run's materials, n = 3/2) on an infinite Kirchhoff plate "
+       "of the run's thickness and material (Z = 8 sqrt(D rho h)), Hunt–Crossley damping b of "
+       "the calibrated Hunt–Crossley of the most massive plate's row, for each velocity the fit "
+       "without it",
+       ""}};
+
+  // Every row: a velocity campaign, calibrated and judged by the verdict.
+  std::vector<std::vector<FemRun>> row_runs;
+  std::vector<std::optional<Calibration>> calibrations;
+  std::vector<Report> row_reports;
+  for (const auto& value : values) {
+    std::vector<FemRun> runs;
+    for (const auto& run : campaign.runs) {
+      const auto at = run.sweep_point.find(axis.parameter);
+      if (at != run.sweep_point.end() && at->second.matches(value)) runs.push_back(run);
+    }
+    MapRow row{value, {}, ""};
+    std::optional<Calibration> calibration;
+    Report row_report;
+    if (!runs.empty()) {
+      CalibrationOptions calibration_options = options.map_calibration;
+      const std::string name = short_name(axis.parameter) + " = " + value.text;
+      if (calibration_options.progress) {
+        const auto progress = calibration_options.progress;
+        calibration_options.progress = [progress, name](const std::string& line) {
+          progress("map row " + name + ": " + line);
+        };
+      }
+      try {
+        calibration = calibrate(runs, calibration_options);
+      } catch (const std::exception& error) {
+        row.calibration_problems = std::string("the row could not be calibrated: ") + error.what();
+      }
+      Campaign row_campaign;
+      row_campaign.runs = runs;
+      ReportOptions row_options;
+      row_options.tolerances = report.tolerances;
+      row_report = build_report(row_campaign, calibration, {}, report.campaign_source + " (" + name + ")",
+                                "row calibration", row_options);
+      if (calibration)
+        for (const auto& problem : calibration->problems)
+          row.calibration_problems +=
+              (row.calibration_problems.empty() ? "" : "; ") + problem.message;
+    }
+    for (const std::string key : {"calibrated", "best-law"}) {
+      MapModelRow model = row_model(row_report, key);
+      if (runs.empty()) model.missing = "no run at this value";
+      row.models.push_back(std::move(model));
+    }
+    map.rows.push_back(std::move(row));
+    row_runs.push_back(std::move(runs));
+    calibrations.push_back(std::move(calibration));
+    row_reports.push_back(std::move(row_report));
+  }
+
+  // The thin-plate model: b from the row of the most massive (thickest) plate; a row with
+  // the same thickness takes its own.
+  double thickest = -INFINITY;
+  for (std::size_t r = 0; r < map.rows.size(); ++r) {
+    const double h = row_thickness(axis.parameter, map.rows[r].value, row_runs[r]);
+    if (std::isfinite(h) && h > thickest && calibrations[r]) {
+      thickest = h;
+      map.reference_row = r;
+    }
+  }
+  for (std::size_t r = 0; r < map.rows.size(); ++r) {
+    MapModelRow model;
+    const Report& row_report = row_reports[r];
+    const double h = row_thickness(axis.parameter, map.rows[r].value, row_runs[r]);
+    const std::size_t source =
+        std::isfinite(h) && h == thickest && calibrations[r] ? r : map.reference_row;
+    const auto& reference = calibrations[source];
+    if (row_runs[r].empty()) model.missing = "no run at this value";
+    else if (!std::isfinite(thickest))
+      model.missing = "the runs do not record 'Scenario/Plate thickness', so the plate is not known";
+    else if (!reference || !damping_for(*reference, row_runs[r].front().impact_velocity,
+                                        model.out_of_sample))
+      model.missing = "the calibrated Hunt–Crossley of the row " +
+                      with_unit(map.rows[source].value, map.unit) +
+                      " (the most massive plate), whose b the model takes, is not available";
+    std::vector<std::optional<ImpactQuantities>> judged;
+    bool all_out_of_sample = true;
+    std::ostringstream parameters;
+    for (std::size_t i = 0; i < row_runs[r].size(); ++i) {
+      const ReportRun& run = row_report.runs[i];
+      MapCell cell{run.velocity, run.source, run.fem, std::nullopt, run.uncertainty, {}, run.yields, ""};
+      if (model.missing.empty()) {
+        bool out = false;
+        const double b = *damping_for(*reference, run.velocity, out);
+        all_out_of_sample = all_out_of_sample && out;
+        const ThinPlatePrediction prediction = thin_plate_prediction(row_runs[r][i], b);
+        cell.judged = prediction.quantities;
+        cell.missing = prediction.missing;
+        if (i == 0) parameters << prediction.parameters;
+        parameters << (i == 0 ? "; b = " : ", ") << short_number(b) << " s/m at "
+                   << short_number(run.velocity) << " m/s";
+      } else {
+        cell.missing = model.missing;
+      }
+      judged.push_back(cell.judged);
+      model.cells.push_back(std::move(cell));
+    }
+    if (model.missing.empty()) {
+      model.out_of_sample = all_out_of_sample;
+      model.parameters = parameters.str() + " (from the row " +
+                         with_unit(map.rows[source].value, map.unit) + ")";
+      for (double tolerance : report.tolerances) {
+        const ToleranceVerdict verdict = tolerance_verdict(
+            row_report, judged, tolerance, {verdict_quantities.begin(), verdict_quantities.end()}, "");
+        for (std::size_t i = 0; i < model.cells.size(); ++i)
+          model.cells[i].decisions.push_back(verdict.decisions[i]);
+      }
+    }
+    map.rows[r].models.push_back(std::move(model));
+  }
+  for (std::size_t m = 0; m < map.models.size(); ++m)
+    map.models[m].region = region_of(map, m, report.tolerances);
+  report.map = std::move(map);
+}
+
+std::optional<std::pair<Quantity, double>> map_worst_error(const MapCell& cell) {
+  if (!cell.judged || !cell.fem) return std::nullopt;
+  std::optional<std::pair<Quantity, double>> worst;
+  for (Quantity quantity : verdict_quantities) {
+    const double error = relative_error(*cell.judged, *cell.fem, quantity);
+    if (std::isfinite(error) && (!worst || std::abs(error) > std::abs(worst->second)))
+      worst = std::pair<Quantity, double>{quantity, error};
+  }
+  return worst;
+}
+
+std::string map_figure_file(const MapModel& model) { return "map_" + model.key + ".png"; }
+
+void map_section(Document& doc, const Report& report,
+                 const std::function<void(const std::string&)>& figure) {
+  if (!report.map) return;
+  const ValidityMap& map = *report.map;
+  doc.heading("Validity map");
+  if (!map.available) {
+    doc.warning("No validity map: " + map.reason);
+    return;
+  }
+  const std::string name = short_name(map.parameter);
+  doc.paragraph(
+      "The campaign has two axes, the impact velocity and " + map.parameter +
+      ". Each value of " + name + " is a row: the velocity campaign at that value, calibrated "
+      "on its own (every law, as impact-calibrate does) and judged as the verdict judges a "
+      "velocity campaign: a cell (one run: a value of " + name + ", a velocity) is within a band "
+      "when every |error| + U of 1 - e^2, t_c, F_max and x_max is within it, outside when one "
+      "|error| - U exceeds it, not decided in between (U: the FEM's numerical uncertainty of "
+      "the run, its GCI from verification.json where it was verified). Errors are out of "
+      "sample: each velocity predicted by the row's fit without it. The sections after this "
+      "one treat all runs as one velocity campaign (one calibration for every " + name + ").");
+  std::vector<std::string> items;
+  for (const auto& model : map.models) items.push_back(model.label + ": " + model.basis + ".");
+  doc.list(items);
+  doc.paragraph("Where each model is valid:");
+  std::vector<std::string> regions;
+  for (const auto& model : map.models) regions.push_back(model.region);
+  doc.list(regions);
+  for (std::size_t m = 0; m < map.models.size(); ++m) {
+    const MapModel& model = map.models[m];
+    doc.heading("Map: " + model.label, 3);
+    figure(map_figure_file(model));
+    Table table;
+    table.header = {name + (map.unit.empty() ? "" : " [" + map.unit + "]"), "V [m/s]",
+                    "FEM U (largest)", "error 1 - e^2", "error t_c", "error F_max",
+                    "error x_max", "class"};
+    std::vector<std::string> notes;
+    for (const auto& row : map.rows) {
+      const MapModelRow& at = row.models[m];
+      std::string parameters = at.parameters.empty() ? "" : at.parameters;
+      if (!at.missing.empty())
+        notes.push_back(with_unit(row.value, map.unit) + ": not evaluated: " + at.missing);
+      else if (!parameters.empty())
+        notes.push_back(with_unit(row.value, map.unit) + ": " + parameters +
+                        (at.out_of_sample ? " (out of sample)" : " (in sample)"));
+      if (at.cells.empty())
+        table.rows.push_back({row.value.text, "-", "-", "-", "-", "-", "-", "not evaluated"});
+      for (const auto& cell : at.cells) {
+        const auto error = [&](Quantity quantity) {
+          return cell.judged && cell.fem ? percent_cell(relative_error(*cell.judged, *cell.fem, quantity))
+                                         : std::string("n/a");
+        };
+        table.rows.push_back({row.value.text,
+                              short_number(cell.velocity) + (cell.yields ? " (yields)" : ""),
+                              unsigned_percent(map_uncertainty(cell)),
+                              error(Quantity::energy_loss), error(Quantity::contact_time),
+                              error(Quantity::force_max), error(Quantity::approach_max),
+                              map_class_name(cell, report.tolerances)});
+      }
+    }
+    doc.table(table);
+    doc.list(notes);
+  }
+}
+
+} // namespace impact::postprocess::detail
+
+namespace impact::postprocess {
+
+std::string map_class_name(const MapCell& cell, const std::vector<double>& tolerances) {
+  const std::size_t index = detail::class_index(cell);
+  if (index < tolerances.size()) return "within " + detail::band_name(tolerances[index]);
+  if (index == tolerances.size()) return "outside " + detail::band_name(tolerances.back());
+  if (index == tolerances.size() + 1) return "not decided";
+  return "not evaluated";
+}
+
+std::size_t map_class(const MapCell& cell) { return detail::class_index(cell); }
+
+double map_uncertainty(const MapCell& cell) {
+  double largest = std::numeric_limits<double>::quiet_NaN();
+  for (Quantity quantity : verdict_quantities) {
+    const double u = cell.uncertainty[std::size_t(quantity)].relative;
+    if (std::isfinite(u)) largest = std::isfinite(largest) ? std::max(largest, u) : u;
+  }
+  return largest;
+}
+
+
+} // namespace impact::postprocess
