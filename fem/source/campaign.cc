@@ -1,6 +1,7 @@
 #include <impact_fem/campaign.h>
 #include <impact_fem/campaign/checksums.h>
 #include <impact_fem/impact_problem.h>
+#include <impact_fem/parameters.h>
 #include <impact_fem/verification/verification.h>
 
 #include <deal.II/base/exceptions.h>
@@ -240,6 +241,20 @@ namespace impact_fem
     for (auto &point : points)
       {
         apply(point);
+        // Every point is checked as a run would check it (ranges beyond
+        // the entries' patterns) before anything is written.
+        try
+          {
+            const Parameters checked(prm);
+          }
+        catch (const ExceptionBase &error)
+          {
+            std::ostringstream message;
+            error.print_info(message);
+            AssertThrow(false,
+                        ExcMessage("Campaign point " + label(point) + ": " +
+                                   Utilities::trim(message.str())));
+          }
         std::ostringstream text;
         prm.print_parameters(text, ParameterHandler::ShortPRM);
         point.parameters = text.str();

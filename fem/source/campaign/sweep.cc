@@ -86,9 +86,12 @@ namespace impact_fem
               const std::string              &option)
   {
     const std::string form =
-      " (allowed form: " + option +
-      " \"Section/Entry=v1,v2,...\" with an entry of impact-fem "
-      "--print-parameters and at least one value that fits it)";
+      std::string(" (allowed form: ") +
+      (option.rfind("--", 0) == 0 ?
+         option + " \"Section/Entry=v1,v2,...\"" :
+         option + " = Section/Entry=v1,v2,...; Section/Entry=...") +
+      " with entries of impact-fem --print-parameters and distinct values "
+      "that fit them)";
     std::vector<SweepAxis> axes;
     for (const auto &item : items)
       {
