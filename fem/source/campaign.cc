@@ -49,12 +49,13 @@ namespace impact_fem
     }
 
 
-    // The parameters.prm text without its Output/Directory line: where a
-    // campaign lies is not a parameter of its runs (a moved or copied
-    // campaign keeps them). Also applies to the files written before the
-    // directory was left out of the comparison.
+    // The parameters.prm text as compared at restart: without its
+    // Output/Directory line (where a campaign lies is not a parameter of
+    // its runs: a moved or copied campaign keeps them) and without the
+    // subsection Campaign (the campaign's own entries, normalised anyway;
+    // files written before Campaign/Sweep existed lack its line).
     std::string
-    without_output_directory(const std::string &text)
+    comparable_parameters(const std::string &text)
     {
       static const std::regex  directory_line(R"(^\s*set\s+Directory\s*=.*$)");
       std::istringstream       in(text);
@@ -64,12 +65,15 @@ namespace impact_fem
       while (std::getline(in, line))
         {
           const std::string trimmed = Utilities::trim(line);
+          const bool in_campaign = !sections.empty() && sections[0] == "Campaign";
           if (trimmed.rfind("subsection ", 0) == 0)
             sections.push_back(Utilities::trim(trimmed.substr(11)));
           else if (trimmed == "end" && !sections.empty())
             sections.pop_back();
           else if (sections.size() == 1 && sections[0] == "Output" &&
                    std::regex_match(line, directory_line))
+            continue;
+          if (in_campaign || (!sections.empty() && sections[0] == "Campaign"))
             continue;
           out << line << '\n';
         }
@@ -305,8 +309,8 @@ namespace impact_fem
     const std::string run_directory = directory + "/" + point.path;
     if (!std::filesystem::exists(run_directory + "/parameters.prm"))
       return "running";
-    if (without_output_directory(read_file(run_directory + "/parameters.prm")) !=
-        without_output_directory(point.parameters))
+    if (comparable_parameters(read_file(run_directory + "/parameters.prm")) !=
+        comparable_parameters(point.parameters))
       return "parameters changed, running";
     if (!std::filesystem::exists(run_directory + "/" + checksums::manifest_name))
       return std::filesystem::exists(run_directory + "/summary.json") ?
@@ -344,8 +348,8 @@ namespace impact_fem
     return std::filesystem::exists(run_directory + "/" + checksums::manifest_name) &&
            std::filesystem::exists(run_directory + "/summary.json") &&
            std::filesystem::exists(run_directory + "/history.h5") &&
-           without_output_directory(read_file(run_directory + "/parameters.prm")) ==
-             without_output_directory(point.parameters);
+           comparable_parameters(read_file(run_directory + "/parameters.prm")) ==
+             comparable_parameters(point.parameters);
   }
 
 

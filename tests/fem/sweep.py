@@ -17,8 +17,9 @@ Checks:
 - history.h5 truncated to a third: exactly that run "damaged, redone", its
   file whole again, the index unchanged;
 - summary.json edited in one run, removed in another: both redone;
-- checksums.sha256 removed (a run of a campaign written before checksums):
-  redone;
+- a run as written before issue 11 (no checksums.sha256, no Campaign/Sweep
+  line, Output/Directory of another place): its parameters recognised, and
+  redone once (no checksums);
 - the campaign moved (mv) and copied (cp -r): every run skipped in the new
   place, nothing recomputed.
 """
@@ -191,14 +192,22 @@ checks.check(summary(f"{a}/{edited}")["restitution"] == restitution[(0.35, 0.5)]
              os.path.exists(f"{a}/{removed}/summary.json"), "their summaries written anew")
 checks.check(load_index(a) == index, "index fine")
 
-# --- restart: no checksums (as a run written before they were kept) ---
-os.remove(f"{a}/{PATHS[0]}/checksums.sha256")
+# --- restart: a run as written before issue 11: no checksums, no
+# Campaign/Sweep line, Output/Directory of another place ---
+old_style = f"{a}/{PATHS[0]}"
+os.remove(f"{old_style}/checksums.sha256")
+with open(f"{old_style}/parameters.prm") as f:
+    text = f.read()
+text = re.sub(r"\n *set Sweep *=.*", "", text)
+text = re.sub(r"set Directory( *)= .*", r"set Directory\1= /elsewhere/old-campaign/v0.5", text)
+with open(f"{old_style}/parameters.prm", "w") as f:
+    f.write(text)
 code, output = campaign(a)
-print("--- restart, checksums.sha256 removed ---\n" + output)
-checks.check(code == 0 and status_of(output, PATHS[0]).endswith(", redone") and
+print("--- restart, a run in the form written before issue 11 ---\n" + output)
+checks.check(code == 0 and status_of(output, PATHS[0]) == "no checksums (run before they were kept), redone" and
              os.path.exists(f"{a}/{PATHS[0]}/checksums.sha256") and
              all(status_of(output, p) == "complete, skipped" for p in PATHS[1:]),
-             "a run without checksums is redone, the others skipped")
+             "a run written before checksums: parameters recognised, redone once; the others skipped")
 
 # --- moved and copied ---
 moved, copy = a + "_moved", a + "_copy"
