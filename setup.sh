@@ -11,6 +11,7 @@ packages=(
   libdeal.ii-dev openmpi-bin libopenmpi-dev # finite-element model, MPI
   libhdf5-openmpi-dev gmsh                  # result files, mesh generation
   nlohmann-json3-dev                        # JSON output of tools
+  libssl-dev                                # SHA-256 checksums of campaign runs (libcrypto)
   numdiff                                   # tolerant comparison of outputs in tests
   python3 python3-matplotlib python3-h5py   # figures of the report, HDF5 checks in fem tests
   chromium fonts-dejavu-core                # the report's rendering test (headless screenshot)

@@ -1,5 +1,7 @@
 #include <impact_fem/campaign.h>
+#include <impact_fem/campaign/checksums.h>
 #include <impact_fem/impact_problem.h>
+#include <impact_fem/parameters.h>
 #include <impact_fem/verification/verification.h>
 
 #include <deal.II/base/exceptions.h>
@@ -7,13 +9,16 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <chrono>
-#include <cstdio>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <memory>
+#include <regex>
+#include <set>
 #include <sstream>
 #include <unistd.h>
 
@@ -42,6 +47,85 @@ namespace impact_fem
       }
       std::filesystem::rename(temporary, name);
     }
+
+
+    // The parameters.prm text as compared at restart: without its
+    // Output/Directory line (where a campaign lies is not a parameter of
+    // its runs: a moved or copied campaign keeps them) and without the
+    // subsection Campaign (the campaign's own entries, normalised anyway;
+    // files written before Campaign/Sweep existed lack its line).
+    std::string
+    comparable_parameters(const std::string &text)
+    {
+      static const std::regex  directory_line(R"(^\s*set\s+Directory\s*=.*$)");
+      std::istringstream       in(text);
+      std::ostringstream       out;
+      std::vector<std::string> sections;
+      std::string              line;
+      while (std::getline(in, line))
+        {
+          const std::string trimmed = Utilities::trim(line);
+          const bool in_campaign = !sections.empty() && sections[0] == "Campaign";
+          if (trimmed.rfind("subsection ", 0) == 0)
+            sections.push_back(Utilities::trim(trimmed.substr(11)));
+          else if (trimmed == "end" && !sections.empty())
+            sections.pop_back();
+          else if (sections.size() == 1 && sections[0] == "Output" &&
+                   std::regex_match(line, directory_line))
+            continue;
+          if (in_campaign || (!sections.empty() && sections[0] == "Campaign"))
+            continue;
+          out << line << '\n';
+        }
+      return out.str();
+    }
+
+
+    std::vector<double>
+    parse_velocities(const std::string &list, const std::string &option)
+    {
+      std::vector<double> result;
+      for (const auto &entry : Utilities::split_string_list(list))
+        {
+          std::size_t end = 0;
+          double      v   = 0;
+          try
+            {
+              v = std::stod(entry, &end);
+            }
+          catch (...)
+            {
+              end = 0;
+            }
+          AssertThrow(end == entry.size() && v > 0 && v <= 100,
+                      ExcMessage(option + ": <" + entry +
+                                 "> is not a velocity in (0, 100] m/s."));
+          for (const double w : result)
+            AssertThrow(velocity_name_component(w) != velocity_name_component(v),
+                        ExcMessage(option + ": " + entry +
+                                   " m/s is given twice (to 6 digits)."));
+          result.push_back(v);
+        }
+      return result;
+    }
+
+
+    // Campaign/Sweep: one axis per ';'-separated item.
+    std::vector<std::string>
+    sweep_items_of_file(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Campaign");
+      const std::string text = prm.get("Sweep");
+      prm.leave_subsection();
+      std::vector<std::string> items;
+      for (const auto &item : Utilities::split_string_list(text, ';'))
+        if (!item.empty())
+          items.push_back(item);
+      return items;
+    }
+
+
+    const char *const velocity_parameter = "Scenario/Impact velocity";
   } // namespace
 
 
@@ -54,149 +138,254 @@ namespace impact_fem
                       Patterns::List(Patterns::Double(0)),
                       "Velocities of a campaign [m/s], comma separated "
                       "(or the command-line option --velocities): one run "
-                      "per velocity into Output/Directory/v<V>, with an "
-                      "index.json; Scenario/Impact velocity is then "
-                      "ignored. Empty: a single run.");
+                      "per velocity (and point of the Sweep) into "
+                      "Output/Directory, with an index.json; Scenario/Impact "
+                      "velocity is then ignored. Empty: a single run, or with "
+                      "a Sweep the one velocity Scenario/Impact velocity.");
+    prm.declare_entry("Sweep",
+                      "",
+                      Patterns::Anything(),
+                      "Further axes of a campaign, one per ';'-separated item "
+                      "\"Section/Entry=v1,v2,...\" (or the command-line "
+                      "option --sweep, one axis each, which replaces this "
+                      "entry): one run per point of the cartesian product of "
+                      "the axes and the Impact velocities, in "
+                      "Output/Directory/<entry>-<value>_..._v<V> "
+                      "(fem/README.md, Campaigns). Empty: velocities only.");
     prm.declare_entry("Ranks per run",
                       "1",
                       Patterns::Integer(0),
                       "MPI ranks per run of a campaign: the ranks are split "
-                      "into groups of this size that run velocities "
+                      "into groups of this size that run points "
                       "concurrently; 0: every run on all ranks. 1 is the "
                       "faster on 2 cores (fem/README.md).");
     prm.leave_subsection();
   }
 
 
-  std::vector<double>
-  Campaign::velocities(ParameterHandler &prm, const std::string &command_line)
+  bool
+  Campaign::requested(ParameterHandler               &prm,
+                      const std::string              &velocity_list,
+                      const std::vector<std::string> &sweep_items)
   {
     prm.enter_subsection("Campaign");
-    const std::string list =
-      command_line.empty() ? prm.get("Impact velocities") : command_line;
+    const bool file_velocities = !Utilities::trim(prm.get("Impact velocities")).empty();
     prm.leave_subsection();
-    std::vector<double> result;
-    for (const auto &entry : Utilities::split_string_list(list))
+    return !velocity_list.empty() || !sweep_items.empty() || file_velocities ||
+           !sweep_items_of_file(prm).empty();
+  }
+
+
+  Campaign::Campaign(ParameterHandler               &prm,
+                     const std::string              &velocity_list,
+                     const std::vector<std::string> &sweep_items)
+    : prm(prm)
+  {
+    prm.enter_subsection("Campaign");
+    const std::string file_velocities = prm.get("Impact velocities");
+    ranks_per_run                     = prm.get_integer("Ranks per run");
+    prm.leave_subsection();
+    velocities = velocity_list.empty() ?
+                   parse_velocities(file_velocities, "Campaign/Impact velocities") :
+                   parse_velocities(velocity_list, "--velocities");
+    axes = sweep_items.empty() ?
+             parse_sweep(prm, sweep_items_of_file(prm), "Campaign/Sweep") :
+             parse_sweep(prm, sweep_items, "--sweep");
+    const ParameterPath velocity_entry = *find_parameter(prm, velocity_parameter);
+    const ParameterPath directory_entry = *find_parameter(prm, "Output/Directory");
+    if (velocities.empty())
+      velocities.push_back(std::stod(velocity_entry.get(prm)));
+    directory = directory_entry.get(prm);
+    verify    = verification::enabled(prm);
+
+    // The points, the velocity the fastest-varying axis.
+    std::vector<std::string> original;
+    for (const auto &axis : axes)
+      original.push_back(axis.parameter.get(prm));
+    const std::string original_velocity = velocity_entry.get(prm);
+    std::vector<unsigned int> indices(axes.size(), 0);
+    std::set<std::string>     paths;
+    while (true)
       {
-        std::size_t end = 0;
-        double      v   = 0;
+        for (const double v : velocities)
+          {
+            Point point{indices, v, "", ""};
+            for (unsigned int a = 0; a < axes.size(); ++a)
+              point.path += axes[a].name_component(indices[a]) + "_";
+            point.path += velocity_name_component(v);
+            AssertThrow(paths.insert(point.path).second,
+                        ExcMessage("Campaign: two points share the run "
+                                   "directory " + point.path + "."));
+            points.push_back(point);
+          }
+        unsigned int a = axes.size();
+        while (a > 0 && ++indices[a - 1] == axes[a - 1].values.size())
+          indices[--a] = 0;
+        if (a == 0)
+          break;
+      }
+
+    // The parameters each run is to have, as text: the campaign's own
+    // entries and Verify left out (a campaign extended by a velocity or
+    // verified later keeps its complete runs).
+    const std::pair<const char *, const char *> normalised[] = {
+      {"Campaign", "Impact velocities"},
+      {"Campaign", "Sweep"},
+      {"Campaign", "Ranks per run"},
+      {"Verification", "Verify"}};
+    const char *const normal_value[] = {"", "", "1", "false"};
+    std::vector<std::string> campaign_entries;
+    for (unsigned int i = 0; i < 4; ++i)
+      {
+        prm.enter_subsection(normalised[i].first);
+        campaign_entries.push_back(prm.get(normalised[i].second));
+        prm.set(normalised[i].second, normal_value[i]);
+        prm.leave_subsection();
+      }
+    for (auto &point : points)
+      {
+        apply(point);
+        // Every point is checked as a run would check it (ranges beyond
+        // the entries' patterns) before anything is written.
         try
           {
-            v = std::stod(entry, &end);
+            const Parameters checked(prm);
           }
-        catch (...)
+        catch (const ExceptionBase &error)
           {
-            end = 0;
+            std::ostringstream message;
+            error.print_info(message);
+            AssertThrow(false,
+                        ExcMessage("Campaign point " + label(point) + ": " +
+                                   Utilities::trim(message.str())));
           }
-        AssertThrow(end == entry.size() && v > 0 && v <= 100,
-                    ExcMessage("Campaign velocities: <" + entry +
-                               "> is not a velocity in (0, 100] m/s."));
-        for (const double w : result)
-          AssertThrow(std::abs(w - v) > 1e-12 * v,
-                      ExcMessage("Campaign velocities: " + entry +
-                                 " m/s is given twice."));
-        result.push_back(v);
+        std::ostringstream text;
+        prm.print_parameters(text, ParameterHandler::ShortPRM);
+        point.parameters = text.str();
       }
-    return result;
+    for (unsigned int i = 0; i < 4; ++i)
+      {
+        prm.enter_subsection(normalised[i].first);
+        prm.set(normalised[i].second, campaign_entries[i]);
+        prm.leave_subsection();
+      }
+    for (unsigned int a = 0; a < axes.size(); ++a)
+      axes[a].parameter.set(prm, original[a]);
+    velocity_entry.set(prm, original_velocity);
+    directory_entry.set(prm, directory);
   }
 
 
-  Campaign::Campaign(ParameterHandler &prm, const std::vector<double> &velocities)
-    : prm(prm)
-    , impact_velocities(velocities)
+  void
+  Campaign::apply(const Point &point)
   {
-    prm.enter_subsection("Output");
-    directory = prm.get("Directory");
-    prm.leave_subsection();
-    prm.enter_subsection("Campaign");
-    ranks_per_run = prm.get_integer("Ranks per run");
-    prm.leave_subsection();
-    verify = verification::enabled(prm);
-  }
-
-
-  std::string
-  Campaign::run_path(const double velocity) const
-  {
-    std::ostringstream name;
-    name << 'v' << std::setprecision(6) << velocity;
-    return name.str();
-  }
-
-
-  // The parameters of one run as text, the campaign entries left out (a
-  // campaign extended by a velocity keeps its complete runs).
-  std::string
-  Campaign::expected_parameters(const double velocity)
-  {
+    for (unsigned int a = 0; a < axes.size(); ++a)
+      axes[a].parameter.set(prm, axes[a].values[point.value_indices[a]]);
     prm.enter_subsection("Scenario");
-    prm.set("Impact velocity", velocity);
+    prm.set("Impact velocity", point.velocity);
     prm.leave_subsection();
     prm.enter_subsection("Output");
-    prm.set("Directory", directory + "/" + run_path(velocity));
+    prm.set("Directory", directory + "/" + point.path);
     prm.leave_subsection();
-    prm.enter_subsection("Campaign");
-    const std::string list  = prm.get("Impact velocities");
-    const std::string ranks = prm.get("Ranks per run");
-    prm.set("Impact velocities", "");
-    prm.set("Ranks per run", "1");
-    prm.leave_subsection();
-    // Whether a run is verified does not change the run itself.
-    prm.enter_subsection("Verification");
-    const std::string verify_entry = prm.get("Verify");
-    prm.set("Verify", "false");
-    prm.leave_subsection();
+  }
+
+
+  std::string
+  Campaign::label(const Point &point) const
+  {
     std::ostringstream text;
-    prm.print_parameters(text, ParameterHandler::ShortPRM);
-    prm.enter_subsection("Verification");
-    prm.set("Verify", verify_entry);
-    prm.leave_subsection();
-    prm.enter_subsection("Campaign");
-    prm.set("Impact velocities", list);
-    prm.set("Ranks per run", ranks);
-    prm.leave_subsection();
+    for (unsigned int a = 0; a < axes.size(); ++a)
+      text << axes[a].parameter.entry << " = "
+           << axes[a].values[point.value_indices[a]] << ", ";
+    text << "V = " << point.velocity << " m/s  (" << point.path << ")";
     return text.str();
   }
 
 
-  bool
-  Campaign::is_complete(const double velocity, const std::string &parameters) const
+  std::string
+  Campaign::restart_status(const Point &point, bool &verified) const
   {
-    const std::string run_directory = directory + "/" + run_path(velocity);
-    if (read_file(run_directory + "/parameters.prm") != parameters ||
-        !std::filesystem::exists(run_directory + "/history.h5"))
-      return false;
-    try
-      {
-        const auto summary =
-          nlohmann::json::parse(read_file(run_directory + "/summary.json"));
-        return summary.value("complete", false);
-      }
-    catch (...)
-      {
-        return false;
-      }
+    verified                        = false;
+    const std::string run_directory = directory + "/" + point.path;
+    if (!std::filesystem::exists(run_directory + "/parameters.prm"))
+      return "running";
+    if (comparable_parameters(read_file(run_directory + "/parameters.prm")) !=
+        comparable_parameters(point.parameters))
+      return "parameters changed, running";
+    if (!std::filesystem::exists(run_directory + "/" + checksums::manifest_name))
+      return std::filesystem::exists(run_directory + "/summary.json") ?
+               "no checksums (run before they were kept), redone" :
+               "incomplete, running";
+    std::vector<std::string> listed;
+    std::string problem = checksums::check_manifest(run_directory, listed);
+    for (const char *name : {"history.h5", "summary.json"})
+      if (problem.empty() && std::count(listed.begin(), listed.end(), name) == 0)
+        problem = std::string(name) + ": not in " + checksums::manifest_name;
+    if (problem.empty())
+      try
+        {
+          if (!nlohmann::json::parse(read_file(run_directory + "/summary.json"))
+                 .value("complete", false))
+            problem = "summary.json: not complete";
+        }
+      catch (...)
+        {
+          problem = "summary.json: unreadable";
+        }
+    if (!problem.empty())
+      return "damaged, redone (" + problem + ")";
+    verified = std::count(listed.begin(), listed.end(), "verification.json") > 0;
+    return std::string();
+  }
+
+
+  // Cheap (no checksums): the run's files were certified when it finished
+  // and are checked at every restart.
+  bool
+  Campaign::listed_in_index(const Point &point) const
+  {
+    const std::string run_directory = directory + "/" + point.path;
+    return std::filesystem::exists(run_directory + "/" + checksums::manifest_name) &&
+           std::filesystem::exists(run_directory + "/summary.json") &&
+           std::filesystem::exists(run_directory + "/history.h5") &&
+           comparable_parameters(read_file(run_directory + "/parameters.prm")) ==
+             comparable_parameters(point.parameters);
   }
 
 
   void
   Campaign::write_index() const
   {
-    nlohmann::json runs = nlohmann::json::array();
-    for (const double v : impact_velocities)
+    nlohmann::ordered_json axes_json = nlohmann::ordered_json::array();
+    for (const auto &axis : axes)
       {
-        const std::string run_directory = directory + "/" + run_path(v);
-        if (std::filesystem::exists(run_directory + "/summary.json") &&
-            std::filesystem::exists(run_directory + "/history.h5"))
-          {
-            nlohmann::json run = {{"velocity", v}, {"path", run_path(v)}};
-            if (std::filesystem::exists(run_directory + "/verification.json"))
-              run["verification"] = run_path(v) + "/verification.json";
-            runs.push_back(run);
-          }
+        nlohmann::ordered_json values = nlohmann::ordered_json::array();
+        for (const auto &value : axis.values)
+          values.push_back(json_value(value));
+        axes_json.push_back({{"parameter", axis.parameter.name()}, {"values", values}});
       }
+    axes_json.push_back({{"parameter", velocity_parameter}, {"values", velocities}});
+
+    nlohmann::ordered_json runs = nlohmann::ordered_json::array();
+    for (const auto &point : points)
+      if (listed_in_index(point))
+        {
+          nlohmann::ordered_json coordinates = nlohmann::ordered_json::object();
+          for (unsigned int a = 0; a < axes.size(); ++a)
+            coordinates[axes[a].parameter.name()] =
+              json_value(axes[a].values[point.value_indices[a]]);
+          coordinates[velocity_parameter] = point.velocity;
+          nlohmann::ordered_json run      = {{"path", point.path},
+                                             {"velocity", point.velocity},
+                                             {"point", coordinates}};
+          if (std::filesystem::exists(directory + "/" + point.path +
+                                      "/verification.json"))
+            run["verification"] = point.path + "/verification.json";
+          runs.push_back(run);
+        }
     std::ostringstream text;
-    text << std::setw(2) << nlohmann::json{{"runs", runs}} << std::endl;
+    text << std::setw(2) << nlohmann::ordered_json{{"axes", axes_json}, {"runs", runs}}
+         << std::endl;
     write_file_atomically(directory + "/index.json", text.str());
   }
 
@@ -218,53 +407,62 @@ namespace impact_fem
     if (rank == 0)
       {
         std::filesystem::create_directories(directory);
-        std::cout << "impact-fem campaign: " << impact_velocities.size()
-                  << " velocities into " << directory << ", " << n_groups
-                  << " group(s) of " << group_size << " rank(s)" << std::endl;
+        std::cout << "impact-fem campaign: ";
+        if (axes.empty())
+          std::cout << velocities.size() << " velocities";
+        else
+          {
+            std::cout << points.size() << " runs (";
+            for (const auto &axis : axes)
+              std::cout << axis.parameter.entry << " x " << axis.values.size() << ", ";
+            std::cout << "velocities x " << velocities.size() << ")";
+          }
+        std::cout << " into " << directory << ", " << n_groups << " group(s) of "
+                  << group_size << " rank(s)" << std::endl;
       }
     MPI_Barrier(comm);
 
     unsigned int failed = 0;
-    for (unsigned int i = group; i < impact_velocities.size() && group < n_groups;
-         i += n_groups)
+    for (unsigned int i = group; i < points.size() && group < n_groups; i += n_groups)
       {
-        const double      v          = impact_velocities[i];
-        const std::string parameters = expected_parameters(v);
-        const std::string run_directory = directory + "/" + run_path(v);
-        std::ostringstream label;
-        label << "  run " << i + 1 << "/" << impact_velocities.size()
-              << "  V = " << v << " m/s  (" << run_path(v) << ")";
+        const Point      &point         = points[i];
+        const std::string run_directory = directory + "/" + point.path;
+        const std::string line          = "  run " + std::to_string(i + 1) + "/" +
+                                 std::to_string(points.size()) + "  " + label(point);
         // A signal received during an earlier run stops the campaign here
         // (a restart does the remaining runs).
         if (Utilities::MPI::max(ImpactProblem::interrupt_received(), group_comm) != 0)
           break;
-        const bool complete = Utilities::MPI::broadcast(
-          group_comm, group_root && is_complete(v, parameters), 0);
-        const bool verified = Utilities::MPI::broadcast(
-          group_comm,
-          group_root &&
-            std::filesystem::exists(run_directory + "/verification.json"),
-          0);
+        bool        verified = false;
+        std::string status   = group_root ? restart_status(point, verified) : "";
+        status               = Utilities::MPI::broadcast(group_comm, status, 0);
+        verified             = Utilities::MPI::broadcast(group_comm, verified, 0);
+        const bool complete  = status.empty();
         if (complete && (!verify || verified))
           {
             if (group_root)
-              std::cout << label.str() << ": complete, skipped" << std::endl;
+              std::cout << line << ": complete, skipped" << std::endl;
             continue;
           }
         if (group_root)
           {
-            std::cout << label.str()
-                      << (complete ? ": complete, verifying" : ": running")
+            std::cout << line << ": " << (complete ? "complete, verifying" : status)
                       << std::endl;
             std::filesystem::create_directories(run_directory);
-            std::filesystem::remove(run_directory + "/verification.json");
             if (!complete)
               {
-                std::filesystem::remove(run_directory + "/summary.json");
-                write_file_atomically(run_directory + "/parameters.prm", parameters);
+                // The checksums first: whatever stays behind is not
+                // certified.
+                std::filesystem::remove(run_directory + "/" + checksums::manifest_name);
+                for (const char *name : {"summary.json", "history.h5"})
+                  std::filesystem::remove(run_directory + "/" + name);
+                write_file_atomically(run_directory + "/parameters.prm",
+                                      point.parameters);
               }
+            std::filesystem::remove(run_directory + "/verification.json");
           }
         MPI_Barrier(group_comm);
+        apply(point);
         const auto    start = std::chrono::steady_clock::now();
         std::ofstream log;
         if (group_root)
@@ -291,8 +489,8 @@ namespace impact_fem
             if (group_root)
               {
                 log << "\nimpact-fem: error: " << error.what() << std::endl;
-                std::cout << label.str() << ": FAILED (" << run_directory
-                          << "/run.log)" << std::endl;
+                std::cout << line << ": FAILED (" << run_directory << "/run.log)"
+                          << std::endl;
               }
             ++failed;
             if (ImpactProblem::interrupt_received() != 0)
@@ -300,17 +498,30 @@ namespace impact_fem
             continue;
           }
         if (group_root)
-          {
-            const auto summary =
-              nlohmann::json::parse(read_file(run_directory + "/summary.json"));
-            std::cout << label.str() << ": done in " << std::setprecision(3)
-                      << std::chrono::duration<double>(
-                           std::chrono::steady_clock::now() - start)
-                           .count()
-                      << " s, restitution " << std::setprecision(6)
-                      << summary["restitution"] << std::endl;
-            write_index();
-          }
+          try
+            {
+              // The files are final: certify them.
+              std::vector<std::string> files = {"parameters.prm",
+                                                "history.h5",
+                                                "summary.json"};
+              if (verify)
+                files.push_back("verification.json");
+              checksums::write_manifest(run_directory, files);
+              const auto summary =
+                nlohmann::json::parse(read_file(run_directory + "/summary.json"));
+              std::cout << line << ": done in " << std::setprecision(3)
+                        << std::chrono::duration<double>(
+                             std::chrono::steady_clock::now() - start)
+                             .count()
+                        << " s, restitution " << std::setprecision(6)
+                        << summary["restitution"] << std::endl;
+              write_index();
+            }
+          catch (const std::exception &error)
+            {
+              std::cout << line << ": FAILED (" << error.what() << ")" << std::endl;
+              ++failed;
+            }
       }
     MPI_Comm_free(&group_comm);
     failed = Utilities::MPI::sum(failed, comm);

@@ -4,15 +4,14 @@
 #include <impact_fem/analysis/material_point.h>
 #include <impact_fem/campaign.h>
 #include <impact_fem/impact_problem.h>
+#include <impact_fem/parameter_path.h>
 #include <impact_fem/verification/verification.h>
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 
-#include <nlohmann/json.hpp>
 
 #include <fstream>
-#include <sstream>
 #include <iostream>
 #include <memory>
 #include <string>
@@ -24,13 +23,19 @@ namespace
   print_usage(std::ostream &out)
   {
     out << "Usage: impact-fem [parameters.prm] [--set \"Section/Entry=value\"]...\n"
-           "                  [--velocities V1,V2,...] [--verify]\n"
+           "                  [--velocities V1,V2,...] [--sweep \"Section/Entry=v1,v2,...\"]...\n"
+           "                  [--verify]\n"
            "       impact-fem --print-parameters\n"
            "Runs one impact; results go to Output/Directory (history.h5, "
            "summary.json).\n"
            "With --velocities (or Campaign/Impact velocities) a campaign: one "
            "run per velocity in Output/Directory/v<V>, plus index.json; "
-           "started again, it skips the complete runs.\n"
+           "started again, it skips the complete runs whose files are intact "
+           "(checksums.sha256).\n"
+           "With --sweep (repeatable; or Campaign/Sweep, items separated by ';') "
+           "a campaign over the cartesian product of the swept entries and the "
+           "velocities, one run per point in e.g. "
+           "Output/Directory/plate-thickness-0.01_v1.\n"
            "With --verify (or Verification/Verify) every run is also run on two "
            "coarser discretisations and its numerical uncertainty (observed "
            "order, Richardson extrapolation, GCI) written to verification.json.\n";
@@ -47,35 +52,12 @@ namespace
                                    assignment + ">."));
     const std::string path  = dealii::Utilities::trim(assignment.substr(0, equal));
     const std::string value = dealii::Utilities::trim(assignment.substr(equal + 1));
-    std::vector<std::string> parts = dealii::Utilities::split_string_list(path, '/');
-    AssertThrow(!parts.empty(), dealii::ExcMessage("--set: empty entry name."));
-    // ParameterHandler checks entry names only in debug mode: look the
-    // entry up among the declared ones first.
-    std::stringstream declared;
-    prm.print_parameters(declared, dealii::ParameterHandler::ShortJSON);
-    nlohmann::json node = nlohmann::json::parse(declared.str());
-    for (const auto &part : parts)
-      node = (node.is_object() && node.contains(part)) ? nlohmann::json(node[part]) :
-                                                          nlohmann::json();
-    std::string problem;
-    if (!node.is_string() && !(node.is_object() && node.contains("value")))
+    const auto        entry = impact_fem::find_parameter(prm, path);
+    std::string       problem;
+    if (!entry)
       problem = "there is no entry <" + path + ">";
-    else
-      {
-        for (std::size_t i = 0; i + 1 < parts.size(); ++i)
-          prm.enter_subsection(parts[i]);
-        try
-          {
-            prm.set(parts.back(), value);
-          }
-        catch (const dealii::ExceptionBase &)
-          {
-            problem = "the value <" + value + "> does not fit the entry <" +
-                      path + ">";
-          }
-        for (std::size_t i = 0; i + 1 < parts.size(); ++i)
-          prm.leave_subsection();
-      }
+    else if (!entry->set(prm, value))
+      problem = "the value <" + value + "> does not fit the entry <" + path + ">";
     AssertThrow(problem.empty(),
                 dealii::ExcMessage("--set \"" + assignment + "\": " + problem +
                                    " (see impact-fem --print-parameters for "
@@ -103,7 +85,7 @@ main(int argc, char *argv[])
       impact_fem::verification::declare_parameters(prm);
 
       std::string              parameter_file, velocity_list;
-      std::vector<std::string> assignments;
+      std::vector<std::string> assignments, sweep_items;
       bool                     verify = false;
       for (int i = 1; i < argc; ++i)
         {
@@ -138,6 +120,15 @@ main(int argc, char *argv[])
               AssertThrow(!velocity_list.empty(),
                           ExcMessage("--velocities: empty list."));
             }
+          else if (arg == "--sweep")
+            {
+              AssertThrow(i + 1 < argc,
+                          ExcMessage("--sweep needs an axis, e.g. --sweep "
+                                     "\"Scenario/Plate thickness=0.01,0.02\"."));
+              sweep_items.push_back(argv[++i]);
+            }
+          else if (arg.rfind("--sweep=", 0) == 0)
+            sweep_items.push_back(arg.substr(8));
           else if (arg == "--verify")
             verify = true;
           else if (arg.rfind("--velocities=", 0) == 0)
@@ -170,8 +161,6 @@ main(int argc, char *argv[])
       prm.enter_subsection("Scenario");
       const std::string analysis = prm.get("Analysis");
       prm.leave_subsection();
-      const std::vector<double> velocities =
-        impact_fem::Campaign::velocities(prm, velocity_list);
       if (analysis == "material point")
         {
           if (is_root)
@@ -182,9 +171,9 @@ main(int argc, char *argv[])
           if (is_root)
             impact_fem::SpecimenTest(prm).run();
         }
-      else if (!velocities.empty())
+      else if (impact_fem::Campaign::requested(prm, velocity_list, sweep_items))
         {
-          impact_fem::Campaign campaign(prm, velocities);
+          impact_fem::Campaign campaign(prm, velocity_list, sweep_items);
           if (campaign.run(MPI_COMM_WORLD) > 0)
             return 1;
         }

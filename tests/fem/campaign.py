@@ -94,6 +94,9 @@ print("index.json:", json.dumps(index_a))
 checks.check([r["velocity"] for r in index_a["runs"]] == [0.5, 1, 2] and
              [r["path"] for r in index_a["runs"]] == ["v0.5", "v1", "v2"],
              "index lists the three runs in order")
+checks.check(index_a.get("axes") == [{"parameter": "Scenario/Impact velocity", "values": [0.5, 1, 2]}] and
+             [r["point"] for r in index_a["runs"]] == [{"Scenario/Impact velocity": v} for v in (0.5, 1, 2)],
+             "index axes: the velocity axis only; each run's point")
 for path, s in summaries_a.items():
     print(f"{path}: restitution {s['restitution']:.6f}, contact time {s['contact_time']*1e6:.3f} us, ranks {s['ranks']}")
 

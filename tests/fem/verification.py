@@ -95,6 +95,24 @@ again = subprocess.run([binary, "--set", f"Output/Directory={campaign}", "--veri
                        capture_output=True, text=True)
 checks.check(again.returncode == 0 and again.stdout.count("complete, skipped") == 2,
              "a restart skips the verified runs")
+# Issue 11: verification.json is covered by the run's checksums, and a run
+# redone because it is damaged is verified anew (its old verification.json
+# is not trusted).
+with open(f"{campaign}/v2/checksums.sha256") as f:
+    checksummed = [line.split()[1] for line in f]
+checks.check("verification.json" in checksummed, f"checksums.sha256 covers {checksummed}")
+stamp = os.stat(f"{campaign}/v2/verification.json").st_mtime_ns
+history_file = f"{campaign}/v2/history.h5"
+with open(history_file, "r+b") as f:
+    f.truncate(os.path.getsize(history_file) // 3)
+redone = subprocess.run(again.args, capture_output=True, text=True)
+print(redone.stdout)
+checks.check(redone.returncode == 0 and "(v2): damaged, redone (history.h5: checksum differs)" in redone.stdout
+             and "(v1): complete, skipped" in redone.stdout
+             and os.stat(f"{campaign}/v2/verification.json").st_mtime_ns != stamp,
+             "a damaged verified run is redone and verified anew, the other skipped")
+with open(f"{campaign}/index.json") as f:
+    checks.check(json.load(f) == index, "the index is the same after the redone run")
 # Unverified runs are verified later without running them again.
 plain = f"{work}/verification_later"
 if os.path.isdir(plain):

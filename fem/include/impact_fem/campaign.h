@@ -1,6 +1,8 @@
 #ifndef IMPACT_FEM_CAMPAIGN_H
 #define IMPACT_FEM_CAMPAIGN_H
 
+#include <impact_fem/campaign/sweep.h>
+
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 
@@ -12,21 +14,27 @@ namespace impact_fem
   using namespace dealii;
 
   /**
-   * A velocity campaign: one impact per velocity into one directory
-   * (Output/Directory), run i in the subdirectory v<V> (e.g. v0.5, v1) with
-   * its history.h5, summary.json, parameters.prm and run.log, and the index
-   * index.json = {"runs": [{"velocity": V, "path": "v<V>"}, ...]} of the
-   * complete runs, in the order given (the format read by
-   * impact-calibrate --campaign).
+   * A campaign: one impact per point of the cartesian product of the sweep
+   * axes (--sweep "Section/Entry=v1,v2,..." or Campaign/Sweep) and the
+   * velocities (--velocities or Campaign/Impact velocities; the last axis),
+   * into one directory (Output/Directory). Each run has its subdirectory
+   * named by its point (v<V> for a velocity-only campaign, else e.g.
+   * plate-thickness-0.005_v0.5) with history.h5, summary.json,
+   * parameters.prm, run.log and checksums.sha256; index.json lists the axes
+   * and the complete runs with their points (fem/README.md, "Campaigns";
+   * read by impact-calibrate --campaign).
    *
-   * Restart: a run whose directory holds a summary.json and a parameters.prm
-   * equal to the parameters it would run with is complete and skipped; any
-   * other is (re)computed. The ranks are split into groups of 'Ranks per
-   * run' that take the velocities in turn (round robin).
+   * Restart: a run is complete, and skipped, when its parameters.prm equals
+   * the parameters it would run with, Output/Directory left out (a moved or
+   * copied campaign keeps its runs), and every file of its checksums.sha256
+   * is intact (a truncated or edited history.h5 or summary.json is
+   * "damaged, redone"). The ranks are split into groups of 'Ranks per run'
+   * that take the points in turn (round robin).
    *
    * With Verification/Verify every run is verified (verification.h): its
-   * verification.json is linked from the index entry ("verification"), and
-   * a complete run without one is verified at restart, the run itself kept.
+   * verification.json is linked from the index entry ("verification") and
+   * covered by the checksums; a complete run without one is verified at
+   * restart, the run itself kept.
    */
   class Campaign
   {
@@ -34,32 +42,54 @@ namespace impact_fem
     static void
     declare_parameters(ParameterHandler &prm);
 
-    /// The velocities of the campaign: `command_line` (from --velocities)
-    /// if not empty, else Campaign/Impact velocities; empty: no campaign.
-    static std::vector<double>
-    velocities(ParameterHandler &prm, const std::string &command_line);
+    /// Does the command line (--velocities @p velocity_list, --sweep
+    /// @p sweep_items) or else the parameter file ask for a campaign.
+    static bool
+    requested(ParameterHandler               &prm,
+              const std::string              &velocity_list,
+              const std::vector<std::string> &sweep_items);
 
-    Campaign(ParameterHandler &prm, const std::vector<double> &velocities);
+    /// The campaign of the command line's lists where given, else of the
+    /// Campaign entries; checks them all (errors name the option) before
+    /// anything is written.
+    Campaign(ParameterHandler               &prm,
+             const std::string              &velocity_list,
+             const std::vector<std::string> &sweep_items);
 
     /// Runs what is missing; returns the number of runs that failed.
     unsigned int
     run(const MPI_Comm comm);
 
   private:
+    /// One run: a value index per sweep axis and a velocity.
+    struct Point
+    {
+      std::vector<unsigned int> value_indices;
+      double                    velocity;
+      std::string               path;       ///< relative to the campaign
+      std::string               parameters; ///< expected parameters.prm
+    };
+
+    /// Sets the point's values, velocity and run directory in prm.
+    void
+    apply(const Point &point);
     std::string
-    run_path(const double velocity) const;
+    label(const Point &point) const;
+    /// Empty if the run is complete and intact, else why it is (re)done.
     std::string
-    expected_parameters(const double velocity);
+    restart_status(const Point &point, bool &verified) const;
     bool
-    is_complete(const double velocity, const std::string &parameters) const;
+    listed_in_index(const Point &point) const;
     void
     write_index() const;
 
-    ParameterHandler   &prm;
-    std::vector<double> impact_velocities;
-    std::string         directory;
-    unsigned int        ranks_per_run = 0;
-    bool                verify        = false; ///< Verification/Verify
+    ParameterHandler      &prm;
+    std::vector<SweepAxis> axes;
+    std::vector<double>    velocities;
+    std::vector<Point>     points;
+    std::string            directory;
+    unsigned int           ranks_per_run = 0;
+    bool                   verify        = false; ///< Verification/Verify
   };
 } // namespace impact_fem
 
