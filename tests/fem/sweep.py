@@ -2,7 +2,7 @@
 the runs' parameters, restart with damaged runs, moved and copied campaigns,
 bad sweep options.
 
-Sweep: Scenario/Far boundary = absorbing (one value: a text axis),
+Sweep: Scenario/Plate bottom = absorbing (one value: a text axis),
 Scenario/Plate thickness = 0.1, 0.35 (m), velocities 0.5, 1 m/s -> 4 runs
 on a coarse mesh (100 um contact elements, 300 steps per contact time).
 Checks:
@@ -37,11 +37,11 @@ env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIR
 SETTINGS = ["--set", "Mesh/Contact element size=100e-6",
             "--set", "Time integration/Steps per contact time=300",
             "--set", "Output/Progress interval=0"]
-SWEEP = ["--sweep", "Scenario/Far boundary=absorbing",
+SWEEP = ["--sweep", "Scenario/Plate bottom=absorbing",
          "--sweep", "Scenario/Plate thickness=0.1,0.35"]
 VELOCITIES = ["--velocities", "0.5,1"]
 THICKNESSES, SPEEDS = ["0.1", "0.35"], [0.5, 1.0]
-PATHS = [f"far-boundary-absorbing_plate-thickness-{h}_v{v:g}" for h in THICKNESSES for v in SPEEDS]
+PATHS = [f"plate-bottom-absorbing_plate-thickness-{h}_v{v:g}" for h in THICKNESSES for v in SPEEDS]
 
 
 def campaign(directory, ranks=2, extra=SWEEP + VELOCITIES):
@@ -75,7 +75,7 @@ if os.path.isdir(bad):
 cases = [
     (["--sweep", "Scenario/Plate thicknes=0.1,0.2"], ["--sweep", "Scenario/Plate thicknes", "no entry"]),
     (["--sweep", "Scenario/Plate thickness=0.1,thick"], ["--sweep", "<thick>", "Scenario/Plate thickness", "Double"]),
-    (["--sweep", "Scenario/Far boundary=absorbing,free"], ["--sweep", "<free>", "absorbing|clamped"]),
+    (["--sweep", "Scenario/Plate bottom=absorbing,glued"], ["--sweep", "<glued>", "free|clamped|absorbing|support"]),
     (["--sweep", "Scenario/Plate thickness=0.1,0.10"], ["--sweep", "0.10", "given twice"]),
     (["--sweep", "Scenario/Plate thickness=0.1", "--sweep", "Scenario/Plate thickness=0.2"],
      ["--sweep", "Scenario/Plate thickness", "swept twice"]),
@@ -108,12 +108,12 @@ directories = sorted(e for e in os.listdir(a) if os.path.isdir(f"{a}/{e}"))
 checks.check(directories == sorted(PATHS), f"run directories {directories}")
 index = load_index(a)
 print("index.json:", json.dumps(index))
-checks.check(index["axes"] == [{"parameter": "Scenario/Far boundary", "values": ["absorbing"]},
+checks.check(index["axes"] == [{"parameter": "Scenario/Plate bottom", "values": ["absorbing"]},
                                {"parameter": "Scenario/Plate thickness", "values": [0.1, 0.35]},
                                {"parameter": "Scenario/Impact velocity", "values": [0.5, 1.0]}],
              "index axes: parameters and values (number or text) in the order given, velocity last")
-expected_runs = [{"path": f"far-boundary-absorbing_plate-thickness-{h}_v{v:g}", "velocity": v,
-                  "point": {"Scenario/Far boundary": "absorbing", "Scenario/Plate thickness": float(h),
+expected_runs = [{"path": f"plate-bottom-absorbing_plate-thickness-{h}_v{v:g}", "velocity": v,
+                  "point": {"Scenario/Plate bottom": "absorbing", "Scenario/Plate thickness": float(h),
                             "Scenario/Impact velocity": v}}
                  for h in THICKNESSES for v in SPEEDS]
 checks.check(index["runs"] == expected_runs, "index runs: paths, velocities and points in order")
@@ -129,7 +129,7 @@ for run in expected_runs:
     h, v = run["point"]["Scenario/Plate thickness"], run["velocity"]
     entries = dict(re.findall(r"set (.+?)\s*= (.*)", scenario))
     checks.check(float(entries["Plate thickness"]) == h and float(entries["Impact velocity"]) == v
-                 and entries["Far boundary"] == "absorbing",
+                 and entries["Plate bottom"] == "absorbing",
                  f"{run['path']}/parameters.prm: Plate thickness = {entries['Plate thickness']}, "
                  f"Impact velocity = {entries['Impact velocity']}")
     with h5py.File(f"{d}/history.h5", "r") as f:
