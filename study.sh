@@ -7,11 +7,43 @@
 # section "In your simulator". Complete (and verified) runs of an earlier or interrupted
 # study are reused.
 #
-# Usage: ./study.sh [OUTPUT_DIR]      (default results/study; needs a build in build/,
-#                                      or IMPACT_BUILD_DIR=..., and the simulators: ./setup.sh)
+# The thin-plate study (./study.sh thin-plate): the same ball on Kelvin-Voigt steel plates
+# of 2 ... 50 mm lying free (fem/scenarios/thin_plate.prm), swept over the plate thickness x
+# V = 0.5, 1, 2, 5 m/s (32 runs, each verified), and the report with its validity maps:
+# where calibrated Hunt-Crossley, the best law and Zener's thin-plate model hold, per
+# thickness and velocity.
+#
+# Usage: ./study.sh [OUTPUT_DIR]              (default results/study)
+#        ./study.sh thin-plate [OUTPUT_DIR]   (default results/thin-plate)
+# Both need a build in build/ (or IMPACT_BUILD_DIR=...); the default study also needs the
+# simulators (./setup.sh).
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")"
 bin="${IMPACT_BUILD_DIR:-build}/bin"
+
+mpirun=(mpirun --oversubscribe -np 2)
+if [ "$(id -u)" -eq 0 ]; then
+  export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+  mpirun+=(--allow-run-as-root)
+fi
+
+if [ "${1:-}" = "thin-plate" ]; then
+  output="${2:-results/thin-plate}"
+  for tool in impact-fem impact-report; do
+    [ -x "$bin/$tool" ] || { echo "study: $bin/$tool is missing: build first (README)" >&2; exit 1; }
+  done
+  start=$SECONDS
+  echo "study thin-plate: FEM campaign (8 thicknesses x 4 velocities), verified -> $output/campaign"
+  "${mpirun[@]}" "$bin/impact-fem" fem/scenarios/thin_plate.prm --verify \
+    --sweep "Scenario/Plate thickness=0.002,0.003,0.005,0.007,0.01,0.015,0.025,0.05" \
+    --set "Output/Directory=$output/campaign"
+  echo "study thin-plate: report with the validity maps -> $output/report"
+  "$bin/impact-report" --campaign "$output/campaign" --output "$output/report"
+  echo "study thin-plate: done in $((SECONDS - start)) s"
+  echo "report: $(realpath "$output/report/report.html")"
+  exit 0
+fi
+
 output="${1:-results/study}"
 for tool in impact-fem impact-calibrate impact-export impact-report impact-drop-lammps; do
   [ -x "$bin/$tool" ] || { echo "study: $bin/$tool is missing: build first (README)" >&2; exit 1; }
@@ -29,12 +61,6 @@ if [ ${#missing[@]} -gt 0 ]; then
   printf '  %s\n' "${missing[@]}" >&2
   echo "study: ./setup.sh installs them" >&2
   exit 1
-fi
-
-mpirun=(mpirun --oversubscribe -np 2)
-if [ "$(id -u)" -eq 0 ]; then
-  export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
-  mpirun+=(--allow-run-as-root)
 fi
 
 start=$SECONDS

@@ -43,6 +43,9 @@ Writes the model-validity report of a campaign of impact-fem runs: where the cal
 Hunt-Crossley law F = c x^n (1 + b dx/dt) and the other reduced models reproduce the FEM's
 energy loss 1 - e^2, contact time, peak force and peak approach, judged out of sample
 (leave one velocity out) against the FEM's own numerical uncertainty.
+A sweep campaign of the velocity and one other parameter (impact-fem --sweep) gets a
+validity map first (every row calibrated here); the sections after it detail one row,
+that of the thickest plate (--calibration FILE, if given, is that row's calibration).
 
   --campaign DIR       the runs of a campaign (as impact-calibrate reads them)
   RUN                  a run directory or HDF5 file of impact-fem (instead of --campaign)
@@ -242,7 +245,7 @@ std::optional<Calibration> obtain_calibration(const Arguments& arguments, const 
   Calibration calibration = calibrate(input.runs, options);
   std::vector<CalibrationProblem> all;
   for (const auto& problem : input.problems)
-    all.push_back({problem.source, "input", problem.message});
+    all.push_back({problem.source, problem.no_rebound ? "no rebound" : "input", problem.message});
   if (!calibration.campaign.fitted)
     all.push_back({arguments.campaign ? arguments.campaign->string() : "", "input",
                    "campaign not fitted: " + calibration.campaign.reason});
@@ -273,9 +276,15 @@ int execute(const Arguments& arguments) {
       campaign_source += (campaign_source.empty() ? "" : ", ") + run.string();
   }
 
+  // A two-axis campaign: the map covers every run, the sections after it one row.
+  ReportOptions options;
+  if (auto row = map_detail_row(input)) {
+    options.map_campaign = std::move(input);
+    input = std::move(row->first);
+    options.detail_row = row->second;
+  }
   std::string calibration_source;
   const auto calibration = obtain_calibration(arguments, input, problems, calibration_source);
-  ReportOptions options;
   options.tolerances = arguments.tolerances;
   options.simulators = arguments.simulators;
   // The rows of a validity map (a two-axis campaign) are calibrated here, every law.
@@ -301,7 +310,7 @@ int execute(const Arguments& arguments) {
     input_problem = input_problem || problem.kind == "input";
     convergence_problem = convergence_problem || problem.kind == "convergence";
     figure_problem = figure_problem || problem.kind == "figures";
-    incomplete = incomplete || problem.kind != "quality";
+    incomplete = incomplete || (problem.kind != "quality" && problem.kind != "no rebound");
     cli::print_problem(program, problem);
   }
   if (incomplete)

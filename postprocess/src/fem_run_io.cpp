@@ -215,9 +215,12 @@ FemRun read_fem_run(const fs::path& path) {
 
   const auto restitution = results.number(format::restitution_key);
   if (!restitution)
-    fail(file_path, "no restitution: the sphere did not separate from the plate within the "
-                    "simulated time (summary.json and the file have no '" +
-                        std::string(format::restitution_key) + "'); lengthen the run");
+    throw NoRebound("run " + quoted(file_path) +
+                    ": no rebound: the sphere did not separate from the plate within the "
+                    "simulated time (" + std::to_string(run.time.back() * 1e6) +
+                    " us; summary.json and the file have no '" +
+                    std::string(format::restitution_key) +
+                    "'): no restitution to calibrate or judge; lengthen the run to see one");
   if (!(std::isfinite(*restitution) && *restitution > 0))
     fail(file_path, "the restitution must be positive (got " + std::to_string(*restitution) + ")");
   run.restitution = *restitution;
@@ -244,7 +247,8 @@ Campaign read_runs(const std::vector<fs::path>& paths) {
     try {
       campaign.runs.push_back(read_fem_run(path));
     } catch (const RunInputError& error) {
-      campaign.problems.push_back({path.string(), error.what()});
+      campaign.problems.push_back({path.string(), error.what(),
+                                   dynamic_cast<const NoRebound*>(&error) != nullptr});
     }
   }
   std::stable_sort(campaign.runs.begin(), campaign.runs.end(),
@@ -542,7 +546,8 @@ Campaign read_campaign(const fs::path& directory) {
     try {
       run = read_fem_run(paths[k]);
     } catch (const RunInputError& error) {
-      campaign.problems.push_back({paths[k].string(), error.what()});
+      campaign.problems.push_back({paths[k].string(), error.what(),
+                                   dynamic_cast<const NoRebound*>(&error) != nullptr});
       continue;
     }
     if (!axes.empty()) run.sweep_point = point_of(run, listed[k]->point, axes);

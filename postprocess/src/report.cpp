@@ -100,8 +100,10 @@ Report build_report(const Campaign& campaign, const std::optional<Calibration>& 
   report.calibration = calibration;
   report.tolerances = options.tolerances;
   std::sort(report.tolerances.begin(), report.tolerances.end());
+  // A run without rebound is a finding (kind "no rebound"), listed, not an input error.
   for (const auto& problem : campaign.problems)
-    problems.push_back({problem.source, "input", problem.message});
+    problems.push_back({problem.source, problem.no_rebound ? "no rebound" : "input",
+                        problem.message});
   if (campaign.runs.empty())
     problems.push_back({campaign_source, "input", "no usable run: the report has no FEM data"});
 
@@ -170,7 +172,9 @@ Report build_report(const Campaign& campaign, const std::optional<Calibration>& 
   }
   report.problems = std::move(problems);
   detail::add_verdict(report);
-  detail::add_validity_map(report, campaign, options);
+  detail::add_validity_map(report, options.map_campaign ? *options.map_campaign : campaign,
+                           options);
+  report.detail_row = options.detail_row;
   if (options.simulators) detail::add_simulators(report, *options.simulators);
   return report;
 }

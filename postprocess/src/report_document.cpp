@@ -49,7 +49,7 @@ void status_section(Document& doc, const Report& report) {
   doc.heading("Status");
   std::vector<std::string> items, warnings;
   for (const auto& problem : report.problems)
-    (problem.kind == "quality" ? warnings : items)
+    (problem.kind == "quality" || problem.kind == "no rebound" ? warnings : items)
         .push_back("[" + problem.kind + "] " +
                    (problem.source.empty() ? "" : problem.source + ": ") + problem.message);
   if (items.empty() && warnings.empty()) {
@@ -58,8 +58,9 @@ void status_section(Document& doc, const Report& report) {
   }
   if (items.empty()) {
     doc.warning("Complete, with " + std::to_string(warnings.size()) +
-                " warning(s) on the quality of the FEM histories: the verdict below takes them "
-                "into account as the FEM's uncertainty.");
+                " warning(s) on the FEM runs: the verdict below takes the quality of the "
+                "histories into account as the FEM's uncertainty, and runs without rebound "
+                "(no restitution) are findings it cannot judge.");
   } else {
     doc.warning("INCOMPLETE: " + std::to_string(items.size()) +
                 " problem(s); the sections below leave out or mark what they affect.");

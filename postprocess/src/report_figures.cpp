@@ -415,7 +415,7 @@ std::vector<json> map_figures(const Report& report) {
          {"rows_labels", labels},
          {"classes", classes},
          {"cells", cells},
-         {"note", "cell: the largest out-of-sample error of 1 - e², t_c, F_max, x_max (which), "
+         {"note", "cell: the largest out-of-sample error of 1 - e², t_c, F_max (which), "
                   "U = the FEM's largest uncertainty there"}});
   }
   return figures;

@@ -10,7 +10,9 @@
 #include <impact_reduced/invalid_input.hpp>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
+#include <iomanip>
 #include <limits>
 #include <sstream>
 
@@ -32,6 +34,18 @@ std::string unit_of(const std::string& parameter) {
 std::string short_name(const std::string& parameter) {
   const auto slash = parameter.rfind('/');
   return slash == std::string::npos ? parameter : parameter.substr(slash + 1);
+}
+
+// The directory-name component of a sweep value, as impact-fem names run directories
+// ("plate-thickness-0.002"; the format in fem/README.md, "Campaigns").
+std::string run_name_component(const std::string& parameter, const std::string& value) {
+  std::string name;
+  for (const char c : short_name(parameter))
+    name += c == ' ' ? '-' : static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  name += '-';
+  for (const char c : value)
+    name += std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '+' || c == '-' ? c : '-';
+  return name;
 }
 
 std::string with_unit(const SweepValue& value, const std::string& unit) {
@@ -169,11 +183,21 @@ MapModelRow row_model(const Report& row, const std::string& key) {
       cell.judged = model->runs[i].judged();
       cell.missing = model->runs[i].missing;
       if (!cell.judged && cell.missing.empty()) cell.missing = "no prediction";
-      for (const auto& band : verdict->tolerances) cell.decisions.push_back(band.decisions[i]);
     } else {
       cell.missing = result.missing;
     }
     result.cells.push_back(std::move(cell));
+  }
+  // The verdict's rule on the map's quantities (the row's own verdict also judges x_max).
+  if (model && verdict && result.missing.empty()) {
+    std::vector<std::optional<ImpactQuantities>> judged;
+    for (const auto& cell : result.cells) judged.push_back(cell.judged);
+    for (const auto& band : verdict->tolerances) {
+      const ToleranceVerdict decided = tolerance_verdict(
+          row, judged, band.tolerance, {map_quantities.begin(), map_quantities.end()}, "");
+      for (std::size_t i = 0; i < result.cells.size(); ++i)
+        result.cells[i].decisions.push_back(decided.decisions[i]);
+    }
   }
   if (model && result.missing.empty() &&
       std::all_of(result.cells.begin(), result.cells.end(),
@@ -182,22 +206,6 @@ MapModelRow row_model(const Report& row, const std::string& key) {
   return result;
 }
 
-// The Hunt–Crossley b of a row's calibration for velocity V, out of sample: the fit without
-// V where there is one, else the full fit (then in sample only if the row has V).
-std::optional<double> damping_for(const Calibration& calibration, double velocity,
-                                  bool& out_of_sample) {
-  const CampaignCalibration& campaign = calibration.campaign;
-  if (!campaign.fitted || !campaign.hunt_crossley || !campaign.hunt_crossley->fit.converged)
-    return std::nullopt;
-  for (const auto& held : campaign.hunt_crossley->held_out)
-    if (same_velocity(held.velocity, velocity) && held.converged && held.parameters.size() > 2) {
-      out_of_sample = true;
-      return held.parameters[2];
-    }
-  out_of_sample = std::none_of(campaign.velocities.begin(), campaign.velocities.end(),
-                               [&](double v) { return same_velocity(v, velocity); });
-  return campaign.hunt_crossley->fit.parameter.value;
-}
 
 } // namespace
 
@@ -250,9 +258,17 @@ void add_validity_map(Report& report, const Campaign& campaign, const ReportOpti
        ""},
       {"thin-plate", "thin-plate model",
        "Zener: Hertz contact (c from the run's materials, n = 3/2) on an infinite Kirchhoff plate "
-       "of the run's thickness and material (Z = 8 sqrt(D rho h)), Hunt–Crossley damping b of "
-       "the calibrated Hunt–Crossley of the most massive plate's row, for each velocity the fit "
-       "without it",
+       "of the run's thickness and material (Z = 8 sqrt(D rho h)), with the Hunt–Crossley "
+       "damping b that makes it reproduce the FEM restitution of the most massive plate at the "
+       "same velocity (the material's damping; in sample on that row, a prediction on the "
+       "others)",
+       ""},
+      {"massive-plate", "massive-plate model",
+       "the thin-plate model's contact on a rigid support instead of the plate: Hertz c, "
+       "n = 3/2 and the b that makes it reproduce the FEM restitution of the most massive plate "
+       "at the same velocity — what a contact law calibrated on the massive plate predicts for "
+       "the others (the row where it leaves the bands is where the massive-plate assumption "
+       "fails)",
        ""}};
 
   // Every row: a velocity campaign, calibrated and judged by the verdict.
@@ -304,47 +320,53 @@ void add_validity_map(Report& report, const Campaign& campaign, const ReportOpti
     row_reports.push_back(std::move(row_report));
   }
 
-  // The thin-plate model: b from the row of the most massive (thickest) plate; a row with
-  // the same thickness takes its own.
+  // The thin-plate model: the material's damping at each velocity from the row of the most
+  // massive (thickest) plate: the b with which the model itself reproduces that row's FEM
+  // restitution at the same velocity (in sample on that row, a prediction on the others).
   double thickest = -INFINITY;
   for (std::size_t r = 0; r < map.rows.size(); ++r) {
     const double h = row_thickness(axis.parameter, map.rows[r].value, row_runs[r]);
-    if (std::isfinite(h) && h > thickest && calibrations[r]) {
+    if (std::isfinite(h) && h > thickest && !row_runs[r].empty()) {
       thickest = h;
       map.reference_row = r;
     }
   }
+  // The models with the material's damping from the most massive plate: Zener's thin plate,
+  // and the same contact on a rigid support (what a massive-plate law predicts).
+  for (const bool rigid : {false, true}) {
+  std::vector<std::pair<double, std::optional<double>>> reference_damping; // V, b
+  if (std::isfinite(thickest))
+    for (const FemRun& run : row_runs[map.reference_row])
+      reference_damping.push_back({run.impact_velocity, thin_plate_damping(run, rigid)});
   for (std::size_t r = 0; r < map.rows.size(); ++r) {
     MapModelRow model;
     const Report& row_report = row_reports[r];
-    const double h = row_thickness(axis.parameter, map.rows[r].value, row_runs[r]);
-    const std::size_t source =
-        std::isfinite(h) && h == thickest && calibrations[r] ? r : map.reference_row;
-    const auto& reference = calibrations[source];
     if (row_runs[r].empty()) model.missing = "no run at this value";
     else if (!std::isfinite(thickest))
       model.missing = "the runs do not record 'Scenario/Plate thickness', so the plate is not known";
-    else if (!reference || !damping_for(*reference, row_runs[r].front().impact_velocity,
-                                        model.out_of_sample))
-      model.missing = "the calibrated Hunt–Crossley of the row " +
-                      with_unit(map.rows[source].value, map.unit) +
-                      " (the most massive plate), whose b the model takes, is not available";
     std::vector<std::optional<ImpactQuantities>> judged;
-    bool all_out_of_sample = true;
     std::ostringstream parameters;
     for (std::size_t i = 0; i < row_runs[r].size(); ++i) {
       const ReportRun& run = row_report.runs[i];
       MapCell cell{run.velocity, run.source, run.fem, std::nullopt, run.uncertainty, {}, run.yields, ""};
       if (model.missing.empty()) {
-        bool out = false;
-        const double b = *damping_for(*reference, run.velocity, out);
-        all_out_of_sample = all_out_of_sample && out;
-        const ThinPlatePrediction prediction = thin_plate_prediction(row_runs[r][i], b);
-        cell.judged = prediction.quantities;
-        cell.missing = prediction.missing;
-        if (i == 0) parameters << prediction.parameters;
-        parameters << (i == 0 ? "; b = " : ", ") << short_number(b) << " s/m at "
-                   << short_number(run.velocity) << " m/s";
+        const auto at = std::find_if(reference_damping.begin(), reference_damping.end(),
+                                     [&](const auto& entry) {
+                                       return same_velocity(entry.first, run.velocity);
+                                     });
+        if (at == reference_damping.end() || !at->second) {
+          cell.missing = "the row " + with_unit(map.rows[map.reference_row].value, map.unit) +
+                         " (the most massive plate) has no run at this velocity whose "
+                         "restitution the model reproduces";
+        } else {
+          const double b = *at->second;
+          const ThinPlatePrediction prediction = thin_plate_prediction(row_runs[r][i], b, rigid);
+          cell.judged = prediction.quantities;
+          cell.missing = prediction.missing;
+          if (parameters.tellp() == 0) parameters << prediction.parameters << "; b = ";
+          else parameters << ", ";
+          parameters << short_number(b) << " s/m at " << short_number(run.velocity) << " m/s";
+        }
       } else {
         cell.missing = model.missing;
       }
@@ -352,18 +374,66 @@ void add_validity_map(Report& report, const Campaign& campaign, const ReportOpti
       model.cells.push_back(std::move(cell));
     }
     if (model.missing.empty()) {
-      model.out_of_sample = all_out_of_sample;
-      model.parameters = parameters.str() + " (from the row " +
-                         with_unit(map.rows[source].value, map.unit) + ")";
+      model.out_of_sample = r != map.reference_row;
+      model.parameters = parameters.str() + " (b from the row " +
+                         with_unit(map.rows[map.reference_row].value, map.unit) +
+                         (r == map.reference_row ? ", this row: its e in sample)" : ")");
       for (double tolerance : report.tolerances) {
         const ToleranceVerdict verdict = tolerance_verdict(
-            row_report, judged, tolerance, {verdict_quantities.begin(), verdict_quantities.end()}, "");
+            row_report, judged, tolerance, {map_quantities.begin(), map_quantities.end()}, "");
         for (std::size_t i = 0; i < model.cells.size(); ++i)
           model.cells[i].decisions.push_back(verdict.decisions[i]);
       }
     }
     map.rows[r].models.push_back(std::move(model));
   }
+  }
+  // Runs of the index that could not be read (e.g. no rebound within the run on a plate that
+  // holds the ball): a cell of every model, not evaluated, with the reader's reason.
+  std::vector<SweepValue> all_velocities;
+  for (const auto& any : campaign.axes)
+    if (any.parameter == velocity_axis) all_velocities = any.values;
+  for (std::size_t r = 0; r < map.rows.size(); ++r)
+    for (const auto& velocity : all_velocities) {
+      if (!velocity.number) continue;
+      const double v = *velocity.number;
+      const auto& cells = map.rows[r].models.front().cells;
+      if (std::any_of(cells.begin(), cells.end(),
+                      [&](const MapCell& cell) { return same_velocity(cell.velocity, v); }))
+        continue;
+      std::ostringstream directory;
+      directory << run_name_component(axis.parameter, map.rows[r].value.text) << "_v"
+                << std::setprecision(6) << v;
+      const auto problem =
+          std::find_if(campaign.problems.begin(), campaign.problems.end(), [&](const auto& p) {
+            // The run's directory, or a file in it.
+            const std::string name = "/" + directory.str();
+            const std::string path = "/" + p.source + "/";
+            return path.find(name + "/") != std::string::npos;
+          });
+      if (problem == campaign.problems.end()) continue;
+      if (std::none_of(map.velocities.begin(), map.velocities.end(),
+                       [&](double w) { return same_velocity(w, v); })) {
+        map.velocities.push_back(v);
+        std::sort(map.velocities.begin(), map.velocities.end());
+      }
+      for (auto& model : map.rows[r].models) {
+        if (model.missing == "no run at this value")
+          model.missing = "no FEM run of this value has a result (each run's reason below)";
+        FemUncertainty unknown;
+        for (auto& u : unknown) u = {std::numeric_limits<double>::quiet_NaN(), "no FEM result"};
+        MapCell cell{v, problem->source, std::nullopt, std::nullopt, unknown, {}, false,
+                     "the FEM run has no result: " + problem->message};
+        const auto at = std::find_if(model.cells.begin(), model.cells.end(),
+                                     [&](const MapCell& c) { return c.velocity > v; });
+        model.cells.insert(at, std::move(cell));
+      }
+    }
+  // Every cell carries a decision per band (unknown where it has no prediction), so that its
+  // class index counts the report's bands.
+  for (auto& row : map.rows)
+    for (auto& model : row.models)
+      for (auto& cell : model.cells) cell.decisions.resize(report.tolerances.size(), Decision::unknown);
   for (std::size_t m = 0; m < map.models.size(); ++m)
     map.models[m].region = region_of(map, m, report.tolerances);
   report.map = std::move(map);
@@ -372,7 +442,7 @@ void add_validity_map(Report& report, const Campaign& campaign, const ReportOpti
 std::optional<std::pair<Quantity, double>> map_worst_error(const MapCell& cell) {
   if (!cell.judged || !cell.fem) return std::nullopt;
   std::optional<std::pair<Quantity, double>> worst;
-  for (Quantity quantity : verdict_quantities) {
+  for (Quantity quantity : map_quantities) {
     const double error = relative_error(*cell.judged, *cell.fem, quantity);
     if (std::isfinite(error) && (!worst || std::abs(error) > std::abs(worst->second)))
       worst = std::pair<Quantity, double>{quantity, error};
@@ -397,11 +467,15 @@ void map_section(Document& doc, const Report& report,
       ". Each value of " + name + " is a row: the velocity campaign at that value, calibrated "
       "on its own (every law, as impact-calibrate does) and judged as the verdict judges a "
       "velocity campaign: a cell (one run: a value of " + name + ", a velocity) is within a band "
-      "when every |error| + U of 1 - e^2, t_c, F_max and x_max is within it, outside when one "
+      "when every |error| + U of 1 - e^2, t_c and F_max is within it, outside when one "
       "|error| - U exceeds it, not decided in between (U: the FEM's numerical uncertainty of "
       "the run, its GCI from verification.json where it was verified). Errors are out of "
-      "sample: each velocity predicted by the row's fit without it. The sections after this "
-      "one treat all runs as one velocity campaign (one calibration for every " + name + ").");
+      "sample: each velocity predicted by the row's fit without it. " +
+      (report.detail_row.empty()
+           ? "The sections after this one treat all runs as one velocity campaign (one "
+             "calibration for every " + name + ")."
+           : "The sections after this one detail the row " + report.detail_row +
+                 " as a velocity campaign (its calibration, verdict, figures and runs)."));
   std::vector<std::string> items;
   for (const auto& model : map.models) items.push_back(model.label + ": " + model.basis + ".");
   doc.list(items);
@@ -415,8 +489,7 @@ void map_section(Document& doc, const Report& report,
     figure(map_figure_file(model));
     Table table;
     table.header = {name + (map.unit.empty() ? "" : " [" + map.unit + "]"), "V [m/s]",
-                    "FEM U (largest)", "error 1 - e^2", "error t_c", "error F_max",
-                    "error x_max", "class"};
+                    "FEM U (largest)", "error 1 - e^2", "error t_c", "error F_max", "class"};
     std::vector<std::string> notes;
     for (const auto& row : map.rows) {
       const MapModelRow& at = row.models[m];
@@ -426,8 +499,12 @@ void map_section(Document& doc, const Report& report,
       else if (!parameters.empty())
         notes.push_back(with_unit(row.value, map.unit) + ": " + parameters +
                         (at.out_of_sample ? " (out of sample)" : " (in sample)"));
+      for (const auto& cell : at.cells)
+        if (!cell.fem && !cell.missing.empty())
+          notes.push_back(with_unit(row.value, map.unit) + ", V = " + short_number(cell.velocity) +
+                          " m/s: not evaluated: " + cell.missing);
       if (at.cells.empty())
-        table.rows.push_back({row.value.text, "-", "-", "-", "-", "-", "-", "not evaluated"});
+        table.rows.push_back({row.value.text, "-", "-", "-", "-", "-", "not evaluated"});
       for (const auto& cell : at.cells) {
         const auto error = [&](Quantity quantity) {
           return cell.judged && cell.fem ? percent_cell(relative_error(*cell.judged, *cell.fem, quantity))
@@ -437,8 +514,7 @@ void map_section(Document& doc, const Report& report,
                               short_number(cell.velocity) + (cell.yields ? " (yields)" : ""),
                               unsigned_percent(map_uncertainty(cell)),
                               error(Quantity::energy_loss), error(Quantity::contact_time),
-                              error(Quantity::force_max), error(Quantity::approach_max),
-                              map_class_name(cell, report.tolerances)});
+                              error(Quantity::force_max), map_class_name(cell, report.tolerances)});
       }
     }
     doc.table(table);
@@ -462,12 +538,49 @@ std::size_t map_class(const MapCell& cell) { return detail::class_index(cell); }
 
 double map_uncertainty(const MapCell& cell) {
   double largest = std::numeric_limits<double>::quiet_NaN();
-  for (Quantity quantity : verdict_quantities) {
+  for (Quantity quantity : map_quantities) {
     const double u = cell.uncertainty[std::size_t(quantity)].relative;
     if (std::isfinite(u)) largest = std::isfinite(largest) ? std::max(largest, u) : u;
   }
   return largest;
 }
 
+
+} // namespace impact::postprocess
+
+namespace impact::postprocess {
+
+std::optional<std::pair<Campaign, std::string>> map_detail_row(const Campaign& campaign) {
+  if (campaign.axes.size() != 2) return std::nullopt;
+  const SweepAxis* other = nullptr;
+  bool has_velocity = false;
+  for (const auto& axis : campaign.axes) {
+    if (axis.parameter == velocity_axis) has_velocity = true;
+    else other = &axis;
+  }
+  if (!has_velocity || !other || other->values.empty()) return std::nullopt;
+  // The value of the row: that of the run with the thickest plate, else the first.
+  std::optional<SweepValue> chosen;
+  double thickest = -INFINITY;
+  for (const auto& run : campaign.runs) {
+    const auto at = run.sweep_point.find(other->parameter);
+    const auto h = text_number(run, detail::plate_thickness_parameter);
+    if (at != run.sweep_point.end() && h && *h > thickest) {
+      thickest = *h;
+      chosen = at->second;
+    }
+  }
+  if (!chosen) chosen = other->values.front();
+  Campaign row;
+  for (const auto& run : campaign.runs) {
+    const auto at = run.sweep_point.find(other->parameter);
+    if (at != run.sweep_point.end() && at->second.matches(*chosen)) row.runs.push_back(run);
+  }
+  for (const auto& problem : campaign.problems) row.problems.push_back(problem);
+  const std::string unit = detail::unit_of(other->parameter);
+  return std::pair<Campaign, std::string>{
+      std::move(row), detail::short_name(other->parameter) + " = " + chosen->text +
+                          (unit.empty() ? "" : " " + unit)};
+}
 
 } // namespace impact::postprocess

@@ -80,7 +80,12 @@ struct ThinPlatePrediction {
   std::string missing;     ///< why there are none (the run does not record the plate, ...)
   std::string parameters;  ///< c, Z, lambda as text
 };
-ThinPlatePrediction thin_plate_prediction(const FemRun& run, double damping);
+/// rigid: the same contact on a rigid support (Z = infinity).
+ThinPlatePrediction thin_plate_prediction(const FemRun& run, double damping, bool rigid = false);
+/// The Hunt–Crossley b [s/m] with which the thin-plate model (rigid: on a rigid support)
+/// reproduces the run's own restitution (TOMS 748 to 40 bits; 0 when the plate alone loses
+/// more than the run); none when the model cannot be evaluated for the run.
+std::optional<double> thin_plate_damping(const FemRun& reference, bool rigid = false);
 
 /// The map of a campaign with sweep axes into report.map (nothing for a velocity campaign).
 void add_validity_map(Report& report, const Campaign& campaign, const ReportOptions& options);

@@ -20,6 +20,14 @@ public:
   using std::runtime_error::runtime_error;
 };
 
+/// A complete run in which the sphere did not rebound within the simulated time (a thin plate
+/// that holds the ball): a finding of the FEM, not a broken input, but there is no restitution
+/// to calibrate or judge.
+class NoRebound : public RunInputError {
+public:
+  using RunInputError::RunInputError;
+};
+
 /// The value of a swept parameter at one run (index.json of a sweep campaign,
 /// /work/notes/sweep_format.md): a number when its text parses completely as one, else text.
 struct SweepValue {
@@ -76,6 +84,7 @@ FemRun read_fem_run(const std::filesystem::path& path);
 struct InputProblem {
   std::string source;   ///< file or directory concerned
   std::string message;  ///< a sentence naming the problem
+  bool no_rebound = false; ///< the run is complete but the sphere did not rebound (NoRebound)
 };
 
 /// The runs of a campaign that could be read, and the problems with the others.

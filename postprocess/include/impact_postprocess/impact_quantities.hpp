@@ -55,6 +55,13 @@ inline constexpr std::array<Quantity, quantity_count> all_quantities = {
 inline constexpr std::array<Quantity, 4> verdict_quantities = {
     Quantity::energy_loss, Quantity::contact_time, Quantity::force_max, Quantity::approach_max};
 
+/// The quantities a validity map judges (energy loss, contact time, peak force): not x_max,
+/// because the FEM's approach on a thin plate includes the plate's bending under the ball
+/// (it is measured from the mean of the plate's bottom), which the massive-plate laws do not
+/// have and Zener's indentation x leaves out.
+inline constexpr std::array<Quantity, 3> map_quantities = {
+    Quantity::energy_loss, Quantity::contact_time, Quantity::force_max};
+
 /// The value of `quantity` for an impact (1 - e^2 and 1 - e derived from e).
 double value(const ImpactQuantities& impact, Quantity quantity);
 /// "energy_loss", "restitution_deficit", "restitution", "contact_time", "force_max",

@@ -241,6 +241,9 @@ struct Report {
   std::vector<SimulatorResult> simulators; ///< the usable result files, Simbody, MuJoCo, LAMMPS
   /// The validity map, for a campaign with sweep axes (none for a velocity-only campaign).
   std::optional<ValidityMap> map;
+  /// The row of a map campaign that the sections after the map detail ("Plate thickness =
+  /// 0.05 m"); empty when they show every run.
+  std::string detail_row;
 
   /// The model of this key, or null.
   const ReportModel* model(const std::string& key) const;
@@ -254,7 +257,18 @@ struct ReportOptions {
   std::optional<std::filesystem::path> simulators;
   /// How each row of a validity map is calibrated (the map of a two-axis campaign).
   CalibrationOptions map_calibration;
+  /// The whole sweep campaign whose map is drawn, when the campaign given to build_report is
+  /// one row of it (map_detail_row), and that row's name.
+  std::optional<Campaign> map_campaign;
+  std::string detail_row;
 };
+
+/// The row of a two-axis campaign (velocity x one other parameter) that the report's sections
+/// after the map detail, as a velocity campaign of its own: the runs with the largest
+/// Scenario/Plate thickness (the most massive plate, nearest to the reduced models'
+/// assumption), else those at the other axis's first value; and the row's name ("Plate
+/// thickness = 0.05 m"). Nothing for any other campaign (its sections show every run).
+std::optional<std::pair<Campaign, std::string>> map_detail_row(const Campaign& campaign);
 
 /// Builds every number of the report. `calibration` is the calibration read from the JSON
 /// of impact-calibrate (none when there is none; the page then says what is missing).
