@@ -88,3 +88,5 @@ for h in (0.003, 0.01):
           f"largest force difference {np.max(np.abs(F0 - F1)) / np.max(F0) * 100:.3g} % of the peak "
           f"over {f[0]['time'][n-1]*1e6:.0f} us")
 PY
+echo
+/usr/bin/python3 "$here/thin_plate_threshold.py" "$output/campaign" "$reduced"
