@@ -94,12 +94,17 @@ json verification_with_force_gci(const FemRun& run, double gci) {
 // carries a verification with GCI(F_max) = 6 %.
 constexpr double verified_thickness = 0.004, verified_velocity = 2, verified_gci = 0.06;
 
+// The index of impact-fem's sweep format with the axes and no run yet.
+json sweep_index() {
+  return {{"axes",
+           {{{"parameter", thickness_axis}, {"values", thicknesses}},
+            {{"parameter", velocity_axis}, {"values", velocities}}}},
+          {"runs", json::array()}};
+}
+
 fs::path write_campaign(const std::string& name) {
   const fs::path directory = impact::testing::scratch_directory(name);
-  json index{{"axes",
-              {{{"parameter", thickness_axis}, {"values", thicknesses}},
-               {{"parameter", velocity_axis}, {"values", velocities}}}},
-             {"runs", json::array()}};
+  json index = sweep_index();
   for (double h : thicknesses)
     for (double v : velocities) {
       const FemRun run = made_run(h, v);
@@ -324,10 +329,7 @@ FemRun thin_plate_run(double thickness, double velocity) {
 // points: they come from the runs' parameters.
 TEST(ValidityMapThinPlate, TheThinPlateModelIsTheTruthAndHuntCrossleyFailsOnThinPlates) {
   const fs::path directory = impact::testing::scratch_directory("validity_map_thin");
-  json index{{"axes",
-              {{{"parameter", thickness_axis}, {"values", thicknesses}},
-               {{"parameter", velocity_axis}, {"values", velocities}}}},
-             {"runs", json::array()}};
+  json index = sweep_index();
   for (double h : thicknesses)
     for (double v : velocities) {
       write_fem_run(thin_plate_run(h, v), directory / run_name(h, v));
