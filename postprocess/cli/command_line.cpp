@@ -13,6 +13,10 @@ void parse_run_arguments(int argc, char** argv, RunArguments& arguments,
     if (argument == "--help" || argument == "-h") arguments.help = true;
     else if (argument == "--quiet") arguments.quiet = true;
     else if (argument == "--output") arguments.output = value();
+    else if (argument == "--campaign") {
+      if (arguments.campaign) throw UsageError("--campaign is given twice");
+      arguments.campaign = value();
+    }
     else if (option(argument, value)) continue;
     else if (argument.rfind("--", 0) == 0) throw UsageError("unknown option '" + argument + "'");
     else arguments.runs.emplace_back(argument);

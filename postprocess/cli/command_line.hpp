@@ -1,5 +1,5 @@
 #pragma once
-// The command-line handling shared by impact-calibrate and impact-report: both take run
+// The command-line handling shared by impact-calibrate, impact-export and impact-report: they take run
 // files or a campaign directory and an output, report usage errors and failures in the
 // same words and with the same exit codes.
 
@@ -38,8 +38,8 @@ struct RunArguments {
 using OptionHandler =
     std::function<bool(const std::string& option, const std::function<std::string()>& value)>;
 
-/// Parses the command line into `arguments`: --help, -h, --quiet, --output and the run
-/// operands here, every other option by `option`. Unless --help is given, requires an
+/// Parses the command line into `arguments`: --help, -h, --quiet, --output, --campaign (once)
+/// and the run operands here, every other option by `option`. Unless --help is given, requires an
 /// output (named `output_name` in the message, "FILE" or "DIR") and either runs or a
 /// campaign. Throws UsageError.
 void parse_run_arguments(int argc, char** argv, RunArguments& arguments,

@@ -93,10 +93,7 @@ Arguments parse(int argc, char** argv) {
   Arguments arguments;
   const auto option = [&](const std::string& argument,
                           const std::function<std::string()>& value) {
-    if (argument == "--campaign") {
-      if (arguments.campaign) throw UsageError("--campaign is given twice");
-      arguments.campaign = value();
-    } else if (argument == "--laws") {
+    if (argument == "--laws") {
       const std::string list = value();
       if (list == "all") {
         arguments.laws = impact::reduced::comparison_law_names();

@@ -56,10 +56,7 @@ Arguments parse(int argc, char** argv) {
   Arguments arguments;
   const auto option = [&](const std::string& argument,
                           const std::function<std::string()>& value) {
-    if (argument == "--campaign") {
-      if (arguments.campaign) throw UsageError("--campaign is given twice");
-      arguments.campaign = value();
-    } else if (argument == "--calibration") {
+    if (argument == "--calibration") {
       arguments.calibration = value();
     } else if (argument == "--reference-velocity") {
       const std::string text = value();

@@ -93,8 +93,7 @@ Arguments parse(int argc, char** argv) {
   Arguments arguments;
   const auto option = [&](const std::string& argument,
                           const std::function<std::string()>& value) {
-    if (argument == "--campaign") arguments.campaign = value();
-    else if (argument == "--calibration") arguments.calibration = value();
+    if (argument == "--calibration") arguments.calibration = value();
     else if (argument == "--simulators") arguments.simulators = value();
     else if (argument == "--tolerances") {
       const std::string list = value();
