@@ -5,6 +5,7 @@
 // the problem, exit code 2 and no output. (That the tools themselves reproduce the laws is
 // tests/consumers.)
 
+#include "report_cli_testing.hpp"
 #include "synthetic_runs.hpp"
 
 #include "impact_postprocess/calibration.hpp"
@@ -17,11 +18,8 @@
 
 #include <gtest/gtest.h>
 
-#include <sys/wait.h>
-
 #include <cmath>
 #include <fstream>
-#include <sstream>
 
 namespace {
 
@@ -31,28 +29,12 @@ namespace fs = std::filesystem;
 
 const double radius = 0.01452;
 
-struct CliRun {
-  int exit_code;
-  std::string err;
-};
-
-std::string read_text(const fs::path& path) {
-  std::ifstream file(path);
-  std::stringstream text;
-  text << file.rdbuf();
-  return text.str();
-}
+using impact::testing::CliRun;
+using impact::testing::contains;
+using impact::testing::read_text;
 
 CliRun run_export(const std::vector<std::string>& arguments, const fs::path& scratch) {
-  std::string command = std::string("'") + IMPACT_EXPORT_CLI + "'";
-  for (const auto& argument : arguments) command += " '" + argument + "'";
-  command += " >/dev/null 2>'" + (scratch / "err.txt").string() + "'";
-  const int status = std::system(command.c_str());
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, read_text(scratch / "err.txt")};
-}
-
-bool contains(const std::string& text, const std::string& part) {
-  return text.find(part) != std::string::npos;
+  return impact::testing::run_tool(IMPACT_EXPORT_CLI, arguments, scratch);
 }
 
 // A campaign at 0.5, 1, 2 m/s, calibrated with `laws`; the radius is recorded unless not.
