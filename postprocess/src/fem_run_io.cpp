@@ -547,7 +547,8 @@ Campaign read_campaign(const fs::path& directory) {
       run = read_fem_run(paths[k]);
     } catch (const RunInputError& error) {
       campaign.problems.push_back({paths[k].string(), error.what(),
-                                   dynamic_cast<const NoRebound*>(&error) != nullptr});
+                                   dynamic_cast<const NoRebound*>(&error) != nullptr,
+                                   listed[k]->point.value_or(std::map<std::string, SweepValue>{})});
       continue;
     }
     if (!axes.empty()) run.sweep_point = point_of(run, listed[k]->point, axes);

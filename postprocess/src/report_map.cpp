@@ -36,18 +36,6 @@ std::string short_name(const std::string& parameter) {
   return slash == std::string::npos ? parameter : parameter.substr(slash + 1);
 }
 
-// The directory-name component of a sweep value, as impact-fem names run directories
-// ("plate-thickness-0.002"; the format in fem/README.md, "Campaigns").
-std::string run_name_component(const std::string& parameter, const std::string& value) {
-  std::string name;
-  for (const char c : short_name(parameter))
-    name += c == ' ' ? '-' : static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  name += '-';
-  for (const char c : value)
-    name += std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '+' || c == '-' ? c : '-';
-  return name;
-}
-
 std::string with_unit(const SweepValue& value, const std::string& unit) {
   return value.text + (unit.empty() || !value.number ? "" : " " + unit);
 }
@@ -401,15 +389,12 @@ void add_validity_map(Report& report, const Campaign& campaign, const ReportOpti
       if (std::any_of(cells.begin(), cells.end(),
                       [&](const MapCell& cell) { return same_velocity(cell.velocity, v); }))
         continue;
-      std::ostringstream directory;
-      directory << run_name_component(axis.parameter, map.rows[r].value.text) << "_v"
-                << std::setprecision(6) << v;
       const auto problem =
           std::find_if(campaign.problems.begin(), campaign.problems.end(), [&](const auto& p) {
-            // The run's directory, or a file in it.
-            const std::string name = "/" + directory.str();
-            const std::string path = "/" + p.source + "/";
-            return path.find(name + "/") != std::string::npos;
+            const auto value = p.point.find(axis.parameter);
+            const auto speed = p.point.find(velocity_axis);
+            return value != p.point.end() && value->second.matches(map.rows[r].value) &&
+                   speed != p.point.end() && speed->second.matches(velocity);
           });
       if (problem == campaign.problems.end()) continue;
       if (std::none_of(map.velocities.begin(), map.velocities.end(),

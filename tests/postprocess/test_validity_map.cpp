@@ -26,9 +26,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <limits>
 
 namespace {
 
@@ -427,6 +429,44 @@ TEST(ValidityMapThinPlate, TheThinPlateModelIsTheTruthAndHuntCrossleyFailsOnThin
                 relative_error(*cell.judged, *cell.fem, Quantity::energy_loss));
   EXPECT_EQ(map_class_name(thinnest.cells.front(), report.tolerances), "outside 5 %");
   EXPECT_EQ(map_class_name(thinnest.cells.back(), report.tolerances), "outside 5 %");
+}
+
+// A run of the index whose ball did not rebound (no restitution, as impact-fem writes a run
+// that ends before separation): a finding, not an input error; its cell in every model is not
+// evaluated with the reader's reason, found by the index point; the other cells as before.
+TEST(ValidityMapNoRebound, TheCellSaysWhyAndTheReportStaysComplete) {
+  const fs::path directory = impact::testing::scratch_directory("validity_map_no_rebound");
+  json index = sweep_index();
+  for (double h : thicknesses)
+    for (double v : velocities) {
+      FemRun run = made_run(h, v);
+      if (h == 0.004 && v == 1) run.restitution = std::numeric_limits<double>::quiet_NaN();
+      write_fem_run(run, directory / run_name(h, v));
+      index["runs"].push_back({{"path", run_name(h, v)}, {"velocity", v},
+                               {"point", {{thickness_axis, h}, {velocity_axis, v}}}});
+    }
+  std::ofstream(directory / "index.json") << index.dump(2);
+  const Campaign campaign = read_campaign(directory);
+  fs::remove_all(directory);
+  ASSERT_EQ(campaign.problems.size(), 1u);
+  EXPECT_TRUE(campaign.problems.front().no_rebound);
+  EXPECT_EQ(*campaign.problems.front().point.at(thickness_axis).number, 0.004);
+  ReportOptions options;
+  options.map_calibration.laws = {"kuwabara-kono-no-tension"};
+  const Report report = build_report(campaign, std::nullopt, {}, "no rebound", "", options);
+  for (const auto& problem : report.problems) EXPECT_NE(problem.kind, "input") << problem.message;
+  EXPECT_TRUE(std::any_of(report.problems.begin(), report.problems.end(),
+                          [](const ReportProblem& p) { return p.kind == "no rebound"; }));
+  ASSERT_TRUE(report.map && report.map->available);
+  for (const auto& model : row_at(*report.map, 0.004).models) {
+    ASSERT_EQ(model.cells.size(), velocities.size());
+    const MapCell& cell = model.cells[1];
+    EXPECT_EQ(cell.velocity, 1.0);
+    EXPECT_FALSE(cell.fem);
+    EXPECT_NE(cell.missing.find("no rebound"), std::string::npos) << cell.missing;
+    EXPECT_EQ(map_class_name(cell, report.tolerances), "not evaluated");
+    EXPECT_TRUE(model.cells[0].fem);
+  }
 }
 
 // More than two axes, or two without the velocity: no map, the reason said.

@@ -85,6 +85,8 @@ struct InputProblem {
   std::string source;   ///< file or directory concerned
   std::string message;  ///< a sentence naming the problem
   bool no_rebound = false; ///< the run is complete but the sphere did not rebound (NoRebound)
+  /// The run's sweep point as its campaign index lists it (empty when it lists none).
+  std::map<std::string, SweepValue> point = {};
 };
 
 /// The runs of a campaign that could be read, and the problems with the others.
