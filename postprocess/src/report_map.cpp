@@ -322,59 +322,61 @@ void add_validity_map(Report& report, const Campaign& campaign, const ReportOpti
   // The models with the material's damping from the most massive plate: Zener's thin plate,
   // and the same contact on a rigid support (what a massive-plate law predicts).
   for (const bool rigid : {false, true}) {
-  std::vector<std::pair<double, std::optional<double>>> reference_damping; // V, b
-  if (std::isfinite(thickest))
-    for (const FemRun& run : row_runs[map.reference_row])
-      reference_damping.push_back({run.impact_velocity, thin_plate_damping(run, rigid)});
-  for (std::size_t r = 0; r < map.rows.size(); ++r) {
-    MapModelRow model;
-    const Report& row_report = row_reports[r];
-    if (row_runs[r].empty()) model.missing = "no run at this value";
-    else if (!std::isfinite(thickest))
-      model.missing = "the runs do not record 'Scenario/Plate thickness', so the plate is not known";
-    std::vector<std::optional<ImpactQuantities>> judged;
-    std::ostringstream parameters;
-    for (std::size_t i = 0; i < row_runs[r].size(); ++i) {
-      const ReportRun& run = row_report.runs[i];
-      MapCell cell{run.velocity, run.source, run.fem, std::nullopt, run.uncertainty, {}, run.yields, ""};
-      if (model.missing.empty()) {
-        const auto at = std::find_if(reference_damping.begin(), reference_damping.end(),
-                                     [&](const auto& entry) {
-                                       return same_velocity(entry.first, run.velocity);
-                                     });
-        if (at == reference_damping.end() || !at->second) {
-          cell.missing = "the row " + with_unit(map.rows[map.reference_row].value, map.unit) +
-                         " (the most massive plate) has no run at this velocity whose "
-                         "restitution the model reproduces";
+    std::vector<std::pair<double, std::optional<double>>> reference_damping; // V, b
+    if (std::isfinite(thickest))
+      for (const FemRun& run : row_runs[map.reference_row])
+        reference_damping.push_back({run.impact_velocity, thin_plate_damping(run, rigid)});
+    for (std::size_t r = 0; r < map.rows.size(); ++r) {
+      MapModelRow model;
+      const Report& row_report = row_reports[r];
+      if (row_runs[r].empty()) model.missing = "no run at this value";
+      else if (!std::isfinite(thickest))
+        model.missing =
+            "the runs do not record 'Scenario/Plate thickness', so the plate is not known";
+      std::vector<std::optional<ImpactQuantities>> judged;
+      std::ostringstream parameters;
+      for (std::size_t i = 0; i < row_runs[r].size(); ++i) {
+        const ReportRun& run = row_report.runs[i];
+        MapCell cell{run.velocity, run.source, run.fem, std::nullopt,
+                     run.uncertainty, {}, run.yields, ""};
+        if (model.missing.empty()) {
+          const auto at = std::find_if(reference_damping.begin(), reference_damping.end(),
+                                       [&](const auto& entry) {
+                                         return same_velocity(entry.first, run.velocity);
+                                       });
+          if (at == reference_damping.end() || !at->second) {
+            cell.missing = "the row " + with_unit(map.rows[map.reference_row].value, map.unit) +
+                           " (the most massive plate) has no run at this velocity whose "
+                           "restitution the model reproduces";
+          } else {
+            const double b = *at->second;
+            const ThinPlatePrediction prediction = thin_plate_prediction(row_runs[r][i], b, rigid);
+            cell.judged = prediction.quantities;
+            cell.missing = prediction.missing;
+            if (parameters.tellp() == 0) parameters << prediction.parameters << "; b = ";
+            else parameters << ", ";
+            parameters << short_number(b) << " s/m at " << short_number(run.velocity) << " m/s";
+          }
         } else {
-          const double b = *at->second;
-          const ThinPlatePrediction prediction = thin_plate_prediction(row_runs[r][i], b, rigid);
-          cell.judged = prediction.quantities;
-          cell.missing = prediction.missing;
-          if (parameters.tellp() == 0) parameters << prediction.parameters << "; b = ";
-          else parameters << ", ";
-          parameters << short_number(b) << " s/m at " << short_number(run.velocity) << " m/s";
+          cell.missing = model.missing;
         }
-      } else {
-        cell.missing = model.missing;
+        judged.push_back(cell.judged);
+        model.cells.push_back(std::move(cell));
       }
-      judged.push_back(cell.judged);
-      model.cells.push_back(std::move(cell));
-    }
-    if (model.missing.empty()) {
-      model.out_of_sample = r != map.reference_row;
-      model.parameters = parameters.str() + " (b from the row " +
-                         with_unit(map.rows[map.reference_row].value, map.unit) +
-                         (r == map.reference_row ? ", this row: its e in sample)" : ")");
-      for (double tolerance : report.tolerances) {
-        const ToleranceVerdict verdict = tolerance_verdict(
-            row_report, judged, tolerance, {map_quantities.begin(), map_quantities.end()}, "");
-        for (std::size_t i = 0; i < model.cells.size(); ++i)
-          model.cells[i].decisions.push_back(verdict.decisions[i]);
+      if (model.missing.empty()) {
+        model.out_of_sample = r != map.reference_row;
+        model.parameters = parameters.str() + " (b from the row " +
+                           with_unit(map.rows[map.reference_row].value, map.unit) +
+                           (r == map.reference_row ? ", this row: its e in sample)" : ")");
+        for (double tolerance : report.tolerances) {
+          const ToleranceVerdict verdict = tolerance_verdict(
+              row_report, judged, tolerance, {map_quantities.begin(), map_quantities.end()}, "");
+          for (std::size_t i = 0; i < model.cells.size(); ++i)
+            model.cells[i].decisions.push_back(verdict.decisions[i]);
+        }
       }
+      map.rows[r].models.push_back(std::move(model));
     }
-    map.rows[r].models.push_back(std::move(model));
-  }
   }
   // Runs of the index that could not be read (e.g. no rebound within the run on a plate that
   // holds the ball): a cell of every model, not evaluated, with the reader's reason.
@@ -418,7 +420,8 @@ void add_validity_map(Report& report, const Campaign& campaign, const ReportOpti
   // class index counts the report's bands.
   for (auto& row : map.rows)
     for (auto& model : row.models)
-      for (auto& cell : model.cells) cell.decisions.resize(report.tolerances.size(), Decision::unknown);
+      for (auto& cell : model.cells)
+        cell.decisions.resize(report.tolerances.size(), Decision::unknown);
   for (std::size_t m = 0; m < map.models.size(); ++m)
     map.models[m].region = region_of(map, m, report.tolerances);
   report.map = std::move(map);
