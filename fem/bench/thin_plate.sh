@@ -36,20 +36,17 @@ for h in 0.003 0.01; do
     --set "Scenario/Plate radius=0.6" --set "Output/Directory=$output/control-$h" \
     > "$output/control-$h.log" 2>&1 || { echo "thin_plate: control failed, see $output/control-$h.log" >&2; exit 1; }
 done
-/usr/bin/python3 - "$output" "$reduced" <<'PY'
-import json, math, os, subprocess, sys
+/usr/bin/python3 - "$output" "$reduced" "$here" <<'PY'
+import json, math, os, sys
 import h5py, numpy as np
 d, reduced = sys.argv[1], sys.argv[2]
+sys.path.insert(0, sys.argv[3])
+from zener_model import R, impact as zener_impact
 index = json.load(open(os.path.join(d, "campaign", "index.json")))
-R, E, nu, rho = 0.01452, 2e11, 0.25, 7800
 
 
 def zener(h, v):
-    out = subprocess.run([reduced, "thin-plate", "--plate-modulus", str(E), "--plate-poisson", str(nu),
-                          "--plate-density", str(rho), "--thickness", str(h), "--sphere-modulus", str(E),
-                          "--sphere-poisson", str(nu), "--radius", str(R), "--sphere-density", str(rho),
-                          "--velocity", str(v)], capture_output=True, text=True, check=True).stdout
-    return json.loads(out)["impacts"][0]
+    return zener_impact(reduced, h, v)
 
 
 def gci(run, name):

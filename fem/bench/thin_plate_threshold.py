@@ -9,20 +9,17 @@ thin-plate model as the stand-in for the FEM between the campaign's thicknesses.
 
 Usage: /usr/bin/python3 fem/bench/thin_plate_threshold.py CAMPAIGN_DIR IMPACT_REDUCED
 """
-import json, os, subprocess, sys
+import json, os, sys
 import numpy as np
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from zener_model import R, impact
+
 campaign, reduced = sys.argv[1], sys.argv[2]
-E, NU, RHO, R = 2e11, 0.25, 7800, 0.01452  # fem/scenarios/thin_plate.prm
 
 
 def zener(h, v, b):
-    out = subprocess.run([reduced, "thin-plate", "--plate-modulus", str(E), "--plate-poisson", str(NU),
-                          "--plate-density", str(RHO), "--thickness", str(h), "--sphere-modulus", str(E),
-                          "--sphere-poisson", str(NU), "--radius", str(R), "--sphere-density", str(RHO),
-                          "--damping", str(b), "--velocity", str(v)],
-                         capture_output=True, text=True, check=True).stdout
-    return json.loads(out)["impacts"][0]
+    return impact(reduced, h, v, b)
 
 
 RIGID = 1e3  # a 1 km plate: lambda ~ 1e-10, rigid for every digit shown

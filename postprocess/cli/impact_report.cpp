@@ -217,7 +217,8 @@ std::vector<InputProblem> runs_without_history(const fs::path& campaign) {
 // The calibration: the given JSON, or one computed here (and written beside the report).
 std::optional<Calibration> obtain_calibration(const Arguments& arguments, const Campaign& input,
                                               std::vector<ReportProblem>& problems,
-                                              std::string& source) {
+                                              std::string& source,
+                                              std::optional<Calibration>& calibrated_here) {
   if (arguments.calibration) {
     source = arguments.calibration->string();
     if (!fs::is_regular_file(*arguments.calibration)) {
@@ -242,6 +243,7 @@ std::optional<Calibration> obtain_calibration(const Arguments& arguments, const 
       std::cerr << "impact-report: calibration: " << line << std::endl;
     };
   Calibration calibration = calibrate(input.runs, options);
+  calibrated_here = calibration; // before the campaign's input problems are added
   std::vector<CalibrationProblem> all;
   for (const auto& problem : input.problems)
     all.push_back({problem.source, problem.no_rebound ? "no rebound" : "input", problem.message});
@@ -283,7 +285,11 @@ int execute(const Arguments& arguments) {
     options.detail_row = row->second;
   }
   std::string calibration_source;
-  const auto calibration = obtain_calibration(arguments, input, problems, calibration_source);
+  std::optional<Calibration> calibrated_here;
+  const auto calibration =
+      obtain_calibration(arguments, input, problems, calibration_source, calibrated_here);
+  // The map's row of these runs is this calibration (the same options): not computed twice.
+  if (options.map_campaign) options.detail_row_calibration = std::move(calibrated_here);
   options.tolerances = arguments.tolerances;
   options.simulators = arguments.simulators;
   // The rows of a validity map (a two-axis campaign) are calibrated here, every law.

@@ -195,6 +195,16 @@ MapModelRow row_model(const Report& row, const std::string& key) {
 }
 
 
+/// Whether the calibration is of exactly these runs (the same HDF5 sources).
+bool same_runs(const Calibration& calibration, const std::vector<FemRun>& runs) {
+  std::vector<std::string> calibrated, given;
+  for (const auto& run : calibration.runs) calibrated.push_back(run.source);
+  for (const auto& run : runs) given.push_back(run.source);
+  std::sort(calibrated.begin(), calibrated.end());
+  std::sort(given.begin(), given.end());
+  return calibrated == given;
+}
+
 } // namespace
 
 std::size_t class_index(const MapCell& cell) { return class_index_of(cell); }
@@ -281,10 +291,16 @@ void add_validity_map(Report& report, const Campaign& campaign, const ReportOpti
           progress("map row " + name + ": " + line);
         };
       }
-      try {
-        calibration = calibrate(runs, calibration_options);
-      } catch (const std::exception& error) {
-        row.calibration_problems = std::string("the row could not be calibrated: ") + error.what();
+      if (options.detail_row_calibration && same_runs(*options.detail_row_calibration, runs)) {
+        calibration = options.detail_row_calibration;
+        if (calibration_options.progress)
+          calibration_options.progress("the calibration of the detail row, not repeated");
+      } else {
+        try {
+          calibration = calibrate(runs, calibration_options);
+        } catch (const std::exception& error) {
+          row.calibration_problems = std::string("the row could not be calibrated: ") + error.what();
+        }
       }
       Campaign row_campaign;
       row_campaign.runs = runs;

@@ -469,6 +469,49 @@ TEST(ValidityMapNoRebound, TheCellSaysWhyAndTheReportStaysComplete) {
   }
 }
 
+// impact-report calibrates the detail row (the thickest plate) for the sections after the
+// map: the map takes that calibration for the row of the same runs instead of calibrating it
+// again, and calibrates a row whose runs differ (here one run fewer) as before.
+TEST(ValidityMapDetailRow, TheDetailRowsCalibrationIsTakenForTheSameRunsOnly) {
+  const fs::path directory = write_campaign("validity_map_detail_row");
+  const Campaign campaign = read_campaign(directory);
+  fs::remove_all(directory);
+  const auto row = map_detail_row(campaign);
+  ASSERT_TRUE(row);
+  EXPECT_EQ(row->second, "Plate thickness = 0.4 m");
+  CalibrationOptions calibration_options;
+  calibration_options.laws = {"kuwabara-kono-no-tension"};
+  const std::string mark = "the detail row's own calibration";
+  for (const bool same : {true, false}) {
+    std::vector<FemRun> runs = row->first.runs;
+    if (!same) runs.pop_back();
+    Calibration detail = calibrate(runs, calibration_options);
+    detail.problems.push_back({"test", "input", mark});
+    ReportOptions options;
+    options.map_calibration = calibration_options;
+    std::vector<std::string> lines;
+    options.map_calibration.progress = [&lines](const std::string& line) { lines.push_back(line); };
+    options.map_campaign = campaign;
+    options.detail_row = row->second;
+    options.detail_row_calibration = detail;
+    const Report report = build_report(row->first, detail, {}, "detail row", "", options);
+    ASSERT_TRUE(report.map && report.map->available) << report.map->reason;
+    const auto count = [&lines](const std::string& text) {
+      return std::count_if(lines.begin(), lines.end(), [&text](const std::string& line) {
+        return line.find(text) != std::string::npos;
+      });
+    };
+    const std::string thickest = "map row Plate thickness = 0.4: ";
+    EXPECT_EQ(row_at(*report.map, 0.4).calibration_problems.find(mark) != std::string::npos, same);
+    EXPECT_EQ(count(thickest + "the calibration of the detail row, not repeated"), same ? 1 : 0);
+    EXPECT_EQ(count(thickest + "run 1/"), same ? 0 : 1);
+    for (const auto& [h, text] : {std::pair{0.004, "0.004"}, std::pair{0.04, "0.04"}}) {
+      EXPECT_EQ(row_at(*report.map, h).calibration_problems.find(mark), std::string::npos);
+      EXPECT_EQ(count(std::string("map row Plate thickness = ") + text + ": run 1/"), 1) << h;
+    }
+  }
+}
+
 // More than two axes, or two without the velocity: no map, the reason said.
 TEST(ValidityMapAxes, OnlyVelocityTimesOneOtherAxis) {
   Campaign campaign;

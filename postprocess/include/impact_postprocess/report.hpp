@@ -261,6 +261,10 @@ struct ReportOptions {
   /// one row of it (map_detail_row), and that row's name.
   std::optional<Campaign> map_campaign;
   std::string detail_row;
+  /// That row already calibrated with map_calibration's options (impact-report calibrates it
+  /// for the sections after the map): the map takes it for the row of the same runs (the
+  /// same HDF5 sources) instead of calibrating that row a second time.
+  std::optional<Calibration> detail_row_calibration;
 };
 
 /// The row of a two-axis campaign (velocity x one other parameter) that the report's sections
