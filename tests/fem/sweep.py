@@ -68,6 +68,15 @@ def stamps(directory):
     return {p: os.stat(f"{directory}/{p}/summary.json").st_mtime_ns for p in PATHS}
 
 
+def restart_skips_every_run(directory, before, label):
+    """Restarts the campaign in `directory`: whether it exits 0, says "complete, skipped" for
+    every run and leaves every summary.json as it was (`before`: their stamps)."""
+    code, output = campaign(directory)
+    print(f"--- {label} ---\n" + output)
+    return (code == 0 and all(status_of(output, p) == "complete, skipped" for p in PATHS)
+            and stamps(directory) == before)
+
+
 # --- bad sweep options: refused before anything is written ---
 bad = f"{work}/sweep_bad"
 if os.path.isdir(bad):
@@ -148,10 +157,8 @@ for v in SPEEDS:
 
 # --- restart: untouched ---
 before = stamps(a)
-code, output = campaign(a)
-print("--- restart, untouched ---\n" + output)
-checks.check(code == 0 and all(status_of(output, p) == "complete, skipped" for p in PATHS)
-             and stamps(a) == before, "untouched: every run skipped, summary.json untouched")
+checks.check(restart_skips_every_run(a, before, "restart, untouched"),
+             "untouched: every run skipped, summary.json untouched")
 checks.check(load_index(a) == index, "untouched: same index")
 
 # --- restart: history.h5 truncated to a third ---
@@ -213,18 +220,12 @@ checks.check(code == 0 and status_of(output, PATHS[0]) == "no checksums (run bef
 moved, copy = a + "_moved", a + "_copy"
 before = stamps(a)
 os.rename(a, moved)
-code, output = campaign(moved)
-print("--- moved ---\n" + output)
-checks.check(code == 0 and all(status_of(output, p) == "complete, skipped" for p in PATHS)
-             and stamps(moved) == before and not os.path.exists(a),
+checks.check(restart_skips_every_run(moved, before, "moved") and not os.path.exists(a),
              "moved campaign: every run recognised, nothing recomputed")
 checks.check(load_index(moved) == index, "moved campaign: same index")
 subprocess.run(["cp", "-r", moved, copy], check=True)
-before_copy = stamps(copy)
-code, output = campaign(copy)
-print("--- copied ---\n" + output)
-checks.check(code == 0 and all(status_of(output, p) == "complete, skipped" for p in PATHS)
-             and stamps(copy) == before_copy, "copied campaign: every run recognised, nothing recomputed")
+checks.check(restart_skips_every_run(copy, stamps(copy), "copied"),
+             "copied campaign: every run recognised, nothing recomputed")
 checks.check(load_index(copy) == index, "copied campaign: same index")
 code, output = campaign(moved)
 checks.check(code == 0 and output.count("complete, skipped") == 4, "the original, after the copy: all skipped")

@@ -2,6 +2,7 @@
 // Runs the impact-reduced tool as a user would, for the CLI tests: separate stdout and
 // stderr, and the exit code. IMPACT_REDUCED_CLI is the tool's path (set by CMake).
 
+#include <gtest/gtest.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -50,6 +51,17 @@ inline std::vector<std::string> arguments_of(const std::map<std::string, std::st
     arguments.push_back(value);
   }
   return arguments;
+}
+
+/// Expects `impact-reduced COMMAND` with these options refused as a user error: exit code 2,
+/// the option `--parameter` named on stderr, nothing on stdout. `what` labels the failure.
+inline void expect_rejected(const std::string& command,
+                            const std::map<std::string, std::string>& options,
+                            const std::string& parameter, const std::string& what) {
+  const auto run = run_cli(command, arguments_of(options));
+  EXPECT_EQ(run.exit_code, 2) << what << ": " << run.out << run.err;
+  EXPECT_NE(run.err.find("--" + parameter), std::string::npos) << what << ": " << run.err;
+  EXPECT_TRUE(run.out.empty()) << what << ": partial output " << run.out;
 }
 
 } // namespace impact::testing

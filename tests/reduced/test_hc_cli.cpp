@@ -11,6 +11,7 @@
 namespace {
 
 using impact::testing::arguments_of;
+using impact::testing::expect_rejected;
 using impact::testing::run_cli;
 
 const std::map<std::string, std::string> published = {{"mass", "0.1"},
@@ -44,14 +45,6 @@ TEST(HcCli, HistoryIsACsvTable) {
   int rows = 0;
   while (std::getline(lines, line)) ++rows;
   EXPECT_EQ(rows, 11);
-}
-
-void expect_rejected(const std::string& command, const std::map<std::string, std::string>& options,
-                     const std::string& parameter, const std::string& what) {
-  const auto run = run_cli(command, arguments_of(options));
-  EXPECT_EQ(run.exit_code, 2) << what << ": " << run.out << run.err;
-  EXPECT_NE(run.err.find("--" + parameter), std::string::npos) << what << ": " << run.err;
-  EXPECT_TRUE(run.out.empty()) << what << ": partial output " << run.out;
 }
 
 TEST(HcCli, BadInputExitsWithTwoAndNamesTheParameter) {

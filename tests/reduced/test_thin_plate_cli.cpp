@@ -93,10 +93,7 @@ TEST(ThinPlateCli, SeveralVelocitiesAsJsonAndCsv) {
 
 void expect_rejected(const std::map<std::string, std::string>& options,
                      const std::string& parameter, const std::string& what) {
-  const auto run = run_cli("thin-plate", arguments_of(options));
-  EXPECT_EQ(run.exit_code, 2) << what << ": " << run.out << run.err;
-  EXPECT_NE(run.err.find("--" + parameter), std::string::npos) << what << ": " << run.err;
-  EXPECT_TRUE(run.out.empty()) << what << ": partial output " << run.out;
+  impact::testing::expect_rejected("thin-plate", options, parameter, what);
 }
 
 TEST(ThinPlateCli, BadInputExitsWithTwoAndNamesTheOption) {
