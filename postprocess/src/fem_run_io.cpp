@@ -241,20 +241,34 @@ FemRun read_fem_run(const fs::path& path) {
   return run;
 }
 
+namespace {
+
+// The run at `path`, or none: why it cannot be read is then a problem of the campaign (a run
+// without rebound marked so), with the run's place in the sweep (`point`) when known.
+std::optional<FemRun> read_or_record(const fs::path& path, std::vector<InputProblem>& problems,
+                                     std::map<std::string, SweepValue> point = {}) {
+  try {
+    return read_fem_run(path);
+  } catch (const RunInputError& error) {
+    problems.push_back({path.string(), error.what(),
+                        dynamic_cast<const NoRebound*>(&error) != nullptr, std::move(point)});
+    return std::nullopt;
+  }
+}
+
+void sort_by_velocity(std::vector<FemRun>& runs) {
+  std::stable_sort(runs.begin(), runs.end(), [](const FemRun& a, const FemRun& b) {
+    return a.impact_velocity < b.impact_velocity;
+  });
+}
+
+} // namespace
+
 Campaign read_runs(const std::vector<fs::path>& paths) {
   Campaign campaign;
-  for (const auto& path : paths) {
-    try {
-      campaign.runs.push_back(read_fem_run(path));
-    } catch (const RunInputError& error) {
-      campaign.problems.push_back({path.string(), error.what(),
-                                   dynamic_cast<const NoRebound*>(&error) != nullptr});
-    }
-  }
-  std::stable_sort(campaign.runs.begin(), campaign.runs.end(),
-                   [](const FemRun& a, const FemRun& b) {
-                     return a.impact_velocity < b.impact_velocity;
-                   });
+  for (const auto& path : paths)
+    if (auto run = read_or_record(path, campaign.problems)) campaign.runs.push_back(std::move(*run));
+  sort_by_velocity(campaign.runs);
   return campaign;
 }
 
@@ -329,23 +343,21 @@ std::vector<SweepAxis> read_axes(const nlohmann::json& index, const fs::path& in
 void check_point(const std::map<std::string, SweepValue>& point,
                  const std::vector<SweepAxis>& axes, const std::string& file_words,
                  const std::string& whose) {
-  const auto index_error = [&](const std::string&, const std::string& problem) {
+  const auto reject = [&](const std::string& problem) {
     throw RunInputError(file_words + ": " + problem);
   };
-  const std::string file;
   for (const auto& axis : axes) {
     const auto found = point.find(axis.parameter);
-    if (found == point.end())
-      index_error(file, whose + " has no value of the axis '" + axis.parameter + "'");
+    if (found == point.end()) reject(whose + " has no value of the axis '" + axis.parameter + "'");
     if (std::none_of(axis.values.begin(), axis.values.end(),
                      [&](const SweepValue& value) { return value.matches(found->second); }))
-      index_error(file, whose + " has '" + axis.parameter + "' = " + value_text(found->second) +
-                            ", which is not one of the axis's values");
+      reject(whose + " has '" + axis.parameter + "' = " + value_text(found->second) +
+             ", which is not one of the axis's values");
   }
   for (const auto& [parameter, value] : point)
     if (std::none_of(axes.begin(), axes.end(),
                      [&](const SweepAxis& axis) { return axis.parameter == parameter; }))
-      index_error(file, whose + " has a value of '" + parameter + "', which is not an axis");
+      reject(whose + " has a value of '" + parameter + "', which is not an axis");
 }
 
 std::string describe(const IndexEntry& entry) {
@@ -542,22 +554,13 @@ Campaign read_campaign(const fs::path& directory) {
   }
   Campaign campaign;
   for (std::size_t k = 0; k < paths.size(); ++k) {
-    FemRun run;
-    try {
-      run = read_fem_run(paths[k]);
-    } catch (const RunInputError& error) {
-      campaign.problems.push_back({paths[k].string(), error.what(),
-                                   dynamic_cast<const NoRebound*>(&error) != nullptr,
-                                   listed[k]->point.value_or(std::map<std::string, SweepValue>{})});
-      continue;
-    }
-    if (!axes.empty()) run.sweep_point = point_of(run, listed[k]->point, axes);
-    campaign.runs.push_back(std::move(run));
+    auto run = read_or_record(paths[k], campaign.problems,
+                              listed[k]->point.value_or(std::map<std::string, SweepValue>{}));
+    if (!run) continue;
+    if (!axes.empty()) run->sweep_point = point_of(*run, listed[k]->point, axes);
+    campaign.runs.push_back(std::move(*run));
   }
-  std::stable_sort(campaign.runs.begin(), campaign.runs.end(),
-                   [](const FemRun& a, const FemRun& b) {
-                     return a.impact_velocity < b.impact_velocity;
-                   });
+  sort_by_velocity(campaign.runs);
   campaign.problems.insert(campaign.problems.begin(), missing.problems.begin(),
                            missing.problems.end());
   campaign.axes = std::move(axes);
