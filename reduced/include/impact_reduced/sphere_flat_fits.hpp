@@ -52,7 +52,7 @@
 /// All functions: SI units; InvalidInput naming the parameter for non-positive radius,
 /// modulus, strength, negative or non-finite interference, Poisson ratio outside (-1, 0.5).
 /// Accuracy: a few ulps for the closed forms; the loading work of the Jackson-Green fit
-/// (Gauss-Kronrod) to about 1e-15 relative.
+/// (composite Gauss-Legendre) to about 1e-15 relative.
 
 #include "impact_reduced/elastic_plastic_impact.hpp"
 
