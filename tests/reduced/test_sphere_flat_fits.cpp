@@ -154,10 +154,10 @@ TEST(JacksonGreen, ImpactAgreesWithAnIndependentIntegration) {
                                     steel.contact_modulus, steel.radius, steel_mass);
   const auto law = reference_law(steel);
   double worst = 0;
-  for (const double ratio : {0.5, 2.6, 3.0, 10.0, 100.0}) {
+  for (const double ratio : {0.5, 2.6, 10.0, 100.0}) {
     const auto impact = elastic_plastic_impact(steel_mass, ratio * v_y, contact);
     const auto ode = impact::testing::integrate_plastic_reference(steel_mass, ratio * v_y, law,
-                                                                  impact.approach_max);
+                                                                  impact.approach_max, 16000);
     const double errors[] = {
         relative(ode.approach_max, impact.approach_max),
         relative(-ode.rebound_velocity / (ratio * v_y), impact.restitution),
@@ -166,9 +166,12 @@ TEST(JacksonGreen, ImpactAgreesWithAnIndependentIntegration) {
         double(std::abs(ode.separation_approach - impact.residual_approach)) /
             impact.approach_max};
     for (const double error : errors) {
-      EXPECT_LT(error, 1e-10) << "V/V_y = " << ratio;
+      EXPECT_LT(error, 1e-12) << "V/V_y = " << ratio;
       worst = std::max(worst, error);
     }
+    std::cout << "  differences x_max, e, t_comp, t_c, x_r:";
+    for (const double error : errors) std::cout << " " << error;
+    std::cout << "\n";
     std::cout << "Jackson-Green impact V/V_y = " << ratio << ": e = " << impact.restitution
               << ", x_max/omega_c = " << impact.approach_max / contact.critical_interference()
               << ", x_r/x_max = " << impact.residual_approach / impact.approach_max << "\n";
