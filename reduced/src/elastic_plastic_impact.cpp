@@ -72,6 +72,7 @@ ElasticPlasticImpactResponse elastic_plastic_impact(double mass, double velocity
       iterations);
   const double approach_max = 0.5 * (low + high);
   const double force_max = contact.loading_force(approach_max);
+  const double work_max = contact.loading_work(approach_max);
 
   // Compression time: x = x_max (1 - s^2), dt = 2 x_max s ds / x', with
   // x'^2 = (2/m) * (work of F_L between x and x_max): finite at s = 0, split at breakpoints.
@@ -82,9 +83,12 @@ ElasticPlasticImpactResponse elastic_plastic_impact(double mass, double velocity
   std::sort(ends.begin(), ends.end());
   const auto density = [&](double s) {
     // work / s^2 -> F_max x_max as s -> 0 (relative error ~ s^2: exact below 1e-8).
-    const double work_per_s2 =
-        s < 1e-8 ? force_max * approach_max
-                 : loading_work_below(contact, approach_max, approach_max * s * s) / (s * s);
+    const double distance = approach_max * s * s;
+    if (s < 1e-8) return 2 * approach_max / std::sqrt(2 * force_max * approach_max / mass);
+    const double work = distance > 0.5 * approach_max
+                            ? work_max - contact.loading_work(approach_max - distance)
+                            : local_work(contact, approach_max, distance);
+    const double work_per_s2 = work / (s * s);
     return 2 * approach_max / std::sqrt(2 * work_per_s2 / mass);
   };
   thread_local boost::math::quadrature::tanh_sinh<double> quadrature;
