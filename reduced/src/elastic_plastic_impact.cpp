@@ -107,7 +107,10 @@ ElasticPlasticImpactResponse elastic_plastic_impact(double mass, double velocity
   const double separation_fraction = (separation_approach - unloading.residual_approach) /
                                      branch_length;
   const double remaining = std::pow(separation_fraction, 2.5);  // (u_s)^(5/2)
-  const double rebound_speed = full_speed * std::sqrt(1 - remaining);
+  // A branch may not return more energy than the loading absorbed. Fitted loading curves can
+  // make it do so (the Jackson-Green fit jumps 0.5 % above Hertz at 1.9 omega_c): the impact
+  // is then elastic, e = 1, not e > 1.
+  const double rebound_speed = std::min(velocity, full_speed * std::sqrt(1 - remaining));
   const double restitution_time =
       branch_length / full_speed *
       (hertz_phase_factor() - 0.4 * (remaining > 0 ? boost::math::beta(0.4, 0.5, remaining) : 0.0));

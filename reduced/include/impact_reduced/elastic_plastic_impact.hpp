@@ -5,7 +5,10 @@
 /// a Hertzian unloading branch on an enlarged radius,
 ///     F_U(x) = k_u (x - x_r)^(3/2)  for x_r <= x <= x_max,   F_U(x_max) = F_L(x_max),
 /// which leaves the permanent (residual) approach x_r. The bodies separate when F_U returns
-/// to 0 at x = x_r (the contact cannot pull). Thornton (1997) and the Jackson-Green loading
+/// to 0 at x = x_r (the contact cannot pull), or at x = 0 if x_r < 0 (a branch that would still
+/// push at x = 0). A branch that would return more energy than the loading absorbed (possible
+/// only with fitted loading curves, see sphere_flat_fits.hpp) gives an elastic rebound, e = 1,
+/// never e > 1. Thornton (1997) and the Jackson-Green loading
 /// with the radius-preserving unloading are such laws (thornton.hpp, sphere_flat_fits.hpp).
 ///
 /// Model: m x'' = -F(x), x(0) = 0, x'(0) = V > 0. With no rate dependence the impact follows
