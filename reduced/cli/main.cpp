@@ -36,6 +36,7 @@ commands:
               --model thornton|jackson-green --radius R (--mass M | --density RHO)
               --modulus E --poisson NU [--flat-modulus E --flat-poisson NU]
               --yield-strength Y [--criterion johnson|jackson-green] --velocity V[,V...]
+              [--loop N]: CSV time,approach,approach_rate,force of one impact's loop
 
 Units are SI. Output is JSON, or CSV where it is a table (--format csv).
 Exit codes: 0 success, 2 bad input (the message names the parameter), 1 internal error.

@@ -1,6 +1,7 @@
 // impact-reduced plastic: elastic-plastic impacts of a sphere on a flat (or of two spheres,
 // given by their effective radius and mass) under Thornton's law or the Jackson-Green loading
-// with the radius-preserving Hertzian unloading, for a list of velocities.
+// with the radius-preserving Hertzian unloading, for a list of velocities; or, with --loop N,
+// the force-approach loop of one impact with its times (CSV, N points per branch).
 
 #include "commands.hpp"
 #include "output.hpp"
@@ -10,6 +11,7 @@
 #include "impact_reduced/yield_velocity.hpp"
 
 #include <memory>
+#include <string>
 
 namespace impact::cli {
 
@@ -45,6 +47,10 @@ int run_plastic_command(CommandLine& options, std::ostream& out) {
       model == "thornton" ? options.choice("criterion", {"johnson", "jackson-green"}, "johnson")
                           : "jackson-green";
   const std::vector<double> velocities = options.reals("velocity", Range::positive());
+  const long loop_points = options.integer("loop", 2, 1'000'000, 0);
+  if (loop_points > 0 && velocities.size() != 1)
+    throw UsageError("--loop prints the force-approach loop of one impact: give one --velocity "
+                     "(received " + std::to_string(velocities.size()) + ")");
   const std::string format = options.choice("format", {"json", "csv"}, "json");
   options.finish();
 
@@ -60,6 +66,15 @@ int run_plastic_command(CommandLine& options, std::ostream& out) {
   else
     contact = std::make_unique<JacksonGreenContact>(
         SphereFlatContact{radius, e_star, yield_strength, poisson_ratio});
+
+  if (loop_points > 0) {
+    std::vector<std::vector<double>> rows;
+    for (const auto& state : elastic_plastic_impact_loop(mass, velocities.front(), *contact,
+                                                         static_cast<std::size_t>(loop_points)))
+      rows.push_back({state.time, state.approach, state.approach_rate, state.force});
+    print_csv(out, {"time", "approach", "approach_rate", "force"}, rows);
+    return 0;
+  }
 
   const std::vector<std::string> keys = {
       "velocity",        "velocity_ratio",   "restitution",      "contact_time",

@@ -124,4 +124,34 @@ TEST(PlasticCli, BadInputExitsWithTwoAndNamesTheOption) {
   expect_rejected(options, "colour", "unknown --colour");
 }
 
+TEST(PlasticCli, LoopOfOneImpactAsCsv) {
+  auto options = thornton;
+  options["velocity"] = "1";
+  options["loop"] = "50";
+  const auto run = run_cli("plastic", arguments_of(options));
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  std::stringstream lines(run.out);
+  std::string line;
+  std::getline(lines, line);
+  EXPECT_EQ(line, "time,approach,approach_rate,force");
+  int rows = 0;
+  std::string last;
+  while (std::getline(lines, line)) {
+    ++rows;
+    last = line;
+  }
+  EXPECT_EQ(rows, 99);
+  const double mass = 4.0 / 3.0 * pi * 1e-6 * 7800;
+  const auto expected =
+      ThorntonImpact({mass, 0.01, contact_modulus(2.1e11, 0.3, 2.1e11, 0.3), 1.6e9}, 1.0)
+          .response();
+  EXPECT_NEAR(std::stod(last.substr(0, last.find(','))), expected.contact_time,
+              1e-13 * expected.contact_time);
+  options["velocity"] = "1,2";
+  expect_rejected(options, "loop", "--loop with two velocities");
+  options["velocity"] = "1";
+  options["loop"] = "1";
+  expect_rejected(options, "loop", "--loop 1");
+}
+
 } // namespace

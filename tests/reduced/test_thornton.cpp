@@ -163,6 +163,62 @@ TEST(Thornton, PermanentApproachAndUnloadingRadius) {
               1e-14 * steel.mass * v * v);
 }
 
+TEST(Thornton, LoopEndsAtTheResponseAndKeepsTheEnergyBalance) {
+  const double v_y = ThorntonImpact(steel, 1.0).yield_velocity();
+  const double velocity = 10 * v_y;
+  const ThorntonImpact impact(steel, velocity);
+  const auto response = impact.response();
+  const auto loop = elastic_plastic_impact_loop(steel.mass, velocity, impact.contact(), 101);
+  ASSERT_EQ(loop.size(), 201u);
+  EXPECT_EQ(loop.front().time, 0.0);
+  EXPECT_EQ(loop.front().approach, 0.0);
+  EXPECT_NEAR(loop.front().approach_rate, velocity, 1e-15 * velocity);
+  const auto& peak = loop[100];
+  EXPECT_NEAR(peak.time, response.compression_time, 1e-13 * response.compression_time);
+  EXPECT_NEAR(peak.approach, response.approach_max, 1e-14 * response.approach_max);
+  EXPECT_EQ(peak.approach_rate, 0.0);
+  EXPECT_NEAR(peak.force, response.force_max, 1e-14 * response.force_max);
+  EXPECT_NEAR(loop.back().time, response.contact_time, 1e-13 * response.contact_time);
+  EXPECT_NEAR(loop.back().approach, response.residual_approach, 1e-14 * response.approach_max);
+  EXPECT_NEAR(loop.back().approach_rate, response.rebound_velocity, 1e-13 * velocity);
+  EXPECT_NEAR(loop.back().force, 0.0, 1e-12 * response.force_max);
+  const auto unloading = impact.contact().unloading(response.approach_max);
+  for (std::size_t i = 1; i < loop.size(); ++i) {
+    EXPECT_GT(loop[i].time, loop[i - 1].time) << i;
+    const double kinetic = 0.5 * steel.mass * loop[i].approach_rate * loop[i].approach_rate;
+    const double total = 0.5 * steel.mass * velocity * velocity;
+    if (i <= 100) {  // loading: m v^2 / 2 + W_L(x) = m V^2 / 2
+      EXPECT_NEAR(kinetic + impact.contact().loading_work(loop[i].approach), total, 1e-13 * total);
+    } else {  // unloading: m v^2 / 2 = energy released from x_max down to x
+      const double released =
+          0.4 * unloading.stiffness *
+          (std::pow(response.approach_max - unloading.residual_approach, 2.5) -
+           std::pow(loop[i].approach - unloading.residual_approach, 2.5));
+      EXPECT_NEAR(kinetic, released, 1e-13 * total);
+    }
+  }
+}
+
+TEST(Thornton, LoopTimesBelowYieldAreHertzs) {
+  // Elastic impact: t(x) = (x_H / V) (2/5) B((x/x_H)^(5/2); 2/5, 1/2), the incomplete Beta
+  // written here as its series sum_k (1/2)_k / k! w^(k + 2/5) / (k + 2/5).
+  const double velocity = 0.5 * ThorntonImpact(steel, 1.0).yield_velocity();
+  const ThorntonImpact impact(steel, velocity);
+  const double x_h = impact.response().approach_max;
+  const auto loop = elastic_plastic_impact_loop(steel.mass, velocity, impact.contact(), 11);
+  for (int k = 1; k < 10; ++k) {
+    const double w = std::pow(loop[k].approach / x_h, 2.5);
+    long double sum = 0, pochhammer = 1, power = std::pow((long double)w, 0.4L);
+    for (int n = 0; n < 2000; ++n) {
+      sum += pochhammer * power / (n + 0.4L);
+      pochhammer *= (n + 0.5L) / (n + 1);
+      power *= w;
+    }
+    const double expected = double(0.4L * x_h / velocity * sum);
+    EXPECT_NEAR(loop[k].time, expected, 1e-13 * expected) << k;
+  }
+}
+
 TEST(Thornton, InvalidInputNamesTheParameter) {
   const auto parameter_of = [](ThorntonParameters p, double velocity) {
     try {

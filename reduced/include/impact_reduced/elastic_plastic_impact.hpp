@@ -23,6 +23,9 @@
 /// restitution, x_max, F_max, x_r within 1e-13 relative; compression and contact time
 /// within 1e-12.
 
+#include "impact_reduced/impact_ode.hpp"
+
+#include <cstddef>
 #include <vector>
 
 namespace impact::reduced {
@@ -64,6 +67,16 @@ struct ElasticPlasticImpactResponse {
 /// impact energy (bounded loading work).
 ElasticPlasticImpactResponse elastic_plastic_impact(double mass, double velocity,
                                                     const ElasticPlasticContact& contact);
+
+/// The force-approach loop of the same impact with its times: `points_per_phase` (>= 2)
+/// states equally spaced in approach on the loading branch (x = 0 to x_max) and as many on
+/// the unloading branch (x_max down to the separation approach, x_max not repeated). Times
+/// and rates carry the accuracy of the response (1e-12). Throws InvalidInput naming
+/// "points_per_phase", "mass" or "velocity". (Where the energy guard above applies, the
+/// branch's last rate exceeds V slightly; the response reports e = 1.)
+std::vector<ImpactSample> elastic_plastic_impact_loop(double mass, double velocity,
+                                                      const ElasticPlasticContact& contact,
+                                                      std::size_t points_per_phase);
 
 /// The work of the loading curve between x_max - d and x_max, integral of F_L [J], evaluated
 /// without cancellation for small d (0 <= d <= x_max). Used by the time integrals; exposed
