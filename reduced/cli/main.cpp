@@ -36,6 +36,7 @@ commands:
               --model thornton|jackson-green --radius R (--mass M | --density RHO)
               --modulus E --poisson NU [--flat-modulus E --flat-poisson NU]
               --yield-strength Y [--criterion johnson|jackson-green] --velocity V[,V...]
+              [--unloading contact-radius|brake] (jackson-green)
               [--loop N]: CSV time,approach,approach_rate,force of one impact's loop
 
 Units are SI. Output is JSON, or CSV where it is a table (--format csv).

@@ -46,6 +46,13 @@ int run_plastic_command(CommandLine& options, std::ostream& out) {
   const std::string criterion_name =
       model == "thornton" ? options.choice("criterion", {"johnson", "jackson-green"}, "johnson")
                           : "jackson-green";
+  if (model == "thornton" && options.has("unloading"))
+    throw UsageError("--unloading applies to --model jackson-green only (Thornton's law unloads "
+                     "on its own R_p)");
+  const std::string unloading_rule =
+      model == "jackson-green"
+          ? options.choice("unloading", {"contact-radius", "brake"}, "contact-radius")
+          : "thornton";
   const std::vector<double> velocities = options.reals("velocity", Range::positive());
   const long loop_points = options.integer("loop", 2, 1'000'000, 0);
   if (loop_points > 0 && velocities.size() != 1)
@@ -65,7 +72,9 @@ int run_plastic_command(CommandLine& options, std::ostream& out) {
     contact = std::make_unique<ThorntonContact>(radius, e_star, p_y);
   else
     contact = std::make_unique<JacksonGreenContact>(
-        SphereFlatContact{radius, e_star, yield_strength, poisson_ratio});
+        SphereFlatContact{radius, e_star, yield_strength, poisson_ratio},
+        unloading_rule == "brake" ? JacksonGreenUnloading::brake
+                                  : JacksonGreenUnloading::contact_radius);
 
   if (loop_points > 0) {
     std::vector<std::vector<double>> rows;
@@ -94,13 +103,19 @@ int run_plastic_command(CommandLine& options, std::ostream& out) {
   }
   Json result = Json::object();
   result["model"] = model;
-  result["law"] =
-      model == "thornton"
-          ? "Thornton (1997): Hertz to p0 = p_y, then F = F_y + pi p_y R (x - x_y); Hertzian "
-            "unloading on R_p = 4 E* a_p^3 / (3 F*), a_p^2 = (2 F* + F_y) / (2 pi p_y)"
-          : "Jackson & Green (2005) loading (Hertz up to 1.9 omega_c, their fit beyond); "
-            "Hertzian unloading keeping the contact radius of the maximum";
+  std::string law;
+  if (model == "thornton")
+    law = "Thornton (1997): Hertz to p0 = p_y, then F = F_y + pi p_y R (x - x_y); Hertzian "
+          "unloading on R_p = 4 E* a_p^3 / (3 F*), a_p^2 = (2 F* + F_y) / (2 pi p_y)";
+  else
+    law = std::string("Jackson & Green (2005) loading (Hertz up to 1.9 omega_c, their fit "
+                      "beyond); ") +
+          (unloading_rule == "brake"
+               ? "Hertzian unloading of Brake (2015): recovery x_max P_m / P_Hertz(x_max)"
+               : "Hertzian unloading keeping the contact radius of the maximum");
+  result["law"] = law;
   result["yield_criterion"] = criterion_name;
+  result["unloading"] = unloading_rule;
   result["radius"] = radius;
   result["mass"] = mass;
   result["contact_modulus"] = e_star;

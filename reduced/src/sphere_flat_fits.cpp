@@ -105,16 +105,18 @@ double kogut_etsion_load_ratio(double interference_ratio, double poisson_ratio) 
 }
 
 double jackson_green_residual_interference(double interference_max,
-                                           const SphereFlatContact& contact) {
+                                           const SphereFlatContact& contact,
+                                           JacksonGreenUnloading rule) {
   require_non_negative("interference_max", interference_max);
   validate(contact);
   if (interference_max == 0) return 0.0;
-  const JacksonGreenContact law(contact);
+  const JacksonGreenContact law(contact, rule);
   return std::max(0.0, law.unloading(interference_max).residual_approach);
 }
 
-JacksonGreenContact::JacksonGreenContact(const SphereFlatContact& contact)
-  : contact_(contact), critical_interference_(jackson_green_critical_interference(contact)),
+JacksonGreenContact::JacksonGreenContact(const SphereFlatContact& contact,
+                                         JacksonGreenUnloading rule)
+  : contact_(contact), rule_(rule), critical_interference_(jackson_green_critical_interference(contact)),
     transition_(jackson_green_transition * critical_interference_),
     transition_work_(0.4 * hertz_load(transition_, contact) * transition_) {}
 
@@ -142,12 +144,17 @@ double JacksonGreenContact::loading_work(double approach) const {
 HertzianUnloading JacksonGreenContact::unloading(double approach_max) const {
   require_positive("approach_max", approach_max);
   const double force = loading_force(approach_max);
+  if (approach_max <= transition_)  // Hertz: R_u = R, no residual, exactly.
+    return {4.0 / 3.0 * contact_.contact_modulus * std::sqrt(contact_.radius), 0.0};
+  if (rule_ == JacksonGreenUnloading::brake) {
+    // Elastic recovery x_max P_m / P_Hertz(x_max); F = P_m at x_max fixes the stiffness.
+    const double recovery = approach_max * force / hertz_load(approach_max, contact_);
+    return {force / std::pow(recovery, 1.5), approach_max - recovery};
+  }
   const double radius = jackson_green_contact_radius(approach_max, contact_);
   const double unloading_radius =
       4 * contact_.contact_modulus * radius * radius * radius / (3 * force);
   const double elastic_approach = 3 * force / (4 * contact_.contact_modulus * radius);
-  if (approach_max <= transition_)  // Hertz: R_u = R, no residual, exactly.
-    return {4.0 / 3.0 * contact_.contact_modulus * std::sqrt(contact_.radius), 0.0};
   return {4.0 / 3.0 * contact_.contact_modulus * std::sqrt(unloading_radius),
           approach_max - elastic_approach};
 }

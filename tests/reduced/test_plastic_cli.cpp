@@ -114,6 +114,12 @@ TEST(PlasticCli, BadInputExitsWithTwoAndNamesTheOption) {
   options["criterion"] = "johnson";
   expect_rejected(options, "criterion", "--criterion with jackson-green");
   options = thornton;
+  options["unloading"] = "brake";
+  expect_rejected(options, "unloading", "--unloading with thornton");
+  options["model"] = "jackson-green";
+  options["unloading"] = "ekk";
+  expect_rejected(options, "unloading", "--unloading ekk");
+  options = thornton;
   options["mass"] = "0.1";
   expect_rejected(options, "mass", "--mass and --density");
   options = thornton;
@@ -122,6 +128,23 @@ TEST(PlasticCli, BadInputExitsWithTwoAndNamesTheOption) {
   options = thornton;
   options["colour"] = "red";
   expect_rejected(options, "colour", "unknown --colour");
+}
+
+TEST(PlasticCli, JacksonGreenWithBrakesUnloading) {
+  auto options = thornton;
+  options["model"] = "jackson-green";
+  options["unloading"] = "brake";
+  options["velocity"] = "2";
+  const auto run = run_cli("plastic", arguments_of(options));
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const auto json = nlohmann::json::parse(run.out);
+  EXPECT_EQ(json["unloading"], "brake");
+  const double mass = 4.0 / 3.0 * pi * 1e-6 * 7800;
+  const JacksonGreenContact contact({0.01, contact_modulus(2.1e11, 0.3, 2.1e11, 0.3), 1e9, 0.3},
+                                    JacksonGreenUnloading::brake);
+  const auto expected = elastic_plastic_impact(mass, 2.0, contact);
+  EXPECT_EQ(json["impacts"][0]["restitution"].get<double>(), expected.restitution);
+  EXPECT_EQ(json["impacts"][0]["residual_approach"].get<double>(), expected.residual_approach);
 }
 
 TEST(PlasticCli, LoopOfOneImpactAsCsv) {

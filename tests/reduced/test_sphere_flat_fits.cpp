@@ -111,7 +111,8 @@ TEST(KogutEtsion, CriticalValuesAndBranchesByHand) {
               1e-12 * p_c * 5);
 }
 
-impact::testing::PlasticReferenceLaw reference_law(const SphereFlatContact& s) {
+impact::testing::PlasticReferenceLaw reference_law(const SphereFlatContact& s,
+                                                   bool brake = false) {
   const long double c = 1.295L * std::exp(0.736L * s.poisson_ratio);
   const long double e = s.contact_modulus, r = s.radius;
   const long double omega_c = std::pow(pi_l * c * s.yield_strength / (2 * e), 2) * r;
@@ -129,6 +130,12 @@ impact::testing::PlasticReferenceLaw reference_law(const SphereFlatContact& s) {
       return;
     }
     const long double p_m = load(x_max), a_m = radius(x_max);
+    if (brake) {  // Brake: x_r = x_m (1 - P_m / ((4/3) E* sqrt(R) x_m^1.5)), R_u = P_m^2/((4/3 E*)^2 (x_m - x_r)^3)
+      x_r = x_max * (1 - p_m / (4.0L / 3.0L * e * std::sqrt(r) * std::pow(x_max, 1.5L)));
+      const long double r_u = p_m * p_m / std::pow(4.0L / 3.0L * e, 2) / std::pow(x_max - x_r, 3);
+      stiffness = 4.0L / 3.0L * e * std::sqrt(r_u);
+      return;
+    }
     stiffness = 4.0L / 3.0L * e * std::sqrt(4 * e * a_m * a_m * a_m / (3 * p_m));
     x_r = x_max - 3 * p_m / (4 * e * a_m);
   };
@@ -178,6 +185,30 @@ TEST(JacksonGreen, ImpactAgreesWithAnIndependentIntegration) {
   }
   std::cout << "Jackson-Green: worst relative difference to the RKF7(8) integration " << worst
             << "\n";
+}
+
+TEST(JacksonGreen, BrakesUnloadingAgreesWithAnIndependentIntegration) {
+  const JacksonGreenContact contact(steel, JacksonGreenUnloading::brake);
+  const double v_y = yield_velocity(jackson_green_yield_coefficient(0.3) * 1e9,
+                                    steel.contact_modulus, steel.radius, steel_mass);
+  const auto law = reference_law(steel, true);
+  for (const double ratio : {10.0, 100.0}) {
+    const auto impact = elastic_plastic_impact(steel_mass, ratio * v_y, contact);
+    const auto ode = impact::testing::integrate_plastic_reference(steel_mass, ratio * v_y, law,
+                                                                  impact.approach_max, 16000);
+    EXPECT_LT(relative(-ode.rebound_velocity / (ratio * v_y), impact.restitution), 1e-12) << ratio;
+    EXPECT_LT(relative(ode.contact_time, impact.contact_time), 1e-12) << ratio;
+    EXPECT_LT(double(std::abs(ode.separation_approach - impact.residual_approach)) /
+                  impact.approach_max, 1e-12) << ratio;
+    std::cout << "Jackson-Green + Brake unloading V/V_y = " << ratio << ": e = "
+              << impact.restitution << ", x_r/x_max = "
+              << impact.residual_approach / impact.approach_max << "\n";
+  }
+  // By hand at omega* = 20: omega_r = omega_m (1 - P_m / P_Hertz(omega_m)).
+  const double omega = 20 * jackson_green_critical_interference(steel);
+  const double hertz = 4.0 / 3.0 * steel.contact_modulus * 0.1 * std::pow(omega, 1.5);
+  EXPECT_NEAR(jackson_green_residual_interference(omega, steel, JacksonGreenUnloading::brake),
+              omega * (1 - jackson_green_load(omega, steel) / hertz), 1e-15 * omega);
 }
 
 TEST(JacksonGreen, NoReboundAboveTheImpactVelocityNextToTheFitsJump) {

@@ -45,7 +45,8 @@
 /// the unloading that tmd-lab/microslip-rough-contact SPHERE_PLASTIC_PRE2.m attributes to
 /// Etsion, Kligerman & Kadin (Int. J. Solids Struct. 42:3716, 2005). EKK's own empirical
 /// fits of the unloading curve and of omega_r could not be read here and are NOT
-/// implemented; neither is Brake (2015). Where the loading fit lies above Hertz (just above
+/// implemented; Brake's (2015) unloading is available as read in one implementation
+/// (JacksonGreenUnloading::brake). Where the loading fit lies above Hertz (just above
 /// omega* = 1.9) this omega_r is negative: the surfaces then separate at omega = 0 with no
 /// dent (residual 0), see residual_interference.
 ///
@@ -91,17 +92,29 @@ double kogut_etsion_load_ratio(double interference_ratio, double poisson_ratio);
 
 // ---- Unloading ----
 
-/// Residual interference [m] after loading along Jackson-Green to omega_max >= 0 and the
-/// radius-preserving Hertzian unloading; max(0, omega_max - 3 P_m / (4 E* a_m)).
-double jackson_green_residual_interference(double interference_max,
-                                           const SphereFlatContact& contact);
+/// The Hertzian unloading branch after Jackson-Green loading to (omega_max, P_m):
+///   - contact_radius: keeps the contact radius a_m of the maximum (above);
+///   - brake: the unloading of Brake (Int. J. Solids Struct., 2015) as read in
+///     tmd-lab/microslip-rough-contact ROUTINES/FRIC_MODELS/PLASTIC/SPHERE_PLASTIC_PRE.m (one
+///     reading; the paper could not be read here): omega_r = omega_max - P_m / ((4/3) E*
+///     sqrt(R omega_max)) and R_u = P_m^2 / ((4/3 E*)^2 (omega_max - omega_r)^3), i.e. the
+///     elastic recovery is omega_max P_m / P_Hertz(omega_max) and R_u = R P_Hertz / P_m.
+enum class JacksonGreenUnloading { contact_radius, brake };
 
-/// Jackson-Green loading with the radius-preserving Hertzian unloading. The residual
-/// approach of `unloading` is the (possibly negative) zero of the Hertzian branch; the
-/// impact separates at max(0, x_r).
+/// Residual interference [m] after loading along Jackson-Green to omega_max >= 0 and the
+/// Hertzian unloading `rule`; max(0, omega_r) (contact_radius: omega_r = omega_max -
+/// 3 P_m / (4 E* a_m)).
+double jackson_green_residual_interference(
+    double interference_max, const SphereFlatContact& contact,
+    JacksonGreenUnloading rule = JacksonGreenUnloading::contact_radius);
+
+/// Jackson-Green loading with a Hertzian unloading rule. The residual approach of
+/// `unloading` is the (possibly negative) zero of the Hertzian branch; the impact separates
+/// at max(0, x_r).
 class JacksonGreenContact final : public ElasticPlasticContact {
 public:
-  explicit JacksonGreenContact(const SphereFlatContact& contact);
+  explicit JacksonGreenContact(const SphereFlatContact& contact,
+                               JacksonGreenUnloading rule = JacksonGreenUnloading::contact_radius);
   double loading_force(double approach) const override;
   double loading_work(double approach) const override;
   std::vector<double> loading_breakpoints() const override { return {transition_}; }
@@ -110,6 +123,7 @@ public:
 
 private:
   SphereFlatContact contact_;
+  JacksonGreenUnloading rule_;
   double critical_interference_;
   double transition_;       // 1.9 omega_c
   double transition_work_;  // Hertz work up to the transition
