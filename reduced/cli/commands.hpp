@@ -13,5 +13,6 @@ int run_damping_command(CommandLine& options, std::ostream& out);
 int run_law_command(CommandLine& options, std::ostream& out);
 int run_oscillator_command(CommandLine& options, std::ostream& out);
 int run_thin_plate_command(CommandLine& options, std::ostream& out);
+int run_plastic_command(CommandLine& options, std::ostream& out);
 
 } // namespace impact::cli

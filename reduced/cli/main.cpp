@@ -30,6 +30,14 @@ commands:
               --plate-modulus E --plate-poisson NU --plate-density RHO --thickness H
               (--stiffness C [--exponent N] | --sphere-modulus E --sphere-poisson NU --radius R)
               (--mass M | --sphere-density RHO --radius R) [--damping B] --velocity V[,V...]
+  plastic     elastic-plastic impact of a sphere on a flat (or two spheres: effective radius
+              and mass): restitution, contact time, peak force, maximum and permanent
+              approach, V/V_y, for a list of velocities
+              --model thornton|jackson-green --radius R (--mass M | --density RHO)
+              --modulus E --poisson NU [--flat-modulus E --flat-poisson NU]
+              --yield-strength Y [--criterion johnson|jackson-green] --velocity V[,V...]
+              [--unloading contact-radius|brake] (jackson-green)
+              [--loop N]: CSV time,approach,approach_rate,force of one impact's loop
 
 Units are SI. Output is JSON, or CSV where it is a table (--format csv).
 Exit codes: 0 success, 2 bad input (the message names the parameter), 1 internal error.
@@ -45,6 +53,7 @@ int main(int argc, char** argv) {
       {"law", run_law_command},
       {"oscillator", run_oscillator_command},
       {"thin-plate", run_thin_plate_command},
+      {"plastic", run_plastic_command},
   };
   if (argc < 2 || std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h") {
     (argc < 2 ? std::cerr : std::cout) << usage;

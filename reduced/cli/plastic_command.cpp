@@ -1,0 +1,138 @@
+// impact-reduced plastic: elastic-plastic impacts of a sphere on a flat (or of two spheres,
+// given by their effective radius and mass) under Thornton's law or the Jackson-Green loading
+// with the radius-preserving Hertzian unloading, for a list of velocities; or, with --loop N,
+// the force-approach loop of one impact with its times (CSV, N points per branch).
+
+#include "commands.hpp"
+#include "output.hpp"
+
+#include "impact_reduced/sphere_flat_fits.hpp"
+#include "impact_reduced/thornton.hpp"
+#include "impact_reduced/yield_velocity.hpp"
+
+#include <memory>
+#include <string>
+
+namespace impact::cli {
+
+namespace {
+
+constexpr double pi = 3.14159265358979323846;
+
+} // namespace
+
+int run_plastic_command(CommandLine& options, std::ostream& out) {
+  using namespace impact::reduced;
+  const std::string model = options.choice("model", {"thornton", "jackson-green"});
+  const Range poisson = Range::open(-1.0, 0.5);
+  const double radius = options.real("radius", Range::positive());
+  if (options.has("mass") && options.has("density"))
+    throw UsageError("--mass and --density exclude each other: give the mass either directly "
+                     "or as the density of a solid sphere of --radius");
+  if (!options.has("mass") && !options.has("density"))
+    throw UsageError("--mass or --density is required: the (effective) mass directly, or the "
+                     "density of a solid sphere of --radius");
+  const double mass = options.has("mass") ? options.real("mass", Range::positive())
+                                          : 4.0 / 3.0 * pi * radius * radius * radius *
+                                                options.real("density", Range::positive());
+  const double modulus = options.real("modulus", Range::positive());
+  const double poisson_ratio = options.real("poisson", poisson);
+  const double flat_modulus = options.real("flat-modulus", Range::positive(), modulus);
+  const double flat_poisson = options.real("flat-poisson", poisson, poisson_ratio);
+  const double yield_strength = options.real("yield-strength", Range::positive());
+  if (model == "jackson-green" && options.has("criterion"))
+    throw UsageError("--criterion applies to --model thornton only (jackson-green uses its own "
+                     "critical interference, p_y = C(nu) Y)");
+  const std::string criterion_name =
+      model == "thornton" ? options.choice("criterion", {"johnson", "jackson-green"}, "johnson")
+                          : "jackson-green";
+  if (model == "thornton" && options.has("unloading"))
+    throw UsageError("--unloading applies to --model jackson-green only (Thornton's law unloads "
+                     "on its own R_p)");
+  const std::string unloading_rule =
+      model == "jackson-green"
+          ? options.choice("unloading", {"contact-radius", "brake"}, "contact-radius")
+          : "thornton";
+  const std::vector<double> velocities = options.reals("velocity", Range::positive());
+  const long loop_points = options.integer("loop", 2, 1'000'000, 0);
+  if (loop_points > 0 && velocities.size() != 1)
+    throw UsageError("--loop prints the force-approach loop of one impact: give one --velocity "
+                     "(received " + std::to_string(velocities.size()) + ")");
+  const std::string format = options.choice("format", {"json", "csv"}, "json");
+  options.finish();
+
+  const double e_star = contact_modulus(modulus, poisson_ratio, flat_modulus, flat_poisson);
+  const YieldCriterion criterion = criterion_name == "johnson" ? YieldCriterion::johnson
+                                                               : YieldCriterion::jackson_green;
+  const double p_y = yield_pressure(criterion, yield_strength, poisson_ratio);
+  const double v_y = yield_velocity(p_y, e_star, radius, mass);
+
+  std::unique_ptr<ElasticPlasticContact> contact;
+  if (model == "thornton")
+    contact = std::make_unique<ThorntonContact>(radius, e_star, p_y);
+  else
+    contact = std::make_unique<JacksonGreenContact>(
+        SphereFlatContact{radius, e_star, yield_strength, poisson_ratio},
+        unloading_rule == "brake" ? JacksonGreenUnloading::brake
+                                  : JacksonGreenUnloading::contact_radius);
+
+  if (loop_points > 0) {
+    std::vector<std::vector<double>> rows;
+    for (const auto& state : elastic_plastic_impact_loop(mass, velocities.front(), *contact,
+                                                         static_cast<std::size_t>(loop_points)))
+      rows.push_back({state.time, state.approach, state.approach_rate, state.force});
+    print_csv(out, {"time", "approach", "approach_rate", "force"}, rows);
+    return 0;
+  }
+
+  const std::vector<std::string> keys = {
+      "velocity",        "velocity_ratio",   "restitution",      "contact_time",
+      "compression_time", "force_max",       "approach_max",     "residual_approach",
+      "dissipated_energy"};
+  std::vector<std::vector<double>> rows;
+  for (const double velocity : velocities) {
+    const ElasticPlasticImpactResponse r =
+        model == "thornton" ? ThorntonImpact({mass, radius, e_star, p_y}, velocity).response()
+                            : elastic_plastic_impact(mass, velocity, *contact);
+    rows.push_back({velocity, velocity / v_y, r.restitution, r.contact_time, r.compression_time,
+                    r.force_max, r.approach_max, r.residual_approach, r.dissipated_energy});
+  }
+  if (format == "csv") {
+    print_csv(out, keys, rows);
+    return 0;
+  }
+  Json result = Json::object();
+  result["model"] = model;
+  std::string law;
+  if (model == "thornton")
+    law = "Thornton (1997): Hertz to p0 = p_y, then F = F_y + pi p_y R (x - x_y); Hertzian "
+          "unloading on R_p = 4 E* a_p^3 / (3 F*), a_p^2 = (2 F* + F_y) / (2 pi p_y)";
+  else
+    law = std::string("Jackson & Green (2005) loading (Hertz up to 1.9 omega_c, their fit "
+                      "beyond); ") +
+          (unloading_rule == "brake"
+               ? "Hertzian unloading of Brake (2015): recovery x_max P_m / P_Hertz(x_max)"
+               : "Hertzian unloading keeping the contact radius of the maximum");
+  result["law"] = law;
+  result["yield_criterion"] = criterion_name;
+  result["unloading"] = unloading_rule;
+  result["radius"] = radius;
+  result["mass"] = mass;
+  result["contact_modulus"] = e_star;
+  result["yield_strength"] = yield_strength;
+  result["yield_pressure"] = p_y;
+  result["yield_approach"] = yield_approach(p_y, e_star, radius);
+  result["yield_force"] = yield_force(p_y, e_star, radius);
+  result["yield_velocity"] = v_y;
+  Json impacts = Json::array();
+  for (const auto& row : rows) {
+    Json entry = Json::object();
+    for (std::size_t k = 0; k < keys.size(); ++k) entry[keys[k]] = row[k];
+    impacts.push_back(entry);
+  }
+  result["impacts"] = impacts;
+  print_json(out, result);
+  return 0;
+}
+
+} // namespace impact::cli

@@ -1,0 +1,162 @@
+#include "impact_reduced/sphere_flat_fits.hpp"
+
+#include "impact_reduced/invalid_input.hpp"
+
+#include <boost/math/quadrature/gauss.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace impact::reduced {
+
+namespace {
+
+constexpr double pi = 3.14159265358979323846;
+// The end of the Hertz branch of Jackson-Green, omega* = 1.9.
+constexpr double jackson_green_transition = 1.9;
+
+void validate(const SphereFlatContact& contact) {
+  require_positive("radius", contact.radius);
+  require_positive("contact_modulus", contact.contact_modulus);
+  require_positive("yield_strength", contact.yield_strength);
+  require_open_interval("poisson_ratio", contact.poisson_ratio, -1.0, 0.5);
+}
+
+double jackson_green_c(double poisson_ratio) { return 1.295 * std::exp(0.736 * poisson_ratio); }
+
+double hertz_load(double interference, const SphereFlatContact& contact) {
+  return 4.0 / 3.0 * contact.contact_modulus * std::sqrt(contact.radius) *
+         std::pow(interference, 1.5);
+}
+
+// P / P_c of the Jackson-Green fit (omega* > 1.9) without validation.
+double jackson_green_fit(double ratio, const SphereFlatContact& contact, double c) {
+  const double yield_strain = contact.yield_strength / contact.contact_modulus;
+  const double b = 0.14 * std::exp(23 * yield_strain);
+  // a / R = sqrt(omega / R) (omega*/1.9)^(B/2), omega / R = omega* (pi C Y / (2 E*))^2.
+  const double relative_radius = std::sqrt(ratio) * pi * c * yield_strain / 2 *
+                                 std::pow(ratio / jackson_green_transition, b / 2);
+  const double hardness_ratio = 2.84 * (1 - std::exp(-0.82 * std::pow(relative_radius, -0.7)));
+  return std::exp(-0.25 * std::pow(ratio, 5.0 / 12.0)) * std::pow(ratio, 1.5) +
+         4 * hardness_ratio / c * (1 - std::exp(-std::pow(ratio, 5.0 / 9.0) / 25)) * ratio;
+}
+
+} // namespace
+
+double jackson_green_critical_interference(const SphereFlatContact& contact) {
+  validate(contact);
+  const double ratio =
+      pi * jackson_green_c(contact.poisson_ratio) * contact.yield_strength /
+      (2 * contact.contact_modulus);
+  return ratio * ratio * contact.radius;
+}
+
+double jackson_green_critical_load(const SphereFlatContact& contact) {
+  validate(contact);
+  const double radius_ratio = contact.radius / contact.contact_modulus;
+  const double pressure = jackson_green_c(contact.poisson_ratio) * pi * contact.yield_strength / 2;
+  return 4.0 / 3.0 * radius_ratio * radius_ratio * pressure * pressure * pressure;
+}
+
+double jackson_green_contact_radius(double interference, const SphereFlatContact& contact) {
+  require_non_negative("interference", interference);
+  const double ratio = interference / jackson_green_critical_interference(contact);
+  const double hertz = std::sqrt(contact.radius * interference);
+  if (ratio <= jackson_green_transition) return hertz;
+  const double b = 0.14 * std::exp(23 * contact.yield_strength / contact.contact_modulus);
+  return hertz * std::pow(ratio / jackson_green_transition, b / 2);
+}
+
+double jackson_green_load_ratio(double interference_ratio, const SphereFlatContact& contact) {
+  validate(contact);
+  require_non_negative("interference_ratio", interference_ratio);
+  if (interference_ratio <= jackson_green_transition) return std::pow(interference_ratio, 1.5);
+  return jackson_green_fit(interference_ratio, contact, jackson_green_c(contact.poisson_ratio));
+}
+
+double jackson_green_load(double interference, const SphereFlatContact& contact) {
+  require_non_negative("interference", interference);
+  const double critical = jackson_green_critical_interference(contact);
+  return jackson_green_critical_load(contact) *
+         jackson_green_load_ratio(interference / critical, contact);
+}
+
+double kogut_etsion_critical_interference(const SphereFlatContact& contact) {
+  validate(contact);
+  const double k = 0.454 + 0.41 * contact.poisson_ratio;
+  const double ratio = pi * k * 2.8 * contact.yield_strength / (2 * contact.contact_modulus);
+  return ratio * ratio * contact.radius;
+}
+
+double kogut_etsion_critical_load(const SphereFlatContact& contact) {
+  const double critical = kogut_etsion_critical_interference(contact);
+  const double k = 0.454 + 0.41 * contact.poisson_ratio;
+  return 2.0 / 3.0 * pi * k * 2.8 * contact.yield_strength * contact.radius * critical;
+}
+
+double kogut_etsion_load_ratio(double interference_ratio, double poisson_ratio) {
+  require_non_negative("interference_ratio", interference_ratio);
+  require_open_interval("poisson_ratio", poisson_ratio, -1.0, 0.5);
+  const double w = interference_ratio;
+  if (w <= 1) return std::pow(w, 1.5);
+  if (w <= 6) return 1.03 * std::pow(w, 1.425);
+  if (w <= 110) return 1.40 * std::pow(w, 1.263);
+  return 3 / (0.454 + 0.41 * poisson_ratio) * w;
+}
+
+double jackson_green_residual_interference(double interference_max,
+                                           const SphereFlatContact& contact,
+                                           JacksonGreenUnloading rule) {
+  require_non_negative("interference_max", interference_max);
+  validate(contact);
+  if (interference_max == 0) return 0.0;
+  const JacksonGreenContact law(contact, rule);
+  return std::max(0.0, law.unloading(interference_max).residual_approach);
+}
+
+JacksonGreenContact::JacksonGreenContact(const SphereFlatContact& contact,
+                                         JacksonGreenUnloading rule)
+  : contact_(contact), rule_(rule), critical_interference_(jackson_green_critical_interference(contact)),
+    transition_(jackson_green_transition * critical_interference_),
+    transition_work_(0.4 * hertz_load(transition_, contact) * transition_) {}
+
+double JacksonGreenContact::loading_force(double approach) const {
+  if (approach <= transition_) return hertz_load(approach, contact_);
+  return jackson_green_critical_load(contact_) *
+         jackson_green_fit(approach / critical_interference_, contact_,
+                           jackson_green_c(contact_.poisson_ratio));
+}
+
+double JacksonGreenContact::loading_work(double approach) const {
+  if (approach <= transition_) return 0.4 * hertz_load(approach, contact_) * approach;
+  // The fit is analytic beyond the transition, with its branch points at omega = 0:
+  // composite 30-point Gauss-Legendre on pieces [x, 2x) (each at least its own length away
+  // from 0), which reaches machine precision.
+  double work = transition_work_;
+  for (double lower = transition_; lower < approach; lower *= 2) {
+    const double upper = std::min(2 * lower, approach);
+    work += boost::math::quadrature::gauss<double, 30>::integrate(
+        [&](double x) { return loading_force(x); }, lower, upper);
+  }
+  return work;
+}
+
+HertzianUnloading JacksonGreenContact::unloading(double approach_max) const {
+  require_positive("approach_max", approach_max);
+  const double force = loading_force(approach_max);
+  if (approach_max <= transition_)  // Hertz: R_u = R, no residual, exactly.
+    return {4.0 / 3.0 * contact_.contact_modulus * std::sqrt(contact_.radius), 0.0};
+  if (rule_ == JacksonGreenUnloading::brake) {
+    // Elastic recovery x_max P_m / P_Hertz(x_max); F = P_m at x_max fixes the stiffness.
+    const double recovery = approach_max * force / hertz_load(approach_max, contact_);
+    return {force / std::pow(recovery, 1.5), approach_max - recovery};
+  }
+  const double radius = jackson_green_contact_radius(approach_max, contact_);
+  const double unloading_radius =
+      4 * contact_.contact_modulus * radius * radius * radius / (3 * force);
+  const double elastic_approach = 3 * force / (4 * contact_.contact_modulus * radius);
+  return {4.0 / 3.0 * contact_.contact_modulus * std::sqrt(unloading_radius),
+          approach_max - elastic_approach};
+}
+
+} // namespace impact::reduced
