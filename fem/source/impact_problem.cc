@@ -2,6 +2,7 @@
 #include <impact_fem/impact_problem.h>
 #include <impact_fem/quadrature.h>
 #include <impact_fem/summary/impact_summary.h>
+#include <impact_fem/result_files.h>
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
@@ -539,7 +540,7 @@ namespace impact_fem
   void
   ImpactProblem::postprocess_step()
   {
-    history.append("time", time_stepper->time());
+    history.append(result_files::time_dataset, time_stepper->time());
     for (auto &[name, postprocessor] : postprocessors)
       {
         TimerOutput::Scope t(*computing_timer, "postprocess: " + name);
@@ -568,37 +569,37 @@ namespace impact_fem
       std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start)
         .count();
     const summary::ImpactSummary s =
-      summary::summarize_impact(history["time"],
-                                history["contact_force"],
-                                history["approach"],
-                                history["sphere_velocity"],
+      summary::summarize_impact(history[result_files::time_dataset],
+                                history[result_files::contact_force_dataset],
+                                history[result_files::approach_dataset],
+                                history[result_files::sphere_velocity_dataset],
                                 first_contact_speed,
                                 parameters.gravity,
                                 parameters.static_press ? summary::nan :
-                                                          history["time"].front());
+                                                          history[result_files::time_dataset].front());
 
     nlohmann::json     result;
     std::ostringstream report;
-    result["complete"]            = complete;
-    result["impact_velocity"]     = parameters.impact_velocity;
-    result["contact_velocity"]    = first_contact_speed;
-    result["first_contact_time"]  = number(s.first_contact_time);
+    result[result_files::complete_key]            = complete;
+    result[result_files::impact_velocity_key]     = parameters.impact_velocity;
+    result[result_files::contact_velocity_key]    = first_contact_speed;
+    result[result_files::first_contact_time_key]  = number(s.first_contact_time);
     result["separation_time"]     = number(s.separation_time);
-    result["contact_time"]        = number(s.contact_time);
-    result["force_max"]           = number(s.force_max);
-    result["time_force_max"]      = number(s.time_force_max);
-    result["approach_max"]        = number(s.approach_max);
+    result[result_files::contact_time_key]        = number(s.contact_time);
+    result[result_files::force_max_key]           = number(s.force_max);
+    result[result_files::time_force_max_key]      = number(s.time_force_max);
+    result[result_files::approach_max_key]        = number(s.approach_max);
     result["time_approach_max"]   = number(s.time_approach_max);
-    result["rebound_velocity"]    = number(s.rebound_velocity);
-    result["restitution"]         = number(s.restitution);
-    result["lost_energy_fraction"] = number(1 - s.restitution * s.restitution);
-    result["force_oscillation"]   = number(s.force_oscillation);
-    result["force_after_release"] = number(s.force_after_release);
+    result[result_files::rebound_velocity_key]    = number(s.rebound_velocity);
+    result[result_files::restitution_key]         = number(s.restitution);
+    result[result_files::lost_energy_fraction_key] = number(1 - s.restitution * s.restitution);
+    result[result_files::force_oscillation_key]   = number(s.force_oscillation);
+    result[result_files::force_after_release_key] = number(s.force_after_release);
     for (auto &[name, postprocessor] : postprocessors)
       postprocessor->finalize(*this, history, result, report);
-    result["sphere_mass"] = parameters.sphere_mass;
+    result[result_files::sphere_mass_key] = parameters.sphere_mass;
     result["scheme"]      = parameters.scheme;
-    result["time_step"]   = time_stepper->time_step();
+    result[result_files::time_step_key]   = time_stepper->time_step();
     result["cells"]       = triangulation.n_global_active_cells();
     result["dofs"]        = dof_handler.n_dofs();
     result["contact_nodes"] = contact.n_contact_nodes();
@@ -630,17 +631,18 @@ namespace impact_fem
     std::map<std::string, double> numeric_attributes;
     for (const auto &[key, value] : result.items())
       if (value.is_number())
-        numeric_attributes["result: " + key] = value.get<double>();
-    numeric_attributes["sphere_mass [kg]"]       = parameters.sphere_mass;
+        numeric_attributes[result_files::result_attribute_prefix + key] = value.get<double>();
+    numeric_attributes[result_files::sphere_mass_attribute]       = parameters.sphere_mass;
     numeric_attributes["hertz_contact_time [s]"] = parameters.hertz.contact_time();
-    history.write_hdf5(parameters.output_directory + "/history.h5",
+    history.write_hdf5(parameters.output_directory + "/" + result_files::history_file,
                        text_attributes,
                        numeric_attributes,
                        complete);
     if (!complete)
       return;
 
-    const std::string summary_file = parameters.output_directory + "/summary.json";
+    const std::string summary_file =
+      parameters.output_directory + "/" + result_files::summary_file;
     {
       std::ofstream out(summary_file + ".tmp");
       out << std::setw(2) << result << std::endl;
@@ -650,12 +652,12 @@ namespace impact_fem
     const std::size_t n = history.n_steps();
     pcout << "\nResult (" << parameters.output_directory << "):\n" << std::setprecision(5);
     if (parameters.static_press)
-      pcout << "  contact force     " << history["contact_force"][n - 1] << " N\n"
+      pcout << "  contact force     " << history[result_files::contact_force_dataset][n - 1] << " N\n"
             << "  contact radius    " << history["contact_radius"][n - 1] * 1e3
             << " mm\n"
             << "  max pressure      " << history["max_pressure"][n - 1] / 1e9
             << " GPa\n"
-            << "  approach          " << history["approach"][n - 1] * 1e6 << " um\n";
+            << "  approach          " << history[result_files::approach_dataset][n - 1] * 1e6 << " um\n";
     else
       pcout << "  first contact     " << s.first_contact_time * 1e6
             << " us, separation " << s.separation_time * 1e6 << " us\n"
@@ -695,7 +697,7 @@ namespace impact_fem
         // Results of an earlier run in the same place would be mistaken for
         // this run's.
         for (const auto *name :
-             {"history.h5", "history.incomplete.h5", "summary.json"})
+             {result_files::history_file, result_files::incomplete_history_file, result_files::summary_file})
           std::filesystem::remove(directory + "/" + name);
       }
     MPI_Barrier(mpi_communicator);
@@ -706,7 +708,7 @@ namespace impact_fem
     factorize_effective_stiffness();
     setup_contact();
     set_initial_conditions();
-    history.declare("time", "s", "simulated time");
+    history.declare(result_files::time_dataset, result_files::time_unit, "simulated time");
     for (auto &[name, postprocessor] : postprocessors)
       postprocessor->initialize(*this, history);
     postprocess_step();

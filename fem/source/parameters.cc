@@ -87,7 +87,7 @@ namespace impact_fem
                       "support [N/m^3 = Pa/m], > 0 (read only then): traction -k u_z on "
                       "the bottom (Winkler foundation; e.g. E/t of a soft "
                       "layer of modulus E and thickness t on a rigid floor).");
-    // Replaced by Plate side and Plate bottom (issue 11): declared only to
+    // Replaced by Plate side and Plate bottom: declared only to
     // refuse it with a message saying what to write instead.
     prm.declare_entry("Far boundary",
                       "",

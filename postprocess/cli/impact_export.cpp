@@ -1,17 +1,15 @@
 // impact-export: the calibrated contact of a campaign in the terms of Simbody, MuJoCo and
-// LAMMPS. Exit codes: 0 success; 2 bad input (the message names it; nothing is written);
+// LAMMPS. The options are parsed here; the export is made by export_run_set
+// (impact_postprocess/export/export_run_set.hpp).
+// Exit codes: 0 success; 2 bad input (the message names it; nothing is written);
 // 1 internal error.
 
-#include "command_line.hpp"
+#include "tool.hpp"
 
-#include "impact_postprocess/fem_run.hpp"
-#include "impact_postprocess/simulator_export.hpp"
+#include "impact_postprocess/export/export_run_set.hpp"
 
-#include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
-#include <optional>
 #include <string>
 
 namespace {
@@ -46,116 +44,44 @@ Exit codes: 0 success, 2 bad input (message names the problem; nothing is writte
 1 internal error.
 )";
 
-struct Arguments : cli::RunArguments {
-  std::optional<fs::path> calibration;
-  std::optional<double> reference_velocity;
+struct Arguments {
+  ExportRequest request;
+  bool quiet = false;
 };
 
-Arguments parse(int argc, char** argv) {
-  using cli::UsageError;
+Arguments parse(tool::CommandLine& line) {
+  const tool::RunArguments common = tool::run_arguments(line, "DIR");
   Arguments arguments;
-  const auto option = [&](const std::string& argument,
-                          const std::function<std::string()>& value) {
-    if (argument == "--calibration") {
-      arguments.calibration = value();
-    } else if (argument == "--reference-velocity") {
-      const std::string text = value();
-      std::size_t end = 0;
-      double velocity = NAN;
-      try {
-        velocity = std::stod(text, &end);
-      } catch (const std::exception&) {
-      }
-      if (end != text.size() || !(std::isfinite(velocity) && velocity > 0))
-        throw UsageError("--reference-velocity must be a positive velocity in m/s (got '" +
-                         text + "')");
-      arguments.reference_velocity = velocity;
-    } else {
-      return false;
-    }
-    return true;
-  };
-  cli::parse_run_arguments(argc, argv, arguments, "DIR", option);
-  if (arguments.help) return arguments;
-  if (!arguments.calibration) throw UsageError("--calibration FILE is required");
-  const fs::path parent = fs::absolute(*arguments.output).parent_path();
-  if (!fs::is_directory(parent))
-    throw UsageError("the directory of --output '" + arguments.output->string() +
-                     "' does not exist");
-  if (fs::exists(*arguments.output) && !fs::is_directory(*arguments.output))
-    throw UsageError("--output '" + arguments.output->string() + "' is not a directory");
+  ExportRequest& request = arguments.request;
+  arguments.quiet = common.quiet;
+  request.runs = common.runs;
+  request.campaign = common.campaign;
+  request.output = common.output;
+  const auto calibration = line.text("calibration");
+  if (line.has("reference-velocity"))
+    request.reference_velocity = line.real("reference-velocity", tool::Range::positive());
+  if (!calibration) throw tool::UsageError("--calibration FILE is required");
+  request.calibration = *calibration;
+  tool::require_output_directory(request.output);
+  if (fs::exists(request.output) && !fs::is_directory(request.output))
+    throw tool::UsageError("--output '" + request.output.string() + "' is not a directory");
   return arguments;
 }
 
-// The sphere radius that every run records (impact-fem's text parameter).
-double sphere_radius(const Campaign& input) {
-  const std::string key = "Scenario/Sphere radius";
-  std::optional<double> radius;
-  for (const auto& run : input.runs) {
-    const auto found = run.text_attributes.find(key);
-    if (found == run.text_attributes.end())
-      throw ExportInputError(run.source + ": the run does not record the sphere radius "
-                             "(text attribute '" + key + "')");
-    double value = NAN;
-    try {
-      value = std::stod(found->second);
-    } catch (const std::exception&) {
-    }
-    if (!(std::isfinite(value) && value > 0))
-      throw ExportInputError(run.source + ": '" + key + "' = '" + found->second +
-                             "' is not a positive length in m");
-    if (radius && std::abs(value / *radius - 1) > 1e-12)
-      throw ExportInputError(run.source + ": sphere radius " + found->second +
-                             " m differs from the other runs' " + std::to_string(*radius) +
-                             " m: one sphere per export");
-    radius = value;
-  }
-  return *radius;
-}
-
 int execute(const Arguments& arguments) {
-  const Campaign input = cli::read_input(arguments);
-  for (const auto& problem : input.problems)
-    std::cerr << program << ": error: " << problem.message << '\n';
-  if (!input.problems.empty() || input.runs.empty()) {
-    std::cerr << program << ": error: every run of the calibration must be readable; "
-                            "nothing was written\n";
-    return 2;
-  }
-  try {
-    std::ifstream file(*arguments.calibration);
-    if (!file)
-      throw ExportInputError(arguments.calibration->string() + ": cannot open the calibration");
-    nlohmann::json calibration;
-    try {
-      calibration = nlohmann::json::parse(file);
-    } catch (const nlohmann::json::exception& error) {
-      throw ExportInputError(arguments.calibration->string() + ": not valid JSON (" +
-                             error.what() + ")");
-    }
-    const ExportCampaign campaign = read_export_campaign(
-        calibration, arguments.calibration->string(), sphere_radius(input));
-    if (campaign.runs.size() != input.runs.size())
-      throw ExportInputError(arguments.calibration->string() + ": the calibration has " +
-                             std::to_string(campaign.runs.size()) + " runs, the input " +
-                             std::to_string(input.runs.size()) + ": not the same campaign");
-    const auto manifest =
-        write_exports(campaign, arguments.reference_velocity, *arguments.output);
-    if (!arguments.quiet)
-      for (const auto& entry : manifest.at("exports"))
-        std::cerr << program << ": " << entry.at("tool").get<std::string>() << " ("
-                  << entry.at("model").get<std::string>() << "): "
-                  << (*arguments.output / entry.at("file").get<std::string>()).string() << '\n';
-    std::cout << "export written to " << arguments.output->string() << '\n';
-  } catch (const ExportInputError& error) {
-    std::cerr << program << ": error: " << error.what() << "; nothing was written\n";
-    return 2;
-  }
+  const ExportOutcome outcome = export_run_set(arguments.request);
+  for (const auto& problem : outcome.problems) tool::print_problem(program, problem);
+  if (!outcome.problems.empty()) return exit_code(outcome.problems);
+  if (!arguments.quiet)
+    for (const auto& entry : outcome.manifest.at("exports"))
+      std::cerr << program << ": " << entry.at("tool").get<std::string>() << " ("
+                << entry.at("model").get<std::string>() << "): "
+                << (arguments.request.output / entry.at("file").get<std::string>()).string()
+                << '\n';
+  std::cout << "export written to " << arguments.request.output.string() << '\n';
   return 0;
 }
 
 } // namespace
 
-int main(int argc, char** argv) {
-  return cli::run_command(program, usage, argc, argv, parse, execute);
-}
+int main(int argc, char** argv) { return tool::run(program, usage, argc, argv, parse, execute); }

@@ -1,5 +1,6 @@
 #include "command_line.hpp"
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -51,35 +52,58 @@ std::string Range::describe() const {
 }
 
 CommandLine::CommandLine(std::string command, const std::vector<std::string>& arguments)
+  : CommandLine(std::move(command), arguments, Syntax{}) {}
+
+CommandLine::CommandLine(std::string command, const std::vector<std::string>& arguments,
+                         const Syntax& syntax)
   : command_(std::move(command)) {
   for (std::size_t i = 0; i < arguments.size(); ++i) {
     const std::string& word = arguments[i];
-    if (word.rfind("--", 0) != 0 || word.size() == 2)
-      throw UsageError("unexpected argument '" + word + "' (options are written --name value)");
+    if (word.rfind("--", 0) != 0 || word.size() == 2) {
+      if (!syntax.operands)
+        throw UsageError("unexpected argument '" + word + "' (options are written --name value)");
+      operands_.push_back(word);
+      continue;
+    }
     std::string name = word.substr(2);
-    std::string value;
+    std::optional<std::string> value;
     const auto equals = name.find('=');
     if (equals != std::string::npos) {
       value = name.substr(equals + 1);
       name = name.substr(0, equals);
+    } else if (std::find(syntax.flags.begin(), syntax.flags.end(), name) != syntax.flags.end()) {
+      value = "";
     } else if (i + 1 < arguments.size() && arguments[i + 1].rfind("--", 0) != 0) {
       value = arguments[++i];
-    } else {
-      throw UsageError("--" + name + " needs a value");
     }
-    if (values_.count(name)) throw UsageError("--" + name + " is given twice");
-    values_[name] = value;
-    used_[name] = false;
+    add(name, value);
   }
+}
+
+void CommandLine::add(const std::string& name, std::optional<std::string> value) {
+  if (values_.count(name)) throw UsageError("--" + name + " is given twice");
+  values_[name] = std::move(value);
+  used_[name] = false;
 }
 
 bool CommandLine::has(const std::string& name) const { return values_.count(name) > 0; }
 
+// An option given without a value is reported when it is asked for (it needs one) or by
+// finish() (it is not known), whichever comes first.
 std::optional<std::string> CommandLine::take(const std::string& name) {
   const auto found = values_.find(name);
   if (found == values_.end()) return std::nullopt;
   used_[name] = true;
+  if (!found->second) fail(name, "needs a value");
   return found->second;
+}
+
+std::optional<std::string> CommandLine::text(const std::string& name) { return take(name); }
+
+bool CommandLine::flag(const std::string& name) {
+  const bool given = has(name);
+  if (given) used_[name] = true;
+  return given;
 }
 
 void CommandLine::fail(const std::string& name, const std::string& problem) const {
@@ -150,7 +174,7 @@ std::vector<double> CommandLine::reals(const std::string& name, const Range& ran
 
 void CommandLine::finish() const {
   for (const auto& [name, was_used] : used_)
-    if (!was_used) throw UsageError("unknown option --" + name + " for '" + command_ + "'");
+    if (!was_used) throw UsageError("unknown option '--" + name + "' for '" + command_ + "'");
 }
 
 } // namespace impact::cli

@@ -1,5 +1,6 @@
 #pragma once
-// Parsing and validation of `--name value` options of the impact-reduced tool.
+// Parsing and validation of `--name value` options: the command-line framework of the
+// project's tools (impact-reduced, impact-calibrate, impact-report, impact-export).
 
 #include <map>
 #include <optional>
@@ -37,7 +38,16 @@ struct Range {
 /// that no accessor asked for, so that a misspelt option is never silently ignored.
 class CommandLine {
 public:
+  /// Options only: `--name value` or `--name=value`.
   CommandLine(std::string command, const std::vector<std::string>& arguments);
+  /// Options, the `flags` (options without a value, such as --quiet), and operands (words
+  /// that are not options, such as input files), in any order.
+  struct Syntax {
+    std::vector<std::string> flags;
+    bool operands = false;
+  };
+  CommandLine(std::string command, const std::vector<std::string>& arguments,
+              const Syntax& syntax);
 
   const std::string& command() const { return command_; }
   bool has(const std::string& name) const;
@@ -51,6 +61,12 @@ public:
   std::string choice(const std::string& name, const std::vector<std::string>& allowed);
   /// Comma-separated list of reals, each within `range`.
   std::vector<double> reals(const std::string& name, const Range& range);
+  /// A text (a path, a list of names), checked by the caller; none when not given.
+  std::optional<std::string> text(const std::string& name);
+  /// Whether the flag (Syntax::flags) is given.
+  bool flag(const std::string& name);
+  /// The operands, in order (Syntax::operands).
+  const std::vector<std::string>& operands() const { return operands_; }
 
   void finish() const;
 
@@ -58,8 +74,11 @@ private:
   std::optional<std::string> take(const std::string& name);
   [[noreturn]] void fail(const std::string& name, const std::string& problem) const;
 
+  void add(const std::string& name, std::optional<std::string> value);
+
   std::string command_;
-  std::map<std::string, std::string> values_;
+  std::map<std::string, std::optional<std::string>> values_; ///< none: given without a value
+  std::vector<std::string> operands_;
   std::map<std::string, bool> used_;
 };
 

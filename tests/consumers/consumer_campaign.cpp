@@ -4,7 +4,7 @@
 // R = 14.52 mm, c = 1.76e10 N/m^1.5, A = 1.17 us; V = 0.5, 1, 2, 5 m/s, 300 samples per
 // contact time and free flight after separation.
 
-#include "impact_postprocess/fem_run.hpp"
+#include "impact_postprocess/run/fem_run.hpp"
 
 #include <impact_reduced/comparison_laws.hpp>
 #include <impact_reduced/impact_ode.hpp>

@@ -5,7 +5,7 @@
 // and the same for any comparison law (e.g. Kuwabara–Kono without tension), with the
 // bodies' materials recorded as impact-fem records its parameters.
 
-#include "impact_postprocess/fem_run.hpp"
+#include "impact_postprocess/run/fem_run.hpp"
 
 #include <impact_reduced/comparison_laws.hpp>
 #include <impact_reduced/hunt_crossley.hpp>
@@ -100,6 +100,22 @@ inline postprocess::FemRun synthetic_law_run(const reduced::ComparisonLaw& law,
 }
 
 /// A number as text with every digit (impact-fem's parameters are text attributes).
+/// The report tests' campaign run: Hunt–Crossley with b growing with V (so that one constant b
+/// cannot hold everywhere), and the scenario's materials (steel on steel) and sphere radius
+/// recorded as impact-fem records them.
+inline postprocess::FemRun campaign_run(double velocity) {
+  HuntCrossleyTruth truth;
+  truth.damping = 0.06 + 0.03 * velocity;
+  postprocess::FemRun run = synthetic_run(truth, velocity);
+  for (const std::string body : {"Sphere", "Plate"}) {
+    run.text_attributes[body + "/Material model"] = "elastic";
+    run.text_attributes[body + "/Elastic/Young's modulus"] = "2e11";
+    run.text_attributes[body + "/Elastic/Poisson's ratio"] = "0.25";
+  }
+  run.text_attributes["Scenario/Sphere radius"] = "0.01452";
+  return run;
+}
+
 inline std::string exact_text(double value) {
   std::ostringstream text;
   text.precision(17);

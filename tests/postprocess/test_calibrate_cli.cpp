@@ -4,8 +4,8 @@
 
 #include "synthetic_runs.hpp"
 
-#include "impact_postprocess/fem_run.hpp"
-#include "impact_postprocess/fem_run_format.hpp"
+#include "impact_postprocess/run/fem_run.hpp"
+#include "impact_postprocess/run/fem_run_format.hpp"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -224,8 +224,10 @@ TEST_F(CalibrateCli, CampaignWithBadRunsCalibratesTheOthersAndListsTheProblems) 
   FemRun no_contact = impact::testing::synthetic_run(truth, 4.0);
   std::fill(no_contact.contact_force.begin(), no_contact.contact_force.end(), 0.0);
   write_fem_run(no_contact, directory / "v4");
-  std::ofstream(directory / fem_format::campaign_index_csv)
-      << "velocity,path\n1,v1\n2,v2\n3,v3\n4,v4\n5,v5\n";
+  std::ofstream(directory / fem_format::campaign_index_json)
+      << R"({"runs": [{"velocity": 1, "path": "v1"}, {"velocity": 2, "path": "v2"},
+                      {"velocity": 3, "path": "v3"}, {"velocity": 4, "path": "v4"},
+                      {"velocity": 5, "path": "v5"}]})";
   const CliRun run = run_cli({"--campaign", directory.string(), "--output", output.string(),
                               "--laws", "none"},
                              directory);
@@ -240,20 +242,20 @@ TEST_F(CalibrateCli, CampaignWithBadRunsCalibratesTheOthersAndListsTheProblems) 
   EXPECT_TRUE(calibration["campaign"]["fitted"].get<bool>());
 }
 
-TEST_F(CalibrateCli, MissingCampaignDirectoryStillWritesAJson) {
-  const CliRun run = run_cli({"--campaign", (directory / "nowhere").string(), "--output",
-                              output.string()},
-                             directory);
-  EXPECT_EQ(run.exit_code, 2);
-  EXPECT_TRUE(contains(run.err, "does not exist")) << run.err;
-  const json calibration = read_json(output);
-  EXPECT_EQ(calibration["status"], "incomplete");
-  EXPECT_TRUE(calibration["runs"].empty());
-  EXPECT_TRUE(calibration["multibody"].is_null());
-  bool named = false;
-  for (const auto& problem : calibration["problems"])
-    named = named || contains(problem["message"].get<std::string>(), "does not exist");
-  EXPECT_TRUE(named);
+// Nothing written from nothing: without a usable run there is no calibration file, only the
+// message why (a missing campaign directory, an empty one).
+TEST_F(CalibrateCli, NoUsableRunWritesNothing) {
+  fs::create_directories(directory / "empty");
+  for (const auto& [campaign, why] : {std::pair<std::string, std::string>{"nowhere", "does not exist"},
+                                      {"empty", "holds no run"}}) {
+    const CliRun run = run_cli({"--campaign", (directory / campaign).string(), "--output",
+                                output.string()},
+                               directory);
+    EXPECT_EQ(run.exit_code, 2) << campaign;
+    EXPECT_TRUE(contains(run.err, why)) << run.err;
+    EXPECT_TRUE(contains(run.err, "no usable run: nothing was calibrated")) << run.err;
+    EXPECT_FALSE(fs::exists(output)) << campaign;
+  }
 }
 
 TEST_F(CalibrateCli, MissingRunFile) {

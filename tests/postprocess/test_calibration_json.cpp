@@ -4,8 +4,8 @@
 
 #include "synthetic_runs.hpp"
 
-#include "impact_postprocess/calibration.hpp"
-#include "impact_postprocess/calibration_json.hpp"
+#include "impact_postprocess/calibration/calibration.hpp"
+#include "impact_postprocess/calibration/calibration_json.hpp"
 
 #include <gtest/gtest.h>
 

@@ -5,8 +5,8 @@
 
 #include "synthetic_runs.hpp"
 
-#include "impact_postprocess/calibration.hpp"
-#include "impact_postprocess/fem_run.hpp"
+#include "impact_postprocess/calibration/calibration.hpp"
+#include "impact_postprocess/run/fem_run.hpp"
 
 #include <gtest/gtest.h>
 

@@ -8,10 +8,10 @@
 #include "report_cli_testing.hpp"
 #include "synthetic_runs.hpp"
 
-#include "impact_postprocess/calibration.hpp"
-#include "impact_postprocess/calibration_json.hpp"
-#include "impact_postprocess/fem_run.hpp"
-#include "impact_postprocess/simulator_export.hpp"
+#include "impact_postprocess/calibration/calibration.hpp"
+#include "impact_postprocess/calibration/calibration_json.hpp"
+#include "impact_postprocess/run/fem_run.hpp"
+#include "impact_postprocess/export/simulator_export.hpp"
 
 #include <impact_reduced/comparison_laws.hpp>
 #include <impact_reduced/impact_ode.hpp>
@@ -157,6 +157,22 @@ TEST_F(ExportCli, ReferenceVelocityOutsideTheCampaignIsAnError) {
   EXPECT_FALSE(fs::exists(scratch / "export"));
   args.back() = "-1";
   EXPECT_EQ(run_export(args, scratch).exit_code, 2);
+}
+
+// Nothing written from nothing: a missing or an empty campaign directory.
+TEST_F(ExportCli, NoUsableRunWritesNothing) {
+  make({"tsuji"});
+  fs::create_directories(scratch / "empty");
+  for (const auto& [directory, why] : {std::pair<std::string, std::string>{"nowhere", "does not exist"},
+                                       {"empty", "holds no run"}}) {
+    auto args = arguments(scratch / "export");
+    args[1] = (scratch / directory).string();
+    const CliRun run = run_export(args, scratch);
+    EXPECT_EQ(run.exit_code, 2) << directory;
+    EXPECT_TRUE(contains(run.err, why)) << run.err;
+    EXPECT_TRUE(contains(run.err, "nothing was written")) << run.err;
+    EXPECT_FALSE(fs::exists(scratch / "export")) << directory;
+  }
 }
 
 TEST_F(ExportCli, MissingRadiusOrCalibrationIsAnError) {

@@ -5,10 +5,10 @@
 
 #include "synthetic_runs.hpp"
 
-#include "impact_postprocess/fem_run.hpp"
-#include "impact_postprocess/fem_run_record.hpp"
-#include "impact_postprocess/force_smoothness.hpp"
-#include "impact_postprocess/velocity_trend.hpp"
+#include "impact_postprocess/run/fem_run.hpp"
+#include "impact_postprocess/run/fem_run_record.hpp"
+#include "impact_postprocess/run/force_smoothness.hpp"
+#include "impact_postprocess/models/velocity_trend.hpp"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>

@@ -3,8 +3,8 @@
 
 #include "synthetic_runs.hpp"
 
-#include "impact_postprocess/fem_run.hpp"
-#include "impact_postprocess/fem_run_format.hpp"
+#include "impact_postprocess/run/fem_run.hpp"
+#include "impact_postprocess/run/fem_run_format.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -166,16 +166,6 @@ TEST_F(FemRunIo, CampaignIndexListsAMissingAndAnIncompleteRun) {
   EXPECT_NE(campaign.problems[0].message.find("v3"), std::string::npos);
   EXPECT_NE(campaign.problems[0].message.find("does not exist"), std::string::npos);
   EXPECT_NE(campaign.problems[1].message.find("did not finish"), std::string::npos);
-}
-
-TEST_F(FemRunIo, CampaignCsvIndex) {
-  write_fem_run(example(1), directory / "a");
-  write_fem_run(example(2), directory / "b");
-  std::ofstream(directory / fem_format::campaign_index_csv)
-      << "# impact campaign\nvelocity,path\n1,a\n2,b/history.h5\n";
-  const Campaign campaign = read_campaign(directory);
-  EXPECT_TRUE(campaign.problems.empty());
-  EXPECT_EQ(campaign.runs.size(), 2u);
 }
 
 TEST_F(FemRunIo, CampaignDirectoryMissingOrEmpty) {

@@ -8,8 +8,8 @@
 #include "report_cli_testing.hpp"
 #include "synthetic_runs.hpp"
 
-#include "impact_postprocess/fem_run.hpp"
-#include "impact_postprocess/fem_run_format.hpp"
+#include "impact_postprocess/run/fem_run.hpp"
+#include "impact_postprocess/run/fem_run_format.hpp"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -30,20 +30,7 @@ using namespace impact::testing;
 using json = nlohmann::json;
 namespace fs = std::filesystem;
 
-// The synthetic FEM: Hunt–Crossley with b growing with V (so that one constant b cannot
-// hold everywhere), and the scenario's materials recorded as impact-fem records them.
-FemRun campaign_run(double velocity) {
-  impact::testing::HuntCrossleyTruth truth;
-  truth.damping = 0.06 + 0.03 * velocity;
-  FemRun run = impact::testing::synthetic_run(truth, velocity);
-  for (const std::string body : {"Sphere", "Plate"}) {
-    run.text_attributes[body + "/Material model"] = "elastic";
-    run.text_attributes[body + "/Elastic/Young's modulus"] = "2e11";
-    run.text_attributes[body + "/Elastic/Poisson's ratio"] = "0.25";
-  }
-  run.text_attributes["Scenario/Sphere radius"] = "0.01452";
-  return run;
-}
+using impact::testing::campaign_run;
 
 // Adds FEM-only results to a run's summary.json (energy balance, stresses).
 void add_to_summary(const fs::path& run_directory, const json& extra) {
@@ -443,10 +430,14 @@ protected:
     arguments.insert(arguments.end(), extra.begin(), extra.end());
     return run_tool(IMPACT_REPORT_CLI, arguments, directory, environment);
   }
+  // impact-calibrate with --laws lankarani-nikravesh unless `extra` names the laws (an
+  // option is given once).
   fs::path calibrate(std::vector<std::string> extra = {}) {
     const fs::path file = directory / "calibration.json";
     std::vector<std::string> arguments = {"--campaign", campaign.string(), "--output",
-                                          file.string(), "--laws", "lankarani-nikravesh", "--quiet"};
+                                          file.string(), "--quiet"};
+    if (std::find(extra.begin(), extra.end(), "--laws") == extra.end())
+      arguments.insert(arguments.end(), {"--laws", "lankarani-nikravesh"});
     arguments.insert(arguments.end(), extra.begin(), extra.end());
     run_tool(IMPACT_CALIBRATE_CLI, arguments, directory);
     return file;
@@ -538,11 +529,20 @@ TEST_F(ReportBadInput, CalibrationFileMissing) {
   EXPECT_TRUE(contains(read_text(output / "report.md"), "Cause: No verdict"));
 }
 
-TEST_F(ReportBadInput, MissingCampaignDirectory) {
+// Nothing written from nothing: without a usable run there is no report, only the message
+// why (a missing campaign directory, an empty one).
+TEST_F(ReportBadInput, NoUsableRunWritesNothing) {
   const CliRun run = report();
   EXPECT_EQ(run.exit_code, 2) << run.err;
   EXPECT_TRUE(contains(run.err, "does not exist")) << run.err;
-  expect_incomplete_report("No FEM run could be read");
+  EXPECT_TRUE(contains(run.err, "no usable run: nothing was written")) << run.err;
+  EXPECT_FALSE(fs::exists(output));
+  fs::create_directories(campaign);
+  const CliRun empty = report();
+  EXPECT_EQ(empty.exit_code, 2) << empty.err;
+  EXPECT_TRUE(contains(empty.err, "holds no run")) << empty.err;
+  EXPECT_TRUE(contains(empty.err, "no usable run: nothing was written")) << empty.err;
+  EXPECT_FALSE(fs::exists(output));
 }
 
 TEST_F(ReportBadInput, FiguresThatCannotBeDrawn) {

@@ -10,7 +10,7 @@
 #include "report_cli_testing.hpp"
 #include "synthetic_runs.hpp"
 
-#include "impact_postprocess/fem_run.hpp"
+#include "impact_postprocess/run/fem_run.hpp"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>

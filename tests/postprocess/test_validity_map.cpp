@@ -15,10 +15,10 @@
 
 #include "synthetic_runs.hpp"
 
-#include "impact_postprocess/calibration.hpp"
-#include "impact_postprocess/fem_run.hpp"
-#include "impact_postprocess/report.hpp"
-#include "impact_postprocess/scenario_materials.hpp"
+#include "impact_postprocess/calibration/calibration.hpp"
+#include "impact_postprocess/run/fem_run.hpp"
+#include "impact_postprocess/report/report.hpp"
+#include "impact_postprocess/run/scenario_materials.hpp"
 
 #include <impact_reduced/hertz_stiffness.hpp>
 #include <impact_reduced/hunt_crossley.hpp>
@@ -449,14 +449,14 @@ TEST(ValidityMapNoRebound, TheCellSaysWhyAndTheReportStaysComplete) {
   const Campaign campaign = read_campaign(directory);
   fs::remove_all(directory);
   ASSERT_EQ(campaign.problems.size(), 1u);
-  EXPECT_TRUE(campaign.problems.front().no_rebound);
+  EXPECT_EQ(campaign.problems.front().kind, ProblemKind::no_rebound);
   EXPECT_EQ(*campaign.problems.front().point.at(thickness_axis).number, 0.004);
   ReportOptions options;
   options.map_calibration.laws = {"kuwabara-kono-no-tension"};
   const Report report = build_report(campaign, std::nullopt, {}, "no rebound", "", options);
-  for (const auto& problem : report.problems) EXPECT_NE(problem.kind, "input") << problem.message;
+  for (const auto& problem : report.problems) EXPECT_NE(problem.kind, ProblemKind::input) << problem.message;
   EXPECT_TRUE(std::any_of(report.problems.begin(), report.problems.end(),
-                          [](const ReportProblem& p) { return p.kind == "no rebound"; }));
+                          [](const Problem& p) { return p.kind == ProblemKind::no_rebound; }));
   ASSERT_TRUE(report.map && report.map->available);
   for (const auto& model : row_at(*report.map, 0.004).models) {
     ASSERT_EQ(model.cells.size(), velocities.size());
@@ -486,7 +486,7 @@ TEST(ValidityMapDetailRow, TheDetailRowsCalibrationIsTakenForTheSameRunsOnly) {
     std::vector<FemRun> runs = row->first.runs;
     if (!same) runs.pop_back();
     Calibration detail = calibrate(runs, calibration_options);
-    detail.problems.push_back({"test", "input", mark});
+    detail.problems.push_back({"test", ProblemKind::input, mark});
     ReportOptions options;
     options.map_calibration = calibration_options;
     std::vector<std::string> lines;

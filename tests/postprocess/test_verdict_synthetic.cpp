@@ -13,10 +13,10 @@
 
 #include "synthetic_runs.hpp"
 
-#include "impact_postprocess/calibration.hpp"
-#include "impact_postprocess/calibration_json.hpp"
-#include "impact_postprocess/fem_run.hpp"
-#include "impact_postprocess/report.hpp"
+#include "impact_postprocess/calibration/calibration.hpp"
+#include "impact_postprocess/calibration/calibration_json.hpp"
+#include "impact_postprocess/run/fem_run.hpp"
+#include "impact_postprocess/report/report.hpp"
 
 #include <impact_reduced/hertz_stiffness.hpp>
 #include <impact_reduced/hunt_crossley.hpp>
@@ -116,7 +116,7 @@ TEST(VerdictOnSyntheticCampaigns, HuntCrossleyCampaignIsValidEverywhere) {
   }
   EXPECT_TRUE(contains(report.cause, "holds within 2 % at every tested velocity")) << report.cause;
   // A clean history: no warning on the FEM's quality.
-  for (const auto& problem : report.problems) EXPECT_NE(problem.kind, "quality") << problem.message;
+  for (const auto& problem : report.problems) EXPECT_NE(problem.kind, ProblemKind::quality) << problem.message;
   for (const auto& run : report.runs) EXPECT_LT(run.record.smoothness.oscillation, 1e-3);
   // The jackknife over the left-out fits holds the truth, and so does the Hunt–Crossley trend:
   // 1 - e = (2/3) b V + ... gives p near 1.
@@ -278,7 +278,7 @@ TEST(VerdictOnSyntheticCampaigns, StepToStepOscillationIsFlagged) {
   ASSERT_TRUE(report.verdict_available) << report.cause;
   std::size_t warnings = 0;
   for (const auto& problem : report.problems)
-    if (problem.kind == "quality" && contains(problem.message, "oscillates from step to step"))
+    if (problem.kind == ProblemKind::quality && contains(problem.message, "oscillates from step to step"))
       ++warnings;
   EXPECT_EQ(warnings, runs.size());
   for (const auto& run : report.runs) {

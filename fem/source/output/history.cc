@@ -1,4 +1,5 @@
 #include <impact_fem/output/history.h>
+#include <impact_fem/result_files.h>
 
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/hdf5.h>
@@ -73,8 +74,9 @@ namespace impact_fem
     const std::string temporary_name = final_name + ".tmp";
     {
       HDF5::File file(temporary_name, HDF5::File::FileAccessMode::create);
-      file.set_attribute("status",
-                         std::string(complete ? "complete" : "incomplete"));
+      file.set_attribute(result_files::status_attribute,
+                         std::string(complete ? result_files::status_complete :
+                                                result_files::status_incomplete));
       for (const auto &[key, value] : text_attributes)
         file.set_attribute(key, value);
       for (const auto &[key, value] : numeric_attributes)
@@ -93,8 +95,8 @@ namespace impact_fem
             file.create_dataset<double>(s.name,
                                         std::vector<hsize_t>{values.size()});
           dataset.write(values);
-          dataset.set_attribute("unit", s.unit);
-          dataset.set_attribute("description", s.description);
+          dataset.set_attribute(result_files::unit_attribute, s.unit);
+          dataset.set_attribute(result_files::description_attribute, s.description);
         }
       for (const auto &s : profiles)
         if (!s.values.empty())
@@ -102,8 +104,8 @@ namespace impact_fem
             auto dataset = file.create_dataset<double>(
               s.name, std::vector<hsize_t>{s.values.size()});
             dataset.write(s.values);
-            dataset.set_attribute("unit", s.unit);
-            dataset.set_attribute("description", s.description);
+            dataset.set_attribute(result_files::unit_attribute, s.unit);
+            dataset.set_attribute(result_files::description_attribute, s.description);
           }
     }
     std::filesystem::rename(temporary_name, final_name);

@@ -1,5 +1,6 @@
 #include <impact_fem/impact_problem.h>
 #include <impact_fem/postprocess/interface.h>
+#include <impact_fem/result_files.h>
 
 namespace impact_fem
 {
@@ -22,12 +23,12 @@ namespace impact_fem
       initialize(const ImpactProblem &problem, History &history) override
       {
         history.declare({
-               {"contact_force", "N", "total normal contact force, 2 pi int p r dr"},
+               {result_files::contact_force_dataset, result_files::contact_force_unit, "total normal contact force, 2 pi int p r dr"},
                {"sphere_displacement", "m", "centre-of-mass displacement of the sphere, downward positive"},
-               {"sphere_velocity", "m/s", "centre-of-mass velocity of the sphere, downward positive"},
+               {result_files::sphere_velocity_dataset, result_files::sphere_velocity_unit, "centre-of-mass velocity of the sphere, downward positive"},
                {"plate_displacement", "m", "mean vertical displacement of the plate bottom, downward positive"},
                {"plate_momentum", "kg m/s", "axial momentum of the plate, int rho v_z dV, downward positive (the sphere's is sphere_velocity times its mass)"},
-               {"approach", "m", "sphere_displacement - initial gap - plate_displacement"},
+               {result_files::approach_dataset, result_files::approach_unit, "sphere_displacement - initial gap - plate_displacement"},
                {"contact_radius", "m", "contact radius: between the outermost loaded node and the next, where p^2 extrapolated linearly in r^2 vanishes"},
                {"max_pressure", "Pa", "largest nodal contact pressure"},
                {"penetration", "m", "largest pointwise penetration of a contact node (the constraint holds in the weighted sense)"}});
@@ -59,12 +60,12 @@ namespace impact_fem
         const double deepest = contact.penetration(stepper.displacement());
         penetration          = std::max(penetration, deepest);
 
-        history.append("contact_force", force);
+        history.append(result_files::contact_force_dataset, force);
         history.append("sphere_displacement", sphere_displacement);
-        history.append("sphere_velocity", sphere_velocity);
+        history.append(result_files::sphere_velocity_dataset, sphere_velocity);
         history.append("plate_displacement", plate_displacement);
         history.append("plate_momentum", -(w.plate_momentum * stepper.velocity()));
-        history.append("approach",
+        history.append(result_files::approach_dataset,
                        sphere_displacement - problem.scenario().geometry.initial_gap -
                          plate_displacement);
         history.append("contact_radius", contact.contact_radius(pressures));

@@ -1,5 +1,6 @@
 #include <impact_fem/impact_problem.h>
 #include <impact_fem/postprocess/interface.h>
+#include <impact_fem/result_files.h>
 
 namespace impact_fem
 {
@@ -138,7 +139,7 @@ namespace impact_fem
         const auto last = [&](const char *name) { return history[name][n - 1]; };
         // What the sphere holds beyond its rigid motion (>= 0: the kinetic
         // energy of the centre of mass is at most the sphere's).
-        const double v_cm = history["sphere_velocity"][n - 1];
+        const double v_cm = history[result_files::sphere_velocity_dataset][n - 1];
         const double rigid = 0.5 * problem.scenario().sphere_mass * v_cm * v_cm;
         const double sphere_vibration =
           last("sphere_kinetic_energy") + last("sphere_strain_energy") - rigid;
@@ -146,13 +147,13 @@ namespace impact_fem
                                     last("sphere_kinetic_energy") -
                                     last("sphere_strain_energy");
         const double E0 = initial;
-        summary["energy_error"]                     = largest_error;
+        summary[result_files::energy_error_key]      = largest_error;
         summary["energy_error_final"]               = last("energy_error");
         summary["initial_energy"]                   = E0;
         summary["sphere_vibration_energy_fraction"] = sphere_vibration / E0;
         summary["plate_energy_fraction"]            = plate_stored / E0;
-        summary["radiated_energy_fraction"]         = last("radiated_energy") / E0;
-        summary["dissipated_energy_fraction"]       = last("dissipated_energy") / E0;
+        summary[result_files::radiated_energy_fraction_key] = last("radiated_energy") / E0;
+        summary[result_files::dissipated_energy_fraction_key] = last("dissipated_energy") / E0;
         summary["internal_energy_fraction"]         = last("internal_energy") / E0;
         report << "  energy: sphere vibration " << sphere_vibration / E0 * 100
                << " %, plate " << plate_stored / E0 * 100 << " %, radiated "

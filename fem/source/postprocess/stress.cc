@@ -1,6 +1,7 @@
 #include <impact_fem/impact_problem.h>
 #include <impact_fem/postprocess/cell_stress.h>
 #include <impact_fem/postprocess/interface.h>
+#include <impact_fem/result_files.h>
 
 #include <deal.II/base/mpi.h>
 
@@ -134,11 +135,11 @@ namespace impact_fem
             const bool        exceeded  = has_limit && p.first_yield_time >= 0;
             any_limit |= has_limit;
             exceeded_any |= exceeded;
-            summary["von_mises_max_" + name]           = p.value;
+            summary[result_files::von_mises_max_prefix + name] = p.value;
             summary["von_mises_max_" + name + "_time"] = p.time;
             summary["von_mises_max_" + name + "_r"]    = p.location[0];
             summary["von_mises_max_" + name + "_z"]    = p.location[1];
-            summary["yield_strength_" + name]          = optional(has_limit, limit);
+            summary[result_files::yield_strength_prefix + name] = optional(has_limit, limit);
             summary["yield_exceeded_" + name]          = optional(has_limit, exceeded);
             summary["yield_time_" + name]  = optional(exceeded, p.first_yield_time);
             summary["yield_r_" + name]     = optional(exceeded, p.first_yield_location[0]);
@@ -157,8 +158,8 @@ namespace impact_fem
               line << " (below the yield strength " << limit / 1e9 << " GPa)";
             report << line.str() << "\n";
           }
-        summary["yield_exceeded"] = optional(any_limit, exceeded_any);
-        summary["max_von_mises"]  = std::max(peak[sphere].value, peak[plate].value);
+        summary[result_files::yield_exceeded_key] = optional(any_limit, exceeded_any);
+        summary[result_files::max_von_mises_key] = std::max(peak[sphere].value, peak[plate].value);
       }
 
     private:

@@ -1,0 +1,41 @@
+#pragma once
+/// @file
+/// The identities of the models, declared once: the keys by which the calibration (its JSON),
+/// the report, its figures and the exports name a model. The comparison laws are named by
+/// the reduced library (impact_reduced/comparison_laws.hpp, comparison_law_names()); the
+/// other models are these. A key is compared as `model.key == model_keys::calibrated` and
+/// stored as std::string(model_keys::calibrated).
+
+#include <string_view>
+
+namespace impact::postprocess::model_keys {
+
+// ---- Fits of the calibration (CampaignCalibration) ----------------------------------------
+/// Hunt–Crossley, b constant, fitted to the force histories.
+inline constexpr std::string_view hunt_crossley = "hunt-crossley";
+/// Hunt–Crossley, b constant, fitted to the force histories and the energy loss.
+inline constexpr std::string_view hunt_crossley_energy = "hunt-crossley-energy";
+/// Hunt–Crossley with n = 3/2 fixed.
+inline constexpr std::string_view hunt_crossley_hertz_exponent = "hunt-crossley-hertz-exponent";
+/// Hunt–Crossley with b(V) = b_1 V^-q.
+inline constexpr std::string_view hunt_crossley_velocity_damping =
+    "hunt-crossley-velocity-damping";
+
+// ---- Reference models of the calibration (nothing fitted) ---------------------------------
+/// Hertz's elastic contact (b = 0).
+inline constexpr std::string_view hertz = "hertz";
+/// Hunt–Crossley with c from Hertz, n = 3/2 and the published b.
+inline constexpr std::string_view hunt_crossley_published = "hunt-crossley-published";
+/// Kuwabara–Kono without tension, A from the materials' retardation times.
+inline constexpr std::string_view kuwabara_kono_material = "kuwabara-kono-material";
+
+// ---- Roles on the page ---------------------------------------------------------------------
+/// The calibrated Hunt–Crossley law: the campaign's hunt_crossley fit.
+inline constexpr std::string_view calibrated = "calibrated";
+/// The comparison law ranked first.
+inline constexpr std::string_view best_law = "best-law";
+/// The validity map's thin-plate and massive-plate models (Zener's impact on a plate).
+inline constexpr std::string_view thin_plate = "thin-plate";
+inline constexpr std::string_view massive_plate = "massive-plate";
+
+} // namespace impact::postprocess::model_keys

@@ -1,0 +1,48 @@
+#include "models/simulated_force.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <exception>
+
+namespace impact::postprocess::detail {
+
+bool simulate_force(const reduced::ContactForceLaw& law, double mass, double velocity,
+                    const std::vector<double>& times, std::size_t points, double tolerance,
+                    reduced::ContactEnd end, double* force) {
+  std::vector<reduced::ImpactSample> samples;
+  try {
+    samples = reduced::integrate_impact_history(mass, velocity, law, points, tolerance, end);
+  } catch (const std::exception&) {
+    return false;
+  }
+  const std::size_t last = samples.size() - 1;
+  const double separation = samples[last].time;
+  const double spacing = separation / double(last);
+  for (std::size_t i = 0; i < times.size(); ++i) {
+    const double t = times[i];
+    if (!(t > 0 && t < separation)) {
+      force[i] = 0;
+      continue;
+    }
+    std::size_t k = std::min(std::size_t(t / spacing), last - 1);
+    while (k > 0 && t < samples[k].time) --k;
+    while (k + 1 < last && t > samples[k + 1].time) ++k;
+    const auto& a = samples[k];
+    const auto& b = samples[k + 1];
+    const double h = b.time - a.time;
+    const double s = (t - a.time) / h;
+    const double h00 = (1 + 2 * s) * (1 - s) * (1 - s);
+    const double h10 = s * (1 - s) * (1 - s);
+    const double h01 = s * s * (3 - 2 * s);
+    const double h11 = s * s * (s - 1);
+    const double approach =
+        h00 * a.approach + h10 * h * a.approach_rate + h01 * b.approach + h11 * h * b.approach_rate;
+    const double rate = h00 * a.approach_rate - h10 * h * a.force / mass + h01 * b.approach_rate -
+                        h11 * h * b.force / mass;
+    force[i] = law(std::max(approach, 0.0), rate);
+    if (!std::isfinite(force[i])) return false;
+  }
+  return true;
+}
+
+} // namespace impact::postprocess::detail

@@ -1,0 +1,142 @@
+#include "impact_postprocess/run/scenario_materials.hpp"
+
+#include <impact_reduced/hertz_stiffness.hpp>
+#include <impact_reduced/viscoelastic_dissipation.hpp>
+
+#include <cctype>
+#include <sstream>
+
+namespace impact::postprocess {
+
+namespace {
+
+constexpr const char* sphere_radius_parameter = "Scenario/Sphere radius";
+
+std::string format(double value) {
+  std::ostringstream text;
+  text.precision(4);
+  text << value;
+  return text.str();
+}
+
+struct Body {
+  std::string model;   // "elastic", "kelvin-voigt", ...
+  double youngs_modulus;
+  double poisson_ratio;
+  std::optional<double> deviatoric_retardation_time; // kelvin-voigt only
+  std::optional<double> volumetric_retardation_time;
+};
+
+// "<Body>/Material model" = name, constants in "<Body>/<Name>/Young's modulus", ...
+std::optional<Body> body_of(const FemRun& run, const std::string& body) {
+  const auto model = run.text_attributes.find(body + "/Material model");
+  if (model == run.text_attributes.end() || model->second.empty()) return std::nullopt;
+  std::string section = model->second;
+  section[0] = char(std::toupper((unsigned char)section[0]));
+  const std::string prefix = body + "/" + section + "/";
+  const auto young = text_number(run, prefix + "Young's modulus");
+  const auto poisson = text_number(run, prefix + "Poisson's ratio");
+  if (!young || !poisson) return std::nullopt;
+  Body result{model->second, *young, *poisson, std::nullopt, std::nullopt};
+  if (model->second == "elastic") {
+    result.deviatoric_retardation_time = result.volumetric_retardation_time = 0.0;
+  } else if (model->second == "kelvin-voigt") {
+    result.deviatoric_retardation_time = text_number(run, prefix + "Retardation time");
+    const auto volumetric = text_number(run, prefix + "Volumetric retardation time");
+    if (result.deviatoric_retardation_time && volumetric)
+      result.volumetric_retardation_time =
+          *volumetric < 0 ? *result.deviatoric_retardation_time : *volumetric;
+  }
+  return result;
+}
+
+std::string describe(const std::string& name, const Body& body) {
+  std::string text = name + " " + body.model + " E = " + format(body.youngs_modulus) +
+                     " Pa, nu = " + format(body.poisson_ratio);
+  if (body.model == "kelvin-voigt" && body.deviatoric_retardation_time &&
+      body.volumetric_retardation_time)
+    text += ", tau_d = " + format(*body.deviatoric_retardation_time) +
+            " s, tau_v = " + format(*body.volumetric_retardation_time) + " s";
+  return text;
+}
+
+} // namespace
+
+std::optional<double> text_number(const FemRun& run, const std::string& key) {
+  const auto found = run.text_attributes.find(key);
+  if (found == run.text_attributes.end()) return std::nullopt;
+  try {
+    std::size_t end = 0;
+    const double value = std::stod(found->second, &end);
+    if (end == found->second.size()) return value;
+  } catch (const std::exception&) {
+  }
+  return std::nullopt;
+}
+
+std::optional<double> material_constant(const FemRun& run, const std::string& body,
+                                        const std::string& entry) {
+  const auto model = run.text_attributes.find(body + "/Material model");
+  if (model == run.text_attributes.end() || model->second.empty()) return std::nullopt;
+  std::string section = model->second;
+  section[0] = char(std::toupper((unsigned char)section[0]));
+  return text_number(run, body + "/" + section + "/" + entry);
+}
+
+ScenarioMaterials scenario_materials(const std::vector<FemRun>& runs) {
+  ScenarioMaterials materials{published_hertz_stiffness,
+                              "the runs do not record the scenario's materials, so the published "
+                              "steel value 1.7135e10 N/m^1.5 (0.1 kg steel ball on steel) is used",
+                              false, std::nullopt,
+                              "the runs do not record the bodies' materials"};
+  for (const auto& run : runs) {
+    const auto sphere = body_of(run, "Sphere");
+    const auto plate = body_of(run, "Plate");
+    const auto radius = text_number(run, sphere_radius_parameter);
+    if (!sphere || !plate || !radius) continue;
+    try {
+      materials.hertz_stiffness =
+          reduced::hertz_stiffness({sphere->youngs_modulus, sphere->poisson_ratio, *radius},
+                                   {plate->youngs_modulus, plate->poisson_ratio});
+    } catch (const std::exception&) {
+      continue;
+    }
+    materials.hertz_from_runs = true;
+    materials.hertz_basis = "Hertz value of the scenario's materials (sphere E = " +
+                            format(sphere->youngs_modulus) + " Pa, nu = " +
+                            format(sphere->poisson_ratio) + ", R = " + format(*radius) +
+                            " m; plate E = " + format(plate->youngs_modulus) + " Pa, nu = " +
+                            format(plate->poisson_ratio) + ") read from " + run.source;
+    const bool viscoelastic =
+        sphere->deviatoric_retardation_time && sphere->volumetric_retardation_time &&
+        plate->deviatoric_retardation_time && plate->volumetric_retardation_time;
+    if (sphere->model == "elastic" && plate->model == "elastic") {
+      materials.dissipative_basis = "the bodies are elastic: A = 0, the Hertz model";
+      return materials;
+    }
+    if (!viscoelastic) {
+      materials.dissipative_basis =
+          "no A from the material: the bodies are " + sphere->model + " and " + plate->model +
+          " (the formula needs Kelvin–Voigt or elastic bodies with their retardation times)";
+      return materials;
+    }
+    try {
+      materials.dissipative_constant = reduced::kuwabara_kono_dissipative_constant(
+          {sphere->youngs_modulus, sphere->poisson_ratio, *sphere->deviatoric_retardation_time,
+           *sphere->volumetric_retardation_time},
+          {plate->youngs_modulus, plate->poisson_ratio, *plate->deviatoric_retardation_time,
+           *plate->volumetric_retardation_time});
+      materials.dissipative_basis =
+          "A = (1 - nu) [tau_v (1 + nu) - tau_d (1 - 2 nu)]^2 / (3 nu^2 [tau_v (1 + nu) + "
+          "2 tau_d (1 - 2 nu)]) per body (Brilliantov et al. 1996; = tau when tau_d = tau_v), "
+          "compliance-weighted over the two bodies, from " +
+          describe("sphere", *sphere) + "; " + describe("plate", *plate);
+    } catch (const std::exception& error) {
+      materials.dissipative_basis = std::string("no A from the material: ") + error.what();
+    }
+    return materials;
+  }
+  return materials;
+}
+
+} // namespace impact::postprocess
