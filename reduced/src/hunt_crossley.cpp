@@ -455,11 +455,11 @@ ImpactState HuntCrossleyImpact::phase_state(ImpactPhase phase, double time,
 // w = 1 + b v (rate distance) or b (log-rate distance), K_d = m / (c^(1/(n+1)) ((n+1) m)^alpha).
 // In sigma = (d / D)^(1/(n+1)), D the phase's extent, d^(-alpha) dd = (n + 1) D^(1-alpha) dsigma:
 //   dt/dsigma = (n + 1) D^(1-alpha) K_d (E / d)^(-alpha) / w,
-// bounded and positive on [0, 1], analytic but for powers sigma^(k (n+1)) at sigma = 0, which
-// the map's panels resolve by grading themselves there. Each phase's times are accumulated
-// panel by panel from its singular end, the points located by Newton's method on each
-// panel's Chebyshev series (PhaseTimeMap): the density is evaluated a fixed number of
-// times, whatever the number of points, and each point costs two powers.
+// bounded and positive on [0, 1], a power series in sigma^(n+1) near sigma = 0. Each phase's
+// time is accumulated piece by piece from its singular end (PhaseTimeMap: a polynomial in
+// sigma^(n+1) on the first piece, Chebyshev panels beyond), the density evaluated a fixed
+// number of times whatever the number of points; each point is located on those series
+// and evaluated by the closed forms (one power for x).
 std::vector<ImpactState> HuntCrossleyImpact::power_law_history(std::size_t points) const {
   const double exponent = power_law_->exponent();
   const double alpha = exponent / (exponent + 1);
@@ -503,13 +503,13 @@ std::vector<ImpactState> HuntCrossleyImpact::power_law_history(std::size_t point
   const auto compression_points = compression_map.locate(elapsed);
   for (std::size_t j = 0; j < elapsed.size(); ++j)
     states[j + 1] = phase_state(ImpactPhase::compression, elapsed[j],
-                                compression_extent * compression_points[j].sigma_power);
+                                compression_extent * compression_points[j]);
   const double restitution_extent = phase_extent(ImpactPhase::restitution);
   const auto restitution_points = restitution_map.locate(remaining);
   for (std::size_t j = 0; j < remaining.size(); ++j) {
     const std::size_t i = points - 2 - j;
     states[i] = phase_state(ImpactPhase::restitution, time_at(i),
-                            restitution_extent * restitution_points[j].sigma_power);
+                            restitution_extent * restitution_points[j]);
   }
   return states;
 }

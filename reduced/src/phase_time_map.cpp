@@ -210,16 +210,18 @@ double PhaseTimeMap::panel_end_time(long panel) const {
                                                              : duration_;
 }
 
-// x(t) on the panel at the Chebyshev points of its time range, by Newton's method on the
-// panel's series, and the coefficients of its interpolant; false if they do not decay to
-// rounding (the inverse is then not used).
+// sigma^p as a function of t on the panel (all the caller needs): its values at the
+// Chebyshev points of the panel's time range, by Newton's method on the panel's series,
+// and the coefficients of its interpolant; false if they do not decay to rounding (the
+// inverse is then not used).
 bool PhaseTimeMap::build_inverse(const Panel& panel, double end_time, double* inverse) const {
   const auto& cosine = cosine_table();
   double values[m];
   for (int k = 0; k < m; ++k) {
     const double y = cosine[1][k];
     const double time = panel.start_time + 0.5 * (end_time - panel.start_time) * (1 + y);
-    values[k] = solve_in_panel(panel, time, y);
+    const double x = solve_in_panel(panel, time, y);
+    values[k] = std::pow(panel.lower + panel.half_width * (x + 1.0), power_);
   }
   for (int j = 0; j < m; ++j) {
     double sum = 0;
@@ -227,7 +229,7 @@ bool PhaseTimeMap::build_inverse(const Panel& panel, double end_time, double* in
     inverse[j] = (j == 0 ? 1.0 : 2.0) * sum / m;
   }
   return std::fabs(inverse[m - 1]) + std::fabs(inverse[m - 2]) + std::fabs(inverse[m - 3]) <=
-         1e-15;
+         1e-16 * std::fabs(inverse[0]);
 }
 
 // t = sigma Q(tau), dt/dsigma = G(tau), tau = (sigma / sigma_0)^p, Newton's method in
@@ -269,8 +271,8 @@ double PhaseTimeMap::solve_in_first_piece(double time, double guess, double& tau
   return s;
 }
 
-std::vector<PhaseTimeMap::Location> PhaseTimeMap::locate(const std::vector<double>& times) const {
-  std::vector<Location> locations;
+std::vector<double> PhaseTimeMap::locate(const std::vector<double>& times) const {
+  std::vector<double> locations;
   locations.reserve(times.size());
   // Piece -1 is the first piece, 0, 1, ... the panels.
   const double first_end = first_upper_ > 0 ? first_upper_ *
@@ -308,9 +310,7 @@ std::vector<PhaseTimeMap::Location> PhaseTimeMap::locate(const std::vector<doubl
       const Panel& panel = panels_[piece];
       const double y =
           2 * (time - panel.start_time) / (panel_end_time(piece) - panel.start_time) - 1;
-      const double sigma =
-          panel.lower + panel.half_width * (chebyshev_sum(inverse, nodes, y) + 1.0);
-      locations.push_back({sigma, std::pow(sigma, power_)});
+      locations.push_back(chebyshev_sum(inverse, nodes, y));
       continue;
     }
     double guess;
@@ -332,14 +332,13 @@ std::vector<PhaseTimeMap::Location> PhaseTimeMap::locate(const std::vector<doubl
       if (known == 0) guess = time / first_end; // t is nearly linear in sigma
       double tau;
       x = solve_in_first_piece(time, guess, tau);
-      locations.push_back({first_upper_ * x, std::pow(first_upper_, power_) * tau});
+      locations.push_back(std::pow(first_upper_, power_) * tau);
     } else {
       const Panel& panel = panels_[piece];
       if (known == 0)
         guess = -1 + 2 * (time - panel.start_time) / (panel_end_time(piece) - panel.start_time);
       x = solve_in_panel(panel, time, guess);
-      const double sigma = panel.lower + panel.half_width * (x + 1.0);
-      locations.push_back({sigma, std::pow(sigma, power_)});
+      locations.push_back(std::pow(panel.lower + panel.half_width * (x + 1.0), power_));
     }
     if (known == 3) {
       for (int a = 0; a < 2; ++a) {

@@ -37,16 +37,11 @@ public:
   /// Density evaluations made to build the map.
   std::size_t evaluations() const { return evaluations_; }
 
-  /// A located point: sigma and sigma^p (the caller needs both; the power is a by-product
-  /// near sigma = 0).
-  struct Location {
-    double sigma;
-    double sigma_power;
-  };
-  /// The sigma in [0, 1] with t(sigma) = time, for ascending times in [0, duration]:
-  /// one pass over the pieces, Newton's method on each piece's series (safeguarded by
-  /// bisection), from a quadratic extrapolation of the previous points.
-  std::vector<Location> locate(const std::vector<double>& ascending_times) const;
+  /// sigma^p at the sigma in [0, 1] with t(sigma) = time, for ascending times in
+  /// [0, duration]: one pass over the pieces, Newton's method on each piece's series
+  /// (safeguarded by bisection) from a quadratic extrapolation of the previous points, or,
+  /// on a panel holding more than 2 `nodes` points, the Chebyshev series of the inverse.
+  std::vector<double> locate(const std::vector<double>& ascending_times) const;
 
   /// Chebyshev points per panel, and interpolation points of the first piece.
   static constexpr int nodes = 16;
