@@ -3,6 +3,7 @@
 #include "impact_reduced/invalid_input.hpp"
 #include "branch_point.hpp"
 #include "gauss_jacobi.hpp"
+#include "phase_time_map.hpp"
 
 #include <boost/math/quadrature/tanh_sinh.hpp>
 #include <boost/math/special_functions/lambert_w.hpp>
@@ -50,10 +51,14 @@ __float128 quad_log1p_excess_ratio(__float128 t) {
 // limit so that it is exact (no cancellation) for small widths:
 //   u lower / a + u^2 sigma(r) / a^2,   a = 1 + b lower,  r = b u / a,
 //   sigma(r) = (r - log(1 + r)) / r^2.
-double velocity_work(double damping, double lower, double width) {
+double velocity_work_per_width(double damping, double lower, double width) {
   const double scale = 1.0 + damping * lower;
   const double ratio = damping * width / scale;
-  return width * (lower / scale + width * log1p_excess_ratio(ratio) / (scale * scale));
+  return lower / scale + width * log1p_excess_ratio(ratio) / (scale * scale);
+}
+
+double velocity_work(double damping, double lower, double width) {
+  return width * velocity_work_per_width(damping, lower, width);
 }
 
 // The Gauss-Jacobi fast path integrates the smooth factor g of the time density exactly
@@ -200,6 +205,7 @@ HuntCrossleyImpact::HuntCrossleyImpact(double mass,
     const double s0 = detail::log1p_excess(impact_parameter());
     const double w_out = boost::math::lambert_w0(-std::exp(-1.0 - s0));
     restitution_in_log_rate_ = true;
+    log_rate_in_ = std::log1p(impact_parameter());
     log_rate_span_ = 1.0 + s0 + w_out;
     separation_force_factor_ = -w_out;
   }
@@ -391,6 +397,145 @@ ImpactResponse HuntCrossleyImpact::response() const {
 std::vector<ImpactState> HuntCrossleyImpact::history(std::size_t points) const {
   if (points < 2)
     throw InvalidInput("points", "points must be >= 2 (got " + std::to_string(points) + ")");
+  return power_law_ ? power_law_history(points) : quadrature_history(points);
+}
+
+double HuntCrossleyImpact::phase_extent(ImpactPhase phase) const {
+  if (phase == ImpactPhase::restitution) return restitution_span();
+  return restitution_in_log_rate_ ? log_rate_in_ : velocity_;
+}
+
+double HuntCrossleyImpact::phase_energy_ratio(ImpactPhase phase, double distance) const {
+  if (!restitution_in_log_rate_) {
+    if (phase == ImpactPhase::compression)
+      return velocity_work_per_width(damping_, velocity_ - distance, distance);
+    return -velocity_work_per_width(damping_, rebound_velocity(), distance);
+  }
+  // Log-rate distances (beta > 1), b^2 E / m written from the singular end:
+  //   compression, psi = psi_in - d:   b^2 E = -(1 + beta) expm1(-d) - d
+  //   restitution, psi = psi_out + d:  b^2 E = d - exp(-psi_out) expm1(d)
+  // (the first two terms cancel at most to a factor (1 + beta) / beta < 2).
+  const double b2 = damping_ * damping_;
+  if (phase == ImpactPhase::compression) {
+    const double growth = distance > 0 ? -std::expm1(-distance) / distance : 1.0;
+    return ((1.0 + impact_parameter()) * growth - 1.0) / b2;
+  }
+  if (distance <= 0) return (1.0 - separation_force_factor_) / b2;
+  const double decayed = distance < 1.0 ? separation_force_factor_ * std::expm1(distance)
+                                        : std::exp(distance - log_rate_span_) -
+                                              separation_force_factor_;
+  return (1.0 - decayed / distance) / b2;
+}
+
+double HuntCrossleyImpact::phase_rate(ImpactPhase phase, double distance) const {
+  if (phase == ImpactPhase::restitution) return restitution_rate(distance);
+  if (!restitution_in_log_rate_) return velocity_ - distance;
+  return std::expm1(log_rate_in_ - distance) / damping_; // v = (exp(psi) - 1) / b
+}
+
+double HuntCrossleyImpact::phase_force_factor(ImpactPhase phase, double distance) const {
+  if (!restitution_in_log_rate_) return 1.0 + damping_ * phase_rate(phase, distance);
+  return phase == ImpactPhase::compression ? std::exp(log_rate_in_ - distance)
+                                           : std::exp(distance - log_rate_span_);
+}
+
+ImpactState HuntCrossleyImpact::phase_state(ImpactPhase phase, double time,
+                                            double distance) const {
+  const double energy = distance * phase_energy_ratio(phase, distance);
+  const double approach = power_law_->approach_at_potential(mass_ * energy);
+  // f(x) = c x^n = (n + 1) P(x) / x: no second power.
+  const double elastic =
+      approach > 0 ? (power_law_->exponent() + 1) * mass_ * energy / approach : 0.0;
+  return {time, approach, phase_rate(phase, distance),
+          elastic * phase_force_factor(phase, distance)};
+}
+
+// The time density of a phase has the end-point singularity d^(-alpha), alpha = n / (n + 1),
+// where f(x) vanishes (first contact, separation): dt/dd = K_d d^(-alpha) (E / d)^(-alpha) / w,
+// w = 1 + b v (rate distance) or b (log-rate distance), K_d = m / (c^(1/(n+1)) ((n+1) m)^alpha).
+// In sigma = (d / D)^(1/(n+1)), D the phase's extent, d^(-alpha) dd = (n + 1) D^(1-alpha) dsigma:
+//   dt/dsigma = (n + 1) D^(1-alpha) K_d (E / d)^(-alpha) / w,
+// bounded and positive on [0, 1], a power series in sigma^(n+1) near sigma = 0. Each phase's
+// time is accumulated piece by piece from its singular end (PhaseTimeMap: a polynomial in
+// sigma^(n+1) on the first piece, Chebyshev panels beyond), the density evaluated a fixed
+// number of times whatever the number of points; each point is located on those series
+// and evaluated by the closed forms (one power for x).
+std::vector<ImpactState> HuntCrossleyImpact::power_law_history(std::size_t points) const {
+  const double exponent = power_law_->exponent();
+  const double alpha = exponent / (exponent + 1);
+  const double power = exponent + 1;
+  const double time_scale = mass_ / (std::pow(power_law_->stiffness(), 1.0 / power) *
+                                     std::pow(power * mass_, alpha)) /
+                            (restitution_in_log_rate_ ? damping_ : 1.0);
+  constexpr double tolerance = 1e-14;
+  auto make_map = [&](ImpactPhase phase) {
+    const double extent = phase_extent(phase);
+    const double factor = power * std::pow(extent, 1.0 - alpha) * time_scale;
+    const auto density = [&](double sigma) {
+      const double distance = extent * std::pow(sigma, power);
+      const double weight =
+          restitution_in_log_rate_ ? 1.0 : 1.0 / phase_force_factor(phase, distance);
+      return factor * std::pow(phase_energy_ratio(phase, distance), -alpha) * weight;
+    };
+    return detail::PhaseTimeMap(density, power, tolerance);
+  };
+  const detail::PhaseTimeMap compression_map = make_map(ImpactPhase::compression);
+  const detail::PhaseTimeMap restitution_map = make_map(ImpactPhase::restitution);
+  const double compression = compression_map.duration();
+  const double total = compression + restitution_map.duration();
+  const auto time_at = [&](std::size_t i) {
+    return total * static_cast<double>(i) / static_cast<double>(points - 1);
+  };
+
+  std::vector<ImpactState> states(points);
+  states.front() = {0.0, 0.0, velocity_, 0.0};
+  states.back() = {total, 0.0, rebound_velocity(), 0.0};
+  // Compression points forward from first contact, restitution points backward from
+  // separation, each from its own singular end.
+  std::vector<double> elapsed, remaining;
+  std::size_t last_compression = 0;
+  for (std::size_t i = 1; i + 1 < points && time_at(i) <= compression; ++i) {
+    elapsed.push_back(time_at(i));
+    last_compression = i;
+  }
+  for (std::size_t i = points - 2; i > last_compression; --i) remaining.push_back(total - time_at(i));
+  const double compression_extent = phase_extent(ImpactPhase::compression);
+  const auto compression_points = compression_map.locate(elapsed);
+  for (std::size_t j = 0; j < elapsed.size(); ++j)
+    states[j + 1] = phase_state(ImpactPhase::compression, elapsed[j],
+                                compression_extent * compression_points[j]);
+  const double restitution_extent = phase_extent(ImpactPhase::restitution);
+  const auto restitution_points = restitution_map.locate(remaining);
+  for (std::size_t j = 0; j < remaining.size(); ++j) {
+    const std::size_t i = points - 2 - j;
+    states[i] = phase_state(ImpactPhase::restitution, time_at(i),
+                            restitution_extent * restitution_points[j]);
+  }
+  return states;
+}
+
+ImpactState HuntCrossleyImpact::state_at(double time) const {
+  const double compression = compression_time();
+  const double total = compression + restitution_time_from(restitution_span());
+  if (!(time >= 0 && time <= total)) {
+    std::ostringstream message;
+    message.precision(17);
+    message << "time must be in [0, contact_time = " << total << "] s (got " << time << ")";
+    throw InvalidInput("time", message.str());
+  }
+  if (time <= compression) {
+    const auto distance = invert_cumulative_integral(
+        [this](double u) { return compression_time_density(u); }, {time}, velocity_);
+    return compression_state(time, distance[0]);
+  }
+  const auto distance = invert_cumulative_integral(
+      [this](double u) { return restitution_time_density(u); }, {total - time},
+      restitution_span());
+  return restitution_state(time, distance[0]);
+}
+
+// Any elastic law: each point's time inverted by Newton's method on the adaptive quadrature.
+std::vector<ImpactState> HuntCrossleyImpact::quadrature_history(std::size_t points) const {
   const auto compression_density = [this](double u) { return compression_time_density(u); };
   const auto restitution_density = [this](double u) { return restitution_time_density(u); };
   const double compression = compression_time();

@@ -220,6 +220,10 @@ struct HistoryEvaluator {
     } catch (const std::exception&) {
       return false;
     }
+    if (model->hunt_crossley_force())
+      return detail::simulate_hunt_crossley_force(model->force_law(damping, setup), setup, damping,
+                                                  run->run->impact_velocity, run->times,
+                                                  run->points, force);
     return detail::simulate_force(model->force_law(damping, setup), run->run->mass,
                                   run->run->impact_velocity, run->times, run->points, tolerance,
                                   model->contact_end, force);

@@ -1,0 +1,357 @@
+#include "phase_time_map.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+namespace impact::reduced::detail {
+
+namespace {
+
+constexpr int m = PhaseTimeMap::nodes;
+
+// cos(pi j (k + 1/2) / m): the Chebyshev points of the first kind (j = 1) and the discrete
+// cosine transform that turns values there into coefficients. Computed once.
+const std::array<std::array<double, m>, m>& cosine_table() {
+  static const auto table = [] {
+    std::array<std::array<double, m>, m> values{};
+    const double pi = std::acos(-1.0);
+    for (int j = 0; j < m; ++j)
+      for (int k = 0; k < m; ++k) values[j][k] = std::cos(pi * j * (k + 0.5) / m);
+    return values;
+  }();
+  return table;
+}
+
+// sum_{j <= m} t_j T_j(x) and sum_{j < m} d_j T_j(x) by Clenshaw's recurrence, the two
+// recurrences interleaved (independent chains: about the cost of one).
+void time_and_density(const double* t, const double* d, double x, double& time,
+                      double& density) {
+  double t_next = t[m], t_after = 0, d_next = 0, d_after = 0;
+  for (int j = m - 1; j >= 1; --j) {
+    const double t_current = t[j] + 2 * x * t_next - t_after;
+    const double d_current = d[j] + 2 * x * d_next - d_after;
+    t_after = t_next;
+    t_next = t_current;
+    d_after = d_next;
+    d_next = d_current;
+  }
+  time = t[0] + x * t_next - t_after;
+  density = d[0] + x * d_next - d_after;
+}
+
+// sum_{j < count} c_j T_j(x) by Clenshaw's recurrence.
+double chebyshev_sum(const double* c, int count, double x) {
+  double next = 0, after = 0;
+  for (int j = count - 1; j >= 1; --j) {
+    const double current = c[j] + 2 * x * next - after;
+    after = next;
+    next = current;
+  }
+  return c[0] + x * next - after;
+}
+
+} // namespace
+
+PhaseTimeMap::PhaseTimeMap(const std::function<double(double)>& density, double power,
+                           double tolerance)
+  : power_(power) {
+  const double absolute_tolerance = tolerance * density(0.5);
+  evaluations_ = 1;
+  // The first piece as wide as its polynomial converges (G's nearest singularity lies
+  // O(1) away in sigma^p, so about half the phase).
+  double first = 0.5;
+  while (!build_first_piece(density, first, absolute_tolerance) && first > 1.0 / 1024) first *= 0.5;
+  // Depth-first bisection keeps the panels in ascending order, so each starts at the time
+  // accumulated by those before it.
+  std::function<void(double, double, int)> cover = [&](double lower, double upper, int depth) {
+    Panel panel;
+    if (build_panel(density, lower, upper, absolute_tolerance, panel) || depth >= 60) {
+      panels_.push_back(panel);
+      return;
+    }
+    const double middle = 0.5 * (lower + upper);
+    cover(lower, middle, depth + 1);
+    cover(middle, upper, depth + 1);
+  };
+  const int count = std::max(1, static_cast<int>(std::ceil((1.0 - first) / 0.125)));
+  for (int i = 0; i < count; ++i)
+    cover(first + (1.0 - first) * i / count, first + (1.0 - first) * (i + 1) / count, 0);
+}
+
+bool PhaseTimeMap::build_first_piece(const std::function<double(double)>& density,
+                                     double upper, double tolerance) {
+  constexpr int K = first_nodes;
+  static const auto cosine = [] {
+    std::array<std::array<double, K>, K> values{};
+    const double pi = std::acos(-1.0);
+    for (int j = 0; j < K; ++j)
+      for (int k = 0; k < K; ++k) values[j][k] = std::cos(pi * j * (k + 0.5) / K);
+    return values;
+  }();
+  // G at the Chebyshev points of tau in [0, 1], then its Chebyshev coefficients there.
+  double values[K];
+  for (int k = 0; k < K; ++k) {
+    const double tau = 0.5 * (1.0 + cosine[1][k]);
+    values[k] = density(upper * std::pow(tau, 1.0 / power_));
+    if (!(std::isfinite(values[k]) && values[k] > 0))
+      throw std::runtime_error("internal error: the time density of an impact phase is not "
+                               "finite and positive");
+  }
+  evaluations_ += K;
+  double chebyshev[K];
+  for (int j = 0; j < K; ++j) {
+    double sum = 0;
+    for (int k = 0; k < K; ++k) sum += values[k] * cosine[j][k];
+    chebyshev[j] = (j == 0 ? 1.0 : 2.0) * sum / K;
+  }
+  const double tail =
+      std::fabs(chebyshev[K - 1]) + std::fabs(chebyshev[K - 2]) + std::fabs(chebyshev[K - 3]);
+  if (!(tail <= tolerance)) return false;
+  // Monomial coefficients in tau: T_j(2 tau - 1) by T_(j+1) = 2 (2 tau - 1) T_j - T_(j-1).
+  // The coefficients decay much faster than those of T_j grow, so the sum stays exact.
+  double previous[K] = {1.0}, current[K] = {-1.0, 2.0};
+  double monomial[K] = {};
+  for (int k = 0; k < K; ++k) monomial[k] = 0;
+  monomial[0] += chebyshev[0] * previous[0];
+  for (int k = 0; k < 2; ++k) monomial[k] += chebyshev[1] * current[k];
+  for (int j = 2; j < K; ++j) {
+    double next[K] = {};
+    for (int k = 0; k < K; ++k) {
+      next[k] = -2.0 * current[k] - previous[k] + (k > 0 ? 4.0 * current[k - 1] : 0.0);
+    }
+    for (int k = 0; k < K; ++k) {
+      previous[k] = current[k];
+      current[k] = next[k];
+      monomial[k] += chebyshev[j] * current[k];
+    }
+  }
+  first_upper_ = upper;
+  double at_end = 0;
+  for (int k = 0; k < K; ++k) {
+    first_density_[k] = monomial[k];
+    first_time_[k] = monomial[k] / (k * power_ + 1.0);
+    at_end += first_time_[k];
+  }
+  duration_ = upper * at_end;
+  return true;
+}
+
+bool PhaseTimeMap::build_panel(const std::function<double(double)>& density, double lower,
+                               double upper, double tolerance, Panel& panel) {
+  // `tolerance` here is absolute (density units).
+  const auto& cosine = cosine_table();
+  panel.lower = lower;
+  panel.half_width = 0.5 * (upper - lower);
+  panel.start_time = duration_;
+  double values[m];
+  for (int k = 0; k < m; ++k) {
+    // Node k at x = cos(pi (k + 1/2) / m), from the right end to the left.
+    values[k] = density(lower + panel.half_width * (1.0 + cosine[1][k]));
+    if (!(std::isfinite(values[k]) && values[k] > 0))
+      throw std::runtime_error("internal error: the time density of an impact phase is not "
+                               "finite and positive");
+  }
+  evaluations_ += m;
+  for (int j = 0; j < m; ++j) {
+    double sum = 0;
+    for (int k = 0; k < m; ++k) sum += values[k] * cosine[j][k];
+    panel.density[j] = (j == 0 ? 1.0 : 2.0) * sum / m;
+  }
+  const double tail = std::fabs(panel.density[m - 1]) + std::fabs(panel.density[m - 2]) +
+                      std::fabs(panel.density[m - 3]);
+  if (!(tail <= tolerance)) return false;
+  // Term-by-term integral from x = -1: int T_0 = T_1, int T_1 = T_2 / 4,
+  // int T_j = T_(j+1) / (2 (j+1)) - T_(j-1) / (2 (j-1)).
+  const double* c = panel.density;
+  auto coefficient = [&](int j) { return j < m ? c[j] : 0.0; };
+  panel.time[1] = c[0] - 0.5 * coefficient(2);
+  for (int j = 2; j <= m; ++j)
+    panel.time[j] = (coefficient(j - 1) - coefficient(j + 1)) / (2.0 * j);
+  double at_left = 0;
+  for (int j = 1; j <= m; ++j) at_left += (j % 2 == 0 ? 1.0 : -1.0) * panel.time[j];
+  panel.time[0] = -at_left;
+  double at_right = 0;
+  for (int j = 0; j <= m; ++j) at_right += panel.time[j];
+  duration_ += panel.half_width * at_right;
+  return true;
+}
+
+double PhaseTimeMap::solve_in_panel(const Panel& panel, double time, double guess) const {
+  // t(x) = start_time + half_width T(x), increasing in x on [-1, 1]: Newton's method kept
+  // inside a shrinking bracket, bisection where a step would leave it. From a guess within
+  // 1e-8 of the root one step reaches the root to rounding (quadratic convergence, and
+  // t''/t' is of order one in x on a panel).
+  const double target = (time - panel.start_time) / panel.half_width;
+  double low = -1, high = 1;
+  double x = std::clamp(guess, -1.0, 1.0);
+  for (int iteration = 0; iteration < 100; ++iteration) {
+    double value, slope;
+    time_and_density(panel.time, panel.density, x, value, slope);
+    const double residual = value - target;
+    if (residual == 0) break;
+    (residual > 0 ? high : low) = x;
+    double next = x - residual / slope;
+    const bool newton = next >= low && next <= high;
+    if (!newton) next = 0.5 * (low + high);
+    const double step = next - x;
+    x = next;
+    if ((newton && std::fabs(step) < 1e-8) ||
+        high - low < 4 * std::numeric_limits<double>::epsilon())
+      break;
+  }
+  return x;
+}
+
+double PhaseTimeMap::panel_end_time(long panel) const {
+  return static_cast<std::size_t>(panel) + 1 < panels_.size() ? panels_[panel + 1].start_time
+                                                             : duration_;
+}
+
+// sigma^p as a function of t on the panel (all the caller needs): its values at the
+// Chebyshev points of the panel's time range, by Newton's method on the panel's series,
+// and the coefficients of its interpolant; false if they do not decay to rounding (the
+// inverse is then not used).
+bool PhaseTimeMap::build_inverse(const Panel& panel, double end_time, double* inverse) const {
+  const auto& cosine = cosine_table();
+  double values[m];
+  for (int k = 0; k < m; ++k) {
+    const double y = cosine[1][k];
+    const double time = panel.start_time + 0.5 * (end_time - panel.start_time) * (1 + y);
+    const double x = solve_in_panel(panel, time, y);
+    values[k] = std::pow(panel.lower + panel.half_width * (x + 1.0), power_);
+  }
+  for (int j = 0; j < m; ++j) {
+    double sum = 0;
+    for (int k = 0; k < m; ++k) sum += values[k] * cosine[j][k];
+    inverse[j] = (j == 0 ? 1.0 : 2.0) * sum / m;
+  }
+  return std::fabs(inverse[m - 1]) + std::fabs(inverse[m - 2]) + std::fabs(inverse[m - 3]) <=
+         1e-16 * std::fabs(inverse[0]);
+}
+
+// t = sigma Q(tau), dt/dsigma = G(tau), tau = (sigma / sigma_0)^p, Newton's method in
+// s = sigma / sigma_0 in [0, 1] as on a panel. Returns s and its tau.
+double PhaseTimeMap::solve_in_first_piece(double time, double guess, double& tau) const {
+  constexpr int K = first_nodes;
+  auto horner = [](const double* c, double t) {
+    double sum = c[K - 1];
+    for (int k = K - 2; k >= 0; --k) sum = sum * t + c[k];
+    return sum;
+  };
+  // tau = s^p after a step s -> s + step: one power at the start, then (1 + e)^p by its
+  // binomial series for |e| = |step / s| < 1e-3 (five terms: error below e^6 < 1e-18).
+  const double p = power_;
+  auto rescale = [p](double tau_before, double e) {
+    return tau_before *
+           (1 + p * e *
+                    (1 + (p - 1) / 2 * e *
+                             (1 + (p - 2) / 3 * e * (1 + (p - 3) / 4 * e * (1 + (p - 4) / 5 * e)))));
+  };
+  const double target = time / first_upper_;
+  double low = 0, high = 1;
+  double s = std::clamp(guess, 0.0, 1.0);
+  tau = std::pow(s, p);
+  for (int iteration = 0; iteration < 100; ++iteration) {
+    const double residual = s * horner(first_time_, tau) - target;
+    if (residual == 0) break;
+    (residual > 0 ? high : low) = s;
+    double next = s - residual / horner(first_density_, tau);
+    const bool newton = next >= low && next <= high;
+    if (!newton) next = 0.5 * (low + high);
+    const double step = next - s;
+    tau = s > 0 && std::fabs(step) < 1e-3 * s ? rescale(tau, step / s) : std::pow(next, p);
+    s = next;
+    if ((newton && std::fabs(step) < 1e-8 * s) ||
+        high - low < 4 * std::numeric_limits<double>::epsilon() * high)
+      break;
+  }
+  return s;
+}
+
+std::vector<double> PhaseTimeMap::locate(const std::vector<double>& times) const {
+  std::vector<double> locations;
+  locations.reserve(times.size());
+  // Piece -1 is the first piece, 0, 1, ... the panels.
+  const double first_end = first_upper_ > 0 ? first_upper_ *
+      [&] { double sum = 0; for (double c : first_time_) sum += c; return sum; }() : 0.0;
+  long piece = first_upper_ > 0 ? -1 : 0;
+  // The last (up to) three solutions in the current piece predict the next one by
+  // quadratic extrapolation in time (the solution is smooth in t within a piece): error
+  // O(h^3), so that Newton's method needs one or two steps.
+  double known_time[3], known_x[3];
+  int known = 0;
+  // A panel holding many points gets the Chebyshev series of its inverse, x(t), so that
+  // each point costs one series instead of Newton's method.
+  double inverse[nodes];
+  bool use_inverse = false;
+  for (std::size_t index = 0; index < times.size(); ++index) {
+    const double time = times[index];
+    const long before = piece;
+    if (piece < 0 && time > first_end && !panels_.empty()) piece = 0;
+    while (piece >= 0 && static_cast<std::size_t>(piece) + 1 < panels_.size() &&
+           time > panels_[piece + 1].start_time)
+      ++piece;
+    if (piece != before) {
+      known = 0;
+      use_inverse = false;
+      if (piece >= 0) {
+        const double end = panel_end_time(piece);
+        std::size_t count = 0;
+        while (index + count < times.size() && times[index + count] <= end &&
+               count <= 2 * nodes)
+          ++count;
+        use_inverse = count > 2 * nodes && build_inverse(panels_[piece], end, inverse);
+      }
+    }
+    if (use_inverse) {
+      const Panel& panel = panels_[piece];
+      const double y =
+          2 * (time - panel.start_time) / (panel_end_time(piece) - panel.start_time) - 1;
+      locations.push_back(chebyshev_sum(inverse, nodes, y));
+      continue;
+    }
+    double guess;
+    if (known == 0) {
+      guess = 0.0;
+    } else if (known == 1) {
+      guess = known_x[0];
+    } else {
+      guess = 0;
+      for (int a = 0; a < known; ++a) {
+        double weight = 1;
+        for (int b = 0; b < known; ++b)
+          if (b != a) weight *= (time - known_time[b]) / (known_time[a] - known_time[b]);
+        guess += weight * known_x[a];
+      }
+    }
+    double x;
+    if (piece < 0) {
+      if (known == 0) guess = time / first_end; // t is nearly linear in sigma
+      double tau;
+      x = solve_in_first_piece(time, guess, tau);
+      locations.push_back(std::pow(first_upper_, power_) * tau);
+    } else {
+      const Panel& panel = panels_[piece];
+      if (known == 0)
+        guess = -1 + 2 * (time - panel.start_time) / (panel_end_time(piece) - panel.start_time);
+      x = solve_in_panel(panel, time, guess);
+      locations.push_back(std::pow(panel.lower + panel.half_width * (x + 1.0), power_));
+    }
+    if (known == 3) {
+      for (int a = 0; a < 2; ++a) {
+        known_time[a] = known_time[a + 1];
+        known_x[a] = known_x[a + 1];
+      }
+      --known;
+    }
+    known_time[known] = time;
+    known_x[known] = x;
+    ++known;
+  }
+  return locations;
+}
+
+} // namespace impact::reduced::detail
