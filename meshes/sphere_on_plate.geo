@@ -31,7 +31,6 @@ Point(1) = {0, zc, 0};               // centre (arc construction only)
 Point(2) = {0, g0, 0};               // lowest point = first contact point
 Point(3) = {rc, zr, 0};              // end of the contact surface
 Point(4) = {R, zc, 0};               // equator
-Point(5) = {0, zc + R, 0};           // top
 Circle(1) = {2, 1, 3};               // contact surface
 Circle(2) = {3, 1, 4};               // free surface (lower part)
 If (hemisphere)
@@ -39,6 +38,7 @@ If (hemisphere)
   Line(4)   = {1, 2};                // axis
   Curve Loop(1) = {1, 2, 5, 4};
 Else
+  Point(5) = {0, zc + R, 0};         // top
   Circle(3) = {4, 1, 5};             // free surface (upper part)
   Line(4)   = {5, 2};                // axis
   Curve Loop(1) = {1, 2, 3, 4};

@@ -32,11 +32,14 @@ k = 4 / 3 * effective_modulus * math.sqrt(RADIUS)
 approach = (5 * mass * 1.0 ** 2 / (4 * k)) ** 0.4
 hertz = {"force_max": k * approach ** 1.5, "approach_max": approach,
          "contact_time": 2.9432 * approach / 1.0}
-# Offsets measured with this test (fem/README.md): the FEM's contact lasts
-# longer and peaks lower than Hertz's half-space (the sphere's own waves
-# and its bulk compliance); the bounds are the measured offsets + 0.2 %.
-bounds = {"force_max": (-0.0175, 0.0), "approach_max": (0.0, 0.0115),
-          "contact_time": (0.0, 0.0215)}
+# Offsets measured with this test (fem/README.md): +1.64 % in force,
+# -1.10 % in approach, -1.19 % in contact time (on the default 50 um mesh
+# +1.70, -1.13, -1.22 %: not a mesh effect). The finite sphere is stiffer
+# than the half-space of Hertz's theory (its centre is R from the contact;
+# the two-body impact shows half of it, +0.78 % in force, fem.impact_hertz).
+# Bounds: the measured offsets +- 0.3 %.
+bounds = {"force_max": (0.0134, 0.0194), "approach_max": (-0.0140, -0.0080),
+          "contact_time": (-0.0149, -0.0089)}
 for key, value in hertz.items():
     offset = s[key] / value - 1
     low, high = bounds[key]
@@ -48,7 +51,8 @@ print(f"restitution {s['restitution']:.6f}, energy balance error {s['energy_erro
 checks.check(s["energy_error"] < 0.005, "energy balance error < 0.5 %")
 checks.check(0.98 <= s["restitution"] <= 1.0, "restitution in [0.98, 1] (elastic sphere, no radiation)")
 checks.check(s["max_penetration"] < 0.01 * s["approach_max"], "penetration < 1 % of the peak approach")
-checks.check(s["plate_energy_fraction"] == 0 and s["radiated_energy_fraction"] == 0,
+# (The plate's share is the total minus the sphere's: round-off, 7e-17.)
+checks.check(abs(s["plate_energy_fraction"]) < 1e-12 and s["radiated_energy_fraction"] == 0,
              "a rigid plate stores and radiates nothing")
 
 time, force, velocity, plate_u, plate_p, approach_h, sphere_u = history(
@@ -66,14 +70,15 @@ checks.check(worst < 1e-3 * s["force_max"], "contact force = -m dv/dt of the sph
 
 # 2. A plate 1000 times stiffer: E* differs by 0.1 %, F_max and t_c by
 # 0.04 % (E*^(2/5)); the rest is the discretisation of the other contact
-# surface (the plate's instead of the sphere's). Tolerance: the measured
-# differences (fem/README.md) + 0.1 %.
+# surface (the plate's instead of the sphere's). Measured (fem/README.md):
+# F_max +0.007 %, x_max -0.041 %, t_c -0.040 %, e +0.001 %. Tolerance:
+# 0.1 %, a little more than twice the largest difference.
 directory = f"{work}/rigid_flat_stiff_plate"
 run(binary, directory, dict(mesh, **{"Scenario/Impact velocity": 1,
                                      "Plate/Elastic/Young's modulus": YOUNG * 1000}))
 t = summary(directory)
-tolerance = {"force_max": 0.003, "approach_max": 0.003, "contact_time": 0.003,
-             "restitution": 0.002}
+tolerance = {"force_max": 0.001, "approach_max": 0.001, "contact_time": 0.001,
+             "restitution": 0.001}
 for key, limit in tolerance.items():
     difference = s[key] / t[key] - 1
     print(f"{key}: rigid {s[key]:.6g}, plate E x 1000 {t[key]:.6g}, difference {difference*100:+.3f} %")
