@@ -288,6 +288,13 @@ namespace impact_fem
                            "or support, or Plate side = clamped (dashpots and "
                            "free faces carry no static load)."));
 
+    AssertThrow(!indentation ||
+                  (!has_material_damping() && !has_internal_variables()),
+                ExcMessage("The 'indentation' analysis is quasi-static and "
+                           "rate-independent: Sphere and Plate must be "
+                           "elastic (Kelvin-Voigt and Maxwell materials need "
+                           "a loading rate)."));
+
     prm.enter_subsection("Time integration");
     scheme                 = prm.get("Scheme");
     steps_per_contact_time = prm.get_double("Steps per contact time");

@@ -18,8 +18,13 @@ from fem_test_lib import *
 binary, work, _ = parse_common_arguments()
 checks = Checks()
 omega_max, steps = 20e-6, 20
+# 25 um contact elements (the finest level of fem/bench/indentation.sh):
+# the contact edge crosses 22 elements, fine enough that the force-approach
+# curve is free of the ripple of coarser meshes (fem/README.md).
+size = 25e-6
 settings = {"Scenario/Analysis": "indentation", "Plate/Material model": "rigid",
-            "Indentation/Maximum approach": omega_max, "Indentation/Steps": steps}
+            "Indentation/Maximum approach": omega_max, "Indentation/Steps": steps,
+            "Mesh/Contact element size": size, "Mesh/Maximum element size": 10e-3}
 
 directory = f"{work}/indentation_rigid"
 run(binary, directory, settings)
@@ -38,12 +43,14 @@ radius_errors = [abs(r - math.sqrt(RADIUS * a)) for a, _, r in loading]
 print("loading: omega [um], F [N], F/Hertz - 1 [%], a [mm], a_Hertz [mm]")
 for (a, f, r), o in zip(loading, offsets):
     print(f"  {a*1e6:7.3f} {f:10.2f} {o*100:+7.3f} {r*1e3:7.4f} {math.sqrt(RADIUS*a)*1e3:7.4f}")
-# Measured (fem/README.md): the hemisphere's force lies 2.0-2.3 % below
-# Hertz's half-space (its base is held at a finite distance R; the bulk of
-# the hemisphere adds compliance). Bounds: the measured range +- 0.3 %.
-checks.check(all(-0.026 <= o <= -0.017 for o in offsets),
-             f"loading force within [-2.6, -1.7] % of Hertz (worst {min(offsets)*100:+.3f} %)")
-size = 50e-6
+# Measured (fem/README.md): the hemisphere is stiffer than Hertz's
+# half-space by +0.75 % at omega = 5 um rising to +1.63 % at 20 um, an
+# offset that grows with a/R (the finite sphere; the impact on the rigid
+# flat peaks +1.7 % above Hertz at a/R = 0.043). Bounds: the measured range
+# widened by about 0.35 % on each side.
+checks.check(all(0.004 <= o <= 0.020 for o in offsets),
+             f"loading force within [+0.4, +2.0] % of Hertz (measured {min(offsets)*100:+.3f} "
+             f"to {max(offsets)*100:+.3f} %)")
 checks.check(max(radius_errors) < size,
              f"contact radius within one element ({size*1e6:g} um) of sqrt(R omega) "
              f"(worst {max(radius_errors)*1e6:.1f} um)")
@@ -63,12 +70,16 @@ checks.check(s["max_penetration"] < 0.01 * omega_max, "penetration < 1 % of the 
 # 3. Into a steel plate with a clamped bottom.
 directory = f"{work}/indentation_plate"
 run(binary, directory, dict(settings, **{"Plate/Material model": "elastic",
-                                          "Scenario/Plate bottom": "clamped"}))
+                                          "Scenario/Plate bottom": "clamped",
+                                          "Mesh/Contact element size": 50e-6,
+                                          "Mesh/Maximum element size": 20e-3}))
 p = summary(directory)
 two_body = p["force_max"] / s["force_max"]
 print(f"into the plate: F_max {p['force_max']:.6g} N = {two_body:.4f} x the rigid flat's "
       f"(Hertz with both bodies' E*: {0.5:.4f})")
-checks.check(0.45 < two_body < 0.5, "force into an equal steel plate near half the rigid flat's")
+# Hertz: half the force at equal approach (E* halved). Measured 0.4959
+# (the plate's finite depth and clamped bottom); bound: Hertz's 0.5 +- 2 %.
+checks.check(0.49 < two_body < 0.51, "force into an equal steel plate: half the rigid flat's within 2 %")
 
 # 4. Bad entries.
 def expect_refusal(name, overrides, words, extra=()):

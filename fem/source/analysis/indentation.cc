@@ -67,12 +67,6 @@ namespace impact_fem
   ImpactProblem::setup_indentation()
   {
     TimerOutput::Scope t(*computing_timer, "factorize");
-    AssertThrow(!parameters.has_material_damping() &&
-                  !parameters.has_internal_variables(),
-                ExcMessage("The 'indentation' analysis is quasi-static and "
-                           "rate-independent: Sphere and Plate must be "
-                           "elastic (Kelvin-Voigt and Maxwell materials need "
-                           "a loading rate)."));
     // The vertical displacement of the base is prescribed: its rows of K
     // become identity rows (the columns stay, so that the solve of
     // K' u = b with b = prescribed value on the base rows carries the
