@@ -141,6 +141,19 @@ namespace impact_fem
                            "(Hertz: " +
                            std::to_string(expected_contact_radius) +
                            " m); increase it."));
+    if (parameters.indentation)
+      {
+        const double omega = indentation_control.maximum_approach;
+        pcout << "impact-fem: indentation of a hemisphere R = "
+              << parameters.geometry.sphere_radius * 1e3 << " mm to "
+              << omega * 1e6 << " um in " << indentation_control.steps
+              << " steps" << (parameters.rigid_plate ? " (rigid flat)" : "")
+              << "\n  Hertz at the maximum approach: force "
+              << hertz.stiffness() * std::pow(omega, 1.5)
+              << " N, contact radius " << expected_contact_radius * 1e3
+              << " mm" << std::endl;
+        return;
+      }
     pcout << "impact-fem: sphere R = " << parameters.geometry.sphere_radius * 1e3
           << " mm, m = " << parameters.sphere_mass
           << " kg, V = " << parameters.impact_velocity << " m/s\n"

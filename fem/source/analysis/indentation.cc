@@ -30,6 +30,12 @@ namespace impact_fem
                       Patterns::Integer(),
                       "Number of equal load steps from zero to the maximum "
                       "approach, and again back [-], in [1, 100000].");
+    prm.declare_entry("Base radial displacement",
+                      "free",
+                      Patterns::Selection("free|fixed"),
+                      "Radial condition on the hemisphere's base, whose "
+                      "vertical displacement is prescribed: 'free' (a "
+                      "roller) or 'fixed' (u_r = 0 too).");
     prm.leave_subsection();
   }
 
@@ -40,6 +46,7 @@ namespace impact_fem
     prm.enter_subsection("Indentation");
     maximum_approach = prm.get_double("Maximum approach");
     const long n     = prm.get_integer("Steps");
+    base_fixed_radially = prm.get("Base radial displacement") == "fixed";
     prm.leave_subsection();
     AssertThrow(maximum_approach > 0,
                 ExcMessage("Indentation/Maximum approach must be positive, got " +
@@ -78,6 +85,15 @@ namespace impact_fem
                                       fe->component_mask(
                                         FEValuesExtractors::Scalar(1)),
                                       {boundary_ids::sphere_base});
+    // Held radially as well: identity rows with the value 0 (u_r = 0 on
+    // the axis is already a constraint).
+    const IndexSet radial_base_dofs =
+      indentation_control.base_fixed_radially ?
+        DoFTools::extract_boundary_dofs(dof_handler,
+                                        fe->component_mask(
+                                          FEValuesExtractors::Scalar(0)),
+                                        {boundary_ids::sphere_base}) :
+        IndexSet(dof_handler.n_dofs());
     AssertThrow(Utilities::MPI::sum(base_dofs.n_elements(), mpi_communicator) > 0,
                 ExcMessage("The indentation mesh has no hemisphere base "
                            "(physical group 8 of the geometry file)."));
@@ -89,8 +105,12 @@ namespace impact_fem
                       ExcMessage("Internal error: a base dof is constrained."));
           owned_base.push_back(i);
         }
+    std::vector<types::global_dof_index> held_rows(owned_base);
+    for (const auto i : radial_base_dofs)
+      if (locally_owned_dofs.is_element(i) && !constraints.is_constrained(i))
+        held_rows.push_back(i);
     effective_stiffness.copy_from(system.stiffness);
-    effective_stiffness.clear_rows(owned_base, 1.);
+    effective_stiffness.clear_rows(held_rows, 1.);
     direct_solver = std::make_unique<TrilinosWrappers::SolverDirect>(
       solver_control,
       TrilinosWrappers::SolverDirect::AdditionalData(false,

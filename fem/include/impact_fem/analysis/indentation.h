@@ -37,6 +37,8 @@ namespace impact_fem
 
     double       maximum_approach = 0; ///< [m]
     unsigned int steps            = 0; ///< load steps, each way [-]
+    /// The base also held radially (u_r = 0), not only moved vertically.
+    bool base_fixed_radially = false;
   };
 } // namespace impact_fem
 
