@@ -126,15 +126,35 @@ namespace impact_fem
   {
     mesh.parse_parameters(prm, parameters.geometry);
     contact.parse_parameters(prm);
+    if (parameters.indentation)
+      indentation_control.parse_parameters(prm);
     const HertzImpact &hertz = parameters.hertz;
+    const double      expected_contact_radius =
+      parameters.indentation ?
+        std::sqrt(parameters.geometry.sphere_radius *
+                  indentation_control.maximum_approach) :
+        hertz.contact_radius_max();
     AssertThrow(parameters.static_press ||
-                  hertz.contact_radius_max() < mesh.contact_surface_radius,
+                  expected_contact_radius < mesh.contact_surface_radius,
                 ExcMessage("Mesh/Contact surface radius (" +
                            std::to_string(mesh.contact_surface_radius) +
                            " m) is smaller than the expected contact radius "
                            "(Hertz: " +
-                           std::to_string(hertz.contact_radius_max()) +
+                           std::to_string(expected_contact_radius) +
                            " m); increase it."));
+    if (parameters.indentation)
+      {
+        const double omega = indentation_control.maximum_approach;
+        pcout << "impact-fem: indentation of a hemisphere R = "
+              << parameters.geometry.sphere_radius * 1e3 << " mm to "
+              << omega * 1e6 << " um in " << indentation_control.steps
+              << " steps" << (parameters.rigid_plate ? " (rigid flat)" : "")
+              << "\n  Hertz at the maximum approach: force "
+              << hertz.stiffness() * std::pow(omega, 1.5)
+              << " N, contact radius " << expected_contact_radius * 1e3
+              << " mm" << std::endl;
+        return;
+      }
     pcout << "impact-fem: sphere R = " << parameters.geometry.sphere_radius * 1e3
           << " mm, m = " << parameters.sphere_mass
           << " kg, V = " << parameters.impact_velocity << " m/s\n"
@@ -430,14 +450,17 @@ namespace impact_fem
   ImpactProblem::setup_contact()
   {
     TimerOutput::Scope t(*computing_timer, "setup contact");
-    contact.setup(dof_handler, *mapping, constraints);
+    contact.setup(dof_handler, *mapping, constraints, parameters.rigid_plate);
     contact.compute_influence(
       [this](VectorType &x, const VectorType &b) { direct_solver->solve(x, b); },
       locally_owned_dofs,
       mpi_communicator);
     pressures.reinit(contact.n_contact_nodes());
     pcout << "  contact: " << contact.n_contact_nodes()
-          << " nodes on the plate's contact surface" << std::endl;
+          << (parameters.rigid_plate ?
+                " nodes on the sphere's contact surface (rigid flat)" :
+                " nodes on the plate's contact surface")
+          << std::endl;
   }
 
 
@@ -562,6 +585,17 @@ namespace impact_fem
   }
 
 
+  std::map<std::string, std::string>
+  ImpactProblem::parameter_attributes() const
+  {
+    std::stringstream prm_json;
+    prm.print_parameters(prm_json, ParameterHandler::ShortJSON);
+    std::map<std::string, std::string> entries;
+    flatten(nlohmann::json::parse(prm_json.str()), "", entries);
+    return entries;
+  }
+
+
   void
   ImpactProblem::write_results(const bool complete)
   {
@@ -612,10 +646,7 @@ namespace impact_fem
 
     // The parameters, the derived results and their definitions travel
     // with the histories.
-    std::stringstream prm_json;
-    prm.print_parameters(prm_json, ParameterHandler::ShortJSON);
-    std::map<std::string, std::string> text_attributes;
-    flatten(nlohmann::json::parse(prm_json.str()), "", text_attributes);
+    std::map<std::string, std::string> text_attributes = parameter_attributes();
     text_attributes["definition: contact_time"] =
       "separation_time - first_contact_time; both are zeros of the power law "
       "F = A |t - t*|^p through the three force samples next to each end of "
@@ -705,6 +736,12 @@ namespace impact_fem
     make_mesh();
     setup_system();
     assemble_system();
+    if (parameters.indentation)
+      {
+        run_indentation();
+        computing_timer->print_summary();
+        return;
+      }
     factorize_effective_stiffness();
     setup_contact();
     set_initial_conditions();

@@ -171,6 +171,23 @@ main(int argc, char *argv[])
           if (is_root)
             impact_fem::SpecimenTest(prm).run();
         }
+      else if (analysis == "indentation")
+        {
+          // One load program per run: campaigns and the verification's
+          // grid-convergence study are built on impact results.
+          AssertThrow(!impact_fem::Campaign::requested(prm, velocity_list,
+                                                        sweep_items) &&
+                        !impact_fem::verification::enabled(prm),
+                      ExcMessage("Scenario/Analysis = indentation runs alone: "
+                                 "campaigns (--velocities, --sweep, Campaign/"
+                                 "...) and --verify (Verification/Verify) are "
+                                 "for impacts; run each indentation by "
+                                 "itself (fem/bench/indentation.sh shows the "
+                                 "mesh convergence)."));
+          problem =
+            std::make_unique<impact_fem::ImpactProblem>(prm, MPI_COMM_WORLD);
+          problem->run();
+        }
       else if (impact_fem::Campaign::requested(prm, velocity_list, sweep_items))
         {
           impact_fem::Campaign campaign(prm, velocity_list, sweep_items);

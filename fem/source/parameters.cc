@@ -1,3 +1,4 @@
+#include <impact_fem/analysis/indentation.h>
 #include <impact_fem/contact/mortar_contact.h>
 #include <impact_fem/parameters.h>
 #include <impact_fem/postprocess/interface.h>
@@ -16,6 +17,15 @@ namespace impact_fem
       s << x;
       return s.str();
     }
+
+    std::string
+    face_name(const FaceCondition condition)
+    {
+      return condition == FaceCondition::free      ? "free" :
+             condition == FaceCondition::clamped   ? "clamped" :
+             condition == FaceCondition::absorbing ? "absorbing" :
+                                                     "support";
+    }
   } // namespace
 
 
@@ -26,7 +36,7 @@ namespace impact_fem
     prm.declare_entry("Analysis",
                       "impact",
                       Patterns::Selection(
-                        "impact|static press|material point|specimen"),
+                        "impact|static press|indentation|material point|specimen"),
                       "'material point': the sphere's material at one point "
                       "under the history of the subsection 'Material point' "
                       "(no mesh, no contact). 'specimen': the same history "
@@ -36,7 +46,13 @@ namespace impact_fem
                       "velocity. 'static press': the sphere, at rest, is "
                       "pressed into the plate by a uniform body force of "
                       "resultant 'Static force' (use with a clamped far "
-                      "boundary); one quasi-static solve, the Hertz check.");
+                      "boundary); one quasi-static solve, the Hertz check. "
+                      "'indentation': quasi-static, displacement-controlled: "
+                      "the base (equatorial plane) of a hemisphere is pushed "
+                      "towards the plate by the approach of the subsection "
+                      "'Indentation' in steps and back until the force "
+                      "vanishes (use with a rigid plate or a plate bottom "
+                      "that is clamped or supported).");
     prm.declare_entry("Static force",
                       "1000",
                       Patterns::Double(),
@@ -59,11 +75,13 @@ namespace impact_fem
     prm.declare_entry("Plate radius",
                       "0.35",
                       Patterns::Double(),
-                      "Radius Rp of the plate [m], > 2 R.");
+                      "Radius Rp of the plate [m], > 2 R (not used with a "
+                      "rigid plate).");
     prm.declare_entry("Plate thickness",
                       "0.35",
                       Patterns::Double(),
-                      "Thickness H of the plate [m], > 0.");
+                      "Thickness H of the plate [m], > 0 (not used with a "
+                      "rigid plate).");
     prm.declare_entry("Plate side",
                       "absorbing",
                       Patterns::Selection("free|clamped|absorbing"),
@@ -157,6 +175,7 @@ namespace impact_fem
                       "summary.json, mesh, snapshots); created if needed.");
     prm.leave_subsection();
 
+    IndentationControl::declare_parameters(prm);
     SpherePlateMesh::declare_parameters(prm);
     MortarContact::declare_parameters(prm);
     time_integration::declare_parameters(prm);
@@ -168,6 +187,7 @@ namespace impact_fem
   {
     prm.enter_subsection("Scenario");
     static_press             = prm.get("Analysis") == "static press";
+    indentation              = prm.get("Analysis") == "indentation";
     static_force             = prm.get_double("Static force");
     impact_velocity          = prm.get_double("Impact velocity");
     geometry.initial_gap     = prm.get_double("Initial gap");
@@ -219,22 +239,61 @@ namespace impact_fem
                 ExcMessage("Scenario/Support stiffness must be positive for "
                            "Plate bottom = support, got " +
                            text(plate_faces.support_stiffness) + " N/m^3."));
-    AssertThrow(!static_press ||
+    for (const unsigned int body : {sphere, plate})
+      {
+        prm.enter_subsection(body == sphere ? "Sphere" : "Plate");
+        const bool rigid = prm.get("Material model") == materials::rigid_model_name;
+        yield_strength[body] = prm.get_double("Yield strength");
+        if (!rigid)
+          material[body] = materials::create_material(prm);
+        prm.leave_subsection();
+        AssertThrow(!rigid || body == plate,
+                    ExcMessage("Sphere/Material model = rigid is not allowed: "
+                               "the sphere is the deformable body (only the "
+                               "plate can be rigid); choose one of the "
+                               "material models."));
+        rigid_plate = rigid;
+      }
+    geometry.plate_meshed = !rigid_plate;
+    geometry.hemisphere   = indentation;
+    if (rigid_plate)
+      {
+        // A rigid plate has no faces and no stresses: entries that describe
+        // them would silently mean nothing, so anything but their defaults
+        // is refused.
+        const auto refuse = [](const bool set, const std::string &entry,
+                               const std::string &value) {
+          AssertThrow(!set,
+                      ExcMessage(entry + " = " + value + " has no meaning "
+                                 "with Plate/Material model = rigid (the "
+                                 "plate is a fixed rigid plane, not meshed); "
+                                 "leave it at its default."));
+        };
+        refuse(plate_faces.side != FaceCondition::absorbing,
+               "Scenario/Plate side", face_name(plate_faces.side));
+        refuse(plate_faces.bottom != FaceCondition::absorbing,
+               "Scenario/Plate bottom", face_name(plate_faces.bottom));
+        refuse(plate_faces.support_stiffness != 0,
+               "Scenario/Support stiffness", text(plate_faces.support_stiffness));
+        refuse(yield_strength[plate] != 0,
+               "Plate/Yield strength", text(yield_strength[plate]));
+      }
+    AssertThrow(!(static_press || indentation) || rigid_plate ||
                   plate_faces.side == FaceCondition::clamped ||
                   plate_faces.bottom == FaceCondition::clamped ||
                   plate_faces.bottom == FaceCondition::support,
-                ExcMessage("The 'static press' analysis needs a plate held "
+                ExcMessage("The 'static press' and 'indentation' analyses "
+                           "need a rigid plate or a plate held "
                            "against the load: Scenario/Plate bottom = clamped "
                            "or support, or Plate side = clamped (dashpots and "
                            "free faces carry no static load)."));
 
-    for (const unsigned int body : {sphere, plate})
-      {
-        prm.enter_subsection(body == sphere ? "Sphere" : "Plate");
-        material[body]       = materials::create_material(prm);
-        yield_strength[body] = prm.get_double("Yield strength");
-        prm.leave_subsection();
-      }
+    AssertThrow(!indentation ||
+                  (!has_material_damping() && !has_internal_variables()),
+                ExcMessage("The 'indentation' analysis is quasi-static and "
+                           "rate-independent: Sphere and Plate must be "
+                           "elastic (Kelvin-Voigt and Maxwell materials need "
+                           "a loading rate)."));
 
     prm.enter_subsection("Time integration");
     scheme                 = prm.get("Scheme");
@@ -269,11 +328,13 @@ namespace impact_fem
 
     const double R = geometry.sphere_radius;
     sphere_mass    = material[sphere]->density() * 4. / 3. * M_PI * R * R * R;
-    auto compliance = [](const materials::Interface &m) {
-      return (1 - m.poissons_ratio() * m.poissons_ratio()) / m.youngs_modulus();
+    // A rigid plate has no compliance: E* is the sphere's E/(1 - nu^2).
+    auto compliance = [](const materials::Interface *m) {
+      return m ? (1 - m->poissons_ratio() * m->poissons_ratio()) / m->youngs_modulus() :
+                 0.;
     };
-    hertz = HertzImpact{1 / (compliance(*material[sphere]) +
-                             compliance(*material[plate])),
+    hertz = HertzImpact{1 / (compliance(material[sphere].get()) +
+                             compliance(material[plate].get())),
                         R,
                         sphere_mass,
                         impact_velocity};
@@ -314,15 +375,19 @@ namespace impact_fem
   bool
   Parameters::has_material_damping() const
   {
-    return material[sphere]->damping_tangent().norm() > 0 ||
-           material[plate]->damping_tangent().norm() > 0;
+    for (const auto &m : material)
+      if (m && m->damping_tangent().norm() > 0)
+        return true;
+    return false;
   }
 
 
   bool
   Parameters::has_internal_variables() const
   {
-    return material[sphere]->n_internal_variables() > 0 ||
-           material[plate]->n_internal_variables() > 0;
+    for (const auto &m : material)
+      if (m && m->n_internal_variables() > 0)
+        return true;
+    return false;
   }
 } // namespace impact_fem

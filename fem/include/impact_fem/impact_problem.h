@@ -1,6 +1,7 @@
 #ifndef IMPACT_FEM_IMPACT_PROBLEM_H
 #define IMPACT_FEM_IMPACT_PROBLEM_H
 
+#include <impact_fem/analysis/indentation.h>
 #include <impact_fem/contact/mortar_contact.h>
 #include <impact_fem/materials/internal_variables.h>
 #include <impact_fem/mesh/sphere_plate_mesh.h>
@@ -24,6 +25,7 @@
 
 #include <chrono>
 #include <iostream>
+#include <map>
 #include <memory>
 #include <string>
 #include <utility>
@@ -220,6 +222,19 @@ namespace impact_fem
     postprocess_step();
     void
     write_results(const bool complete);
+    /// The parameters flattened to "Section/Entry" -> value.
+    std::map<std::string, std::string>
+    parameter_attributes() const;
+
+    // The quasi-static indentation (analysis/indentation.cc): the base's
+    // rows eliminated from K and factorised, the response to a unit
+    // approach; one displacement-controlled step; the load program.
+    void
+    setup_indentation();
+    void
+    solve_indentation_step(const double approach, VectorType &displacement);
+    void
+    run_indentation();
 
     MPI_Comm           mpi_communicator;
     ConditionalOStream pcout;
@@ -230,6 +245,7 @@ namespace impact_fem
     ParameterHandler            &prm;
 
     Parameters                                   parameters;
+    IndentationControl                           indentation_control;
     SpherePlateMesh                              mesh;
     MortarContact                                contact;
     std::unique_ptr<time_integration::Interface> time_stepper;
@@ -254,6 +270,8 @@ namespace impact_fem
     materials::InternalVariables arms;
     // Right-hand side part of the Maxwell arms' forces at the next step.
     VectorType     internal_force_predictor;
+    // Indentation: displacement for a unit approach of the base.
+    VectorType     unit_approach_response;
     VectorType     ghosted_u, ghosted_v;
     Vector<double> pressures;
     double         first_contact_speed = 0;

@@ -91,14 +91,17 @@ namespace impact_fem
 
     // Scenario
     bool     static_press    = false; ///< quasi-static press, no impact
+    bool     indentation     = false; ///< quasi-static displacement-controlled indentation
     double   static_force    = 0;     ///< [N]
     double   impact_velocity = 0;     ///< [m/s]
     double   gravity         = 0;     ///< on the sphere [m/s^2]
     Geometry   geometry;
     PlateFaces plate_faces;
 
-    // Bodies, indexed by Body
+    // Bodies, indexed by Body. A rigid plate (Plate/Material model = rigid)
+    // is the fixed plane z = 0: no material, no mesh, no faces.
     std::unique_ptr<materials::Interface> material[2];
+    bool                                  rigid_plate = false;
     double                                yield_strength[2] = {0, 0}; ///< [Pa], 0: none
 
     // Time control

@@ -1,3 +1,4 @@
+#include <impact_fem/contact/contact_face.h>
 #include <impact_fem/contact/mortar_contact.h>
 #include <impact_fem/mesh/sphere_plate_mesh.h>
 
@@ -13,147 +14,7 @@
 
 namespace impact_fem
 {
-  namespace
-  {
-    /**
-     * One face of a contact surface as a 1D Lagrange element: the nodes at
-     * parameters xi_i, their mapped positions x_i (so that the face geometry
-     * is that of the higher-order mapping) and the global indices of the
-     * vertical displacement at these nodes.
-     */
-    struct ContactFace
-    {
-      std::vector<double>                  xi;
-      std::vector<Point<2>>                x;
-      std::vector<types::global_dof_index> z_dofs;
-
-      double
-      shape(const unsigned int i, const double s) const
-      {
-        double value = 1;
-        for (unsigned int m = 0; m < xi.size(); ++m)
-          if (m != i)
-            value *= (s - xi[m]) / (xi[i] - xi[m]);
-        return value;
-      }
-
-      double
-      shape_derivative(const unsigned int i, const double s) const
-      {
-        double sum = 0;
-        for (unsigned int k = 0; k < xi.size(); ++k)
-          if (k != i)
-            {
-              double term = 1 / (xi[i] - xi[k]);
-              for (unsigned int m = 0; m < xi.size(); ++m)
-                if (m != i && m != k)
-                  term *= (s - xi[m]) / (xi[i] - xi[m]);
-              sum += term;
-            }
-        return sum;
-      }
-
-      Point<2>
-      position(const double s) const
-      {
-        Point<2> p;
-        for (unsigned int i = 0; i < xi.size(); ++i)
-          p += shape(i, s) * x[i];
-        return p;
-      }
-
-      double
-      r_min() const
-      {
-        return std::min(position(0)[0], position(1)[0]);
-      }
-
-      double
-      r_max() const
-      {
-        return std::max(position(0)[0], position(1)[0]);
-      }
-
-      /// The parameter at which the face reaches radius r (Newton).
-      double
-      parameter_at_radius(const double r) const
-      {
-        const double r0 = position(0)[0], r1 = position(1)[0];
-        double       s  = (r - r0) / (r1 - r0);
-        for (unsigned int it = 0; it < 50; ++it)
-          {
-            double value = -r, slope = 0;
-            for (unsigned int i = 0; i < xi.size(); ++i)
-              {
-                value += shape(i, s) * x[i][0];
-                slope += shape_derivative(i, s) * x[i][0];
-              }
-            const double step = value / slope;
-            s -= step;
-            if (std::abs(step) < 1e-15)
-              break;
-          }
-        return std::clamp(s, 0.0, 1.0);
-      }
-    };
-
-
-    // Flat form for the exchange between ranks: [n, xi..., r..., z..., dofs...].
-    void
-    pack(const ContactFace &face, std::vector<double> &buffer)
-    {
-      buffer.push_back(face.xi.size());
-      for (const double s : face.xi)
-        buffer.push_back(s);
-      for (const auto &p : face.x)
-        buffer.push_back(p[0]);
-      for (const auto &p : face.x)
-        buffer.push_back(p[1]);
-      for (const auto dof : face.z_dofs)
-        buffer.push_back(static_cast<double>(dof));
-    }
-
-
-    std::vector<ContactFace>
-    unpack(const std::vector<std::vector<double>> &buffers)
-    {
-      std::vector<ContactFace> faces;
-      for (const auto &buffer : buffers)
-        for (std::size_t pos = 0; pos < buffer.size();)
-          {
-            const unsigned int n = static_cast<unsigned int>(buffer[pos++]);
-            ContactFace        face;
-            face.xi.assign(buffer.begin() + pos, buffer.begin() + pos + n);
-            pos += n;
-            for (unsigned int i = 0; i < n; ++i)
-              face.x.emplace_back(buffer[pos + i], buffer[pos + n + i]);
-            pos += 2 * n;
-            for (unsigned int i = 0; i < n; ++i)
-              face.z_dofs.push_back(
-                static_cast<types::global_dof_index>(buffer[pos + i]));
-            pos += n;
-            faces.push_back(face);
-          }
-      // A canonical order makes B independent of the partition.
-      std::sort(faces.begin(), faces.end(), [](const auto &a, const auto &b) {
-        return a.r_min() < b.r_min();
-      });
-      return faces;
-    }
-
-
-    const ContactFace &
-    face_containing(const std::vector<ContactFace> &faces, const double r)
-    {
-      for (const auto &face : faces)
-        if (face.r_min() <= r && r <= face.r_max())
-          return face;
-      AssertThrow(false,
-                  ExcMessage("Internal error: no contact face at radius " +
-                             std::to_string(r)));
-      return faces.front();
-    }
-  } // namespace
+  using namespace contact_faces;
 
 
   void
@@ -181,7 +42,8 @@ namespace impact_fem
   void
   MortarContact::setup(const DoFHandler<2>             &dof_handler,
                        const Mapping<2>                &mapping,
-                       const AffineConstraints<double> &constraints)
+                       const AffineConstraints<double> &constraints,
+                       const bool                       rigid_flat)
   {
     const MPI_Comm comm = dof_handler.get_communicator();
     const auto    &fe   = dof_handler.get_fe();
@@ -223,6 +85,15 @@ namespace impact_fem
       unpack(Utilities::MPI::all_gather(comm, sphere_buffer));
     const std::vector<ContactFace> plate_faces =
       unpack(Utilities::MPI::all_gather(comm, plate_buffer));
+    if (rigid_flat)
+      {
+        AssertThrow(!sphere_faces.empty() && plate_faces.empty(),
+                    ExcMessage("A rigid plate needs a mesh of the sphere "
+                               "alone (no physical group 4), with its contact "
+                               "surface (physical group 2)."));
+        setup_rigid_flat(sphere_faces);
+        return;
+      }
     AssertThrow(!sphere_faces.empty() && !plate_faces.empty(),
                 ExcMessage("The mesh has no sphere or no plate contact "
                            "surface (physical groups 2 and 4)."));

@@ -92,12 +92,18 @@ namespace impact_fem
     void
     declare_parameters(ParameterHandler &prm, const std::string &default_model)
     {
+      // 'rigid' is no constitutive law (nothing is meshed): the scenario
+      // reads it before creating a material and allows it for the plate only.
       prm.declare_entry("Material model",
                         default_model,
-                        Patterns::Selection(Kinds::selection()),
+                        Patterns::Selection(Kinds::selection() + "|" +
+                                            rigid_model_name),
                         "Constitutive law of this body; its constants are in "
                         "the subsection of the same name. Known models:" +
-                          Kinds::descriptions());
+                          Kinds::descriptions() +
+                          "\n  " + rigid_model_name +
+                          ": the plate only: a fixed rigid plane z = 0, not "
+                          "meshed (the sphere's own E* in Hertz's theory).");
       for (const auto &kind : Kinds::all())
         {
           prm.enter_subsection(subsection_name(kind.first));

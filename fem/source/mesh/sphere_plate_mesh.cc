@@ -171,7 +171,10 @@ namespace impact_fem
                 << " -setnumber hc " << contact_element_size
                 << " -setnumber rz " << uniform_zone_radius
                 << " -setnumber growth " << growth_factor
-                << " -setnumber hmax " << far_field_element_size() << " \""
+                << " -setnumber hmax " << far_field_element_size()
+                << " -setnumber plate " << (geometry.plate_meshed ? 1 : 0)
+                << " -setnumber hemisphere " << (geometry.hemisphere ? 1 : 0)
+                << " \""
                 << geometry_file << "\" -o \"" << msh_file << "\" > \""
                 << log_file << "\" 2>&1";
         std::filesystem::remove(msh_file);

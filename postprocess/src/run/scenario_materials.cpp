@@ -91,11 +91,20 @@ ScenarioMaterials scenario_materials(const std::vector<FemRun>& runs) {
                               "the runs do not record the bodies' materials"};
   for (const auto& run : runs) {
     const auto sphere = body_of(run, "Sphere");
-    const auto plate = body_of(run, "Plate");
+    // "Plate/Material model = rigid" (impact-fem): the fixed rigid plane, no
+    // compliance. Hertz's E* is then the sphere's own, twice the E* of two
+    // bodies of the sphere's material, and the compliance-weighted A of
+    // Kuwabara–Kono is the sphere's own, that of two such bodies: the
+    // formulas below are applied to the sphere twice and c doubled.
+    const auto plate_model = run.text_attributes.find("Plate/Material model");
+    const bool rigid_plate =
+        plate_model != run.text_attributes.end() && plate_model->second == "rigid";
+    const auto plate = rigid_plate ? sphere : body_of(run, "Plate");
     const auto radius = text_number(run, sphere_radius_parameter);
     if (!sphere || !plate || !radius) continue;
     try {
       materials.hertz_stiffness =
+          (rigid_plate ? 2.0 : 1.0) *
           reduced::hertz_stiffness({sphere->youngs_modulus, sphere->poisson_ratio, *radius},
                                    {plate->youngs_modulus, plate->poisson_ratio});
     } catch (const std::exception&) {
@@ -105,13 +114,17 @@ ScenarioMaterials scenario_materials(const std::vector<FemRun>& runs) {
     materials.hertz_basis = "Hertz value of the scenario's materials (sphere E = " +
                             format(sphere->youngs_modulus) + " Pa, nu = " +
                             format(sphere->poisson_ratio) + ", R = " + format(*radius) +
-                            " m; plate E = " + format(plate->youngs_modulus) + " Pa, nu = " +
-                            format(plate->poisson_ratio) + ") read from " + run.source;
+                            (rigid_plate ? std::string(" m; rigid plate") :
+                                           " m; plate E = " + format(plate->youngs_modulus) +
+                                               " Pa, nu = " + format(plate->poisson_ratio)) +
+                            ") read from " + run.source;
     const bool viscoelastic =
         sphere->deviatoric_retardation_time && sphere->volumetric_retardation_time &&
         plate->deviatoric_retardation_time && plate->volumetric_retardation_time;
     if (sphere->model == "elastic" && plate->model == "elastic") {
-      materials.dissipative_basis = "the bodies are elastic: A = 0, the Hertz model";
+      materials.dissipative_basis = rigid_plate ?
+          "the sphere is elastic and the plate rigid: A = 0, the Hertz model" :
+          "the bodies are elastic: A = 0, the Hertz model";
       return materials;
     }
     if (!viscoelastic) {
@@ -130,7 +143,8 @@ ScenarioMaterials scenario_materials(const std::vector<FemRun>& runs) {
           "A = (1 - nu) [tau_v (1 + nu) - tau_d (1 - 2 nu)]^2 / (3 nu^2 [tau_v (1 + nu) + "
           "2 tau_d (1 - 2 nu)]) per body (Brilliantov et al. 1996; = tau when tau_d = tau_v), "
           "compliance-weighted over the two bodies, from " +
-          describe("sphere", *sphere) + "; " + describe("plate", *plate);
+          describe("sphere", *sphere) +
+          (rigid_plate ? std::string("; rigid plate") : "; " + describe("plate", *plate));
     } catch (const std::exception& error) {
       materials.dissipative_basis = std::string("no A from the material: ") + error.what();
     }

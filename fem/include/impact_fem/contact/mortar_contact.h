@@ -39,7 +39,21 @@ namespace impact_fem
    * Delassus matrix G = B W, each step reduces to a small linear
    * complementarity problem for lambda, solved exactly by an active-set
    * method: the constraint is satisfied to round-off, no penalty parameter.
+   *
+   * Rigid flat (Plate/Material model = rigid): the plate is the fixed plane
+   * z = 0 and only the sphere is meshed. The multipliers then live on the
+   * sphere's contact surface: lambda_j is the pressure at the j-th vertex
+   * of the sphere's contact faces, interpolated by hat functions N_j(r)
+   * linear in the radius (the flat's coordinate), and
+   *   g_j = int N_j(r) [ z_sphere(r) + u_z^sphere(r) ] 2 pi r dr >= 0.
+   * Everything after setup (influence, Delassus matrix, active set,
+   * force, contact radius) is the same.
    */
+  namespace contact_faces
+  {
+    struct ContactFace;
+  }
+
   class MortarContact
   {
   public:
@@ -49,11 +63,13 @@ namespace impact_fem
     void
     parse_parameters(ParameterHandler &prm);
 
-    /// Build B and g_0 from the contact faces of all ranks.
+    /// Build B and g_0 from the contact faces of all ranks: sphere and
+    /// plate, or (rigid_flat) the sphere and the plane z = 0.
     void
     setup(const DoFHandler<2>             &dof_handler,
           const Mapping<2>                &mapping,
-          const AffineConstraints<double> &constraints);
+          const AffineConstraints<double> &constraints,
+          const bool                       rigid_flat = false);
 
     /**
      * Compute W = K_eff^{-1} B^T and G = B W; @p solve applies K_eff^{-1}.
@@ -106,7 +122,8 @@ namespace impact_fem
       return node_radius.size();
     }
 
-    /// Radius of each contact node [m], ascending.
+    /// Radius of each contact node [m], ascending (vertices of the plate's
+    /// contact surface; of the sphere's on a rigid flat).
     const std::vector<double> &
     node_radii() const
     {
@@ -115,12 +132,17 @@ namespace impact_fem
 
     /**
      * Deepest penetration [m]: the largest negative pointwise gap at the
-     * nodes of both contact surfaces (0 if none).
+     * nodes of both contact surfaces (of the sphere's on a rigid flat; 0 if
+     * none).
      */
     double
     penetration(const TrilinosWrappers::MPI::Vector &displacement) const;
 
   private:
+    /// B, g_0 and the pointwise gaps of the rigid flat (rigid_flat.cc).
+    void
+    setup_rigid_flat(const std::vector<contact_faces::ContactFace> &sphere_faces);
+
     unsigned int max_iterations = 1000;
 
     // Sparse rows of B: global dof indices and values.

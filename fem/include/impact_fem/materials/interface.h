@@ -154,9 +154,14 @@ namespace impact_fem
                             const double density);
 
 
+    /// The value of "Material model" that makes a body a fixed rigid
+    /// plane instead of a material (allowed for the plate only).
+    inline constexpr const char *rigid_model_name = "rigid";
+
     /**
      * Declare, inside the current subsection (one per body), the entry
-     * "Material model" and one subsection per registered kind.
+     * "Material model" (the registered kinds and 'rigid') and one
+     * subsection per registered kind.
      */
     void
     declare_parameters(ParameterHandler &prm, const std::string &default_model);

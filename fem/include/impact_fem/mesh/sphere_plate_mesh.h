@@ -22,6 +22,8 @@ namespace impact_fem
     constexpr types::boundary_id plate_top_free      = 5;
     constexpr types::boundary_id plate_side          = 6;
     constexpr types::boundary_id plate_bottom        = 7;
+    /// The equatorial plane of a hemisphere (indentation meshes only).
+    constexpr types::boundary_id sphere_base         = 8;
   } // namespace boundary_ids
 
   /// Material ids = physical surface tags.
@@ -38,6 +40,10 @@ namespace impact_fem
     double initial_gap     = 0;
     double plate_radius    = 0;
     double plate_thickness = 0;
+    /// false: the plate is the rigid plane z = 0 and is not meshed.
+    bool plate_meshed = true;
+    /// true: only the lower hemisphere is meshed, its base a boundary.
+    bool hemisphere = false;
 
     Point<2>
     sphere_centre() const
@@ -82,8 +88,10 @@ namespace impact_fem
     double
     far_field_element_size() const
     {
-      return std::min(maximum_element_size,
-                      geometry.plate_thickness / elements_across_thickness);
+      return geometry.plate_meshed ?
+               std::min(maximum_element_size,
+                        geometry.plate_thickness / elements_across_thickness) :
+               maximum_element_size;
     }
     unsigned int global_refinements  = 0;
     unsigned int contact_refinements = 0;
