@@ -87,6 +87,16 @@ namespace impact_fem
     }
 
 
+    InternalVariables::States
+    InternalVariables::states(const CellIterator &cell) const
+    {
+      const Interface &m = material_of(cell->material_id());
+      if (m.n_internal_variables() == 0 && m.is_linear())
+        return {};
+      return storage.get_data(cell);
+    }
+
+
     SymmetricTensor<2, 3>
     InternalVariables::strain_at(const PlasticCell &c,
                                  const unsigned int q,
