@@ -579,18 +579,19 @@ namespace impact_fem
                                              plastic_force);
     step_iterations = result.iterations;
     step_residual   = result.residual;
-    AssertThrow(result.converged,
-                ExcMessage("Time step " +
-                           std::to_string(time_stepper->step_number() + 1) +
-                           " (t = " + std::to_string(time_stepper->time() + dt) +
-                           " s) did not converge: after " +
-                           std::to_string(result.iterations) +
-                           " iterations the residual is " +
-                           std::to_string(result.residual) +
-                           " of the load and the increment " +
-                           std::to_string(result.increment) +
-                           " of the step's; required " +
-                           nonlinear_step.criterion() + "."));
+    if (!result.converged)
+      {
+        std::ostringstream message;
+        message << std::setprecision(4) << "Time step "
+                << time_stepper->step_number() + 1
+                << " (t = " << time_stepper->time() + dt
+                << " s) did not converge: after " << result.iterations
+                << " iterations the residual is " << result.residual
+                << " of the load and the increment " << result.increment
+                << " of the step's; required " << nonlinear_step.criterion()
+                << ".";
+        AssertThrow(false, ExcMessage(message.str()));
+      }
   }
 
 
