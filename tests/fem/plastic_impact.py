@@ -96,6 +96,34 @@ checks.check(gap < 1e-8, "energy balance with plastic work (and the contact work
 checks.check(abs(s["energy_error_final"] - contact_work[-1] / s["initial_energy"]) < 1e-4,
              "energy balance error at the end < 0.01 % of the initial energy besides the contact work")
 
+# ---- a sweep over an entry of the new material, and snapshots ----
+import glob, subprocess, h5py
+directory = f"{work}/plastic_sweep"
+import shutil
+shutil.rmtree(directory, ignore_errors=True)
+command = [binary, "--velocities", "3", "--sweep", "Sphere/Elastic-plastic/Yield strength=2.03e9,4e9",
+           "--set", "Output/Directory=" + directory, "--set", "Output/Snapshot interval=2e-5"]
+for key, value in bodies("elastic-plastic").items():
+    command += ["--set", f"{key}={value}"]
+result = subprocess.run(command, capture_output=True, text=True)
+print("sweep: exit", result.returncode, (result.stdout + result.stderr).strip().splitlines()[-1:])
+runs = {}
+for path in glob.glob(f"{directory}/**/history.h5", recursive=True):
+    with h5py.File(path, "r") as f:
+        runs[float(f.attrs["Sphere/Elastic-plastic/Yield strength"])] = os.path.dirname(path)
+print("sweep runs:", {k: os.path.relpath(v, directory) for k, v in sorted(runs.items())})
+checks.check(result.returncode == 0 and sorted(runs) == [2.03e9, 4e9],
+             "sweep over Sphere/Elastic-plastic/Yield strength: one run per value")
+if sorted(runs) == [2.03e9, 4e9]:
+    w = {y: summary(d)["max_accumulated_plastic_strain_sphere"] for y, d in runs.items()}
+    print(f"  sphere's max accumulated plastic strain: {w}")
+    checks.check(w[4e9] < w[2.03e9], "sweep: a stronger sphere yields less")
+    vtus = glob.glob(f"{runs[2.03e9]}/snapshots/*.vtu")
+    named = [v for v in vtus if "accumulated_plastic_strain" in open(v, errors="ignore").read()]
+    print(f"  snapshots: {len(vtus)} .vtu files, {len(named)} with accumulated_plastic_strain")
+    checks.check(len(vtus) > 0 and len(named) == len(vtus),
+                 "snapshots carry the accumulated plastic strain")
+
 # ---- a step that does not converge ----
 directory = f"{work}/plastic_no_convergence"
 code, output = run(binary, directory,
