@@ -107,6 +107,7 @@ namespace impact_fem
   ImpactProblem::declare_parameters(ParameterHandler &prm)
   {
     Parameters::declare_parameters(prm);
+    time_integration::NonlinearStep::declare_parameters(prm);
   }
 
 
@@ -128,6 +129,7 @@ namespace impact_fem
     contact.parse_parameters(prm);
     if (parameters.indentation)
       indentation_control.parse_parameters(prm);
+    nonlinear_step.parse_parameters(prm);
     const HertzImpact &hertz = parameters.hertz;
     const double      expected_contact_radius =
       parameters.indentation ?
@@ -252,7 +254,7 @@ namespace impact_fem
                          &weights.body_force,
                          &internal_force_predictor})
       vector->reinit(locally_owned_dofs, mpi_communicator);
-    for (auto *vector : {&ghosted_u, &ghosted_v})
+    for (auto *vector : {&ghosted_u, &ghosted_v, &ghosted_trial})
       vector->reinit(locally_owned_dofs, locally_relevant_dofs, mpi_communicator);
 
     pcout << "  mesh: " << triangulation.n_global_active_cells()
@@ -498,8 +500,12 @@ namespace impact_fem
     end_time = parameters.end_time(dt);
 
     // The bodies start unstrained (the flight is rigid) with relaxed arms.
-    arms.initialize(triangulation, *quadrature, [this](const types::material_id id)
-                      -> const materials::Interface & { return material_of(id); });
+    arms.initialize(dof_handler,
+                    *mapping,
+                    *quadrature,
+                    [this](const types::material_id id)
+                      -> const materials::Interface & { return material_of(id); },
+                    ghosted_u);
     internal_force_predictor = 0;
     refresh_ghosted_state();
   }
@@ -537,15 +543,10 @@ namespace impact_fem
       rhs += weights.body_force;
       rhs -= internal_force_predictor;
     }
-    {
-      TimerOutput::Scope t(*computing_timer, "solve free step");
-      direct_solver->solve(displacement, rhs);
-    }
-    {
-      TimerOutput::Scope t(*computing_timer, "solve contact");
-      pressures = contact.solve_complementarity(contact.weighted_gaps(displacement));
-      contact.add_contact_response(pressures, displacement);
-    }
+    if (arms.nonlinear())
+      solve_nonlinear_step(rhs, displacement);
+    else
+      solve_linear_step(rhs, displacement);
     TimerOutput::Scope t(*computing_timer, "update state");
     time_stepper->advance(displacement);
     refresh_ghosted_state();
@@ -561,8 +562,71 @@ namespace impact_fem
 
 
   void
+  ImpactProblem::solve_linear_step(const VectorType &rhs, VectorType &displacement)
+  {
+    {
+      TimerOutput::Scope t(*computing_timer, "solve free step");
+      direct_solver->solve(displacement, rhs);
+    }
+    TimerOutput::Scope t(*computing_timer, "solve contact");
+    pressures = contact.solve_complementarity(contact.weighted_gaps(displacement));
+    contact.add_contact_response(pressures, displacement);
+  }
+
+
+  void
+  ImpactProblem::solve_nonlinear_step(const VectorType &rhs, VectorType &displacement)
+  {
+    // The linear step with contact for a given plastic force f: K_eff u =
+    // rhs + f + B^T lambda; returns the norm of the step's external forces.
+    VectorType load(rhs), contact_force(rhs), distributed(rhs);
+    const auto linear_solve = [&](const VectorType &plastic_force, VectorType &u) {
+      load = rhs;
+      load += plastic_force;
+      solve_linear_step(load, u);
+      contact_force = 0;
+      contact.add_contact_forces(pressures, contact_force);
+      return contact_force.l2_norm() + weights.body_force.l2_norm();
+    };
+    const double dt = time_stepper->time_step();
+    const auto plastic_force = [&](const VectorType &u, VectorType &force) {
+      TimerOutput::Scope t(*computing_timer, "plastic force");
+      distributed = u;
+      constraints.distribute(distributed);
+      ghosted_trial = distributed;
+      arms.plastic_force(constraints, ghosted_trial, dt, force);
+    };
+    const auto result = nonlinear_step.solve(arms.committed_plastic_force(),
+                                             time_stepper->displacement(),
+                                             displacement,
+                                             linear_solve,
+                                             plastic_force);
+    step_iterations = result.iterations;
+    step_residual   = result.residual;
+    if (!result.converged)
+      {
+        std::ostringstream message;
+        message << std::setprecision(4) << "Time step "
+                << time_stepper->step_number() + 1
+                << " (t = " << time_stepper->time() + dt
+                << " s) did not converge: after " << result.iterations
+                << " iterations the residual is " << result.residual
+                << " of the load and the increment " << result.increment
+                << " of the step's; required " << nonlinear_step.criterion()
+                << ".";
+        AssertThrow(false, ExcMessage(message.str()));
+      }
+  }
+
+
+  void
   ImpactProblem::postprocess_step()
   {
+    if (arms.nonlinear())
+      {
+        history.append(result_files::newton_iterations_dataset, step_iterations);
+        history.append(result_files::newton_residual_dataset, step_residual);
+      }
     history.append(result_files::time_dataset, time_stepper->time());
     for (auto &[name, postprocessor] : postprocessors)
       {
@@ -746,6 +810,9 @@ namespace impact_fem
     setup_contact();
     set_initial_conditions();
     history.declare(result_files::time_dataset, result_files::time_unit, "simulated time");
+    if (arms.nonlinear())
+      history.declare({{result_files::newton_iterations_dataset, "1", "iterations of the step's nonlinear solve (Nonlinear solver)"},
+                       {result_files::newton_residual_dataset, "1", "out-of-balance force of the accepted iterate / (||B^T lambda|| + ||f_body||)"}});
     for (auto &[name, postprocessor] : postprocessors)
       postprocessor->initialize(*this, history);
     postprocess_step();

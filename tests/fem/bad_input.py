@@ -43,6 +43,24 @@ expect_failure("prony_lists", {"Sphere/Material model": "maxwell", "Sphere/Maxwe
 expect_failure("negative_retardation", {"Sphere/Material model": "kelvin-voigt",
                                         "Sphere/Kelvin-voigt/Retardation time": -1e-6},
                ["Retardation time", "does not fit"])
+# The elastic-plastic entries: the entry, its range and the value named.
+plastic = {"Sphere/Material model": "elastic-plastic"}
+for entry, value, words in [
+        ("Yield strength", -1e8, ["Elastic-plastic/Yield strength", "> 0 Pa", "-1e+08"]),
+        ("Yield strength", 0, ["Elastic-plastic/Yield strength", "> 0 Pa", "got 0"]),
+        ("Hardening modulus", -5e9, ["Elastic-plastic/Hardening modulus", ">= 0 Pa", "-5e+09"]),
+        ("Johnson-Cook n", 1.5, ["Elastic-plastic/Johnson-Cook n", "(0, 1]", "1.5"]),
+        ("Johnson-Cook n", 0, ["Elastic-plastic/Johnson-Cook n", "(0, 1]", "got 0"]),
+        ("Johnson-Cook B", -1, ["Elastic-plastic/Johnson-Cook B", ">= 0 Pa", "-1"]),
+        ("Johnson-Cook C", -0.01, ["Elastic-plastic/Johnson-Cook C", ">= 0", "-0.01"]),
+        ("Reference strain rate", 0, ["Elastic-plastic/Reference strain rate", "> 0 1/s", "got 0"]),
+        ("Retardation time", -1e-7, ["Elastic-plastic/Retardation time", ">= 0 s", "-1e-07"]),
+        ("Poisson's ratio", 0.5, ["Poisson's ratio", "0.5"])]:
+    expect_failure("plastic_" + entry.lower().replace(" ", "_").replace("'", "") + "_" + str(value),
+                   dict(plastic, **{"Sphere/Elastic-plastic/" + entry: value}), words)
+expect_failure("plastic_hardening_law", dict(plastic, **{"Plate/Material model": "elastic-plastic",
+                                                         "Plate/Elastic-plastic/Hardening law": "voce"}),
+               ["Hardening law", "voce"])
 expect_failure("bad_velocities", None, ["velocities", "fast"],
                extra_args=["--velocities", "1,fast"])
 expect_failure("missing_gmsh", {"Mesh/Gmsh executable": "/nonexistent/gmsh"}, ["gmsh was not found"])

@@ -9,6 +9,7 @@
 #include <impact_fem/parameters.h>
 #include <impact_fem/postprocess/interface.h>
 #include <impact_fem/time_integration/interface.h>
+#include <impact_fem/time_integration/nonlinear_step.h>
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/parameter_handler.h>
@@ -216,6 +217,12 @@ namespace impact_fem
     set_initial_conditions();
     void
     solve_time_step();
+    /// u = K_eff^{-1} rhs with the contact response (one solve, one LCP).
+    void
+    solve_linear_step(const VectorType &rhs, VectorType &displacement);
+    /// The step of plastic bodies: iterations of solve_linear_step.
+    void
+    solve_nonlinear_step(const VectorType &rhs, VectorType &displacement);
     void
     refresh_ghosted_state();
     void
@@ -267,12 +274,15 @@ namespace impact_fem
     std::unique_ptr<TrilinosWrappers::SolverDirect> direct_solver;
     SolverControl                                   solver_control;
 
-    materials::InternalVariables arms;
+    materials::InternalVariables    arms;
+    time_integration::NonlinearStep nonlinear_step;
+    unsigned int                    step_iterations = 0;
+    double                          step_residual   = 0;
     // Right-hand side part of the Maxwell arms' forces at the next step.
     VectorType     internal_force_predictor;
     // Indentation: displacement for a unit approach of the base.
     VectorType     unit_approach_response;
-    VectorType     ghosted_u, ghosted_v;
+    VectorType     ghosted_u, ghosted_v, ghosted_trial;
     Vector<double> pressures;
     double         first_contact_speed = 0;
 

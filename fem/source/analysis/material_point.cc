@@ -38,6 +38,7 @@ namespace impact_fem
       std::string                           directory;
       std::string                           loading;
       std::vector<double>                   strain_hat, stress_hat;
+      std::vector<SymmetricTensor<2, 3>>    path;
       double ramp_time = 0, omega = 0, duration = 0, dt = 0;
     };
 
@@ -58,6 +59,15 @@ namespace impact_fem
         Utilities::string_to_double(Utilities::split_string_list(prm.get("Strain")));
       l.stress_hat =
         Utilities::string_to_double(Utilities::split_string_list(prm.get("Stress")));
+      for (const auto &point : Utilities::split_string_list(prm.get("Strain path"), ';'))
+        {
+          const auto c = Utilities::string_to_double(Utilities::split_string_list(point));
+          AssertThrow(c.size() == 4,
+                      ExcMessage("Material point/Strain path: each point needs "
+                                 "4 components (rr, zz, theta-theta, rz), got '" +
+                                 point + "'."));
+          l.path.push_back(tensor_from(c));
+        }
       l.ramp_time = prm.get_double("Ramp time");
       l.omega     = prm.get_double("Angular frequency");
       l.duration  = prm.get_double("Duration");
@@ -116,12 +126,19 @@ namespace impact_fem
     prm.declare_entry("Loading",
                       "strain ramp",
                       Patterns::Selection(
-                        "strain ramp|strain oscillation|stress step"),
+                        "strain ramp|strain oscillation|stress step|strain path"),
                       "Prescribed history at the material point (Scenario/"
                       "Analysis = material point, sphere material): "
                       "'strain ramp' min(t/t_ramp, 1) eps_hat, 'strain "
                       "oscillation' sin(omega t) eps_hat, 'stress step' "
-                      "sigma_hat for t > 0.");
+                      "sigma_hat for t > 0, 'strain path' piecewise linear "
+                      "from 0 through the points of 'Strain path', one "
+                      "Ramp time per segment, then held.");
+    prm.declare_entry("Strain path",
+                      "1e-3, 0, 0, 0; 1e-3, 0, 0, 1e-3",
+                      Patterns::Anything(),
+                      "Points of the 'strain path' loading, separated by ';', "
+                      "each with the components rr, zz, theta-theta, rz [-].");
     prm.declare_entry("Strain",
                       "1e-3, -2e-4, 5e-4, 3e-4",
                       Patterns::List(Patterns::Double(), 4, 4),
@@ -179,20 +196,63 @@ namespace impact_fem
                            "loading needs a viscous material (Kelvin-Voigt), "
                            "whose strain starts continuous."));
 
+    const auto &path = input.path;
+    AssertThrow(loading != "strain path" || !path.empty(),
+                ExcMessage("Material point/Strain path is empty."));
+    // The segment of the strain path at time t and the position in it.
+    auto path_segment = [&](const double t, double &w) {
+      const double       x = t / ramp_time;
+      const unsigned int i = static_cast<unsigned int>(std::floor(x));
+      if (i >= path.size())
+        {
+          w = 1;
+          return static_cast<unsigned int>(path.size()) - 1;
+        }
+      w = x - i;
+      return i;
+    };
     auto prescribed_strain = [&](const double t) {
+      if (loading == "strain path")
+        {
+          double             w;
+          const unsigned int i     = path_segment(t, w);
+          const auto         start = i == 0 ? SymmetricTensor<2, 3>() : path[i - 1];
+          return start + w * (path[i] - start);
+        }
       return loading == "strain ramp" ? std::min(t / ramp_time, 1.) * strain_hat :
                                         std::sin(omega * t) * strain_hat;
     };
     auto prescribed_strain_rate = [&](const double t) {
+      if (loading == "strain path")
+        {
+          if (t >= path.size() * ramp_time)
+            return SymmetricTensor<2, 3>();
+          double             w;
+          const unsigned int i     = path_segment(t, w);
+          const auto         start = i == 0 ? SymmetricTensor<2, 3>() : path[i - 1];
+          return (path[i] - start) / ramp_time;
+        }
       return loading == "strain ramp" ?
                (t < ramp_time ? 1. / ramp_time : 0.) * strain_hat :
                omega * std::cos(omega * t) * strain_hat;
     };
+    // A nonlinear (elastic-plastic) material goes through the general
+    // constitutive update; the linear ones keep their closed algebra.
+    const bool nonlinear = !material->is_linear();
+    AssertThrow(!nonlinear || !stress_controlled,
+                ExcMessage("Material point: the 'stress step' loading needs "
+                           "a linear viscous material."));
+    materials::QuadraturePointState point, point_end;
+    SymmetricTensor<4, 3>           tangent;
 
     History history;
     declare_components(history, "", "");
     history.declare("internal_energy", "J/m^3", "energy stored in the Maxwell arms");
     history.declare("dissipated_energy", "J/m^3", "cumulative dissipation in the Maxwell arms");
+    if (nonlinear)
+      history.declare({{"accumulated_plastic_strain", "1", "accumulated plastic strain"},
+                       {"plastic_work", "J/m^3", "cumulative plastic work, trapezoidal in the stress"}});
+    double plastic_work = 0;
 
     // Initial state: unstrained; under a stress step the dashpot takes the
     // load at t = 0+, d eps/dt = D^-1 sigma_hat.
@@ -207,6 +267,11 @@ namespace impact_fem
       append_components(history, t, strain, stress);
       history.append("internal_energy", material->internal_energy(internal));
       history.append("dissipated_energy", dissipated);
+      if (nonlinear)
+        {
+          history.append("accumulated_plastic_strain", point.accumulated_plastic_strain);
+          history.append("plastic_work", plastic_work);
+        }
     };
     record(0);
 
@@ -231,9 +296,22 @@ namespace impact_fem
             new_strain = prescribed_strain(t);
             new_rate   = prescribed_strain_rate(t);
           }
-        stress = C * new_strain + D * new_rate + C_internal * new_strain + predictor;
-        dissipated +=
-          material->update_internal_variables(internal, strain, new_strain, dt);
+        if (nonlinear)
+          {
+            const SymmetricTensor<2, 3> elastic_start = C * (strain - point.plastic_strain);
+            const SymmetricTensor<2, 3> elastic_end =
+              material->stress_update(point, new_strain, dt, point_end, tangent);
+            plastic_work += 0.5 * (elastic_start + elastic_end) *
+                            (point_end.plastic_strain - point.plastic_strain);
+            point  = point_end;
+            stress = elastic_end + D * new_rate;
+          }
+        else
+          {
+            stress = C * new_strain + D * new_rate + C_internal * new_strain + predictor;
+            dissipated +=
+              material->update_internal_variables(internal, strain, new_strain, dt);
+          }
         strain      = new_strain;
         strain_rate = new_rate;
         record(t);
@@ -328,6 +406,13 @@ namespace impact_fem
     const unsigned int degree = prm.get_integer("Polynomial degree");
     prm.leave_subsection();
     const bool stress_controlled = loading == "stress step";
+    AssertThrow(material->is_linear(),
+                ExcMessage("Specimen: only linear materials (elastic, "
+                           "kelvin-voigt, maxwell); use Scenario/Analysis = "
+                           "material point for an elastic-plastic one."));
+    AssertThrow(loading != "strain path",
+                ExcMessage("Specimen: the 'strain path' loading is one of the "
+                           "material point analysis."));
     AssertThrow(stress_controlled ||
                   (strain_hat[2] == strain_hat[0] && strain_hat[3] == 0),
                 ExcMessage("Specimen: a homogeneous axisymmetric strain has "

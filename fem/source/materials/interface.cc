@@ -45,6 +45,21 @@ namespace impact_fem
     }
 
 
+    SymmetricTensor<2, 3>
+    Interface::stress_update(const QuadraturePointState &start,
+                             const SymmetricTensor<2, 3> &strain_end,
+                             const double                 time_step,
+                             QuadraturePointState        &end,
+                             SymmetricTensor<4, 3>       &tangent) const
+    {
+      end        = start;
+      end.strain = strain_end;
+      update_internal_variables(end.internal, start.strain, strain_end, time_step);
+      tangent = stiffness_tangent() + internal_tangent(time_step);
+      return stiffness_tangent() * strain_end + internal_stress(end.internal);
+    }
+
+
     SymmetricTensor<4, 3>
     isotropic_stiffness(const double E, const double nu)
     {

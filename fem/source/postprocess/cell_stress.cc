@@ -111,7 +111,8 @@ namespace impact_fem
               if (viscous)
                 stress[q] += D * strain_of(rows, local_v);
               if (!states.empty())
-                stress[q] += material.internal_stress(states[q]->internal);
+                stress[q] += material.internal_stress(states[q]->internal) -
+                             C * states[q]->plastic_strain;
             }
           visit(op.cell, op.points, stress);
         }

@@ -34,7 +34,7 @@ namespace impact_fem
                {"kinetic_energy", "J", "kinetic energy of both bodies"},
                {"strain_energy", "J", "stored elastic energy of both bodies, including internal_energy"},
                {"internal_energy", "J", "elastic energy stored in the springs of the Maxwell arms (part of strain_energy)"},
-               {"dissipated_energy", "J", "cumulative viscous dissipation in the materials"},
+               {"dissipated_energy", "J", "cumulative viscous and plastic dissipation in the materials"},
                {"radiated_energy", "J", "cumulative energy absorbed by the far-boundary dashpots"},
                {"gravity_work", "J", "cumulative work of the body force on the sphere"},
                {"contact_work", "J", "cumulative work of the contact forces (zero for an ideal constraint)"},
@@ -48,6 +48,8 @@ namespace impact_fem
         previous_u = stepper.displacement();
         previous_v = stepper.velocity();
         previous_pressures = problem.contact_pressures();
+        if (problem.internal_variables().nonlinear())
+          history.declare("plastic_work", "J", "cumulative plastic work int sigma : d eps^p of both bodies (part of dissipated_energy)");
         previous_gaps = problem.contact_conditions().weighted_gaps(previous_u);
         problem.matrices().mass.vmult(product, previous_v);
         // At first contact (an initial gap is crossed before the run
@@ -102,12 +104,18 @@ namespace impact_fem
         m.stiffness.vmult(product, u);
         // The long-term springs plus the springs of the Maxwell arms.
         const double arm_energy = arms.stored_energy(sphere) + arms.stored_energy(plate);
-        const double strain     = 0.5 * (u * product) + arm_energy;
+        // 1/2 u^T K u is the elastic energy of the total strain; a plastic
+        // body stores 1/2 (eps - eps^p) : C : (eps - eps^p).
+        const double strain = 0.5 * (u * product) + arm_energy +
+                              arms.plastic_energy_correction(sphere) +
+                              arms.plastic_energy_correction(plate);
         masked = u;
         masked.scale(w.sphere_mask);
-        const double sphere_strain =
-          0.5 * (masked * product) + arms.stored_energy(sphere);
-        const double dissipated = viscous + arms.dissipated_energy();
+        const double sphere_strain = 0.5 * (masked * product) +
+                                     arms.stored_energy(sphere) +
+                                     arms.plastic_energy_correction(sphere);
+        const double dissipated =
+          viscous + arms.dissipated_energy() + arms.plastic_work();
         const double balance =
           kinetic + strain + radiated + dissipated - initial - gravity_work;
         // A static press starts without energy: its balance is relative to
@@ -123,6 +131,8 @@ namespace impact_fem
         history.append("gravity_work", gravity_work);
         history.append("contact_work", contact_work);
         history.append("energy_error", balance / reference);
+        if (arms.nonlinear())
+          history.append("plastic_work", arms.plastic_work());
         history.append("sphere_kinetic_energy", sphere_kinetic);
         history.append("sphere_strain_energy", sphere_strain);
       }

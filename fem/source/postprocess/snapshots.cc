@@ -16,7 +16,9 @@ namespace impact_fem
      * ParaView snapshots (.pvtu per snapshot, snapshots.pvd for the series)
      * of displacement, velocity and the cell-averaged stress (r, z, theta
      * components and von Mises) every 'Output/Snapshot interval' of
-     * simulated time; none by default.
+     * simulated time; none by default. With an elastic-plastic body also
+     * the accumulated plastic strain (largest of the cell's quadrature
+     * points: the plastic zone is not smeared out by averaging).
      */
     class Snapshots : public Interface
     {
@@ -105,6 +107,18 @@ namespace impact_fem
               }
           });
         data_out.add_data_vector(body, "body");
+        Vector<float> plastic_strain(n_cells);
+        const auto   &history = problem.internal_variables();
+        if (history.nonlinear())
+          {
+            for (const auto &cell : dof_handler.active_cell_iterators())
+              if (cell->is_locally_owned())
+                for (const auto &state : history.states(cell))
+                  plastic_strain[cell->active_cell_index()] =
+                    std::max<float>(plastic_strain[cell->active_cell_index()],
+                                    state->accumulated_plastic_strain);
+            data_out.add_data_vector(plastic_strain, "accumulated_plastic_strain");
+          }
         const char *names[5] = {
           "stress_rr", "stress_zz", "stress_thetatheta", "stress_rz", "von_mises"};
         for (unsigned int c = 0; c < 5; ++c)

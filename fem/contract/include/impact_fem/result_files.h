@@ -50,6 +50,10 @@ namespace impact_fem::result_files
   inline constexpr const char *approach_unit           = "m";
   inline constexpr const char *sphere_velocity_dataset = "sphere_velocity"; // downward +
   inline constexpr const char *sphere_velocity_unit    = "m/s";
+  // Nonlinear materials only: the iterations of each step's solve and the out-of-balance
+  // force of the accepted iterate relative to the step's load (both dimensionless).
+  inline constexpr const char *newton_iterations_dataset = "newton_iterations";
+  inline constexpr const char *newton_residual_dataset   = "newton_residual";
 
   // ---- Keys of summary.json (and, with the prefix above, of the result attributes) ---------
   // Units in the comments: SI, 1 for a ratio.

@@ -18,14 +18,38 @@ namespace impact_fem
     using namespace dealii;
 
     /**
+     * What a quadrature point remembers from one step to the next: the
+     * strain at the end of the last completed step, the internal variables
+     * of a linear model with memory (the spring strains of the Maxwell arms)
+     * and the plastic state of an elastic-plastic model (plastic strain,
+     * accumulated plastic strain eps_p = int sqrt(2/3 deps_p : deps_p)).
+     */
+    struct QuadraturePointState
+    {
+      SymmetricTensor<2, 3>              strain;
+      std::vector<SymmetricTensor<2, 3>> internal;
+      SymmetricTensor<2, 3>              plastic_strain;
+      double                             accumulated_plastic_strain = 0;
+    };
+
+
+    /**
      * Constitutive law of one body, small strain, axisymmetric.
      *
      * Strains and stresses are 3x3 symmetric tensors in the cylindrical basis
      * ordered (r, z, theta): the hoop component theta-theta is the third
      * diagonal entry, the only shear component is r-z.
      *
-     * The model is linear in the strain and the strain rate, which keeps the
-     * effective stiffness of the implicit time step constant:
+     * The general contract is stress_update(): from the state of a
+     * quadrature point at the start of a step and the strain at its end, the
+     * stress, the consistent (algorithmic) tangent and the new state. The
+     * viscous stress D : d eps/dt (D = damping_tangent()) acts in parallel
+     * and is left to the time stepper, which sees it through the damping
+     * matrix.
+     *
+     * Linear models (is_linear()) are in addition affine in the strain and
+     * the strain rate, which keeps the effective stiffness of the implicit
+     * time step constant and the step one solve:
      *   sigma = C : eps + D : d eps/dt + sigma_internal(h),
      * where C = stiffness_tangent(), D = damping_tangent() and h are the
      * internal variables of the model at a quadrature point (the spring
@@ -37,6 +61,11 @@ namespace impact_fem
      *                          + internal_stress_predictor(h_n, eps_n, dt),
      * so the algorithmic tangent is constant and the history enters the
      * right-hand side only.
+     *
+     * A nonlinear model (is_linear() false, elastic-plastic) writes its
+     * stress as sigma = C : eps - C : eps_p(eps) with C = stiffness_tangent()
+     * its elastic stiffness: the time step keeps the elastic effective
+     * stiffness and iterates on the plastic force int B^T C : eps_p dV.
      *
      * A new kind is one new file: a class derived from Interface with a static
      * declare_parameters(ParameterHandler&) and IMPACT_FEM_REGISTER_MATERIAL.
@@ -120,6 +149,31 @@ namespace impact_fem
       {
         return 0;
       }
+
+      /// The stress is affine in the strain, the strain rate and the
+      /// internal variables (the members above describe it completely).
+      virtual bool
+      is_linear() const
+      {
+        return true;
+      }
+
+      /**
+       * The constitutive update of one quadrature point over a step of
+       * length @p time_step: from the state at the start of the step
+       * (@p start, its strain included) and the strain at the end,
+       * @p strain_end, the stress at the end without the viscous part
+       * D : d eps/dt [Pa], the consistent tangent d sigma / d strain_end
+       * [Pa] in @p tangent, and the state at the end in @p end (its strain
+       * is strain_end). The default is the linear model: C : eps plus the
+       * stress of the internal variables advanced exactly over the step.
+       */
+      virtual SymmetricTensor<2, 3>
+      stress_update(const QuadraturePointState &start,
+                    const SymmetricTensor<2, 3> &strain_end,
+                    const double                 time_step,
+                    QuadraturePointState        &end,
+                    SymmetricTensor<4, 3>       &tangent) const;
 
       /// Instantaneous Young's modulus [Pa] and Poisson's ratio [-]: they
       /// define the Hertz estimates (time step, contact time) and the wave

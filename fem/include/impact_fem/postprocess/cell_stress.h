@@ -17,7 +17,8 @@ namespace impact_fem
     using namespace dealii;
 
     /**
-     * The total stress (elastic, Kelvin-Voigt viscous, Maxwell arms) at the
+     * The total stress (elastic with the plastic strain of the last
+     * completed step, Kelvin-Voigt viscous, Maxwell arms) at the
      * quadrature points of a fixed set of locally owned cells, for the yield
      * check and the snapshots. The strain-displacement operators of the
      * cells are computed once (one FEValues pass with the higher-order

@@ -1,0 +1,169 @@
+#include <impact_fem/time_integration/nonlinear_step.h>
+
+#include <deal.II/base/exceptions.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/vector.h>
+
+#include <cmath>
+#include <deque>
+#include <sstream>
+
+namespace impact_fem
+{
+  namespace time_integration
+  {
+    void
+    NonlinearStep::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Nonlinear solver");
+      prm.declare_entry("Strategy",
+                        "anderson",
+                        Patterns::Selection("anderson|modified newton"),
+                        "Iteration of a step with an elastic-plastic body, "
+                        "on the elastic factorisation: 'modified newton' "
+                        "(initial-stiffness iteration) or 'anderson' (the "
+                        "same iteration with Anderson acceleration); the "
+                        "default is the faster one measured (fem/README.md).");
+      prm.declare_entry("Maximum iterations",
+                        "100",
+                        Patterns::Integer(1),
+                        "Iterations allowed per step [-], >= 1; a step "
+                        "that needs more stops the run with an error.");
+      prm.declare_entry("Anderson depth",
+                        "5",
+                        Patterns::Integer(1, 50),
+                        "Past iterates mixed by the Anderson acceleration "
+                        "[-], in [1, 50].");
+      prm.declare_entry("Residual tolerance",
+                        "1e-8",
+                        Patterns::Double(0),
+                        "Converged when the out-of-balance force is at most "
+                        "this fraction of the step's external force norm "
+                        "||B^T lambda|| + ||f_body|| [-], > 0 ...");
+      prm.declare_entry("Increment tolerance",
+                        "1e-6",
+                        Patterns::Double(0),
+                        "... and the last displacement correction at most "
+                        "this fraction of the step's displacement increment "
+                        "[-], > 0.");
+      prm.leave_subsection();
+    }
+
+
+    void
+    NonlinearStep::parse_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Nonlinear solver");
+      strategy            = prm.get("Strategy");
+      max_iterations      = prm.get_integer("Maximum iterations");
+      depth               = prm.get_integer("Anderson depth");
+      residual_tolerance  = prm.get_double("Residual tolerance");
+      increment_tolerance = prm.get_double("Increment tolerance");
+      prm.leave_subsection();
+      AssertThrow(residual_tolerance > 0 && increment_tolerance > 0,
+                  ExcMessage("Nonlinear solver/Residual tolerance and "
+                             "Increment tolerance must be > 0, got " +
+                             std::to_string(residual_tolerance) + " and " +
+                             std::to_string(increment_tolerance) + "."));
+    }
+
+
+    std::string
+    NonlinearStep::criterion() const
+    {
+      std::ostringstream s;
+      s << "||r|| <= " << residual_tolerance
+        << " (||B^T lambda|| + ||f_body||) and ||du|| <= " << increment_tolerance
+        << " ||u - u_n|| within " << max_iterations
+        << " iterations (Nonlinear solver/Residual tolerance, Increment "
+           "tolerance, Maximum iterations; strategy "
+        << strategy << ")";
+      return s.str();
+    }
+
+
+    NonlinearStep::Result
+    NonlinearStep::solve(const VectorType   &start_force,
+                         const VectorType   &u_start,
+                         VectorType         &u,
+                         const LinearSolve  &linear_solve,
+                         const PlasticForce &plastic_force) const
+    {
+      const unsigned int m = strategy == "anderson" ? depth : 0;
+      Result             result;
+      VectorType         x(start_force), g(start_force), r(start_force),
+        previous_u(u_start), step(u_start);
+      // Differences of the last m residuals and map values (Walker & Ni's
+      // Delta F and Delta G), oldest first.
+      std::deque<VectorType> dR, dG;
+      VectorType             last_r, last_g;
+
+      for (unsigned int k = 1; k <= max_iterations; ++k)
+        {
+          const double load = linear_solve(x, u);
+          plastic_force(u, g);
+          r = g;
+          r -= x;
+          result.iterations = k;
+          result.residual   = r.l2_norm() / std::max(load, 1e-300);
+          step              = u;
+          step -= u_start;
+          const double scale = step.l2_norm();
+          previous_u -= u;
+          result.increment =
+            k == 1 ? 0. : previous_u.l2_norm() / std::max(scale, 1e-300);
+          previous_u = u;
+          if (r.l2_norm() <= residual_tolerance * load &&
+              (k == 1 || result.increment <= increment_tolerance))
+            {
+              result.converged = true;
+              return result;
+            }
+
+          // Next plastic force: g (modified Newton) or Anderson's mixing.
+          if (m == 0)
+            {
+              x = g;
+              continue;
+            }
+          if (k > 1)
+            {
+              last_r.sadd(-1., 1., r); // r_k - r_{k-1}
+              last_g.sadd(-1., 1., g);
+              dR.push_back(last_r);
+              dG.push_back(last_g);
+              if (dR.size() > m)
+                {
+                  dR.pop_front();
+                  dG.pop_front();
+                }
+            }
+          last_r = r;
+          last_g = g;
+          x      = g;
+          const unsigned int n = dR.size();
+          if (n == 0)
+            continue;
+          // gamma = argmin ||r - dR gamma|| by the normal equations, with a
+          // relative regularisation against nearly dependent differences.
+          FullMatrix<double> A(n, n);
+          Vector<double>     b(n), gamma(n);
+          double             largest = 0;
+          for (unsigned int i = 0; i < n; ++i)
+            {
+              b(i) = dR[i] * r;
+              for (unsigned int j = 0; j <= i; ++j)
+                A(i, j) = A(j, i) = dR[i] * dR[j];
+              largest = std::max(largest, A(i, i));
+            }
+          for (unsigned int i = 0; i < n; ++i)
+            A(i, i) += 1e-12 * largest;
+          A.gauss_jordan();
+          A.vmult(gamma, b);
+          for (unsigned int i = 0; i < n; ++i)
+            x.add(-gamma(i), dG[i]);
+        }
+      return result;
+    }
+  } // namespace time_integration
+} // namespace impact_fem
