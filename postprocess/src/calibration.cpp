@@ -218,6 +218,10 @@ struct HistoryEvaluator {
     } catch (const std::exception&) {
       return false;
     }
+    if (model->hunt_crossley_force())
+      return detail::simulate_hunt_crossley_force(model->force_law(damping, setup), setup, damping,
+                                                  run->run->impact_velocity, run->times,
+                                                  run->points, force);
     return detail::simulate_force(model->force_law(damping, setup), run->run->mass,
                                   run->run->impact_velocity, run->times, run->points, tolerance,
                                   model->contact_end, force);
@@ -504,6 +508,10 @@ std::vector<Estimate> jackknife(const std::vector<HeldOutFit>& held_out,
     for (const auto& fit : held_out) mean += fit.parameters[j] / double(g);
     double sum = 0;
     for (const auto& fit : held_out) sum += (fit.parameters[j] - mean) * (fit.parameters[j] - mean);
+    if (sum == 0) { // held-out fits equal to the last bit (exact model, noise-free data)
+      estimates.push_back({full[j], 0.0, full[j], full[j]});
+      continue;
+    }
     estimates.push_back(estimate(full[j], double(g - 1) / double(g) * sum, quantile));
   }
   return estimates;

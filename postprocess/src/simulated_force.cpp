@@ -1,20 +1,17 @@
 #include "simulated_force.hpp"
 
+#include <impact_reduced/hunt_crossley.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <exception>
 
 namespace impact::postprocess::detail {
 
-bool simulate_force(const reduced::ContactForceLaw& law, double mass, double velocity,
-                    const std::vector<double>& times, std::size_t points, double tolerance,
-                    reduced::ContactEnd end, double* force) {
-  std::vector<reduced::ImpactSample> samples;
-  try {
-    samples = reduced::integrate_impact_history(mass, velocity, law, points, tolerance, end);
-  } catch (const std::exception&) {
-    return false;
-  }
+namespace {
+bool force_from_samples(const std::vector<reduced::ImpactSample>& samples,
+                        const reduced::ContactForceLaw& law, double mass,
+                        const std::vector<double>& times, double* force) {
   const std::size_t last = samples.size() - 1;
   const double separation = samples[last].time;
   const double spacing = separation / double(last);
@@ -43,6 +40,35 @@ bool simulate_force(const reduced::ContactForceLaw& law, double mass, double vel
     if (!std::isfinite(force[i])) return false;
   }
   return true;
+}
+} // namespace
+
+bool simulate_force(const reduced::ContactForceLaw& law, double mass, double velocity,
+                    const std::vector<double>& times, std::size_t points, double tolerance,
+                    reduced::ContactEnd end, double* force) {
+  std::vector<reduced::ImpactSample> samples;
+  try {
+    samples = reduced::integrate_impact_history(mass, velocity, law, points, tolerance, end);
+  } catch (const std::exception&) {
+    return false;
+  }
+  return force_from_samples(samples, law, mass, times, force);
+}
+
+bool simulate_hunt_crossley_force(const reduced::ContactForceLaw& law,
+                                  const reduced::ContactSetup& setup, double damping,
+                                  double velocity, const std::vector<double>& times,
+                                  std::size_t points, double* force) {
+  std::vector<reduced::ImpactSample> samples;
+  try {
+    const reduced::HuntCrossleyImpact impact(setup.mass, setup.stiffness, setup.exponent,
+                                             damping, velocity);
+    for (const auto& state : impact.history(points))
+      samples.push_back({state.time, state.approach, state.approach_rate, state.force});
+  } catch (const std::exception&) {
+    return false;
+  }
+  return force_from_samples(samples, law, setup.mass, times, force);
 }
 
 } // namespace impact::postprocess::detail
