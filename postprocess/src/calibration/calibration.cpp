@@ -509,6 +509,10 @@ std::vector<Estimate> jackknife(const std::vector<HeldOutFit>& held_out,
     for (const auto& fit : held_out) mean += fit.parameters[j] / double(g);
     double sum = 0;
     for (const auto& fit : held_out) sum += (fit.parameters[j] - mean) * (fit.parameters[j] - mean);
+    if (sum == 0) { // held-out fits equal to the last bit (exact model, noise-free data)
+      estimates.push_back({full[j], 0.0, full[j], full[j]});
+      continue;
+    }
     estimates.push_back(estimate(full[j], double(g - 1) / double(g) * sum, quantile));
   }
   return estimates;
