@@ -5,8 +5,8 @@
 // tau (the compliance-weighted mean over the one deformable body); an elastic sphere on the
 // rigid flat is the Hertz model.
 
-#include "impact_postprocess/fem_run.hpp"
-#include "impact_postprocess/scenario_materials.hpp"
+#include "impact_postprocess/run/fem_run.hpp"
+#include "impact_postprocess/run/scenario_materials.hpp"
 
 #include <gtest/gtest.h>
 
