@@ -39,6 +39,29 @@ namespace impact_fem
   }
 
 
+  std::map<types::global_dof_index, unsigned int>
+  MortarContact::number_contact_nodes(const std::vector<ContactFace> &faces)
+  {
+    std::map<types::global_dof_index, double> vertex_radius;
+    for (const auto &face : faces)
+      for (unsigned int i = 0; i < face.xi.size(); ++i)
+        if (face.xi[i] == 0 || face.xi[i] == 1)
+          vertex_radius[face.z_dofs[i]] = face.x[i][0];
+    std::vector<std::pair<double, types::global_dof_index>> nodes;
+    for (const auto &[dof, r] : vertex_radius)
+      nodes.emplace_back(r, dof);
+    std::sort(nodes.begin(), nodes.end());
+    std::map<types::global_dof_index, unsigned int> row_of;
+    node_radius.clear();
+    for (const auto &[r, dof] : nodes)
+      {
+        row_of[dof] = node_radius.size();
+        node_radius.push_back(r);
+      }
+    return row_of;
+  }
+
+
   void
   MortarContact::setup(const DoFHandler<2>             &dof_handler,
                        const Mapping<2>                &mapping,
@@ -103,22 +126,8 @@ namespace impact_fem
     // quadratic elements the weights of the vertex functions of the trace
     // would change sign (and vanish on the axis), and weighted gaps with
     // such weights do not keep the bodies apart.
-    std::map<types::global_dof_index, double> plate_node_radius;
-    for (const auto &face : plate_faces)
-      for (unsigned int i = 0; i < face.xi.size(); ++i)
-        if (face.xi[i] == 0 || face.xi[i] == 1)
-          plate_node_radius[face.z_dofs[i]] = face.x[i][0];
-    std::vector<std::pair<double, types::global_dof_index>> nodes;
-    for (const auto &[dof, r] : plate_node_radius)
-      nodes.emplace_back(r, dof);
-    std::sort(nodes.begin(), nodes.end());
-    std::map<types::global_dof_index, unsigned int> row_of;
-    node_radius.clear();
-    for (const auto &[r, dof] : nodes)
-      {
-        row_of[dof] = node_radius.size();
-        node_radius.push_back(r);
-      }
+    const std::map<types::global_dof_index, unsigned int> row_of =
+      number_contact_nodes(plate_faces);
     const unsigned int n_nodes = node_radius.size();
 
     // Mortar segments: between consecutive face ends of both surfaces.

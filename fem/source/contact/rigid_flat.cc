@@ -19,22 +19,8 @@ namespace impact_fem
   MortarContact::setup_rigid_flat(const std::vector<ContactFace> &sphere_faces)
   {
     // Contact nodes: the vertices of the sphere's contact faces by radius.
-    std::map<types::global_dof_index, double> vertex_radius;
-    for (const auto &face : sphere_faces)
-      for (unsigned int i = 0; i < face.xi.size(); ++i)
-        if (face.xi[i] == 0 || face.xi[i] == 1)
-          vertex_radius[face.z_dofs[i]] = face.x[i][0];
-    std::vector<std::pair<double, types::global_dof_index>> nodes;
-    for (const auto &[dof, r] : vertex_radius)
-      nodes.emplace_back(r, dof);
-    std::sort(nodes.begin(), nodes.end());
-    std::map<types::global_dof_index, unsigned int> row_of;
-    node_radius.clear();
-    for (const auto &[r, dof] : nodes)
-      {
-        row_of[dof] = node_radius.size();
-        node_radius.push_back(r);
-      }
+    const std::map<types::global_dof_index, unsigned int> row_of =
+      number_contact_nodes(sphere_faces);
     const unsigned int n_nodes = node_radius.size();
 
     std::vector<std::map<types::global_dof_index, double>> rows(n_nodes);

@@ -11,6 +11,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <functional>
+#include <map>
 #include <vector>
 
 namespace impact_fem
@@ -142,6 +143,12 @@ namespace impact_fem
     /// B, g_0 and the pointwise gaps of the rigid flat (rigid_flat.cc).
     void
     setup_rigid_flat(const std::vector<contact_faces::ContactFace> &sphere_faces);
+
+    /// The contact nodes: the vertices of the non-mortar side's faces,
+    /// ordered by radius into node_radius; returns each node's row of B by
+    /// the global index of its vertical displacement.
+    std::map<types::global_dof_index, unsigned int>
+    number_contact_nodes(const std::vector<contact_faces::ContactFace> &faces);
 
     unsigned int max_iterations = 1000;
 
