@@ -14,7 +14,7 @@
 # of Thornton's law) for fem/bench/dynamic_plastic_loops.py.
 #
 # Usage: fem/bench/dynamic_plastic.sh [BUILD_DIR] [OUTPUT_DIR]
-#   environment: RATIOS (default "1 2 5 10 20 50"), PER_RADIUS (default 12),
+#   environment: RATIOS (default "1 2 5 10 20 50"), PER_RADIUS (default 20),
 #                STEPS (steps per contact time, default 150)
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
@@ -27,7 +27,7 @@ for b in "$fem" "$reduced"; do
 done
 mkdir -p "$output"
 exec /usr/bin/python3 - "$fem" "$reduced" "$here/../scenarios/plastic_on_rigid.prm" "$output" \
-  "${RATIOS:-1 2 5 10 20 50}" "${PER_RADIUS:-12}" "${STEPS:-150}" <<'PY'
+  "${RATIOS:-1 2 5 10 20 50}" "${PER_RADIUS:-20}" "${STEPS:-150}" <<'PY'
 import csv, io, json, math, os, subprocess, sys
 fem, reduced, scenario, out, ratios, per_radius, steps = sys.argv[1:8]
 ratios = [float(r) for r in ratios.split()]
