@@ -51,7 +51,14 @@ namespace impact_fem
    *    = eps_hat_rr, zz = eps_hat_zz; the only homogeneous axisymmetric
    *    states) prescribed on the whole boundary;
    *  - `stress step`: uniaxial stress sigma_hat_zz on the top face, bottom
-   *    on rollers, side free (creep).
+   *    on rollers, side free (creep);
+   *  - `axial strain path`: the top face displaced by the axial strain of
+   *    `Axial strain path`, bottom on rollers, side free (uniaxial stress: a
+   *    tension or compression test).
+   * An elastic-plastic material, and any material under the axial strain
+   * path, go through the general stress_update() with Newton iterations on
+   * the consistent tangent per step (the history adds the mean accumulated
+   * plastic strain, the plastic work and the iterations).
    * Writes `history.h5` with the mean strain and stress over the quadrature
    * points (`strain_*`, `stress_*`) and `inhomogeneity` (largest deviation
    * of a quadrature point's stress from the mean, relative to the mean's

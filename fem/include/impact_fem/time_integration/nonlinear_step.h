@@ -33,8 +33,10 @@ namespace impact_fem
      *    Anal. 49, 1715-1735, algorithm AA with the unconstrained least
      *    squares form).
      * Convergence (both): ||r_k|| <= residual tolerance * load_k, with load_k
-     * = ||B^T lambda_k|| + ||f_body|| the norm of the external forces of the
-     * step, and ||u_k - u_{k-1}|| <= increment tolerance * ||u_k - u_n|| (the
+     * = ||B^T lambda_k|| + ||f_body|| + ||f_p(u_k)||, the norms of the
+     * external forces of the step and of the plastic force (which keeps the
+     * reference finite after the bodies separate, where the external forces
+     * vanish and a round-off residual could never meet the criterion), and ||u_k - u_{k-1}|| <= increment tolerance * ||u_k - u_n|| (the
      * increment criterion is void at the first iteration, whose residual
      * zero means an exact solution). Not converging in the maximum number of
      * iterations is an error.
