@@ -55,79 +55,129 @@ double chebyshev_sum(const double* c, int count, double x) {
 
 } // namespace
 
-PhaseTimeMap::PhaseTimeMap(const std::function<double(double)>& density, double power,
-                           double tolerance)
+PhaseTimeMap::PhaseTimeMap(const Density& density, double power, double tolerance)
   : power_(power) {
-  const double absolute_tolerance = tolerance * density(0.5);
-  evaluations_ = 1;
+  double middle[phase_companions], end[phase_companions];
+  density_tolerance_ = tolerance * density(0.5, middle);
+  density(1.0, end);
+  for (int c = 0; c < phase_companions; ++c)
+    companion_tolerance_[c] = tolerance * std::max(std::fabs(middle[c]), std::fabs(end[c]));
+  evaluations_ = 2;
   // The first piece as wide as its polynomial converges (G's nearest singularity lies
   // O(1) away in sigma^p, so about half the phase).
   double first = 0.5;
-  while (!build_first_piece(density, first, absolute_tolerance) && first > 1.0 / 1024) first *= 0.5;
+  for (;;) {
+    const Convergence convergence = build_first_piece(density, first);
+    if (convergence.density && (convergence.companions || first <= 1.0 / 64)) break;
+    if (first <= 1.0 / 1024) break;
+    first *= 0.5;
+  }
   // Depth-first bisection keeps the panels in ascending order, so each starts at the time
   // accumulated by those before it.
   std::function<void(double, double, int)> cover = [&](double lower, double upper, int depth) {
     Panel panel;
-    if (build_panel(density, lower, upper, absolute_tolerance, panel) || depth >= 60) {
+    const Convergence convergence = build_panel(density, lower, upper, panel);
+    if ((convergence.density && (convergence.companions || depth >= companion_depth)) ||
+        depth >= 60) {
       panels_.push_back(panel);
+      duration_ += panel.half_width * [&] {
+        double at_right = 0;
+        for (int j = 0; j <= m; ++j) at_right += panel.time[j];
+        return at_right;
+      }();
       return;
     }
-    const double middle = 0.5 * (lower + upper);
-    cover(lower, middle, depth + 1);
-    cover(middle, upper, depth + 1);
+    const double middle_sigma = 0.5 * (lower + upper);
+    cover(lower, middle_sigma, depth + 1);
+    cover(middle_sigma, upper, depth + 1);
   };
   const int count = std::max(1, static_cast<int>(std::ceil((1.0 - first) / 0.125)));
   for (int i = 0; i < count; ++i)
     cover(first + (1.0 - first) * i / count, first + (1.0 - first) * (i + 1) / count, 0);
 }
 
-bool PhaseTimeMap::build_first_piece(const std::function<double(double)>& density,
-                                     double upper, double tolerance) {
-  constexpr int K = first_nodes;
-  static const auto cosine = [] {
-    std::array<std::array<double, K>, K> values{};
-    const double pi = std::acos(-1.0);
-    for (int j = 0; j < K; ++j)
-      for (int k = 0; k < K; ++k) values[j][k] = std::cos(pi * j * (k + 0.5) / K);
-    return values;
-  }();
-  // G at the Chebyshev points of tau in [0, 1], then its Chebyshev coefficients there.
-  double values[K];
-  for (int k = 0; k < K; ++k) {
-    const double tau = 0.5 * (1.0 + cosine[1][k]);
-    values[k] = density(upper * std::pow(tau, 1.0 / power_));
-    if (!(std::isfinite(values[k]) && values[k] > 0))
-      throw std::runtime_error("internal error: the time density of an impact phase is not "
-                               "finite and positive");
-  }
-  evaluations_ += K;
-  double chebyshev[K];
-  for (int j = 0; j < K; ++j) {
-    double sum = 0;
-    for (int k = 0; k < K; ++k) sum += values[k] * cosine[j][k];
-    chebyshev[j] = (j == 0 ? 1.0 : 2.0) * sum / K;
-  }
-  const double tail =
-      std::fabs(chebyshev[K - 1]) + std::fabs(chebyshev[K - 2]) + std::fabs(chebyshev[K - 3]);
-  if (!(tail <= tolerance)) return false;
-  // Monomial coefficients in tau: T_j(2 tau - 1) by T_(j+1) = 2 (2 tau - 1) T_j - T_(j-1).
-  // The coefficients decay much faster than those of T_j grow, so the sum stays exact.
+namespace {
+
+// The monomial coefficients in tau in [0, 1] of sum_j chebyshev[j] T_j(2 tau - 1), by
+// T_(j+1) = 2 (2 tau - 1) T_j - T_(j-1). The coefficients decay much faster than those of
+// T_j grow, so the sum stays exact.
+template <int K>
+void monomials(const double* chebyshev, double* monomial) {
   double previous[K] = {1.0}, current[K] = {-1.0, 2.0};
-  double monomial[K] = {};
   for (int k = 0; k < K; ++k) monomial[k] = 0;
   monomial[0] += chebyshev[0] * previous[0];
   for (int k = 0; k < 2; ++k) monomial[k] += chebyshev[1] * current[k];
   for (int j = 2; j < K; ++j) {
     double next[K] = {};
-    for (int k = 0; k < K; ++k) {
+    for (int k = 0; k < K; ++k)
       next[k] = -2.0 * current[k] - previous[k] + (k > 0 ? 4.0 * current[k - 1] : 0.0);
-    }
     for (int k = 0; k < K; ++k) {
       previous[k] = current[k];
       current[k] = next[k];
       monomial[k] += chebyshev[j] * current[k];
     }
   }
+}
+
+// The Chebyshev coefficients of the values at the K points cos(pi (k + 1/2) / K), and
+// whether the last three are within `tolerance`.
+template <int K>
+bool chebyshev_coefficients(const double* values,
+                            const std::array<std::array<double, K>, K>& cosine,
+                            double tolerance, double* coefficients) {
+  for (int j = 0; j < K; ++j) {
+    double sum = 0;
+    for (int k = 0; k < K; ++k) sum += values[k] * cosine[j][k];
+    coefficients[j] = (j == 0 ? 1.0 : 2.0) * sum / K;
+  }
+  const double tail = std::fabs(coefficients[K - 1]) + std::fabs(coefficients[K - 2]) +
+                      std::fabs(coefficients[K - 3]);
+  return tail <= tolerance;
+}
+
+template <int K>
+std::array<std::array<double, K>, K> make_cosine_table() {
+  std::array<std::array<double, K>, K> values{};
+  const double pi = std::acos(-1.0);
+  for (int j = 0; j < K; ++j)
+    for (int k = 0; k < K; ++k) values[j][k] = std::cos(pi * j * (k + 0.5) / K);
+  return values;
+}
+
+void check_density(double value) {
+  if (!(std::isfinite(value) && value > 0))
+    throw std::runtime_error("internal error: the time density of an impact phase is not "
+                             "finite and positive");
+}
+
+} // namespace
+
+PhaseTimeMap::Convergence PhaseTimeMap::build_first_piece(const Density& density,
+                                                          double upper) {
+  constexpr int K = first_nodes;
+  static const auto cosine = make_cosine_table<K>();
+  // G and the companions at the Chebyshev points of tau in [0, 1], then their Chebyshev
+  // coefficients there.
+  double values[K], companion_values[phase_companions][K];
+  for (int k = 0; k < K; ++k) {
+    const double tau = 0.5 * (1.0 + cosine[1][k]);
+    double companions[phase_companions];
+    values[k] = density(upper * std::pow(tau, 1.0 / power_), companions);
+    check_density(values[k]);
+    for (int c = 0; c < phase_companions; ++c) companion_values[c][k] = companions[c];
+  }
+  evaluations_ += K;
+  double chebyshev[K], companion_chebyshev[phase_companions][K];
+  Convergence convergence;
+  convergence.density = chebyshev_coefficients<K>(values, cosine, density_tolerance_, chebyshev);
+  for (int c = 0; c < phase_companions; ++c)
+    convergence.companions = chebyshev_coefficients<K>(companion_values[c], cosine,
+                                                       companion_tolerance_[c],
+                                                       companion_chebyshev[c]) &&
+                             convergence.companions;
+  if (!convergence.density) return convergence;
+  double monomial[K];
+  monomials<K>(chebyshev, monomial);
   first_upper_ = upper;
   double at_end = 0;
   for (int k = 0; k < K; ++k) {
@@ -135,34 +185,34 @@ bool PhaseTimeMap::build_first_piece(const std::function<double(double)>& densit
     first_time_[k] = monomial[k] / (k * power_ + 1.0);
     at_end += first_time_[k];
   }
+  for (int c = 0; c < phase_companions; ++c) monomials<K>(companion_chebyshev[c], first_companions_[c]);
   duration_ = upper * at_end;
-  return true;
+  return convergence;
 }
 
-bool PhaseTimeMap::build_panel(const std::function<double(double)>& density, double lower,
-                               double upper, double tolerance, Panel& panel) {
-  // `tolerance` here is absolute (density units).
+PhaseTimeMap::Convergence PhaseTimeMap::build_panel(const Density& density, double lower,
+                                                    double upper, Panel& panel) {
   const auto& cosine = cosine_table();
   panel.lower = lower;
   panel.half_width = 0.5 * (upper - lower);
   panel.start_time = duration_;
-  double values[m];
+  double values[m], companion_values[phase_companions][m];
   for (int k = 0; k < m; ++k) {
     // Node k at x = cos(pi (k + 1/2) / m), from the right end to the left.
-    values[k] = density(lower + panel.half_width * (1.0 + cosine[1][k]));
-    if (!(std::isfinite(values[k]) && values[k] > 0))
-      throw std::runtime_error("internal error: the time density of an impact phase is not "
-                               "finite and positive");
+    double companions[phase_companions];
+    values[k] = density(lower + panel.half_width * (1.0 + cosine[1][k]), companions);
+    check_density(values[k]);
+    for (int c = 0; c < phase_companions; ++c) companion_values[c][k] = companions[c];
   }
   evaluations_ += m;
-  for (int j = 0; j < m; ++j) {
-    double sum = 0;
-    for (int k = 0; k < m; ++k) sum += values[k] * cosine[j][k];
-    panel.density[j] = (j == 0 ? 1.0 : 2.0) * sum / m;
-  }
-  const double tail = std::fabs(panel.density[m - 1]) + std::fabs(panel.density[m - 2]) +
-                      std::fabs(panel.density[m - 3]);
-  if (!(tail <= tolerance)) return false;
+  Convergence convergence;
+  convergence.density =
+      chebyshev_coefficients<m>(values, cosine, density_tolerance_, panel.density);
+  for (int c = 0; c < phase_companions; ++c)
+    convergence.companions = chebyshev_coefficients<m>(companion_values[c], cosine,
+                                                       companion_tolerance_[c],
+                                                       panel.companions[c]) &&
+                             convergence.companions;
   // Term-by-term integral from x = -1: int T_0 = T_1, int T_1 = T_2 / 4,
   // int T_j = T_(j+1) / (2 (j+1)) - T_(j-1) / (2 (j-1)).
   const double* c = panel.density;
@@ -173,10 +223,36 @@ bool PhaseTimeMap::build_panel(const std::function<double(double)>& density, dou
   double at_left = 0;
   for (int j = 1; j <= m; ++j) at_left += (j % 2 == 0 ? 1.0 : -1.0) * panel.time[j];
   panel.time[0] = -at_left;
-  double at_right = 0;
-  for (int j = 0; j <= m; ++j) at_right += panel.time[j];
-  duration_ += panel.half_width * at_right;
-  return true;
+  return convergence;
+}
+
+// The companions at panel variable x by Clenshaw's recurrence, the chains interleaved.
+PhaseSample PhaseTimeMap::panel_sample(const Panel& panel, double x) const {
+  double next[phase_companions] = {}, after[phase_companions] = {};
+  for (int j = m - 1; j >= 1; --j)
+    for (int c = 0; c < phase_companions; ++c) {
+      const double current = panel.companions[c][j] + 2 * x * next[c] - after[c];
+      after[c] = next[c];
+      next[c] = current;
+    }
+  PhaseSample sample;
+  sample.sigma = panel.lower + panel.half_width * (x + 1.0);
+  for (int c = 0; c < phase_companions; ++c)
+    sample.companions[c] = panel.companions[c][0] + x * next[c] - after[c];
+  return sample;
+}
+
+// The companions on the first piece, polynomials in tau, by Horner's rule.
+PhaseSample PhaseTimeMap::first_piece_sample(double s, double tau) const {
+  constexpr int K = first_nodes;
+  double sum[phase_companions];
+  for (int c = 0; c < phase_companions; ++c) sum[c] = first_companions_[c][K - 1];
+  for (int k = K - 2; k >= 0; --k)
+    for (int c = 0; c < phase_companions; ++c) sum[c] = sum[c] * tau + first_companions_[c][k];
+  PhaseSample sample;
+  sample.sigma = first_upper_ * s;
+  for (int c = 0; c < phase_companions; ++c) sample.companions[c] = sum[c];
+  return sample;
 }
 
 double PhaseTimeMap::solve_in_panel(const Panel& panel, double time, double guess) const {
@@ -210,26 +286,21 @@ double PhaseTimeMap::panel_end_time(long panel) const {
                                                              : duration_;
 }
 
-// sigma^p as a function of t on the panel (all the caller needs): its values at the
-// Chebyshev points of the panel's time range, by Newton's method on the panel's series,
-// and the coefficients of its interpolant; false if they do not decay to rounding (the
-// inverse is then not used).
+// The panel variable x as a function of t on the panel: its values at the Chebyshev points
+// of the panel's time range, by Newton's method on the panel's series, and the coefficients
+// of its interpolant; false if the last three do not sum to 1e-14 or less (x is in
+// [-1, 1], its values carry rounding errors of a few 1e-16, which is the floor of the
+// coefficients; the state located then lies within 1e-14 of a half panel from the exact
+// one, a time error below 1e-14 of the panel's duration; otherwise the inverse is not used).
 bool PhaseTimeMap::build_inverse(const Panel& panel, double end_time, double* inverse) const {
   const auto& cosine = cosine_table();
   double values[m];
   for (int k = 0; k < m; ++k) {
     const double y = cosine[1][k];
     const double time = panel.start_time + 0.5 * (end_time - panel.start_time) * (1 + y);
-    const double x = solve_in_panel(panel, time, y);
-    values[k] = std::pow(panel.lower + panel.half_width * (x + 1.0), power_);
+    values[k] = solve_in_panel(panel, time, y);
   }
-  for (int j = 0; j < m; ++j) {
-    double sum = 0;
-    for (int k = 0; k < m; ++k) sum += values[k] * cosine[j][k];
-    inverse[j] = (j == 0 ? 1.0 : 2.0) * sum / m;
-  }
-  return std::fabs(inverse[m - 1]) + std::fabs(inverse[m - 2]) + std::fabs(inverse[m - 3]) <=
-         1e-16 * std::fabs(inverse[0]);
+  return chebyshev_coefficients<m>(values, cosine, 1e-14, inverse);
 }
 
 // t = sigma Q(tau), dt/dsigma = G(tau), tau = (sigma / sigma_0)^p, Newton's method in
@@ -271,9 +342,9 @@ double PhaseTimeMap::solve_in_first_piece(double time, double guess, double& tau
   return s;
 }
 
-std::vector<double> PhaseTimeMap::locate(const std::vector<double>& times) const {
-  std::vector<double> locations;
-  locations.reserve(times.size());
+std::vector<PhaseSample> PhaseTimeMap::locate(const std::vector<double>& times) const {
+  std::vector<PhaseSample> samples;
+  samples.reserve(times.size());
   // Piece -1 is the first piece, 0, 1, ... the panels.
   const double first_end = first_upper_ > 0 ? first_upper_ *
       [&] { double sum = 0; for (double c : first_time_) sum += c; return sum; }() : 0.0;
@@ -283,8 +354,8 @@ std::vector<double> PhaseTimeMap::locate(const std::vector<double>& times) const
   // O(h^3), so that Newton's method needs one or two steps.
   double known_time[3], known_x[3];
   int known = 0;
-  // A panel holding many points gets the Chebyshev series of its inverse, x(t), so that
-  // each point costs one series instead of Newton's method.
+  // A panel holding more points than nodes gets the Chebyshev series of its inverse, x(t),
+  // so that each point costs one series instead of Newton's method.
   double inverse[nodes];
   bool use_inverse = false;
   for (std::size_t index = 0; index < times.size(); ++index) {
@@ -300,17 +371,16 @@ std::vector<double> PhaseTimeMap::locate(const std::vector<double>& times) const
       if (piece >= 0) {
         const double end = panel_end_time(piece);
         std::size_t count = 0;
-        while (index + count < times.size() && times[index + count] <= end &&
-               count <= 2 * nodes)
+        while (index + count < times.size() && times[index + count] <= end && count <= nodes)
           ++count;
-        use_inverse = count > 2 * nodes && build_inverse(panels_[piece], end, inverse);
+        use_inverse = count > nodes && build_inverse(panels_[piece], end, inverse);
       }
     }
     if (use_inverse) {
       const Panel& panel = panels_[piece];
       const double y =
           2 * (time - panel.start_time) / (panel_end_time(piece) - panel.start_time) - 1;
-      locations.push_back(chebyshev_sum(inverse, nodes, y));
+      samples.push_back(panel_sample(panel, std::clamp(chebyshev_sum(inverse, nodes, y), -1.0, 1.0)));
       continue;
     }
     double guess;
@@ -332,13 +402,13 @@ std::vector<double> PhaseTimeMap::locate(const std::vector<double>& times) const
       if (known == 0) guess = time / first_end; // t is nearly linear in sigma
       double tau;
       x = solve_in_first_piece(time, guess, tau);
-      locations.push_back(std::pow(first_upper_, power_) * tau);
+      samples.push_back(first_piece_sample(x, tau));
     } else {
       const Panel& panel = panels_[piece];
       if (known == 0)
         guess = -1 + 2 * (time - panel.start_time) / (panel_end_time(piece) - panel.start_time);
       x = solve_in_panel(panel, time, guess);
-      locations.push_back(std::pow(panel.lower + panel.half_width * (x + 1.0), power_));
+      samples.push_back(panel_sample(panel, x));
     }
     if (known == 3) {
       for (int a = 0; a < 2; ++a) {
@@ -351,7 +421,7 @@ std::vector<double> PhaseTimeMap::locate(const std::vector<double>& times) const
     known_x[known] = x;
     ++known;
   }
-  return locations;
+  return samples;
 }
 
 } // namespace impact::reduced::detail
