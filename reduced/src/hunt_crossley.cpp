@@ -448,10 +448,10 @@ double HuntCrossleyImpact::phase_force_factor(ImpactPhase phase, double distance
 // time is accumulated piece by piece from its singular end (PhaseTimeMap: a polynomial in
 // sigma^(n+1) on the first piece, Chebyshev panels beyond), the density evaluated a fixed
 // number of times whatever the number of points. The state is interpolated on the same
-// pieces as functions of sigma^(n+1) (the map's companions): d / D, v, x / sigma =
+// pieces as functions of sigma^(n+1) (the map's companions): v, x / sigma =
 // ((n+1) m D e / c)^(1/(n+1)) and f (1 + b v) / sigma^n, with e = E / d; the approach
 // x / sigma needs e^(1/(n+1)) = e e^(-alpha), the density's own power. A point then costs
-// its location on the series and four short series: no power, root or logarithm.
+// its location on the series and a few short series (one power in the first piece).
 std::vector<ImpactState> HuntCrossleyImpact::power_law_history(std::size_t points) const {
   const double exponent = power_law_->exponent();
   const double alpha = exponent / (exponent + 1);
@@ -475,10 +475,9 @@ std::vector<ImpactState> HuntCrossleyImpact::power_law_history(std::size_t point
       const double root = std::pow(ratio, -alpha); // e^(-alpha)
       const double force_factor = phase_force_factor(phase, distance);
       const double approach_per_sigma = approach_scale * ratio * root;
-      state[0] = depth;
-      state[1] = phase_rate(phase, distance);
-      state[2] = approach_per_sigma;
-      state[3] = energy_scale * ratio / approach_per_sigma * force_factor;
+      state[0] = phase_rate(phase, distance);
+      state[1] = approach_per_sigma;
+      state[2] = energy_scale * ratio / approach_per_sigma * force_factor;
       const double weight = restitution_in_log_rate_ ? 1.0 : 1.0 / force_factor;
       return factor * root * weight;
     };
@@ -493,8 +492,8 @@ std::vector<ImpactState> HuntCrossleyImpact::power_law_history(std::size_t point
   };
   const auto state = [](double time, const detail::PhaseSample& sample) {
     const double sigma = sample.sigma;
-    return ImpactState{time, sigma * sample.companions[2], sample.companions[1],
-                       sample.companions[0] / sigma * sample.companions[3]};
+    return ImpactState{time, sigma * sample.companions[1], sample.companions[0],
+                       sample.sigma_power / sigma * sample.companions[2]};
   };
 
   std::vector<ImpactState> states(points);

@@ -42,17 +42,6 @@ void time_and_density(const double* t, const double* d, double x, double& time,
   density = d[0] + x * d_next - d_after;
 }
 
-// sum_{j < count} c_j T_j(x) by Clenshaw's recurrence.
-double chebyshev_sum(const double* c, int count, double x) {
-  double next = 0, after = 0;
-  for (int j = count - 1; j >= 1; --j) {
-    const double current = c[j] + 2 * x * next - after;
-    after = next;
-    next = current;
-  }
-  return c[0] + x * next - after;
-}
-
 } // namespace
 
 PhaseTimeMap::PhaseTimeMap(const Density& density, double power, double tolerance)
@@ -179,6 +168,7 @@ PhaseTimeMap::Convergence PhaseTimeMap::build_first_piece(const Density& density
   double monomial[K];
   monomials<K>(chebyshev, monomial);
   first_upper_ = upper;
+  first_upper_power_ = std::pow(upper, power_);
   double at_end = 0;
   for (int k = 0; k < K; ++k) {
     first_density_[k] = monomial[k];
@@ -213,6 +203,11 @@ PhaseTimeMap::Convergence PhaseTimeMap::build_panel(const Density& density, doub
                                                        companion_tolerance_[c],
                                                        panel.companions[c]) &&
                              convergence.companions;
+  // sigma^p, analytic on the panel (sigma > 0): its series is used, not judged.
+  double powers[m];
+  for (int k = 0; k < m; ++k)
+    powers[k] = std::pow(lower + panel.half_width * (1.0 + cosine[1][k]), power_);
+  chebyshev_coefficients<m>(powers, cosine, 0.0, panel.sigma_power);
   // Term-by-term integral from x = -1: int T_0 = T_1, int T_1 = T_2 / 4,
   // int T_j = T_(j+1) / (2 (j+1)) - T_(j-1) / (2 (j-1)).
   const double* c = panel.density;
@@ -228,17 +223,23 @@ PhaseTimeMap::Convergence PhaseTimeMap::build_panel(const Density& density, doub
 
 // The companions at panel variable x by Clenshaw's recurrence, the chains interleaved.
 PhaseSample PhaseTimeMap::panel_sample(const Panel& panel, double x) const {
-  double next[phase_companions] = {}, after[phase_companions] = {};
+  constexpr int n = phase_companions + 1;
+  const double* series[n];
+  for (int c = 0; c < phase_companions; ++c) series[c] = panel.companions[c];
+  series[phase_companions] = panel.sigma_power;
+  double next[n] = {}, after[n] = {};
   for (int j = m - 1; j >= 1; --j)
-    for (int c = 0; c < phase_companions; ++c) {
-      const double current = panel.companions[c][j] + 2 * x * next[c] - after[c];
+    for (int c = 0; c < n; ++c) {
+      const double current = series[c][j] + 2 * x * next[c] - after[c];
       after[c] = next[c];
       next[c] = current;
     }
   PhaseSample sample;
   sample.sigma = panel.lower + panel.half_width * (x + 1.0);
+  sample.sigma_power = series[phase_companions][0] + x * next[phase_companions] -
+                       after[phase_companions];
   for (int c = 0; c < phase_companions; ++c)
-    sample.companions[c] = panel.companions[c][0] + x * next[c] - after[c];
+    sample.companions[c] = series[c][0] + x * next[c] - after[c];
   return sample;
 }
 
@@ -251,6 +252,7 @@ PhaseSample PhaseTimeMap::first_piece_sample(double s, double tau) const {
     for (int c = 0; c < phase_companions; ++c) sum[c] = sum[c] * tau + first_companions_[c][k];
   PhaseSample sample;
   sample.sigma = first_upper_ * s;
+  sample.sigma_power = first_upper_power_ * tau;
   for (int c = 0; c < phase_companions; ++c) sample.companions[c] = sum[c];
   return sample;
 }
@@ -286,21 +288,78 @@ double PhaseTimeMap::panel_end_time(long panel) const {
                                                              : duration_;
 }
 
-// The panel variable x as a function of t on the panel: its values at the Chebyshev points
-// of the panel's time range, by Newton's method on the panel's series, and the coefficients
-// of its interpolant; false if the last three do not sum to 1e-14 or less (x is in
-// [-1, 1], its values carry rounding errors of a few 1e-16, which is the floor of the
-// coefficients; the state located then lies within 1e-14 of a half panel from the exact
-// one, a time error below 1e-14 of the panel's duration; otherwise the inverse is not used).
-bool PhaseTimeMap::build_inverse(const Panel& panel, double end_time, double* inverse) const {
+bool PhaseTimeMap::fit_series(const double (&values)[series_count][nodes],
+                              const double (&tolerances)[series_count], SampleSeries& series) {
   const auto& cosine = cosine_table();
-  double values[m];
+  bool converged = true;
+  series.length = 1;
+  for (int c = 0; c < series_count; ++c) {
+    double coefficients[nodes];
+    converged = chebyshev_coefficients<nodes>(values[c], cosine, tolerances[c], coefficients) &&
+                converged;
+    double dropped = 0;
+    int length = nodes;
+    while (length > 1 && dropped + std::fabs(coefficients[length - 1]) <= tolerances[c])
+      dropped += std::fabs(coefficients[--length]);
+    series.length = std::max(series.length, length);
+    for (int j = 0; j < nodes; ++j) series.coefficients[j][c] = coefficients[j];
+  }
+  for (int j = 0; j < nodes; ++j) series.coefficients[j][series_count] = 0;
+  return converged;
+}
+
+void PhaseTimeMap::evaluate_series(const SampleSeries& series, double y,
+                                   double (&values)[series_count]) {
+  constexpr int width = series_count + 1;
+  double next[width] = {}, after[width] = {};
+  for (int j = series.length - 1; j >= 1; --j)
+    for (int c = 0; c < width; ++c) {
+      const double current = series.coefficients[j][c] + 2 * y * next[c] - after[c];
+      after[c] = next[c];
+      next[c] = current;
+    }
+  for (int c = 0; c < series_count; ++c)
+    values[c] = series.coefficients[0][c] + y * next[c] - after[c];
+}
+
+// sigma and the companions as functions of t on the panel: their values at the Chebyshev
+// points of the panel's time range, by Newton's method on the panel's series, and their
+// series; false if those of sigma do not decay to 1e-14 of the panel's half width (its
+// values carry rounding errors of a few 1e-16 of it, which is the floor of the
+// coefficients; the state then lies within 1e-14 of a half panel from the exact one, a time
+// error below 1e-14 of the panel's duration) or a companion's not to its tolerance (the
+// inverse is then not used).
+bool PhaseTimeMap::build_inverse(const Panel& panel, double end_time,
+                                 SampleSeries& inverse) const {
+  const auto& cosine = cosine_table();
+  double values[series_count][nodes];
+  // Newton's method from the quadratic extrapolation of the last three nodes' solutions
+  // (from the node's own y, t being nearly linear in x, for the first two).
+  double known_time[3], known_x[3];
   for (int k = 0; k < m; ++k) {
     const double y = cosine[1][k];
     const double time = panel.start_time + 0.5 * (end_time - panel.start_time) * (1 + y);
-    values[k] = solve_in_panel(panel, time, y);
+    double guess = y;
+    if (k >= 3) {
+      guess = 0;
+      for (int a = 0; a < 3; ++a) {
+        double weight = 1;
+        for (int b = 0; b < 3; ++b)
+          if (b != a) weight *= (time - known_time[b]) / (known_time[a] - known_time[b]);
+        guess += weight * known_x[a];
+      }
+    }
+    const double x = solve_in_panel(panel, time, guess);
+    known_time[k % 3] = time;
+    known_x[k % 3] = x;
+    const PhaseSample sample = panel_sample(panel, x);
+    values[0][k] = sample.sigma;
+    values[1][k] = sample.sigma_power;
+    for (int c = 0; c < phase_companions; ++c) values[c + 2][k] = sample.companions[c];
   }
-  return chebyshev_coefficients<m>(values, cosine, 1e-14, inverse);
+  double tolerances[series_count] = {1e-14 * panel.half_width, 1e-14 * values[1][0]};
+  for (int c = 0; c < phase_companions; ++c) tolerances[c + 2] = companion_tolerance_[c];
+  return fit_series(values, tolerances, inverse);
 }
 
 // t = sigma Q(tau), dt/dsigma = G(tau), tau = (sigma / sigma_0)^p, Newton's method in
@@ -342,6 +401,38 @@ double PhaseTimeMap::solve_in_first_piece(double time, double guess, double& tau
   return s;
 }
 
+bool PhaseTimeMap::build_first_inverse(double first_end, SampleSeries& inverse) const {
+  const auto& cosine = cosine_table();
+  double values[series_count][nodes];
+  double guess = 0.5;
+  for (int k = m - 1; k >= 0; --k) { // ascending w
+    const double w = 0.5 * (1.0 + cosine[1][k]);
+    const double u = std::pow(w, 1.0 / power_);
+    double tau;
+    const double s = solve_in_first_piece(u * first_end, guess, tau);
+    guess = s;
+    values[0][k] = s / u;
+    values[1][k] = tau / w;
+    const PhaseSample sample = first_piece_sample(s, tau);
+    for (int c = 0; c < phase_companions; ++c) values[c + 2][k] = sample.companions[c];
+  }
+  double tolerances[series_count] = {1e-14 * std::fabs(values[0][0]),
+                                     1e-14 * std::fabs(values[1][0])};
+  for (int c = 0; c < phase_companions; ++c) tolerances[c + 2] = companion_tolerance_[c];
+  return fit_series(values, tolerances, inverse);
+}
+
+PhaseSample PhaseTimeMap::first_inverse_sample(const SampleSeries& inverse, double u) const {
+  const double w = std::pow(u, power_);
+  double values[series_count];
+  evaluate_series(inverse, 2 * w - 1, values);
+  PhaseSample sample;
+  sample.sigma = first_upper_ * u * values[0];
+  sample.sigma_power = first_upper_power_ * w * values[1];
+  for (int c = 0; c < phase_companions; ++c) sample.companions[c] = values[c + 2];
+  return sample;
+}
+
 std::vector<PhaseSample> PhaseTimeMap::locate(const std::vector<double>& times) const {
   std::vector<PhaseSample> samples;
   samples.reserve(times.size());
@@ -354,10 +445,18 @@ std::vector<PhaseSample> PhaseTimeMap::locate(const std::vector<double>& times) 
   // O(h^3), so that Newton's method needs one or two steps.
   double known_time[3], known_x[3];
   int known = 0;
-  // A panel holding more points than nodes gets the Chebyshev series of its inverse, x(t),
-  // so that each point costs one series instead of Newton's method.
-  double inverse[nodes];
+  // A panel holding more points than nodes gets the Chebyshev series in time of sigma and of
+  // the companions, so that each point costs five independent series instead of
+  // Newton's method and the panel's series.
+  SampleSeries inverse;
   bool use_inverse = false;
+  SampleSeries first_inverse;
+  bool use_first_inverse = false;
+  if (piece < 0) {
+    std::size_t count = 0;
+    while (count < times.size() && times[count] <= first_end && count <= nodes) ++count;
+    use_first_inverse = count > nodes && build_first_inverse(first_end, first_inverse);
+  }
   for (std::size_t index = 0; index < times.size(); ++index) {
     const double time = times[index];
     const long before = piece;
@@ -376,11 +475,21 @@ std::vector<PhaseSample> PhaseTimeMap::locate(const std::vector<double>& times) 
         use_inverse = count > nodes && build_inverse(panels_[piece], end, inverse);
       }
     }
+    if (piece < 0 && use_first_inverse) {
+      samples.push_back(first_inverse_sample(first_inverse, std::min(time / first_end, 1.0)));
+      continue;
+    }
     if (use_inverse) {
       const Panel& panel = panels_[piece];
       const double y =
           2 * (time - panel.start_time) / (panel_end_time(piece) - panel.start_time) - 1;
-      samples.push_back(panel_sample(panel, std::clamp(chebyshev_sum(inverse, nodes, y), -1.0, 1.0)));
+      double values[series_count];
+      evaluate_series(inverse, std::clamp(y, -1.0, 1.0), values);
+      PhaseSample sample;
+      sample.sigma = values[0];
+      sample.sigma_power = values[1];
+      for (int c = 0; c < phase_companions; ++c) sample.companions[c] = values[c + 2];
+      samples.push_back(sample);
       continue;
     }
     double guess;

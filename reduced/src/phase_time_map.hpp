@@ -19,8 +19,10 @@
 // further calls of the density.
 //
 // Beside the density the caller supplies `companions`: values that are analytic functions
-// of sigma^p (here the state of the impact: the phase's distance, the approach rate, the
-// approach / sigma and the force / sigma^n), computed with the density at the same nodes.
+// of sigma^p (here the state of the impact: the approach rate, the approach / sigma and the
+// force / sigma^n), computed with the density at the same nodes. sigma^p itself is
+// interpolated on the panels and exact on the first piece (to full relative accuracy near
+// sigma = 0, where the force is sigma^p / sigma times a companion).
 // They are interpolated on the same pieces (a piece is accepted only when their trailing
 // coefficients are small too), so that locating a time also gives them by a few short
 // series: no power, logarithm or root per located time.
@@ -32,11 +34,12 @@
 namespace impact::reduced::detail {
 
 /// The number of companion values interpolated with the density.
-inline constexpr int phase_companions = 4;
+inline constexpr int phase_companions = 3;
 
 /// A located time: sigma in [0, 1] and the companions there.
 struct PhaseSample {
   double sigma;
+  double sigma_power; ///< sigma^p
   double companions[phase_companions];
 };
 
@@ -58,10 +61,12 @@ public:
   /// Density evaluations made to build the map.
   std::size_t evaluations() const { return evaluations_; }
 
-  /// The sigma in (0, 1] with t(sigma) = time, and the companions there, for ascending
-  /// times in (0, duration]: one pass over the pieces, Newton's method on each piece's series
-  /// (safeguarded by bisection) from a quadratic extrapolation of the previous points, or,
-  /// on a panel holding more than `nodes` points, the Chebyshev series of the inverse.
+  /// The sigma in (0, 1] with t(sigma) = time, sigma^p and the companions there, for
+  /// ascending times in (0, duration]: one pass over the pieces, Newton's method on each
+  /// piece's series (safeguarded by bisection) from a quadratic extrapolation of the
+  /// previous points, or, on a piece holding more than `nodes` points, the Chebyshev series
+  /// in time of sigma and the companions (built from Newton's solutions at their nodes; not
+  /// used where they do not converge).
   std::vector<PhaseSample> locate(const std::vector<double>& ascending_times) const;
 
   /// Chebyshev points per panel, and interpolation points of the first piece.
@@ -76,6 +81,7 @@ private:
     double density[nodes];  // Chebyshev coefficients of dt/dsigma on the panel (x in [-1, 1])
     double time[nodes + 1]; // Chebyshev coefficients of t - start_time on the panel
     double companions[phase_companions][nodes]; // Chebyshev coefficients of each companion
+    double sigma_power[nodes];                  // Chebyshev coefficients of sigma^p
   };
   // Whether the trailing coefficients of the density and of every companion are within
   // their tolerances. Where the density converges and a companion does not, the companion's
@@ -93,15 +99,38 @@ private:
   Convergence build_panel(const Density& density, double lower, double upper, Panel& panel);
   PhaseSample panel_sample(const Panel& panel, double x) const;
   PhaseSample first_piece_sample(double s, double tau) const;
+  // Five Chebyshev series in one variable y in [-1, 1], stored coefficient by coefficient
+  // (the five recurrences of Clenshaw's rule then run side by side), each cut after the last
+  // coefficient that matters: those left out sum to at most the series' tolerance.
+  static constexpr int series_count = phase_companions + 2;
+  struct SampleSeries {
+    double coefficients[nodes][series_count + 1]; // the last column is padding
+    int length = 0;
+  };
+  // From the values at the Chebyshev points of y; false if a series does not decay to its
+  // tolerance.
+  static bool fit_series(const double (&values)[series_count][nodes],
+                         const double (&tolerances)[series_count], SampleSeries& series);
+  static void evaluate_series(const SampleSeries& series, double y,
+                              double (&values)[series_count]);
+  // The first piece's inverse: with u = t / t(first end) and w = u^p, t = s Q(s^p) gives
+  // s = u R(w) and s^p = w R(w)^p, R analytic in w (Q(0) > 0): R and the companions as
+  // Chebyshev series in w in [0, 1], so that a located time costs one power and five
+  // series instead of Newton's method. False if they do not converge (then not used).
+  bool build_first_inverse(double first_end, SampleSeries& inverse) const;
+  PhaseSample first_inverse_sample(const SampleSeries& inverse, double u) const;
+  // A panel's sigma and companions as Chebyshev series in its time range (they are analytic
+  // in t there): a located time costs five series.
+  bool build_inverse(const Panel& panel, double end_time, SampleSeries& inverse) const;
   double solve_in_panel(const Panel& panel, double time, double guess) const;
   double panel_end_time(long panel) const;
-  bool build_inverse(const Panel& panel, double end_time, double* inverse) const;
   double solve_in_first_piece(double time, double guess, double& tau) const;
 
   double power_;
   // The first piece [0, first_upper_]: density = sum first_density_[k] tau^k,
   // t = sigma sum first_time_[k] tau^k, tau = (sigma / first_upper_)^p.
   double first_upper_ = 0;
+  double first_upper_power_ = 0; // first_upper_^p
   double first_density_[first_nodes] = {};
   double first_time_[first_nodes] = {};
   double first_companions_[phase_companions][first_nodes] = {};
