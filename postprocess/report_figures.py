@@ -3,10 +3,13 @@
 
 usage: report_figures.py DATA.json OUTPUT_DIRECTORY
 
-DATA.json = {"figures": [{"file", "title", "columns", "shared_legend" (optional: one legend
-below the panels instead of one per panel), "panels": [panel, ...]}, ...]}, a panel =
-{"title", "xlabel", "ylabel", "xscale", "yscale" ("linear" or "log"), "series": [series, ...],
-"xticks" (optional: tick positions, labelled as plain numbers), "hlines": [{"y", "label",
+DATA.json = {"figures": [{"file", "title" (none or "": no title line), "columns",
+"shared_legend" (optional: one legend below the panels instead of one per panel),
+"legend_columns" (of the shared legend, default 2), "width" (optional: of the figure [in],
+default 5 per column), "row_height" (optional: of a row of panels [in], default 3.6),
+"panels": [panel, ...]}, ...]}, a panel = {"title", "xlabel", "ylabel", "xscale", "yscale"
+("linear", "log" or "symlog": linear within +-"linthresh", logarithmic beyond), "series":
+[series, ...], "xticks", "yticks" (optional: tick positions, labelled as plain numbers), "hlines": [{"y", "label",
 "color", "linestyle"}], "bands": [{"y0", "y1", "color", "alpha", "label"}], "vbands": [{"x0",
 "x1", "color", "alpha", "hatch", "label"}] (spans of x), "note"}; a series is a line {"label", "x", "y", "color", "linestyle", "marker",
 "markerfacecolor" (optional), "yerr": [lower, upper] (optional)} or a shaded band
@@ -74,7 +77,15 @@ def draw_panel(axes, panel, legend=True):
         axes.text(0.5, 0.5, panel["note"], transform=axes.transAxes, ha="center",
                   va="center", fontsize=8, wrap=True, color="tab:red")
     axes.set_xscale(panel.get("xscale", "linear"))
-    axes.set_yscale(panel.get("yscale", "linear"))
+    if panel.get("yscale") == "symlog":
+        axes.set_yscale("symlog", linthresh=panel["linthresh"], linscale=2)
+    else:
+        axes.set_yscale(panel.get("yscale", "linear"))
+    if panel.get("yticks"):
+        ticks = sorted(values(panel["yticks"]))
+        axes.set_yticks(ticks)
+        axes.set_yticklabels(["%g" % tick for tick in ticks])
+        axes.minorticks_off()
     if panel.get("xticks"):
         ticks = values(panel["xticks"])
         axes.set_xticks(ticks)
@@ -165,24 +176,26 @@ def draw_figure(figure, directory):
     panels = figure["panels"]
     columns = max(1, min(int(figure.get("columns", 2)), len(panels)))
     rows = max(1, math.ceil(len(panels) / columns))
-    width = 5.0 * columns if columns > 1 else 9.0
+    width = figure.get("width") or (5.0 * columns if columns > 1 else 9.0)
     shared = bool(figure.get("shared_legend"))
-    height = 3.6 * rows + 0.4  # 0.4 in for the title
+    title = 0.4 if figure.get("title") else 0.0  # [in] for the title line
+    height = figure.get("row_height", 3.6) * rows + title
     fig, axes = plt.subplots(rows, columns, figsize=(width, height), squeeze=False)
-    top = 1 - 0.4 / height
+    top = 1 - title / height
     for index, panel in enumerate(panels):
         draw_panel(axes[index // columns][index % columns], panel, legend=not shared)
     for index in range(len(panels), rows * columns):
         axes[index // columns][index % columns].set_visible(False)
-    fig.suptitle(figure.get("title", ""))
+    if title:
+        fig.suptitle(figure["title"])
     if shared:
         # One legend below the panels: the figure grows by the legend's height.
         labelled = legend_entries(axes)
-        legend_columns = 2
-        legend_height = 0.25 * math.ceil(len(labelled) / legend_columns) + 0.2
+        legend_columns = int(figure.get("legend_columns", 2))
+        legend_height = 0.2 * math.ceil(len(labelled) / legend_columns) + 0.15
         fig.set_size_inches(width, height + legend_height)
         fig.tight_layout(rect=(0, legend_height / (height + legend_height), 1,
-                               1 - 0.4 / (height + legend_height)))
+                               1 - title / (height + legend_height)))
         fig.legend(list(labelled.values()), list(labelled.keys()), loc="lower center",
                    ncol=legend_columns, fontsize=8, frameon=False)
     else:

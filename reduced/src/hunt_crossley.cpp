@@ -439,17 +439,6 @@ double HuntCrossleyImpact::phase_force_factor(ImpactPhase phase, double distance
                                            : std::exp(distance - log_rate_span_);
 }
 
-ImpactState HuntCrossleyImpact::phase_state(ImpactPhase phase, double time,
-                                            double distance) const {
-  const double energy = distance * phase_energy_ratio(phase, distance);
-  const double approach = power_law_->approach_at_potential(mass_ * energy);
-  // f(x) = c x^n = (n + 1) P(x) / x: no second power.
-  const double elastic =
-      approach > 0 ? (power_law_->exponent() + 1) * mass_ * energy / approach : 0.0;
-  return {time, approach, phase_rate(phase, distance),
-          elastic * phase_force_factor(phase, distance)};
-}
-
 // The time density of a phase has the end-point singularity d^(-alpha), alpha = n / (n + 1),
 // where f(x) vanishes (first contact, separation): dt/dd = K_d d^(-alpha) (E / d)^(-alpha) / w,
 // w = 1 + b v (rate distance) or b (log-rate distance), K_d = m / (c^(1/(n+1)) ((n+1) m)^alpha).
@@ -458,8 +447,11 @@ ImpactState HuntCrossleyImpact::phase_state(ImpactPhase phase, double time,
 // bounded and positive on [0, 1], a power series in sigma^(n+1) near sigma = 0. Each phase's
 // time is accumulated piece by piece from its singular end (PhaseTimeMap: a polynomial in
 // sigma^(n+1) on the first piece, Chebyshev panels beyond), the density evaluated a fixed
-// number of times whatever the number of points; each point is located on those series
-// and evaluated by the closed forms (one power for x).
+// number of times whatever the number of points. The state is interpolated on the same
+// pieces as functions of sigma^(n+1) (the map's companions): v, x / sigma =
+// ((n+1) m D e / c)^(1/(n+1)) and f (1 + b v) / sigma^n, with e = E / d; the approach
+// x / sigma needs e^(1/(n+1)) = e e^(-alpha), the density's own power. A point then costs
+// its location on the series and a few short series (one power in the first piece).
 std::vector<ImpactState> HuntCrossleyImpact::power_law_history(std::size_t points) const {
   const double exponent = power_law_->exponent();
   const double alpha = exponent / (exponent + 1);
@@ -471,11 +463,23 @@ std::vector<ImpactState> HuntCrossleyImpact::power_law_history(std::size_t point
   auto make_map = [&](ImpactPhase phase) {
     const double extent = phase_extent(phase);
     const double factor = power * std::pow(extent, 1.0 - alpha) * time_scale;
-    const auto density = [&](double sigma) {
-      const double distance = extent * std::pow(sigma, power);
-      const double weight =
-          restitution_in_log_rate_ ? 1.0 : 1.0 / phase_force_factor(phase, distance);
-      return factor * std::pow(phase_energy_ratio(phase, distance), -alpha) * weight;
+    // x / sigma = approach_scale e^(1/(n+1)); f / sigma^n = (n + 1) m D e / (x / sigma).
+    const double approach_scale =
+        std::pow(power * mass_ * extent / power_law_->stiffness(), 1.0 / power);
+    const double energy_scale = power * mass_ * extent;
+    const auto density = [&, extent, factor, approach_scale, energy_scale](double sigma,
+                                                                          double* state) {
+      const double depth = std::pow(sigma, power);
+      const double distance = extent * depth;
+      const double ratio = phase_energy_ratio(phase, distance);
+      const double root = std::pow(ratio, -alpha); // e^(-alpha)
+      const double force_factor = phase_force_factor(phase, distance);
+      const double approach_per_sigma = approach_scale * ratio * root;
+      state[0] = phase_rate(phase, distance);
+      state[1] = approach_per_sigma;
+      state[2] = energy_scale * ratio / approach_per_sigma * force_factor;
+      const double weight = restitution_in_log_rate_ ? 1.0 : 1.0 / force_factor;
+      return factor * root * weight;
     };
     return detail::PhaseTimeMap(density, power, tolerance);
   };
@@ -485,6 +489,11 @@ std::vector<ImpactState> HuntCrossleyImpact::power_law_history(std::size_t point
   const double total = compression + restitution_map.duration();
   const auto time_at = [&](std::size_t i) {
     return total * static_cast<double>(i) / static_cast<double>(points - 1);
+  };
+  const auto state = [](double time, const detail::PhaseSample& sample) {
+    const double sigma = sample.sigma;
+    return ImpactState{time, sigma * sample.companions[1], sample.companions[0],
+                       sample.sigma_power / sigma * sample.companions[2]};
   };
 
   std::vector<ImpactState> states(points);
@@ -499,17 +508,13 @@ std::vector<ImpactState> HuntCrossleyImpact::power_law_history(std::size_t point
     last_compression = i;
   }
   for (std::size_t i = points - 2; i > last_compression; --i) remaining.push_back(total - time_at(i));
-  const double compression_extent = phase_extent(ImpactPhase::compression);
-  const auto compression_points = compression_map.locate(elapsed);
+  const auto compression_samples = compression_map.locate(elapsed);
   for (std::size_t j = 0; j < elapsed.size(); ++j)
-    states[j + 1] = phase_state(ImpactPhase::compression, elapsed[j],
-                                compression_extent * compression_points[j]);
-  const double restitution_extent = phase_extent(ImpactPhase::restitution);
-  const auto restitution_points = restitution_map.locate(remaining);
+    states[j + 1] = state(elapsed[j], compression_samples[j]);
+  const auto restitution_samples = restitution_map.locate(remaining);
   for (std::size_t j = 0; j < remaining.size(); ++j) {
     const std::size_t i = points - 2 - j;
-    states[i] = phase_state(ImpactPhase::restitution, time_at(i),
-                            restitution_extent * restitution_points[j]);
+    states[i] = state(time_at(i), restitution_samples[j]);
   }
   return states;
 }

@@ -17,6 +17,15 @@
 //     halved.
 // Each piece's time is then a short series that is inverted by Newton's method without
 // further calls of the density.
+//
+// Beside the density the caller supplies `companions`: values that are analytic functions
+// of sigma^p (here the state of the impact: the approach rate, the approach / sigma and the
+// force / sigma^n), computed with the density at the same nodes. sigma^p itself is
+// interpolated on the panels and exact on the first piece (to full relative accuracy near
+// sigma = 0, where the force is sigma^p / sigma times a companion).
+// They are interpolated on the same pieces (a piece is accepted only when their trailing
+// coefficients are small too), so that locating a time also gives them by a few short
+// series: no power, logarithm or root per located time.
 
 #include <cstddef>
 #include <functional>
@@ -24,24 +33,41 @@
 
 namespace impact::reduced::detail {
 
+/// The number of companion values interpolated with the density.
+inline constexpr int phase_companions = 3;
+
+/// A located time: sigma in [0, 1] and the companions there.
+struct PhaseSample {
+  double sigma;
+  double sigma_power; ///< sigma^p
+  double companions[phase_companions];
+};
+
 class PhaseTimeMap {
 public:
+  /// density(sigma, companions) returns dt/dsigma and writes the companions at sigma.
+  using Density = std::function<double(double sigma, double* companions)>;
+
   /// Builds the map of t(sigma) = integral_0^sigma density over [0, 1]; `power` is p > 0.
-  /// `tolerance` bounds the trailing Chebyshev coefficients of the density on each piece
-  /// relative to the density at sigma = 1/2: the time then carries a relative error of
-  /// about `tolerance`. Throws std::runtime_error if the density is not finite and positive.
-  PhaseTimeMap(const std::function<double(double)>& density, double power, double tolerance);
+  /// `tolerance` bounds the trailing Chebyshev coefficients of the density (and of each
+  /// companion) on each piece relative to its value at sigma = 1/2 (a companion's scale is
+  /// at least its largest value there and at the nodes of the first piece): the time and the
+  /// companions then carry a relative error of about `tolerance`. Throws std::runtime_error
+  /// if the density is not finite and positive.
+  PhaseTimeMap(const Density& density, double power, double tolerance);
 
   /// t(1) [units of the density times sigma].
   double duration() const { return duration_; }
   /// Density evaluations made to build the map.
   std::size_t evaluations() const { return evaluations_; }
 
-  /// sigma^p at the sigma in [0, 1] with t(sigma) = time, for ascending times in
-  /// [0, duration]: one pass over the pieces, Newton's method on each piece's series
-  /// (safeguarded by bisection) from a quadratic extrapolation of the previous points, or,
-  /// on a panel holding more than 2 `nodes` points, the Chebyshev series of the inverse.
-  std::vector<double> locate(const std::vector<double>& ascending_times) const;
+  /// The sigma in (0, 1] with t(sigma) = time, sigma^p and the companions there, for
+  /// ascending times in (0, duration]: one pass over the pieces, Newton's method on each
+  /// piece's series (safeguarded by bisection) from a quadratic extrapolation of the
+  /// previous points, or, on a piece holding more than `nodes` points, the Chebyshev series
+  /// in time of sigma and the companions (built from Newton's solutions at their nodes; not
+  /// used where they do not converge).
+  std::vector<PhaseSample> locate(const std::vector<double>& ascending_times) const;
 
   /// Chebyshev points per panel, and interpolation points of the first piece.
   static constexpr int nodes = 16;
@@ -54,22 +80,63 @@ private:
     double start_time; // t(lower)
     double density[nodes];  // Chebyshev coefficients of dt/dsigma on the panel (x in [-1, 1])
     double time[nodes + 1]; // Chebyshev coefficients of t - start_time on the panel
+    double companions[phase_companions][nodes]; // Chebyshev coefficients of each companion
+    double sigma_power[nodes];                  // Chebyshev coefficients of sigma^p
   };
-  bool build_first_piece(const std::function<double(double)>& density, double upper,
-                         double tolerance);
-  bool build_panel(const std::function<double(double)>& density, double lower, double upper,
-                   double tolerance, Panel& panel);
+  // Whether the trailing coefficients of the density and of every companion are within
+  // their tolerances. Where the density converges and a companion does not, the companion's
+  // own values are the limit (the state near separation at large beta is computed from
+  // distances of ~1e3 with rounding errors of ~1e-13): the piece is then still halved, but
+  // not below 1/64 of the phase for the first piece and `companion_depth` halvings of a
+  // panel (1/2^12 of the phase), where the companion's series stands at the noise of its
+  // values.
+  struct Convergence {
+    bool density = false;
+    bool companions = true;
+  };
+  static constexpr int companion_depth = 9;
+  Convergence build_first_piece(const Density& density, double upper);
+  Convergence build_panel(const Density& density, double lower, double upper, Panel& panel);
+  PhaseSample panel_sample(const Panel& panel, double x) const;
+  PhaseSample first_piece_sample(double s, double tau) const;
+  // Five Chebyshev series in one variable y in [-1, 1], stored coefficient by coefficient
+  // (the five recurrences of Clenshaw's rule then run side by side), each cut after the last
+  // coefficient that matters: those left out sum to at most the series' tolerance.
+  static constexpr int series_count = phase_companions + 2;
+  struct SampleSeries {
+    double coefficients[nodes][series_count + 1]; // the last column is padding
+    int length = 0;
+  };
+  // From the values at the Chebyshev points of y; false if a series does not decay to its
+  // tolerance.
+  static bool fit_series(const double (&values)[series_count][nodes],
+                         const double (&tolerances)[series_count], SampleSeries& series);
+  static void evaluate_series(const SampleSeries& series, double y,
+                              double (&values)[series_count]);
+  // The first piece's inverse: with u = t / t(first end) and w = u^p, t = s Q(s^p) gives
+  // s = u R(w) and s^p = w R(w)^p, R analytic in w (Q(0) > 0): R and the companions as
+  // Chebyshev series in w in [0, 1], so that a located time costs one power and five
+  // series instead of Newton's method. False if they do not converge (then not used).
+  bool build_first_inverse(double first_end, SampleSeries& inverse) const;
+  PhaseSample first_inverse_sample(const SampleSeries& inverse, double u) const;
+  // A panel's sigma and companions as Chebyshev series in its time range (they are analytic
+  // in t there): a located time costs five series.
+  bool build_inverse(const Panel& panel, double end_time, SampleSeries& inverse) const;
   double solve_in_panel(const Panel& panel, double time, double guess) const;
   double panel_end_time(long panel) const;
-  bool build_inverse(const Panel& panel, double end_time, double* inverse) const;
   double solve_in_first_piece(double time, double guess, double& tau) const;
 
   double power_;
   // The first piece [0, first_upper_]: density = sum first_density_[k] tau^k,
   // t = sigma sum first_time_[k] tau^k, tau = (sigma / first_upper_)^p.
   double first_upper_ = 0;
+  double first_upper_power_ = 0; // first_upper_^p
   double first_density_[first_nodes] = {};
   double first_time_[first_nodes] = {};
+  double first_companions_[phase_companions][first_nodes] = {};
+  // Absolute tolerances of the density and of each companion.
+  double density_tolerance_ = 0;
+  double companion_tolerance_[phase_companions] = {};
   std::vector<Panel> panels_;
   double duration_ = 0;
   std::size_t evaluations_ = 0;

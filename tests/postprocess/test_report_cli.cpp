@@ -2,7 +2,9 @@
 // made by the reduced library with a damping that grows with V so that the calibrated
 // Hunt–Crossley model holds only in part of the range) is calibrated by impact-calibrate and
 // reported: the HTML and Markdown exist, every figure is a valid PNG, the tables hold the
-// calibration JSON's numbers, and the page renders in headless Chromium (not blank). Each
+// calibration JSON's numbers, and the page renders in headless Chromium (not blank; at
+// 1280 px nothing scrolls sideways and the first figure and the recommended model are on
+// the first screen). Each
 // bad input gives its exit code, a message, and a report that says what is missing.
 
 #include "report_cli_testing.hpp"
@@ -378,6 +380,71 @@ void check_PageRendersInHeadlessChromium() {
   EXPECT_GT(ink, 0.02) << "the screenshot looks blank";
 }
 
+// The first screen at 1280 x 900: the page measured by Chromium itself (a copy of the page
+// with a script that writes the measurements into it, read back with --dump-dom): the page is
+// no wider than the window, no table, code block or figure is wider than its box (with every
+// section opened), and the first figure and the recommended model's parameters end above the
+// window's lower edge with every section folded. A screenshot of that screen is kept beside
+// the report (IMPACT_REPORT_TEST_KEEP) to look at.
+void check_FirstScreenAt1280Pixels() {
+  const fs::path page = ReportOfCampaign::output() / "report.html";
+  const fs::path probe = ReportOfCampaign::output() / "report_measured.html";
+  const std::string script =
+      "<script>(function () {\n"
+      "  function bottom(e) { return e ? e.getBoundingClientRect().bottom + window.scrollY : -1; }\n"
+      "  var m = {figure: bottom(document.querySelector('img')),\n"
+      "           parameters: bottom(document.querySelector('pre')),\n"
+      "           folded: document.querySelectorAll('details:not([open])').length,\n"
+      "           height: window.innerHeight, viewport: document.documentElement.clientWidth};\n"
+      "  document.querySelectorAll('details').forEach(function (d) { d.open = true; });\n"
+      "  m.width = document.documentElement.scrollWidth;\n"
+      "  m.boxes = 0; m.sideways = 0;\n"
+      "  document.querySelectorAll('table, pre, img').forEach(function (e) {\n"
+      "    m.boxes++;\n"
+      "    if (e.scrollWidth > e.clientWidth + 1 ||\n"
+      "        e.getBoundingClientRect().right > m.viewport) m.sideways++;\n"
+      "  });\n"
+      "  var out = document.createElement('div'); out.id = 'measured';\n"
+      // The markers split, so that the script's own text does not hold them.
+      "  out.textContent = 'MEAS' + 'URED' + JSON.stringify(m) + 'E' + 'ND';\n"
+      "  document.body.appendChild(out);\n"
+      "})();</script>\n";
+  std::string html = read_text(page);
+  const std::size_t end = html.rfind("</body>");
+  ASSERT_NE(end, std::string::npos);
+  html.insert(end, script);
+  std::ofstream(probe) << html;
+  const fs::path profile = ReportOfCampaign::output() / "chromium-profile";
+  fs::create_directories(profile);
+  const std::string chromium =
+      "timeout 120 chromium --headless --no-sandbox --disable-gpu --disable-quic --no-first-run "
+      "--disable-background-networking --disable-component-update --disable-sync "
+      "--user-data-dir=" + quote(profile.string()) + " --window-size=1280,900 ";
+  const CliRun dump = run_command(chromium + "--dump-dom " + quote("file://" + probe.string()),
+                                  *ReportOfCampaign::directory);
+  const std::size_t from = dump.out.find("MEASURED"), to = dump.out.find("END", from);
+  ASSERT_TRUE(from != std::string::npos && to != std::string::npos)
+      << "no measurements (exit " << dump.exit_code << "): " << dump.err;
+  const json m = json::parse(dump.out.substr(from + 8, to - from - 8));
+  SCOPED_TRACE(m.dump());
+  EXPECT_GT(m["folded"].get<int>(), 10) << "the sections are not folded";
+  EXPECT_LE(m["width"].get<double>(), m["viewport"].get<double>()) << "the page scrolls sideways";
+  EXPECT_GT(m["boxes"].get<int>(), 20);
+  EXPECT_EQ(m["sideways"].get<int>(), 0) << "a table, code block or figure is wider than the page";
+  EXPECT_GT(m["figure"].get<double>(), 0);
+  EXPECT_LE(m["figure"].get<double>(), m["height"].get<double>())
+      << "the first figure is not on the first screen";
+  EXPECT_GT(m["parameters"].get<double>(), m["figure"].get<double>());
+  EXPECT_LE(m["parameters"].get<double>(), m["height"].get<double>())
+      << "the recommended model is not on the first screen";
+  const fs::path screenshot = ReportOfCampaign::output() / "first_screen.png";
+  run_command(chromium + "--screenshot=" + quote(screenshot.string()) + " " +
+                  quote("file://" + page.string()),
+              *ReportOfCampaign::directory);
+  const PngSize size = png_size(read_text(screenshot));
+  EXPECT_TRUE(size.valid && size.width == 1280u && size.height == 900u);
+}
+
 TEST(ReportOfCampaign, IsCompleteHoldsTheCalibrationAndRenders) {
   ReportOfCampaign::make();
   ASSERT_EQ(ReportOfCampaign::calibrate->exit_code, 0) << ReportOfCampaign::calibrate->err;
@@ -405,6 +472,10 @@ TEST(ReportOfCampaign, IsCompleteHoldsTheCalibrationAndRenders) {
   {
     SCOPED_TRACE("the page renders in headless Chromium");
     check_PageRendersInHeadlessChromium();
+  }
+  {
+    SCOPED_TRACE("the first screen at 1280 px");
+    check_FirstScreenAt1280Pixels();
   }
   ReportOfCampaign::remove();
 }

@@ -3,7 +3,10 @@
 // signature for each figure. Checks: a campaign calibrated here gives a complete report
 // (exit code 0), calibration.json written beside it, every declared figure handed to the
 // drawer and shown on the page; a figure the drawer does not write is a figures problem
-// (exit code 4, report incomplete); no usable run writes nothing (exit code 2).
+// (exit code 4, report incomplete); no usable run writes nothing (exit code 2); the page
+// opens with the verdict in three lines, the errors figure and the recommended model's
+// parameters (those of the calibration's first-ranked model), and every section after that
+// first screen can be folded.
 
 #include "impact_postprocess/report/pipeline.hpp"
 #include "impact_postprocess/run/fem_run.hpp"
@@ -13,8 +16,10 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <regex>
 #include <set>
 
 namespace {
@@ -79,6 +84,69 @@ TEST_F(ReportPipeline, CalibratesDrawsAndWritesTheCompletePage) {
   ASSERT_FALSE(drawer.asked.empty());
   for (const auto& file : drawer.asked)
     EXPECT_TRUE(contains(markdown, "figures/" + file)) << file << " is not on the page";
+}
+
+TEST_F(ReportPipeline, OpensWithTheVerdictTheErrorsFigureAndTheRecommendedModel) {
+  const ReportOutcome outcome = write_report(request);
+  ASSERT_EQ(outcome.exit_code, 0);
+  const Report& report = outcome.report;
+  ASSERT_TRUE(report.calibration && !report.calibration->campaign.ranking.empty());
+  const std::string markdown = read_text(outcome.markdown);
+  // The first screen, before the first section: three lines, the figure, the parameters.
+  const std::size_t first_section = markdown.find("\n## ");
+  ASSERT_NE(first_section, std::string::npos);
+  const std::string glance = markdown.substr(0, first_section);
+  const std::size_t lines = glance.find("\n- Use ");
+  const std::size_t figure = glance.find("](figures/errors.png)");
+  const std::size_t recommended = glance.find("```\nRecommended: ");
+  ASSERT_NE(lines, std::string::npos) << glance;
+  ASSERT_NE(figure, std::string::npos) << glance;
+  ASSERT_NE(recommended, std::string::npos) << glance;
+  EXPECT_LT(lines, figure);
+  EXPECT_LT(figure, recommended);
+  std::size_t items = 0;
+  for (std::size_t at = glance.find("\n- "); at < figure; at = glance.find("\n- ", at + 1)) ++items;
+  EXPECT_EQ(items, 3u) << glance;
+  // The parameters shown are those of the model ranked first, to six digits.
+  const RankedModel& best = report.calibration->campaign.ranking.front();
+  EXPECT_TRUE(contains(glance, "Use ")) << glance;
+  EXPECT_TRUE(contains(glance.substr(lines, figure - lines), "(" + best.key + ")")) << glance;
+  std::vector<std::string> names;
+  std::vector<double> values;
+  if (const CampaignModelFit* fit = report.calibration->campaign.find(best.key)) {
+    names = fit->fit.parameter_names();
+    values = fit->fit.parameter_values();
+  } else {
+    for (const auto& reference : report.calibration->campaign.reference_models)
+      if (reference.key == best.key) {
+        names = {"c", "n", reference.parameter_name};
+        values = {reference.stiffness, reference.exponent, reference.dissipation.at(0)};
+      }
+  }
+  ASSERT_FALSE(names.empty()) << best.key;
+  const std::string block = glance.substr(recommended);
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    std::smatch match;
+    ASSERT_TRUE(std::regex_search(block, match,
+                                  std::regex("\n  " + names[i] + " *= ([-+0-9.e]+)")))
+        << names[i] << " not in " << block;
+    EXPECT_NEAR(std::stod(match[1]), values[i], 1e-5 * std::abs(values[i])) << names[i];
+  }
+  // The HTML: the figure and the parameters before the first folded section, and every
+  // section heading after them in one.
+  const std::string html = read_text(outcome.html);
+  const std::size_t folded = html.find("<details>");
+  ASSERT_NE(folded, std::string::npos);
+  EXPECT_LT(html.find("<img "), folded);
+  EXPECT_LT(html.find("<pre>Recommended: "), folded);
+  std::size_t headings = 0, sections = 0;
+  for (std::size_t at = html.find("<h2>"); at != std::string::npos; at = html.find("<h2>", at + 1))
+    ++headings;
+  for (std::size_t at = html.find("<details><summary><h2>"); at != std::string::npos;
+       at = html.find("<details><summary><h2>", at + 1))
+    ++sections;
+  EXPECT_GT(sections, 10u);
+  EXPECT_EQ(sections, headings);
 }
 
 TEST_F(ReportPipeline, AFigureNotDrawnIsAFiguresProblem) {

@@ -135,13 +135,12 @@ void quantities_section(Document& doc, const Report& report,
   }
 }
 
-void errors_section(Document& doc, const Report& report,
-                    const std::function<void(FigureId)>& figure) {
+void errors_section(Document& doc, const Report& report) {
   doc.heading("Errors of the reduced models against the FEM");
   doc.paragraph("Relative error (model - FEM) / |FEM| of each quantity at each velocity: out of "
                 "sample, with the in-sample error in brackets, for the fitted models; once for "
-                "the models that fit nothing.");
-  figure(FigureId::errors);
+                "the models that fit nothing. The figure at the top of the page shows the "
+                "errors the verdict judges.");
   Table table{{"model", "quantity"}, {}};
   for (const auto& run : report.runs)
     table.header.push_back(velocity_label(run.velocity) + (run.yields ? " (yields)" : ""));

@@ -39,12 +39,10 @@ std::string not_converged(const ReportModel& model) {
 Document build_document(const Report& report, const fs::path& figures_directory) {
   Document doc;
   doc.heading("Impact model-validity report", 1);
-  doc.paragraph("Campaign: " + report.campaign_source + ". Calibration: " +
-                (report.calibration_source.empty() ? std::string("none")
-                                                   : report.calibration_source) +
-                ". Every number below is computed by impact-report (C++, impact::reduced and "
-                "the calibration JSON); the figures are drawn from them by report_figures.py.");
-  status_section(doc, report);
+  // A report with problems says so before anything else; a complete one in a folded section.
+  bool incomplete = false;
+  for (const auto& problem : report.problems) incomplete = incomplete || !is_warning(problem.kind);
+  if (incomplete || report.runs.empty()) status_section(doc, report);
   if (report.runs.empty()) {
     doc.paragraph("No FEM run could be read: there is nothing to compare. Fix the problems "
                   "above and run impact-report again.");
@@ -60,6 +58,14 @@ Document build_document(const Report& report, const fs::path& figures_directory)
       }
   };
   const auto figure = [&](FigureId id) { place(id, ""); };
+  glance_section(doc, report, place);
+  doc.paragraph("Campaign: " + report.campaign_source + ". Calibration: " +
+                (report.calibration_source.empty() ? std::string("none")
+                                                   : report.calibration_source) +
+                ". Every number below is computed by impact-report (C++, impact::reduced and "
+                "the calibration JSON); the figures are drawn from them by report_figures.py.");
+  doc.fold_from_here();
+  if (!incomplete) status_section(doc, report);
   map_section(doc, report, place);
   verdict_section(doc, report);
   ranking_section(doc, report);
@@ -89,7 +95,7 @@ Document build_document(const Report& report, const fs::path& figures_directory)
                  "b with V says that the dissipation of the FEM does not have Hunt–Crossley's "
                  "velocity dependence.",
                  FigureId::damping);
-  errors_section(doc, report, figure);
+  errors_section(doc, report);
   energy_section(doc, report);
   // Every declared figure is on the page: one declared and shown nowhere is a defect here.
   for (std::size_t k = 0; k < figures.size(); ++k)

@@ -313,11 +313,17 @@ json damping_figure(const Report& report) {
           {"panels", json::array({damping})}};
 }
 
+// The page's first figure: every model's judged error (out of sample where it is) in the
+// verdict's quantities against V, one panel per quantity in one row, with the tolerance bands,
+// the FEM's uncertainty (bars at 0) and the velocities where the FEM yields. Errors beyond
+// twice the widest band are drawn on a symmetric log scale (linear within it), so that the
+// bands stay readable beside a model that is off by 100 %.
 json errors_figure(const Report& report) {
   json panels = json::array();
   std::vector<double> velocities;
   for (const auto& run : report.runs) velocities.push_back(run.velocity);
-  const auto models = featured(report);
+  const double widest = report.tolerances.empty() ? 0.05 : report.tolerances.back();
+  const double linear_limit = 2 * widest * 100; // [%]
   for (Quantity quantity : verdict_quantities) {
     json bands = json::array();
     const std::array<const char*, 3> colors = {"tab:green", "tab:orange", "tab:red"};
@@ -325,8 +331,7 @@ json errors_figure(const Report& report) {
       bands.push_back({{"y0", -report.tolerances[k] * 100}, {"y1", report.tolerances[k] * 100},
                        {"color", colors[std::min<std::size_t>(k, 2)]}, {"alpha", 0.12 + 0.06 * double(k == 0)},
                        {"label", "±" + detail::short_number(report.tolerances[k] * 100) + " %"}});
-    json panel = {{"title", std::string("error of the ") + quantity_words(quantity) + " " +
-                                quantity_symbol(quantity)},
+    json panel = {{"title", std::string(quantity_words(quantity)) + " " + quantity_symbol(quantity)},
                   {"xlabel", "impact velocity V [m/s]"}, {"ylabel", "(model - FEM) / FEM [%]"},
                   {"series", json::array()}, {"bands", bands}};
     std::vector<double> zero(velocities.size(), 0.0), uncertainty;
@@ -338,30 +343,40 @@ json errors_figure(const Report& report) {
                       "none", "_");
     fem["yerr"] = {scaled(uncertainty, 100), scaled(uncertainty, 100)};
     panel["series"].push_back(fem);
-    for (const ReportModel* model : models) {
-      std::vector<double> outside, inside;
+    double largest = 0; // [%]
+    for (const ReportModel& model : report.models) {
+      std::vector<double> errors;
       for (std::size_t i = 0; i < report.runs.size(); ++i) {
-        const ModelAtRun& at = model->runs[i];
-        outside.push_back(at.judged() ? relative_error(*at.judged(), report.runs[i].fem, quantity)
-                                      : nan);
-        inside.push_back(at.in_sample ? relative_error(*at.in_sample, report.runs[i].fem, quantity)
-                                      : nan);
+        const auto& judged = model.runs[i].judged();
+        errors.push_back(judged ? relative_error(*judged, report.runs[i].fem, quantity) : nan);
+        if (std::isfinite(errors.back())) largest = std::max(largest, std::abs(errors.back()) * 100);
       }
-      panel["series"].push_back(series(model->label + (model->out_of_sample ? " out of sample" : ""),
-                                       scaled(velocities, 1), scaled(outside, 100),
-                                       color_of(*model), "-", "o"));
-      if (model->out_of_sample) {
-        json in = series(model->label + " in sample", scaled(velocities, 1), scaled(inside, 100),
-                         color_of(*model), ":", "s");
-        in["markerfacecolor"] = "none";
-        panel["series"].push_back(in);
+      const std::string style =
+          model.key == model_keys::calibrated ? "-" : (model.free_parameters == 0 ? ":" : "--");
+      panel["series"].push_back(series(model.label + detail::not_converged(model),
+                                       scaled(velocities, 1), scaled(errors, 100),
+                                       color_of(model), style, "o"));
+    }
+    if (largest > linear_limit) {
+      panel["yscale"] = "symlog";
+      panel["linthresh"] = linear_limit;
+      // No tick at 0: on this scale it would crowd the tolerance ticks.
+      json ticks = json::array();
+      for (double tolerance : report.tolerances) {
+        ticks.push_back(tolerance * 100);
+        ticks.push_back(-tolerance * 100);
       }
+      for (double tick = linear_limit; tick <= largest; tick *= 10) {
+        ticks.push_back(tick);
+        ticks.push_back(-tick);
+      }
+      panel["yticks"] = ticks;
     }
     add_yield_band(panel, report);
     panels.push_back(panel);
   }
-  return {{"title", "Errors against the FEM"}, {"columns", 2},
-          {"shared_legend", true}, {"panels", panels}};
+  return {{"title", ""}, {"columns", panels.size()}, {"width", 13.0}, {"row_height", 3.2},
+          {"legend_columns", 4}, {"shared_legend", true}, {"panels", panels}};
 }
 
 // One validity map per model: a grid of cells (velocity on x, the other axis on y), coloured
@@ -464,10 +479,10 @@ std::vector<ReportFigure> report_figures(const Report& report) {
                        std::move(data)});
   }
   figures.push_back({FigureId::errors, "", "errors.png",
-                     "Relative errors of the energy loss, contact time, peak force and peak "
-                     "approach against V for the calibrated Hunt–Crossley model and the best "
-                     "comparison law (out of sample, solid; in sample, dotted), the tolerance "
-                     "bands and the FEM's uncertainty (bars at 0).",
+                     "Each model's error in the four quantities the verdict judges (out of sample "
+                     "where the model is fitted and there are three velocities or more), the "
+                     "tolerance bands and the FEM's uncertainty (bars at 0); logarithmic beyond "
+                     "twice the widest band.",
                      errors_figure(report)});
   return figures;
 }

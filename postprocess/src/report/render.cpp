@@ -135,25 +135,46 @@ void write_report_html(const Report& report, const fs::path& file,
                        const fs::path& figures_directory) {
   const Document doc = build_document(report, figures_directory);
   std::ostringstream out;
+  // Nothing may scroll sideways at 1280 px: the page is at most 1150 px wide, a table wraps
+  // its cells at spaces (the tables are made narrow enough for that: tests/postprocess
+  // measure it), a code block wraps its lines and a figure shrinks to the page. The first screen (before the first foldable section) is compact, so that the
+  // verdict, the first figure and the recommended model fit one screen.
   out << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
+         "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
          "<title>Impact model-validity report</title>\n<style>\n"
-         "body{font-family:'DejaVu Sans',Arial,sans-serif;margin:2em auto;max-width:1150px;"
-         "color:#222;line-height:1.45;padding:0 1em}\n"
-         "h1{border-bottom:3px solid #b22;padding-bottom:.2em}h2{border-bottom:1px solid #ccc;"
-         "margin-top:1.6em}\n"
-         "table{border-collapse:collapse;margin:.6em 0 1.2em;font-size:.85em}\n"
+         "body{font-family:'DejaVu Sans',Arial,sans-serif;margin:.6em auto;max-width:1150px;"
+         "color:#222;line-height:1.4;padding:0 1em}\n"
+         "h1{border-bottom:3px solid #b22;padding-bottom:.1em;margin:.2em 0 .3em;font-size:1.6em}\n"
+         "summary h2{margin:0;font-size:1.3em;display:inline}h3{margin-top:1.2em}\n"
+         "details{border-bottom:1px solid #ccc;padding:.45em 0}\n"
+         "summary{cursor:pointer}details[open]>summary{margin-bottom:.6em}\n"
+         "table{border-collapse:collapse;margin:.6em 0 1.2em;font-size:.85em;max-width:100%}\n"
          "th,td{border:1px solid #bbb;padding:.25em .5em;text-align:right}\n"
          "th{background:#eef2f7}td:first-child,th:first-child{text-align:left}\n"
          "tr:nth-child(even) td{background:#fafafa}\n"
-         "figure{margin:1em 0}figure img{max-width:100%;border:1px solid #ddd}\n"
-         "figcaption{font-style:italic;color:#555}\n"
-         "pre{background:#f4f4f4;padding:.8em;border-left:4px solid #b22;white-space:pre-wrap}\n"
-         "table{display:block;max-width:100%;overflow-x:auto}\n"
+         "figure{margin:.4em 0}figure img{max-width:100%;height:auto;border:1px solid #ddd}\n"
+         "figcaption{font-style:italic;color:#555;font-size:.85em}\n"
+         "pre{background:#f4f4f4;padding:.5em .8em;border-left:4px solid #b22;white-space:pre-wrap;"
+         "overflow-wrap:anywhere;margin:.4em 0}\n"
+         ".glance ul{margin:.2em 0;padding-left:1.3em}.glance li{margin:.15em 0}\n"
+         ".glance p{margin:.3em 0}\n"
          ".missing{color:#b22;font-weight:bold}\n"
-         "</style>\n</head>\n<body>\n";
+         "</style>\n</head>\n<body>\n<div class=\"glance\">\n";
+  bool glance = true, section_open = false;
+  const auto close_section = [&] {
+    if (glance) out << "</div>\n";
+    if (section_open) out << "</details>\n";
+    glance = section_open = false;
+  };
   for (const auto& block : doc.blocks) {
     switch (block.kind) {
     case Block::Kind::heading:
+      if (block.foldable) {
+        close_section();
+        out << "<details><summary><h2>" << escape_html(block.text) << "</h2></summary>\n";
+        section_open = true;
+        break;
+      }
       out << "<h" << block.level << '>' << escape_html(block.text) << "</h" << block.level << ">\n";
       break;
     case Block::Kind::paragraph: out << "<p>" << escape_html(block.text) << "</p>\n"; break;
@@ -190,6 +211,7 @@ void write_report_html(const Report& report, const fs::path& file,
     }
     }
   }
+  close_section();
   out << "</body>\n</html>\n";
   write_atomically(file, out.str());
 }

@@ -128,13 +128,21 @@ struct Block {
   std::vector<std::string> items;
   Table table;
   PageFigure figure;
+  /// A section heading (level 2) that opens a section the reader can fold (HTML <details>,
+  /// closed until opened); the section ends at the next level-2 heading.
+  bool foldable = false;
 };
 
+/// The page as a list of blocks. The first screen (the title, the verdict in three lines,
+/// the first figure, the recommended model) comes first; after fold_from_here() every
+/// section (level-2 heading) can be folded.
 class Document {
 public:
   void heading(const std::string& text, int level = 2) {
-    blocks.push_back({Block::Kind::heading, level, text, {}, {}, {}});
+    blocks.push_back({Block::Kind::heading, level, text, {}, {}, {}, folding && level == 2});
   }
+  /// Every section from here on can be folded.
+  void fold_from_here() { folding = true; }
   void paragraph(const std::string& text) {
     blocks.push_back({Block::Kind::paragraph, 0, text, {}, {}, {}});
   }
@@ -151,6 +159,9 @@ public:
   }
   void code(const std::string& text) { blocks.push_back({Block::Kind::code, 0, text, {}, {}, {}}); }
   std::vector<Block> blocks;
+
+private:
+  bool folding = false;
 };
 
 Document build_document(const Report& report, const std::filesystem::path& figures_directory);
@@ -170,8 +181,7 @@ void runs_section(Document& doc, const Report& report);
 void models_section(Document& doc, const Report& report);
 void quantities_section(Document& doc, const Report& report,
                         const std::function<void(FigureId)>& figure);
-void errors_section(Document& doc, const Report& report,
-                    const std::function<void(FigureId)>& figure);
+void errors_section(Document& doc, const Report& report);
 void energy_section(Document& doc, const Report& report);
 
 // Shared by the sections (document.cpp): each quantity's display scale and name (order of
@@ -187,6 +197,10 @@ std::string not_converged(const ReportModel& model);
 /// Places a declared figure on the page (nothing when it is not declared); the key names
 /// the map model of a validity map.
 using FigurePlacer = std::function<void(FigureId, const std::string& model_key)>;
+
+/// The first screen (glance_section.cpp): the verdict in three lines, the figure of every
+/// model's errors against V, the recommended model's parameters in a form to copy.
+void glance_section(Document& doc, const Report& report, const FigurePlacer& figure);
 
 /// The section "Validity map" (validity_map.cpp).
 void map_section(Document& doc, const Report& report, const FigurePlacer& figure);

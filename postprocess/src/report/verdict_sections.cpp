@@ -71,32 +71,37 @@ void verdict_section(Document& doc, const Report& report) {
   doc.paragraph(report.uncertainty_text);
   if (!report.verdict_available || !verdict) return;
 
+  // Two tables rather than one of 15 columns: the errors with the decisions, then the FEM's
+  // uncertainty of each quantity.
   Table table{{"V [m/s]"}, {}};
   for (Quantity quantity : verdict_quantities)
     table.header.push_back(std::string("error ") + quantity_symbol(quantity) +
-                           (calibrated.out_of_sample ? " out of sample" : ""));
-  if (calibrated.out_of_sample)
-    for (Quantity quantity : verdict_quantities)
-      table.header.push_back(std::string("error ") + quantity_symbol(quantity) + " in sample");
-  for (Quantity quantity : verdict_quantities)
-    table.header.push_back(std::string("FEM uncertainty ") + quantity_symbol(quantity));
+                           (calibrated.out_of_sample ? " out of sample (in sample)" : ""));
   for (double tolerance : report.tolerances)
     table.header.push_back("within " + short_number(tolerance * 100) + " %");
+  Table uncertainty{{"V [m/s]"}, {}};
+  for (Quantity quantity : verdict_quantities)
+    uncertainty.header.push_back(std::string("FEM uncertainty ") + quantity_symbol(quantity));
   for (std::size_t i = 0; i < count; ++i) {
     const ReportRun& run = report.runs[i];
     const ModelAtRun& at = calibrated.runs[i];
     std::vector<std::string> row{velocity_cell(run)};
-    for (Quantity quantity : verdict_quantities) row.push_back(error_cell(at.judged(), run.fem, quantity));
-    if (calibrated.out_of_sample)
-      for (Quantity quantity : verdict_quantities)
-        row.push_back(error_cell(at.in_sample, run.fem, quantity));
     for (Quantity quantity : verdict_quantities)
-      row.push_back(unsigned_percent(run.uncertainty[std::size_t(quantity)].relative));
+      row.push_back(error_cell(at.judged(), run.fem, quantity) +
+                    (calibrated.out_of_sample
+                         ? " (" + error_cell(at.in_sample, run.fem, quantity) + ")"
+                         : std::string()));
     for (const auto& tolerance : verdict->tolerances)
       row.push_back(decision_word(tolerance.decisions[i]));
     table.rows.push_back(row);
+    std::vector<std::string> fem{velocity_cell(run)};
+    for (Quantity quantity : verdict_quantities)
+      fem.push_back(unsigned_percent(run.uncertainty[std::size_t(quantity)].relative));
+    uncertainty.rows.push_back(fem);
   }
   doc.table(table);
+  doc.paragraph("The FEM's numerical uncertainty of each judged quantity (relative):");
+  doc.table(uncertainty);
 
   doc.paragraph("Every model compared, by the same rule (" +
                 std::string("velocity ranges within each band; out of sample for the fitted "

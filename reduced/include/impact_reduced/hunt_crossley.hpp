@@ -163,7 +163,6 @@ private:
   double phase_energy_ratio(ImpactPhase phase, double distance) const;
   double phase_rate(ImpactPhase phase, double distance) const;
   double phase_force_factor(ImpactPhase phase, double distance) const;
-  ImpactState phase_state(ImpactPhase phase, double time, double distance) const;
   std::vector<ImpactState> power_law_history(std::size_t points) const;
   std::vector<ImpactState> quadrature_history(std::size_t points) const;
 
