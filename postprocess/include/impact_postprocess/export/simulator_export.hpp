@@ -1,10 +1,12 @@
 #pragma once
 /// @file
-/// The calibrated contact in the terms of three simulators (impact-export): Simbody's
-/// HuntCrossleyForce, MuJoCo's soft contact (solref/solimp) and LAMMPS's granular wall. Each
-/// mapping is a pure function of the calibrated parameters, documented with the tool's own
-/// force law (postprocess/README.md, "Exports"), and checked by running the tool
-/// (tests/consumers). The JSON of impact-calibrate is the source of every number.
+/// The calibrated contact in the terms of four simulators (impact-export): Simbody's
+/// HuntCrossleyForce, MuJoCo's soft contact (solref/solimp), LAMMPS's granular wall and
+/// LIGGGHTS' elastic-plastic thornton_ning wall (liggghts.hpp). Each mapping is a pure
+/// function of the calibrated parameters, documented with the tool's own force law
+/// (postprocess/README.md, "Exports"), and checked by running the tool (tests/consumers). The
+/// JSON of impact-calibrate is the source of every number; the LIGGGHTS export also takes the
+/// scenario's materials from the runs.
 
 #include <nlohmann/json.hpp>
 
@@ -46,6 +48,18 @@ struct HertzLawFit {
   double rms_residual;      ///< of the campaign force-history fit, fraction of the peak force
 };
 
+/// The elastic-plastic contact of the scenario for Thornton's law (the LIGGGHTS export,
+/// liggghts.hpp): the elastic constants of the two bodies and the limiting contact pressure.
+struct PlasticContact {
+  double sphere_youngs_modulus;               ///< Pa
+  double sphere_poisson_ratio;                ///< -
+  std::optional<double> plate_youngs_modulus; ///< Pa; none: a rigid plate
+  std::optional<double> plate_poisson_ratio;  ///< -; none: a rigid plate
+  double contact_modulus;                     ///< E* [Pa] of the two bodies
+  double yield_pressure;                      ///< p_y [Pa]
+  std::string yield_basis;                    ///< where p_y comes from, in words
+};
+
 /// What impact-export needs from a calibration and its runs.
 struct ExportCampaign {
   std::string calibration_file;
@@ -57,6 +71,9 @@ struct ExportCampaign {
   HertzLawFit hunt_crossley;          ///< campaign.hunt_crossley_hertz_exponent
   std::optional<HertzLawFit> kuwabara_kono;
   std::optional<HertzLawFit> tsuji;
+  /// The plastic contact (none: the runs record no yield strength; nothing is exported to
+  /// LIGGGHTS).
+  std::optional<PlasticContact> plastic;
 };
 
 /// Reads the calibration JSON of impact-calibrate (through calibration_from_json) for the export. The
@@ -133,7 +150,8 @@ ImpactFigures hertz_law_impact(const HertzLawFit& law, double mass, double veloc
 /// Writes the exports into `directory` (replaced as a whole, written atomically):
 /// export.json (the manifest, format in postprocess/README.md), simbody/impact_contact.hpp,
 /// mujoco/impact_contact.xml, lammps/kuwabara_kono.in and lammps/tsuji.in (those the
-/// calibration has). `reference_velocity` (one of the campaign's, m/s) is MuJoCo's; none
+/// calibration has), liggghts/thornton_ning.in (when the campaign has a plastic contact).
+/// `reference_velocity` (one of the campaign's, m/s) is MuJoCo's; none
 /// means the median run (the lower of the two middle ones for an even count). Returns the
 /// manifest. Throws ExportInputError for a reference velocity that is not a campaign
 /// velocity or a restitution MuJoCo's contact cannot produce.
