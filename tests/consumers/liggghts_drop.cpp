@@ -3,9 +3,9 @@
 // -var out FILE) at each campaign velocity, measures restitution, contact time and peak force
 // from the sphere's approach, vz and fz that the deck prints at every step, and writes
 // OUTPUT_DIR/liggghts-thornton.json (format "impact-simulator-run") for the deck's time step
-// (N = 2000 steps per Hertz contact time). LIGGGHTS integrates the contact force in explicit
+// (N = 5000 steps per Hertz contact time). LIGGGHTS integrates the contact force in explicit
 // increments of the overlap, first order in the step, so the file also holds the same drops
-// at half the step ("refined": N = 4000), from which the test checks the convergence.
+// at half the step ("refined": N = 10000), from which the test checks the convergence.
 // The LIGGGHTS executable is IMPACT_LIGGGHTS (environment), else the one found at configure
 // time.
 
@@ -30,7 +30,7 @@ using impact::consumers::DropFigures;
 using impact::consumers::DropSample;
 using json = nlohmann::json;
 
-constexpr int deck_steps = 2000, refined_steps = 4000;
+constexpr int deck_steps = 5000, refined_steps = 10000;
 
 std::string liggghts_executable() {
   const char* chosen = std::getenv("IMPACT_LIGGGHTS");

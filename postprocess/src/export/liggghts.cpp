@@ -175,7 +175,7 @@ std::string liggghts_file(const ExportCampaign& campaign, const PlasticContact& 
       << "communicate     single vel yes\n"
       << "variable        V index " << exact(campaign.runs.front().velocity) << "     # impact velocity [m/s]\n"
       << "variable        out index liggghts_drop.txt\n"
-      << "variable        N index 2000     # time steps per Hertz contact time\n"
+      << "variable        N index 5000     # time steps per Hertz contact time (error in e about 1.2 / N)\n"
       << "variable        mass equal " << exact(campaign.mass) << "     # kg\n"
       << "variable        radius equal " << exact(campaign.radius) << "   # m\n"
       << "variable        density equal " << exact(contact.density) << "   # kg/m^3, m / (4/3 pi R^3)\n"
