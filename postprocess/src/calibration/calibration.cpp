@@ -220,6 +220,13 @@ struct HistoryEvaluator {
     } catch (const std::exception&) {
       return false;
     }
+    if (model->plastic_contact) try {
+        return detail::simulate_plastic_force(*model->plastic_contact(damping, setup),
+                                              run->run->mass, run->run->impact_velocity,
+                                              run->times, run->points, tolerance, force);
+      } catch (const std::exception&) {
+        return false;
+      }
     if (model->hunt_crossley_force())
       return detail::simulate_hunt_crossley_force(model->force_law(damping, setup), setup, damping,
                                                   run->run->impact_velocity, run->times,
