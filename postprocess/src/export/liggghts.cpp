@@ -157,9 +157,10 @@ std::string liggghts_file(const ExportCampaign& campaign, const PlasticContact& 
       << "# radius R_p: its restitution is lower than the paper's. Its force is integrated by\n"
       << "# explicit increments of the overlap (first order in the time step) and has no damping.\n"
       << (plastic.plate_youngs_modulus ? ""
-                                       : "# The plate is rigid: both atom types carry the one "
-                                         "fictitious material E = 2 E* (1 - nu^2), nu\n"
-                                         "# of the sphere, which gives LIGGGHTS the same E*.\n")
+                                       : "# E* is not split into two bodies (a rigid plate, or E* "
+                                         "fitted): both atom types carry the one\n# fictitious "
+                                         "material E = 2 E* (1 - nu^2), nu of the sphere, which "
+                                         "gives LIGGGHTS the same E*.\n")
       << "# The law (as LIGGGHTS integrates it) and Thornton's paper against the FEM:\n"
       << export_text::error_table("#", campaign, model) << "#   V [m/s]  e (LIGGGHTS' law)  e (Thornton, R_p)\n";
   for (std::size_t i = 0; i < campaign.runs.size(); ++i)

@@ -71,8 +71,9 @@ struct ExportCampaign {
   HertzLawFit hunt_crossley;          ///< campaign.hunt_crossley_hertz_exponent
   std::optional<HertzLawFit> kuwabara_kono;
   std::optional<HertzLawFit> tsuji;
-  /// The plastic contact (none: the runs record no yield strength; nothing is exported to
-  /// LIGGGHTS).
+  /// The plastic contact: the calibration's converged Thornton fit if there is one
+  /// (read_export_campaign), else the scenario's material (scenario_plastic_contact,
+  /// liggghts.hpp); none: nothing is exported to LIGGGHTS.
   std::optional<PlasticContact> plastic;
 };
 
