@@ -7,6 +7,7 @@
 #include "impact_postprocess/export/liggghts.hpp"
 #include "impact_postprocess/export/simulator_export.hpp"
 #include "impact_postprocess/run/fem_run.hpp"
+#include "impact_postprocess/run/scenario_plastic_contact.hpp"
 
 #include <gtest/gtest.h>
 
@@ -98,7 +99,7 @@ TEST(LiggghtsExport, MissingElasticConstantsAreNamed) {
   try {
     scenario_plastic_contact({run});
     FAIL() << "no error";
-  } catch (const ExportInputError& error) {
+  } catch (const PlasticContactError& error) {
     EXPECT_NE(std::string(error.what()).find("Plate"), std::string::npos) << error.what();
     EXPECT_NE(std::string(error.what()).find("run.h5"), std::string::npos) << error.what();
   }

@@ -698,6 +698,12 @@ void add_reference_models(CampaignCalibration& campaign, const std::vector<FemRu
             materials.dissipative_basis,
         c, hertz_exponent, {*materials.dissipative_constant}, runs, options));
 
+  if (const auto thornton = material_thornton(fem_runs))
+    campaign.reference_models.push_back(reference_model(
+        std::string(model_keys::thornton_material), "Thornton, p_y = 1.6 Y from the material (no fit)",
+        contact_model("thornton"), thornton->basis, thornton->stiffness, hertz_exponent,
+        {thornton->yield_approach}, runs, options));
+
   // The restitution maps as users apply them: the FEM's e at each run, c from Hertz.
   for (const auto& name : restitution_parametrised_laws()) {
     const ContactModel law = comparison_model(name);

@@ -67,7 +67,11 @@ ExportOutcome export_run_set(const ExportRequest& request) {
     const nlohmann::json calibration = read_calibration_file(request.calibration);
     ExportCampaign campaign =
         read_export_campaign(calibration, request.calibration.string(), sphere_radius(input));
-    if (!campaign.plastic) campaign.plastic = scenario_plastic_contact(input.runs);
+    if (!campaign.plastic) try {
+        campaign.plastic = scenario_plastic_contact(input.runs);
+      } catch (const PlasticContactError& error) {
+        throw ExportInputError(error.what());
+      }
     if (campaign.runs.size() != input.runs.size())
       throw ExportInputError(request.calibration.string() + ": the calibration has " +
                              std::to_string(campaign.runs.size()) + " runs, the input " +

@@ -1,6 +1,8 @@
 // The elastic-plastic comparison models (plastic_models.hpp).
 
 #include "impact_postprocess/models/plastic_models.hpp"
+#include "impact_postprocess/run/scenario_materials.hpp"
+#include "impact_postprocess/run/scenario_plastic_contact.hpp"
 
 #include <impact_reduced/comparison_laws.hpp>
 #include <impact_reduced/invalid_input.hpp>
@@ -9,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <sstream>
 
 namespace impact::postprocess {
 
@@ -105,6 +108,27 @@ double thornton_yield_velocity(double yield_approach, double mass, double stiffn
   reduced::require_positive("mass", mass);
   reduced::require_positive("stiffness", stiffness);
   return std::sqrt(0.8 * stiffness * std::pow(yield_approach, 2.5) / mass);
+}
+
+std::optional<MaterialThornton> material_thornton(const std::vector<FemRun>& runs) {
+  if (runs.empty()) return std::nullopt;
+  std::optional<PlasticContact> contact;
+  try {
+    contact = scenario_plastic_contact(runs);
+  } catch (const PlasticContactError&) {
+    return std::nullopt;
+  }
+  const auto radius = text_number(runs.front(), "Scenario/Sphere radius");
+  if (!contact || !radius || !(*radius > 0)) return std::nullopt;
+  const double e_star = contact->contact_modulus;
+  const double ratio = pi * contact->yield_pressure / (2 * e_star);
+  std::ostringstream basis;
+  basis.precision(6);
+  basis << "no fit: E* = " << e_star << " Pa, R = " << *radius << " m, p_y = "
+        << contact->yield_pressure << " Pa from " << contact->yield_basis
+        << "; c = (4/3) E* sqrt(R), x_y = R (pi p_y / (2 E*))^2; no hardening";
+  return MaterialThornton{4.0 / 3.0 * e_star * std::sqrt(*radius), *radius * ratio * ratio,
+                          basis.str()};
 }
 
 } // namespace impact::postprocess

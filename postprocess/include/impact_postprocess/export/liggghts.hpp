@@ -8,6 +8,7 @@
 
 #include "impact_postprocess/export/simulator_export.hpp"
 #include "impact_postprocess/run/fem_run.hpp"
+#include "impact_postprocess/run/scenario_plastic_contact.hpp"
 
 #include <optional>
 #include <vector>
@@ -36,17 +37,7 @@ struct LiggghtsContact {
 };
 LiggghtsContact liggghts_contact(const PlasticContact& contact, double mass, double radius);
 
-/// The plastic contact of the runs' scenario, or none when no body records a yield strength.
-/// Read from the first run's parameters (impact-fem's text attributes): a body's yield
-/// strength Y is "<Body>/Elastic-plastic/Yield strength" when its "Material model" is
-/// elastic-plastic, else "<Body>/Yield strength" when > 0 (the strength impact-fem checks the
-/// stresses against); its elastic constants "<Body>/<Model>/Young's modulus" and "Poisson's
-/// ratio"; "Plate/Material model = rigid" is a rigid plate. The limiting pressure is
-/// Johnson's p_y = 1.6 Y (Contact Mechanics, 1985, sec. 4.2; the p_y of Thornton 1997) of the
-/// body that yields first, the lower Y. Hardening does not enter Thornton's law. Throws
-/// ExportInputError naming the run and the parameter when a body with a yield strength lacks
-/// its elastic constants.
-std::optional<PlasticContact> scenario_plastic_contact(const std::vector<FemRun>& runs);
+/// (scenario_plastic_contact, the plastic contact of the runs: run/scenario_plastic_contact.hpp.)
 
 /// The impact of Thornton's law as LIGGGHTS integrates it (reduced::LiggghtsThorntonImpact) and
 /// as Thornton's paper states it (reduced::ThorntonImpact, unloading on R_p), at velocity V.

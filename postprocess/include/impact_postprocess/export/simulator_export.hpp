@@ -8,6 +8,8 @@
 /// JSON of impact-calibrate is the source of every number; the LIGGGHTS export also takes the
 /// scenario's materials from the runs.
 
+#include "impact_postprocess/run/scenario_plastic_contact.hpp"
+
 #include <nlohmann/json.hpp>
 
 #include <filesystem>
@@ -46,18 +48,6 @@ struct HertzLawFit {
   double stiffness;         ///< c [N/m^1.5]
   double damping;           ///< b [s/m], A [s] or eta [N s/m^(5/4)]
   double rms_residual;      ///< of the campaign force-history fit, fraction of the peak force
-};
-
-/// The elastic-plastic contact of the scenario for Thornton's law (the LIGGGHTS export,
-/// liggghts.hpp): the elastic constants of the two bodies and the limiting contact pressure.
-struct PlasticContact {
-  double sphere_youngs_modulus;               ///< Pa
-  double sphere_poisson_ratio;                ///< -
-  std::optional<double> plate_youngs_modulus; ///< Pa; none: a rigid plate
-  std::optional<double> plate_poisson_ratio;  ///< -; none: a rigid plate
-  double contact_modulus;                     ///< E* [Pa] of the two bodies
-  double yield_pressure;                      ///< p_y [Pa]
-  std::string yield_basis;                    ///< where p_y comes from, in words
 };
 
 /// What impact-export needs from a calibration and its runs.

@@ -17,6 +17,9 @@
 /// Hertz energy at x_y: V_y = sqrt(4 c x_y^(5/2) / (5 m)). Hardening does not enter the law.
 
 #include "impact_postprocess/models/contact_models.hpp"
+#include "impact_postprocess/run/fem_run.hpp"
+
+#include <optional>
 
 #include <string>
 #include <vector>
@@ -44,5 +47,17 @@ double thornton_yield_pressure(double stiffness, double yield_approach, double r
 /// and its inverse V_y = sqrt(4 c x_y^(5/2) / (5 m)): the Hertz impact that just reaches x_y.
 double thornton_yield_approach(double yield_velocity, double mass, double stiffness);
 double thornton_yield_velocity(double yield_approach, double mass, double stiffness);
+
+/// Thornton's law from the scenario's material, nothing fitted (the calibration's reference
+/// model "thornton-material"): E* and p_y of scenario_plastic_contact (run/, Johnson's
+/// p_y = 1.6 Y of the body that yields first) and the sphere radius R ("Scenario/Sphere
+/// radius"), c = (4/3) E* sqrt(R), x_y = R (pi p_y / (2 E*))^2. None when the runs record no
+/// yield strength, no radius, or a body with a strength but without elastic constants.
+struct MaterialThornton {
+  double stiffness;       ///< c [N/m^1.5]
+  double yield_approach;  ///< x_y [m]
+  std::string basis;      ///< where the numbers come from, in words
+};
+std::optional<MaterialThornton> material_thornton(const std::vector<FemRun>& runs);
 
 } // namespace impact::postprocess
