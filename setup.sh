@@ -16,6 +16,7 @@ packages=(
   python3 python3-matplotlib python3-h5py   # figures of the report, HDF5 checks in fem tests
   chromium fonts-dejavu-core                # the report's rendering test (headless screenshot)
   libsimbody-dev libmujoco-dev lammps       # the exports run in Simbody, MuJoCo, LAMMPS (tests/consumers)
+  liggghts                                  # ... and in LIGGGHTS 3.8 (thornton_ning, tests/consumers)
 )
 
 missing=()

@@ -52,7 +52,7 @@ in the JSON), 1 internal error.
 
 // The comparison laws of --laws: 'all', 'none' or comma-separated names of the library's.
 std::vector<std::string> laws(tool::CommandLine& line) {
-  const auto known = impact::reduced::comparison_law_names();
+  const auto known = impact::postprocess::comparison_model_names();
   const std::string list = line.text("laws").value_or("all");
   if (list == "all") return known;
   if (list == "none") return {};

@@ -2,13 +2,18 @@
 // so that the consumer tests calibrate and export without running the FEM. The sphere is a
 // viscoelastic (Kuwabara–Kono) steel ball like the default study's: m = 0.1 kg,
 // R = 14.52 mm, c = 1.76e10 N/m^1.5, A = 1.17 us; V = 0.5, 1, 2, 5 m/s, 300 samples per
-// contact time and free flight after separation.
+// contact time and free flight after separation. The runs also record an elastic-plastic
+// material for both bodies (the DEM export reads it; the histories stay viscoelastic): the
+// Young's modulus that gives the same Hertz c, E = 2 (1 - nu^2) (3 c / (4 sqrt(R))) with
+// nu = 0.3, and Y = 1.39 GPa, a test value chosen so that Thornton's yield velocity
+// (p_y = 1.6 Y) is 0.343 m/s and the campaign spans V/V_y = 1.5 to 15.
 
 #include "impact_postprocess/run/fem_run.hpp"
 
 #include <impact_reduced/comparison_laws.hpp>
 #include <impact_reduced/impact_ode.hpp>
 
+#include <cmath>
 #include <cstdio>
 #include <exception>
 #include <filesystem>
@@ -52,6 +57,16 @@ int main(int argc, char** argv) {
         run.sphere_velocity.push_back(result.rebound_velocity);
       }
       run.text_attributes["Scenario/Sphere radius"] = "0.01452";
+      const double youngs_modulus = 2 * (1 - 0.3 * 0.3) * 3 * stiffness / (4 * std::sqrt(0.01452));
+      char young[32];
+      std::snprintf(young, sizeof young, "%.17g", youngs_modulus);
+      for (const char* body : {"Sphere", "Plate"}) {
+        const std::string name = body;
+        run.text_attributes[name + "/Material model"] = "elastic-plastic";
+        run.text_attributes[name + "/Elastic-plastic/Young's modulus"] = young;
+        run.text_attributes[name + "/Elastic-plastic/Poisson's ratio"] = "0.3";
+        run.text_attributes[name + "/Elastic-plastic/Yield strength"] = "1.39e9";
+      }
       impact::postprocess::write_fem_run(run, std::filesystem::path(argv[1]) /
                                                   ("v" + std::to_string(velocity)));
     }

@@ -1,11 +1,12 @@
 #!/usr/bin/env bash
 # Runs the exports of impact-export in the simulators themselves: drops the campaign's sphere
-# at each campaign velocity in Simbody, MuJoCo and LAMMPS and writes one result file per export
-# (format "impact-simulator-run", postprocess/README.md) into OUTPUT_DIR:
-# simbody.json, mujoco.json, lammps-kuwabara-kono.json, lammps-tsuji.json.
+# at each campaign velocity in Simbody, MuJoCo, LAMMPS and LIGGGHTS and writes one result file
+# per export (format "impact-simulator-run", postprocess/README.md) into OUTPUT_DIR:
+# simbody.json, mujoco.json, lammps-kuwabara-kono.json, lammps-tsuji.json,
+# liggghts-thornton.json (when the export has a LIGGGHTS deck: the runs record a yield strength).
 #
-# Usage: tests/consumers/run_in_simulators.sh EXPORT_DIR OUTPUT_DIR [simbody] [mujoco] [lammps]
-#        (all three by default; needs a build in build/, or IMPACT_BUILD_DIR=...)
+# Usage: tests/consumers/run_in_simulators.sh EXPORT_DIR OUTPUT_DIR [simbody] [mujoco] [lammps] [liggghts]
+#        (all four by default; needs a build in build/, or IMPACT_BUILD_DIR=...)
 # The Simbody drop is compiled here against EXPORT_DIR/simbody/impact_contact.hpp, so that the
 # exported header is what runs.
 set -euo pipefail
@@ -15,7 +16,7 @@ export_dir="$(realpath "$1")"
 output="$2"
 shift 2
 tools=("$@")
-[ ${#tools[@]} -gt 0 ] || tools=(simbody mujoco lammps)
+[ ${#tools[@]} -gt 0 ] || tools=(simbody mujoco lammps liggghts)
 bin="$(realpath "${IMPACT_BUILD_DIR:-build}")/bin"
 [ -f "$export_dir/export.json" ] || { echo "run_in_simulators: $export_dir/export.json is missing (run impact-export)" >&2; exit 2; }
 mkdir -p "$output"
@@ -39,6 +40,9 @@ for tool in "${tools[@]}"; do
     lammps)
       [ -x "$bin/impact-drop-lammps" ] || { echo "run_in_simulators: $bin/impact-drop-lammps is missing (build first)" >&2; exit 1; }
       "$bin/impact-drop-lammps" "$export_dir" "$output" ;;
-    *) echo "run_in_simulators: unknown tool '$tool' (simbody, mujoco, lammps)" >&2; exit 2 ;;
+    liggghts)
+      [ -x "$bin/impact-drop-liggghts" ] || { echo "run_in_simulators: $bin/impact-drop-liggghts is missing (build first)" >&2; exit 1; }
+      "$bin/impact-drop-liggghts" "$export_dir" "$output" ;;
+    *) echo "run_in_simulators: unknown tool '$tool' (simbody, mujoco, lammps, liggghts)" >&2; exit 2 ;;
   esac
 done

@@ -135,9 +135,9 @@ std::string other_campaign(const Report& report, const SimulatorResult& result) 
   return "";
 }
 
-// Simbody, MuJoCo, LAMMPS, then any other tool; by file within a tool.
+// Simbody, MuJoCo, LAMMPS, LIGGGHTS, then any other tool; by file within a tool.
 int tool_rank(const std::string& tool) {
-  const std::vector<std::string> order = {"simbody", "mujoco", "lammps"};
+  const std::vector<std::string> order = {"simbody", "mujoco", "lammps", "liggghts"};
   const auto found = std::find(order.begin(), order.end(), tool);
   return int(found - order.begin());
 }
@@ -154,6 +154,7 @@ std::string simulator_tool_name(const std::string& tool) {
   if (tool == "simbody") return "Simbody";
   if (tool == "mujoco") return "MuJoCo";
   if (tool == "lammps") return "LAMMPS";
+  if (tool == "liggghts") return "LIGGGHTS";
   return tool;
 }
 

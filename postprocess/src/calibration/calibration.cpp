@@ -220,6 +220,13 @@ struct HistoryEvaluator {
     } catch (const std::exception&) {
       return false;
     }
+    if (model->plastic_contact) try {
+        return detail::simulate_plastic_force(*model->plastic_contact(damping, setup),
+                                              run->run->mass, run->run->impact_velocity,
+                                              run->times, run->points, tolerance, force);
+      } catch (const std::exception&) {
+        return false;
+      }
     if (model->hunt_crossley_force())
       return detail::simulate_hunt_crossley_force(model->force_law(damping, setup), setup, damping,
                                                   run->run->impact_velocity, run->times,
@@ -690,6 +697,12 @@ void add_reference_models(CampaignCalibration& campaign, const std::vector<FemRu
             format_number(*materials.dissipative_constant) + " s from " +
             materials.dissipative_basis,
         c, hertz_exponent, {*materials.dissipative_constant}, runs, options));
+
+  if (const auto thornton = material_thornton(fem_runs))
+    campaign.reference_models.push_back(reference_model(
+        std::string(model_keys::thornton_material), "Thornton, p_y = 1.6 Y from the material (no fit)",
+        contact_model("thornton"), thornton->basis, thornton->stiffness, hertz_exponent,
+        {thornton->yield_approach}, runs, options));
 
   // The restitution maps as users apply them: the FEM's e at each run, c from Hertz.
   for (const auto& name : restitution_parametrised_laws()) {

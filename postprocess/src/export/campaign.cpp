@@ -3,9 +3,12 @@
 
 #include "impact_postprocess/export/simulator_export.hpp"
 #include "impact_postprocess/models/model_keys.hpp"
+#include "impact_postprocess/models/plastic_models.hpp"
 #include "impact_postprocess/same_value.hpp"
 
 #include "impact_postprocess/calibration/calibration_json.hpp"
+
+#include "export/text.hpp"
 
 #include <impact_reduced/comparison_laws.hpp>
 #include <impact_reduced/hunt_crossley.hpp>
@@ -93,6 +96,24 @@ ExportCampaign read_export_campaign(const nlohmann::json& json, const std::strin
   campaign.kuwabara_kono = hertz_law(fits.find("kuwabara-kono"), "kuwabara-kono", file,
                                      "campaign.comparison_laws[kuwabara-kono]");
   campaign.tsuji = hertz_law(fits.find("tsuji"), "tsuji", file, "campaign.comparison_laws[tsuji]");
+  // Thornton's law fitted by the calibration (c, x_y): the LIGGGHTS export's plastic contact,
+  // E* = 3 c / (4 sqrt(R)), p_y = 3 c sqrt(x_y) / (2 pi R) (plastic_models.hpp). The fit does
+  // not split E* into the two bodies: the plate is given as rigid, the sphere E* with nu = 0
+  // (nu enters only LIGGGHTS' tangential stiffness, unused by a normal impact).
+  if (const CampaignModelFit* thornton = fits.find("thornton"); thornton && thornton->fit.converged) {
+    const double c = thornton->fit.stiffness.value, x_y = thornton->fit.parameter.value;
+    if (std::isfinite(c) && c > 0 && std::isfinite(x_y) && x_y > 0) {
+      PlasticContact plastic;
+      plastic.contact_modulus = 0.75 * c / std::sqrt(radius);
+      plastic.sphere_youngs_modulus = plastic.contact_modulus;
+      plastic.sphere_poisson_ratio = 0;
+      plastic.yield_pressure = thornton_yield_pressure(c, x_y, radius);
+      plastic.yield_basis = "the calibration's Thornton fit (campaign.comparison_laws[thornton]: "
+                            "c = " + export_text::rounded(c) + " N/m^1.5, x_y = " +
+                            export_text::rounded(x_y) + " m; p_y = 3 c sqrt(x_y) / (2 pi R))";
+      campaign.plastic = plastic;
+    }
+  }
   if (!campaign.kuwabara_kono && !campaign.tsuji)
     fail(file, "the calibration has no campaign fit of kuwabara-kono or tsuji, the laws that "
                "LAMMPS's granular damping can represent: calibrate with --laws all (or a list "

@@ -3,6 +3,7 @@
 #include "impact_postprocess/export/export_run_set.hpp"
 #include "impact_postprocess/same_value.hpp"
 
+#include "impact_postprocess/export/liggghts.hpp"
 #include "impact_postprocess/export/simulator_export.hpp"
 #include "impact_postprocess/run/run_set.hpp"
 
@@ -64,8 +65,13 @@ ExportOutcome export_run_set(const ExportRequest& request) {
   }
   try {
     const nlohmann::json calibration = read_calibration_file(request.calibration);
-    const ExportCampaign campaign =
+    ExportCampaign campaign =
         read_export_campaign(calibration, request.calibration.string(), sphere_radius(input));
+    if (!campaign.plastic) try {
+        campaign.plastic = scenario_plastic_contact(input.runs);
+      } catch (const PlasticContactError& error) {
+        throw ExportInputError(error.what());
+      }
     if (campaign.runs.size() != input.runs.size())
       throw ExportInputError(request.calibration.string() + ": the calibration has " +
                              std::to_string(campaign.runs.size()) + " runs, the input " +

@@ -28,6 +28,8 @@ using Exporter = std::vector<ExportedFile> (*)(const ExportCampaign& campaign,
 std::vector<ExportedFile> simbody(const ExportCampaign& campaign, const CampaignImpact& reference);
 std::vector<ExportedFile> mujoco(const ExportCampaign& campaign, const CampaignImpact& reference);
 std::vector<ExportedFile> lammps(const ExportCampaign& campaign, const CampaignImpact& reference);
+/// None when the campaign has no plastic contact.
+std::vector<ExportedFile> liggghts(const ExportCampaign& campaign, const CampaignImpact& reference);
 
 /// The files of one exporter and their manifest entries, collected in the order written.
 struct ExportList {

@@ -1,4 +1,4 @@
-// The export directory of impact-export: the files for Simbody, MuJoCo and LAMMPS and the
+// The export directory of impact-export: the files for Simbody, MuJoCo, LAMMPS and LIGGGHTS and the
 // manifest export.json that lists them with their parameters, the reduced model each one
 // carries and that model's impacts at the campaign's velocities (format in
 // postprocess/README.md).
@@ -70,7 +70,7 @@ json predictions_json(const ExportCampaign& campaign, const std::vector<ImpactFi
 
 const std::vector<std::pair<std::string, Exporter>>& registered_exporters() {
   static const std::vector<std::pair<std::string, Exporter>> exporters = {
-      {"simbody", simbody}, {"mujoco", mujoco}, {"lammps", lammps}};
+      {"simbody", simbody}, {"mujoco", mujoco}, {"lammps", lammps}, {"liggghts", liggghts}};
   return exporters;
 }
 

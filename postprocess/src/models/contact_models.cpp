@@ -1,5 +1,6 @@
 #include "impact_postprocess/models/contact_models.hpp"
 #include "impact_postprocess/models/model_keys.hpp"
+#include "impact_postprocess/models/plastic_models.hpp"
 
 #include <impact_reduced/hunt_crossley.hpp>
 #include <impact_reduced/invalid_input.hpp>
@@ -84,6 +85,7 @@ ContactModel velocity_damped_hunt_crossley_model() {
 }
 
 ContactModel comparison_model(const std::string& name) {
+  if (is_plastic_model(name)) return plastic_model(name);
   const reduced::ComparisonLaw& law = reduced::comparison_law(name);
   ContactModel model;
   model.name = law.name;
@@ -125,7 +127,15 @@ ImpactPrediction predict_impact(const ContactModel& model, double mass, double v
   ImpactPrediction prediction{nan, nan, nan, nan, nan, nan};
   try {
     prediction.damping = damping_at(model, mass, velocity, stiffness, exponent, dissipation);
-    if (model.hunt_crossley_force()) {
+    if (model.plastic_contact) {
+      const auto response = reduced::elastic_plastic_impact(
+          mass, velocity, *model.plastic_contact(prediction.damping, {mass, stiffness, exponent}));
+      prediction.restitution = response.restitution;
+      prediction.contact_time = response.contact_time;
+      prediction.force_max = response.force_max;
+      prediction.time_force_max = response.compression_time;
+      prediction.approach_max = response.approach_max;
+    } else if (model.hunt_crossley_force()) {
       const reduced::HuntCrossleyImpact impact(mass, stiffness, exponent, prediction.damping,
                                                velocity);
       const auto response = impact.response();
@@ -154,6 +164,10 @@ double predict_restitution(const ContactModel& model, double mass, double veloci
                            const std::vector<double>& dissipation, double tolerance) {
   try {
     const double damping = damping_at(model, mass, velocity, stiffness, exponent, dissipation);
+    if (model.plastic_contact)
+      return reduced::elastic_plastic_impact(
+                 mass, velocity, *model.plastic_contact(damping, {mass, stiffness, exponent}))
+          .restitution;
     if (model.hunt_crossley_force()) {
       if (!(damping >= 0 && std::isfinite(damping))) return nan;
       return reduced::restitution_from_impact_parameter(damping * velocity);
@@ -173,6 +187,10 @@ std::vector<reduced::ImpactSample> predict_history(const ContactModel& model, do
                                                    const std::vector<double>& dissipation,
                                                    std::size_t points) {
   const double damping = damping_at(model, mass, velocity, stiffness, exponent, dissipation);
+  if (model.plastic_contact)
+    return reduced::elastic_plastic_impact_loop(
+        mass, velocity, *model.plastic_contact(damping, {mass, stiffness, exponent}),
+        std::max<std::size_t>(2, (points + 1) / 2));
   if (model.hunt_crossley_force()) {
     std::vector<reduced::ImpactSample> samples;
     for (const auto& state :

@@ -71,4 +71,41 @@ bool simulate_hunt_crossley_force(const reduced::ContactForceLaw& law,
   return force_from_samples(samples, law, setup.mass, times, force);
 }
 
+bool simulate_plastic_force(const reduced::ElasticPlasticContact& contact, double mass,
+                            double velocity, const std::vector<double>& times, std::size_t points,
+                            double tolerance, double* force) {
+  std::vector<reduced::ImpactSample> samples;
+  reduced::HertzianUnloading unloading{};
+  try {
+    const auto response = reduced::elastic_plastic_impact(mass, velocity, contact);
+    unloading = contact.unloading(response.approach_max);
+    const reduced::ContactForceLaw loading = [&contact](double x, double) {
+      return contact.loading_force(std::max(x, 0.0));
+    };
+    for (const auto& sample : reduced::integrate_impact_history(mass, velocity, loading, points,
+                                                                tolerance))
+      if (sample.time < response.compression_time) samples.push_back(sample);
+    samples.push_back({response.compression_time, response.approach_max, 0.0, response.force_max});
+    const double stiffness = unloading.stiffness;
+    const reduced::ContactForceLaw hertz = [stiffness](double x, double) {
+      return stiffness * std::pow(std::max(x, 0.0), 1.5);
+    };
+    const auto rebound = reduced::integrate_impact_history(
+        mass, -response.rebound_velocity, hertz, points, tolerance);
+    const double peak = 0.5 * rebound.back().time;
+    for (const auto& sample : rebound)
+      if (sample.time > peak)
+        samples.push_back({response.compression_time + sample.time - peak,
+                           unloading.residual_approach + sample.approach, sample.approach_rate,
+                           sample.force});
+  } catch (const std::exception&) {
+    return false;
+  }
+  const reduced::ContactForceLaw law = [&contact, unloading](double x, double rate) {
+    if (rate > 0) return contact.loading_force(x);
+    return unloading.stiffness * std::pow(std::max(x - unloading.residual_approach, 0.0), 1.5);
+  };
+  return force_from_samples(samples, law, mass, times, force);
+}
+
 } // namespace impact::postprocess::detail

@@ -7,6 +7,7 @@
 // tolerance.
 
 #include <impact_reduced/comparison_laws.hpp>
+#include <impact_reduced/elastic_plastic_impact.hpp>
 #include <impact_reduced/impact_ode.hpp>
 
 #include <cstddef>
@@ -29,5 +30,13 @@ bool simulate_hunt_crossley_force(const reduced::ContactForceLaw& law,
                                   const reduced::ContactSetup& setup, double damping,
                                   double velocity, const std::vector<double>& times,
                                   std::size_t points, double* force);
+
+/// The same for a rate-independent elastic-plastic law: the compression integrated
+/// (integrate_impact_history at `tolerance`) under the loading curve up to the maximum approach
+/// of elastic_plastic_impact, the restitution as the second half of the Hertz impact of the
+/// unloading branch (stiffness k_u, shifted by the permanent approach) at the rebound speed.
+bool simulate_plastic_force(const reduced::ElasticPlasticContact& contact, double mass,
+                            double velocity, const std::vector<double>& times, std::size_t points,
+                            double tolerance, double* force);
 
 } // namespace impact::postprocess::detail

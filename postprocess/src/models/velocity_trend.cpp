@@ -15,16 +15,15 @@ std::string format(double value, const char* pattern = "%.3g") {
   return text;
 }
 
-} // namespace
-
-std::optional<PowerLawTrend> fit_restitution_trend(const std::vector<double>& velocity,
-                                                   const std::vector<double>& restitution,
-                                                   double level) {
+// Least squares of ln y on ln V over the runs with 0 < e < 1; y = 1 - e or e.
+std::optional<PowerLawTrend> log_log_fit(const std::vector<double>& velocity,
+                                         const std::vector<double>& restitution, double level,
+                                         bool of_loss) {
   std::vector<double> x, y;
   for (std::size_t i = 0; i < velocity.size() && i < restitution.size(); ++i)
     if (velocity[i] > 0 && restitution[i] > 0 && restitution[i] < 1) {
       x.push_back(std::log(velocity[i]));
-      y.push_back(std::log(1 - restitution[i]));
+      y.push_back(std::log(of_loss ? 1 - restitution[i] : restitution[i]));
     }
   const std::size_t n = x.size();
   if (n < 3) return std::nullopt;
@@ -51,6 +50,26 @@ std::optional<PowerLawTrend> fit_restitution_trend(const std::vector<double>& ve
   const double t = boost::math::quantile(distribution, 0.5 + level / 2);
   return PowerLawTrend{slope, error, slope - t * error, slope + t * error, std::exp(intercept), n,
                        level};
+}
+
+} // namespace
+
+std::optional<PowerLawTrend> fit_restitution_trend(const std::vector<double>& velocity,
+                                                   const std::vector<double>& restitution,
+                                                   double level) {
+  return log_log_fit(velocity, restitution, level, true);
+}
+
+std::optional<PowerLawTrend> fit_restitution_power_law(const std::vector<double>& velocity,
+                                                       const std::vector<double>& restitution,
+                                                       double level) {
+  return log_log_fit(velocity, restitution, level, false);
+}
+
+bool follows_plastic_family(const PowerLawTrend& restitution_trend) {
+  // The nearest reference, as for the loss trend: -1/4 against 0 (a constant restitution).
+  return std::abs(restitution_trend.exponent - plastic_restitution_slope) <
+         std::abs(restitution_trend.exponent);
 }
 
 const std::vector<ReferenceSlope>& reference_slopes() {

@@ -18,8 +18,8 @@
 ///     maximum, a_p^2 = (2 F* + F_y) / (2 pi p_y):
 ///       R_p = 4 E* a_p^3 / (3 F*),  F = (4/3) E* sqrt(R_p) (x - x_p)^(3/2),
 ///     with F* = F(x_max) and the permanent approach x_p = x_max - 3 F* / (4 E* a_p).
-///     (LIGGGHTS with zero surface energy unloads on the original radius R instead: it keeps
-///     R_p = R, which gives a smaller dent and a different restitution.)
+///     (LIGGGHTS with zero surface energy keeps the radius R and unloads along
+///     F* - (4/3) E* sqrt(R) (x_max^(3/2) - x^(3/2)) instead: liggghts_thornton.hpp.)
 ///
 /// Closed forms (derived from the above), with r = V_y / V < 1 and delta = (x_max - x_y)/x_y:
 ///   delta = 2 (1/r^2 - 1) / (5/2 + sqrt(15/(2 r^2) - 5/4)),

@@ -25,6 +25,7 @@
 #include "impact_postprocess/run/fem_run.hpp"
 #include "impact_postprocess/problem.hpp"
 #include "impact_postprocess/models/impact_quantities.hpp"
+#include "impact_postprocess/models/plastic_models.hpp"
 
 #include <impact_reduced/comparison_laws.hpp>
 
@@ -226,8 +227,9 @@ struct Calibration {
 };
 
 struct CalibrationOptions {
-  /// Comparison laws fitted over the campaign (names of reduced::comparison_law_names()).
-  std::vector<std::string> laws = reduced::comparison_law_names();
+  /// Comparison laws fitted over the campaign (names of comparison_model_names(): the
+  /// library's comparison laws and the plastic models).
+  std::vector<std::string> laws = comparison_model_names();
   int max_iterations = 100;          ///< per least-squares fit
   double confidence_level = 0.95;    ///< of the intervals, in (0, 1)
   double ode_tolerance = 1e-10;      ///< of the simulated impacts (integrate_impact_history)

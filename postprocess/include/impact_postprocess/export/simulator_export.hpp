@@ -1,10 +1,14 @@
 #pragma once
 /// @file
-/// The calibrated contact in the terms of three simulators (impact-export): Simbody's
-/// HuntCrossleyForce, MuJoCo's soft contact (solref/solimp) and LAMMPS's granular wall. Each
-/// mapping is a pure function of the calibrated parameters, documented with the tool's own
-/// force law (postprocess/README.md, "Exports"), and checked by running the tool
-/// (tests/consumers). The JSON of impact-calibrate is the source of every number.
+/// The calibrated contact in the terms of four simulators (impact-export): Simbody's
+/// HuntCrossleyForce, MuJoCo's soft contact (solref/solimp), LAMMPS's granular wall and
+/// LIGGGHTS' elastic-plastic thornton_ning wall (liggghts.hpp). Each mapping is a pure
+/// function of the calibrated parameters, documented with the tool's own force law
+/// (postprocess/README.md, "Exports"), and checked by running the tool (tests/consumers). The
+/// JSON of impact-calibrate is the source of every number; the LIGGGHTS export also takes the
+/// scenario's materials from the runs.
+
+#include "impact_postprocess/run/scenario_plastic_contact.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -57,6 +61,10 @@ struct ExportCampaign {
   HertzLawFit hunt_crossley;          ///< campaign.hunt_crossley_hertz_exponent
   std::optional<HertzLawFit> kuwabara_kono;
   std::optional<HertzLawFit> tsuji;
+  /// The plastic contact: the calibration's converged Thornton fit if there is one
+  /// (read_export_campaign), else the scenario's material (scenario_plastic_contact,
+  /// liggghts.hpp); none: nothing is exported to LIGGGHTS.
+  std::optional<PlasticContact> plastic;
 };
 
 /// Reads the calibration JSON of impact-calibrate (through calibration_from_json) for the export. The
@@ -133,7 +141,8 @@ ImpactFigures hertz_law_impact(const HertzLawFit& law, double mass, double veloc
 /// Writes the exports into `directory` (replaced as a whole, written atomically):
 /// export.json (the manifest, format in postprocess/README.md), simbody/impact_contact.hpp,
 /// mujoco/impact_contact.xml, lammps/kuwabara_kono.in and lammps/tsuji.in (those the
-/// calibration has). `reference_velocity` (one of the campaign's, m/s) is MuJoCo's; none
+/// calibration has), liggghts/thornton_ning.in (when the campaign has a plastic contact).
+/// `reference_velocity` (one of the campaign's, m/s) is MuJoCo's; none
 /// means the median run (the lower of the two middle ones for an even count). Returns the
 /// manifest. Throws ExportInputError for a reference velocity that is not a campaign
 /// velocity or a restitution MuJoCo's contact cannot produce.

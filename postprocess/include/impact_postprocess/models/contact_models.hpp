@@ -18,9 +18,11 @@
 #include "impact_postprocess/models/impact_quantities.hpp"
 
 #include <impact_reduced/comparison_laws.hpp>
+#include <impact_reduced/elastic_plastic_impact.hpp>
 #include <impact_reduced/impact_ode.hpp>
 
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -58,8 +60,13 @@ struct ContactModel {
   /// (used for starting values and scales).
   std::function<double(double restitution, double velocity, const reduced::ContactSetup&)>
       damping_for_restitution;
-  /// The contact force for a damping constant.
+  /// The contact force for a damping constant (none for a plastic model).
   std::function<reduced::ContactForceLaw(double damping, const reduced::ContactSetup&)> force_law;
+  /// A rate-independent elastic-plastic model's loading and unloading for the damping
+  /// constant (its yield approach) and c (plastic_models.hpp); none for the other models.
+  std::function<std::shared_ptr<const reduced::ElasticPlasticContact>(
+      double damping, const reduced::ContactSetup&)>
+      plastic_contact;
 
   std::string parameter_name() const;  ///< "e" or damping_name
   std::string parameter_unit() const;  ///< "1" or damping_unit
@@ -74,8 +81,9 @@ ContactModel hunt_crossley_model();
 /// (the damping evaluated with the impact's first-contact speed). p = b_1 [s/m], q [1].
 ContactModel velocity_damped_hunt_crossley_model();
 
-/// The model of comparison law `name` (a name of reduced::comparison_law_names()); throws
-/// reduced::InvalidInput for an unknown name.
+/// The model of comparison law `name` (a name of reduced::comparison_law_names(), or of
+/// plastic_model_names(), plastic_models.hpp); throws reduced::InvalidInput for an unknown
+/// name.
 ContactModel comparison_model(const std::string& name);
 
 /// Any of the above by name (hunt-crossley, hunt-crossley-velocity-damping, a law name).
@@ -86,8 +94,8 @@ const std::vector<std::string>& restitution_parametrised_laws();
 
 /// What `model` with stiffness c, exponent n and `dissipation` predicts for a body of `mass`
 /// [kg] at `velocity` [m/s]: closed form for Hunt–Crossley's force
-/// (HuntCrossleyImpact::response), integrate_impact (at `tolerance`, with the model's end
-/// of contact) otherwise. NaN where it cannot be evaluated (the law holds the body, invalid
+/// (HuntCrossleyImpact::response), elastic_plastic_impact for a plastic model,
+/// integrate_impact (at `tolerance`, with the model's end of contact) otherwise. NaN where it cannot be evaluated (the law holds the body, invalid
 /// parameters).
 ImpactPrediction predict_impact(const ContactModel& model, double mass, double velocity,
                                 double stiffness, double exponent,

@@ -28,6 +28,8 @@ inline constexpr std::string_view hertz = "hertz";
 inline constexpr std::string_view hunt_crossley_published = "hunt-crossley-published";
 /// Kuwabara–Kono without tension, A from the materials' retardation times.
 inline constexpr std::string_view kuwabara_kono_material = "kuwabara-kono-material";
+/// Thornton's elastic-plastic law with p_y = 1.6 Y from the material (plastic_models.hpp).
+inline constexpr std::string_view thornton_material = "thornton-material";
 
 // ---- Roles on the page ---------------------------------------------------------------------
 /// The calibrated Hunt–Crossley law: the campaign's hunt_crossley fit.

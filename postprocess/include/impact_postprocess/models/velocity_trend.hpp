@@ -37,6 +37,23 @@ const std::vector<ReferenceSlope>& reference_slopes();
 /// The reference slope nearest to the fitted exponent.
 const ReferenceSlope& nearest_reference(const PowerLawTrend& trend);
 
+/// The plastic family (Thornton 1997, reduced/thornton.hpp): far above the yield velocity the
+/// restitution itself falls as a power of V, e -> 1.185 (V/V_y)^(-1/4) (derived from Thornton's
+/// closed forms; the limit and the slope -1/4 are tested in the reduced library), so its
+/// reference is the slope of ln e against ln V, -1/4, not a slope of 1 - e. (Johnson's
+/// Contact Mechanics, 1985, was not read here.)
+inline constexpr double plastic_restitution_slope = -0.25;
+
+/// The power law e = a (V / 1 m/s)^s of the restitution itself, fitted like
+/// fit_restitution_trend on (ln V, ln e) (exponent = s), or none.
+std::optional<PowerLawTrend> fit_restitution_power_law(const std::vector<double>& velocity,
+                                                       const std::vector<double>& restitution,
+                                                       double level = 0.95);
+
+/// Whether the restitution's power law follows the plastic family: its exponent is nearer
+/// -1/4 than 0 (a constant restitution), the nearest-reference rule of the loss trend.
+bool follows_plastic_family(const PowerLawTrend& restitution_trend);
+
 /// Which family the fitted trend follows, in a sentence: the one with the nearest reference
 /// slope (with its distance when the interval excludes it), and the families the interval
 /// excludes.

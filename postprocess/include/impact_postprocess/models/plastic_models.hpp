@@ -1,0 +1,63 @@
+#pragma once
+/// @file
+/// The rate-independent elastic-plastic laws of the reduced library as comparison models of
+/// the calibration (contact_models.hpp): a loading curve while the approach grows and a
+/// Hertzian unloading branch from the maximum approach (reduced/elastic_plastic_impact.hpp).
+/// They have no force law F(x, x') (the unloading depends on the maximum approach), so a model
+/// carries its ElasticPlasticContact (ContactModel::plastic_contact) and its impacts come from
+/// reduced::elastic_plastic_impact.
+///
+/// "thornton": Thornton (J. Appl. Mech. 64:383, 1997; reduced/thornton.hpp), with n = 3/2 and
+/// two free parameters: c = (4/3) E* sqrt(R) [N/m^1.5] and the yield approach
+/// x_y = R (pi p_y / (2 E*))^2 [m] (the law's "damping constant"). The law depends on R only
+/// through c and x_y (F_y = c x_y^(3/2), plastic slope pi p_y R = (3/2) c sqrt(x_y), and the
+/// R_p unloading leaves x_max - x_p and F* unchanged when R varies at fixed c and x_y), so it
+/// is fitted without the radius; the limiting pressure follows with the sphere radius R:
+/// p_y = 3 c sqrt(x_y) / (2 pi R) (thornton_yield_pressure), and the yield velocity from the
+/// Hertz energy at x_y: V_y = sqrt(4 c x_y^(5/2) / (5 m)). Hardening does not enter the law.
+
+#include "impact_postprocess/models/contact_models.hpp"
+#include "impact_postprocess/run/fem_run.hpp"
+
+#include <optional>
+
+#include <string>
+#include <vector>
+
+namespace impact::postprocess {
+
+/// The plastic models' names ("thornton").
+const std::vector<std::string>& plastic_model_names();
+
+/// True for a name of plastic_model_names().
+bool is_plastic_model(const std::string& name);
+
+/// The plastic model `name`; throws reduced::InvalidInput("model") for another name.
+ContactModel plastic_model(const std::string& name);
+
+/// The comparison models impact-calibrate fits: the reduced library's comparison laws, then
+/// the plastic models.
+std::vector<std::string> comparison_model_names();
+
+/// Thornton's limiting contact pressure p_y = 3 c sqrt(x_y) / (2 pi R) [Pa] from c
+/// [N/m^1.5], the yield approach x_y [m] and the sphere radius R [m] (effective radius).
+double thornton_yield_pressure(double stiffness, double yield_approach, double radius);
+
+/// Thornton's yield approach x_y = (5 m V_y^2 / (4 c))^(2/5) [m] for the yield velocity V_y,
+/// and its inverse V_y = sqrt(4 c x_y^(5/2) / (5 m)): the Hertz impact that just reaches x_y.
+double thornton_yield_approach(double yield_velocity, double mass, double stiffness);
+double thornton_yield_velocity(double yield_approach, double mass, double stiffness);
+
+/// Thornton's law from the scenario's material, nothing fitted (the calibration's reference
+/// model "thornton-material"): E* and p_y of scenario_plastic_contact (run/, Johnson's
+/// p_y = 1.6 Y of the body that yields first) and the sphere radius R ("Scenario/Sphere
+/// radius"), c = (4/3) E* sqrt(R), x_y = R (pi p_y / (2 E*))^2. None when the runs record no
+/// yield strength, no radius, or a body with a strength but without elastic constants.
+struct MaterialThornton {
+  double stiffness;       ///< c [N/m^1.5]
+  double yield_approach;  ///< x_y [m]
+  std::string basis;      ///< where the numbers come from, in words
+};
+std::optional<MaterialThornton> material_thornton(const std::vector<FemRun>& runs);
+
+} // namespace impact::postprocess

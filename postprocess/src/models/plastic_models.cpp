@@ -1,0 +1,134 @@
+// The elastic-plastic comparison models (plastic_models.hpp).
+
+#include "impact_postprocess/models/plastic_models.hpp"
+#include "impact_postprocess/run/scenario_materials.hpp"
+#include "impact_postprocess/run/scenario_plastic_contact.hpp"
+
+#include <impact_reduced/comparison_laws.hpp>
+#include <impact_reduced/invalid_input.hpp>
+#include <impact_reduced/thornton.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <sstream>
+
+namespace impact::postprocess {
+
+namespace {
+
+constexpr double pi = 3.14159265358979323846;
+
+// Thornton's law for c and x_y: any radius gives the same law (plastic_models.hpp); R = 1 m,
+// E* = 3 c / 4, p_y = 3 c sqrt(x_y) / (2 pi).
+std::shared_ptr<const reduced::ElasticPlasticContact> thornton_contact(double yield_approach,
+                                                                       const reduced::ContactSetup& setup) {
+  const double c = setup.stiffness;
+  return std::make_shared<reduced::ThorntonContact>(
+      1.0, 0.75 * c, thornton_yield_pressure(c, yield_approach, 1.0));
+}
+
+// V_y / V that gives restitution e under Thornton's law (e rises from 0 to 1 with V_y / V).
+double thornton_velocity_ratio(double restitution) {
+  if (!(restitution > 0)) return 0;
+  if (restitution >= 1) return 1;
+  double lower = 0, upper = 1;
+  for (int i = 0; i < 200 && upper - lower > 1e-15; ++i) {
+    const double middle = 0.5 * (lower + upper);
+    (reduced::thornton_restitution_formula(middle) < restitution ? lower : upper) = middle;
+  }
+  return 0.5 * (lower + upper);
+}
+
+ContactModel thornton_model() {
+  ContactModel model;
+  model.name = "thornton";
+  model.formula = "F = c x^(3/2) to the yield approach x_y, then F = F_y + (3/2) c sqrt(x_y) "
+                  "(x - x_y) (pi p_y R); unloading Hertzian on the enlarged radius R_p about the "
+                  "permanent approach; p_y = 3 c sqrt(x_y) / (2 pi R); no rate dependence, "
+                  "no hardening";
+  model.reference = "Thornton, J. Appl. Mech. 64 (1997) 383-386 (elastic-perfectly-plastic "
+                    "spheres; limiting pressure p_y = 1.6 Y after Johnson, Contact Mechanics, 1985)";
+  model.damping_name = "x_y";
+  model.damping_unit = "m";
+  model.parameter = DissipationParameter::damping;
+  model.required_exponent = 1.5;
+  model.damping = [](const std::vector<double>& p, double, const reduced::ContactSetup&) {
+    return p.at(0);
+  };
+  model.damping_for_restitution = [](double e, double velocity,
+                                     const reduced::ContactSetup& setup) {
+    return thornton_yield_approach(thornton_velocity_ratio(e) * velocity, setup.mass,
+                                   setup.stiffness);
+  };
+  model.plastic_contact = thornton_contact;
+  return model;
+}
+
+} // namespace
+
+const std::vector<std::string>& plastic_model_names() {
+  static const std::vector<std::string> names = {"thornton"};
+  return names;
+}
+
+bool is_plastic_model(const std::string& name) {
+  const auto& names = plastic_model_names();
+  return std::find(names.begin(), names.end(), name) != names.end();
+}
+
+ContactModel plastic_model(const std::string& name) {
+  if (name == "thornton") return thornton_model();
+  throw reduced::InvalidInput("model", "model must be one of the plastic models (thornton), got '" +
+                                           name + "'");
+}
+
+std::vector<std::string> comparison_model_names() {
+  std::vector<std::string> names = reduced::comparison_law_names();
+  for (const auto& name : plastic_model_names()) names.push_back(name);
+  return names;
+}
+
+double thornton_yield_pressure(double stiffness, double yield_approach, double radius) {
+  reduced::require_positive("stiffness", stiffness);
+  reduced::require_positive("yield_approach", yield_approach);
+  reduced::require_positive("radius", radius);
+  return 3 * stiffness * std::sqrt(yield_approach) / (2 * pi * radius);
+}
+
+double thornton_yield_approach(double yield_velocity, double mass, double stiffness) {
+  reduced::require_non_negative("yield_velocity", yield_velocity);
+  reduced::require_positive("mass", mass);
+  reduced::require_positive("stiffness", stiffness);
+  return std::pow(1.25 * mass * yield_velocity * yield_velocity / stiffness, 0.4);
+}
+
+double thornton_yield_velocity(double yield_approach, double mass, double stiffness) {
+  reduced::require_non_negative("yield_approach", yield_approach);
+  reduced::require_positive("mass", mass);
+  reduced::require_positive("stiffness", stiffness);
+  return std::sqrt(0.8 * stiffness * std::pow(yield_approach, 2.5) / mass);
+}
+
+std::optional<MaterialThornton> material_thornton(const std::vector<FemRun>& runs) {
+  if (runs.empty()) return std::nullopt;
+  std::optional<PlasticContact> contact;
+  try {
+    contact = scenario_plastic_contact(runs);
+  } catch (const PlasticContactError&) {
+    return std::nullopt;
+  }
+  const auto radius = text_number(runs.front(), "Scenario/Sphere radius");
+  if (!contact || !radius || !(*radius > 0)) return std::nullopt;
+  const double e_star = contact->contact_modulus;
+  const double ratio = pi * contact->yield_pressure / (2 * e_star);
+  std::ostringstream basis;
+  basis.precision(6);
+  basis << "no fit: E* = " << e_star << " Pa, R = " << *radius << " m, p_y = "
+        << contact->yield_pressure << " Pa from " << contact->yield_basis
+        << "; c = (4/3) E* sqrt(R), x_y = R (pi p_y / (2 E*))^2; no hardening";
+  return MaterialThornton{4.0 / 3.0 * e_star * std::sqrt(*radius), *radius * ratio * ratio,
+                          basis.str()};
+}
+
+} // namespace impact::postprocess

@@ -1,0 +1,88 @@
+// scenario_plastic_contact (scenario_plastic_contact.hpp).
+
+#include "impact_postprocess/run/scenario_plastic_contact.hpp"
+#include "impact_postprocess/run/scenario_materials.hpp"
+
+#include <impact_reduced/yield_velocity.hpp>
+
+#include <sstream>
+#include <utility>
+
+namespace impact::postprocess {
+
+namespace {
+
+std::string format(double value) {
+  std::ostringstream text;
+  text.precision(6);
+  text << value;
+  return text.str();
+}
+
+struct BodyStrength {
+  double youngs_modulus, poisson_ratio, yield_strength;
+  std::string where; // the parameter Y was read from
+};
+
+// A body's yield strength and elastic constants; none without a yield strength.
+std::optional<BodyStrength> body_strength(const FemRun& run, const std::string& body) {
+  const auto model = run.text_attributes.find(body + "/Material model");
+  const bool plastic = model != run.text_attributes.end() && model->second == "elastic-plastic";
+  const std::string key = plastic ? body + "/Elastic-plastic/Yield strength" : body + "/Yield strength";
+  const auto strength = plastic ? material_constant(run, body, "Yield strength") : text_number(run, key);
+  if (!strength || !(*strength > 0)) return std::nullopt;
+  const auto young = material_constant(run, body, "Young's modulus");
+  const auto poisson = material_constant(run, body, "Poisson's ratio");
+  if (!young || !poisson || !(*young > 0) || !(*poisson > -1 && *poisson < 0.5))
+    throw PlasticContactError(run.source + ": '" + key + "' = " + format(*strength) +
+                              " Pa, but the body's material does not record a Young's modulus "
+                              "> 0 and a Poisson's ratio in (-1, 0.5) ('" + body +
+                              "/Material model' and its constants)");
+  return BodyStrength{*young, *poisson, *strength, key};
+}
+
+} // namespace
+
+std::optional<PlasticContact> scenario_plastic_contact(const std::vector<FemRun>& runs) {
+  if (runs.empty()) return std::nullopt;
+  const FemRun& run = runs.front();
+  const auto model = run.text_attributes.find("Plate/Material model");
+  const bool rigid_plate = model != run.text_attributes.end() && model->second == "rigid";
+  const auto sphere = body_strength(run, "Sphere");
+  const auto plate = rigid_plate ? std::nullopt : body_strength(run, "Plate");
+  if (!sphere && !plate) return std::nullopt;
+  // Both bodies' elastic constants are needed for E*, also of a body that does not yield.
+  const auto elastic = [&](const std::string& body) {
+    const auto young = material_constant(run, body, "Young's modulus");
+    const auto poisson = material_constant(run, body, "Poisson's ratio");
+    if (!young || !poisson)
+      throw PlasticContactError(run.source + ": the " + body + "'s Young's modulus and Poisson's "
+                                "ratio are not recorded ('" + body + "/Material model' and its "
+                                "constants): E* of the plastic contact is unknown");
+    return std::pair<double, double>{*young, *poisson};
+  };
+  const auto [sphere_e, sphere_nu] = sphere ? std::pair{sphere->youngs_modulus, sphere->poisson_ratio}
+                                            : elastic("Sphere");
+  PlasticContact contact;
+  contact.sphere_youngs_modulus = sphere_e;
+  contact.sphere_poisson_ratio = sphere_nu;
+  if (!rigid_plate) {
+    const auto [plate_e, plate_nu] =
+        plate ? std::pair{plate->youngs_modulus, plate->poisson_ratio} : elastic("Plate");
+    contact.plate_youngs_modulus = plate_e;
+    contact.plate_poisson_ratio = plate_nu;
+    contact.contact_modulus = reduced::contact_modulus(sphere_e, sphere_nu, plate_e, plate_nu);
+  } else {
+    contact.contact_modulus = sphere_e / (1 - sphere_nu * sphere_nu);
+  }
+  // Johnson's first yield of the body with the lower strength.
+  const BodyStrength& yielding = !plate || (sphere && sphere->yield_strength <= plate->yield_strength)
+                                     ? *sphere : *plate;
+  contact.yield_pressure = reduced::johnson_yield_pressure(yielding.yield_strength);
+  contact.yield_basis = "Johnson's p_y = 1.6 Y with Y = " +
+                        format(yielding.yield_strength) + " Pa ('" + yielding.where +
+                        "' of " + run.source + ", the body that yields first)";
+  return contact;
+}
+
+} // namespace impact::postprocess
