@@ -17,18 +17,18 @@
 # indentation.sh).
 #
 # Usage: fem/bench/indentation_plastic.sh [BUILD_DIR] [OUTPUT_DIR]
-#   environment: RATIOS (default "200 1000"), LEVELS (default "2 4 8"),
-#   OMEGA_MAX (default 100), STEPS (default 50), CHECK (default "10 30 100")
+#   environment: RATIOS (default "200 1000"), LEVELS (default "1 2 4"),
+#   OMEGA_MAX (default 30), STEPS (default 15), CHECK (default "10 20 30")
 set -euo pipefail
 build="${1:-build}"
 output="${2:-results/bench/indentation_plastic}"
 binary="$build/bin/impact-fem"
 oracle="$build/tests/fem/fem_test_sphere_flat_oracle"
 ratios="${RATIOS:-200 1000}"
-levels="${LEVELS:-2 4 8}"
-omega_max="${OMEGA_MAX:-100}"
-steps="${STEPS:-50}"
-check="${CHECK:-10 30 100}"
+levels="${LEVELS:-1 2 4}"
+omega_max="${OMEGA_MAX:-30}"
+steps="${STEPS:-15}"
+check="${CHECK:-10 20 30}"
 for program in "$binary" "$oracle"; do
   [ -x "$program" ] || { echo "indentation_plastic: no executable $program (build impact-fem and fem_test_sphere_flat_oracle)" >&2; exit 1; }
 done

@@ -262,23 +262,31 @@ namespace impact_fem
 
     // Elastic-plastic bodies: iterated steps, the plastic state committed
     // after each, and what the plastic zone does (analysis/indentation.cc).
+    arms.initialize(dof_handler,
+                    *mapping,
+                    *quadrature,
+                    [this](const types::material_id id)
+                      -> const materials::Interface & { return material_of(id); },
+                    ghosted_u);
     const bool plastic = arms.nonlinear();
     PlasticIndentation plastic_record;
     VectorType committed(locally_owned_dofs, mpi_communicator);
     if (plastic)
       {
-        arms.initialize(dof_handler,
-                        *mapping,
-                        *quadrature,
-                        [this](const types::material_id id)
-                          -> const materials::Interface & { return material_of(id); },
-                        ghosted_u);
         history.declare({
           {result_files::newton_iterations_dataset, "1", "iterations of the step's nonlinear solve (Nonlinear solver)"},
           {result_files::newton_residual_dataset, "1", "out-of-balance force of the accepted iterate / ||B^T lambda||"},
           {"max_accumulated_plastic_strain", "1", "largest accumulated plastic strain of both bodies"},
           {"plastic_work", "J", "cumulative plastic work int sigma : d eps^p"}});
       }
+    // The sphere's lowest point (reference configuration), from which the
+    // depth of the plastic zone is measured.
+    double lowest = std::numeric_limits<double>::max();
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned() && cell->material_id() == body_ids::sphere)
+        for (const unsigned int v : cell->vertex_indices())
+          lowest = std::min(lowest, cell->vertex(v)[1]);
+    lowest = Utilities::MPI::min(lowest, mpi_communicator);
     // The largest accumulated plastic strain and where it is (all ranks).
     const auto plastic_zone_peak = [&]() {
       FEValues<2>     fe_values(*mapping, *fe, *quadrature, update_quadrature_points);
@@ -295,8 +303,7 @@ namespace impact_fem
                 {
                   local.value  = states[q]->accumulated_plastic_strain;
                   local.radius = fe_values.quadrature_point(q)[0];
-                  local.depth  = parameters.geometry.initial_gap -
-                                fe_values.quadrature_point(q)[1];
+                  local.depth  = fe_values.quadrature_point(q)[1] - lowest;
                 }
           }
       PlasticZonePeak global;
