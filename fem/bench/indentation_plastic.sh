@@ -23,7 +23,7 @@ set -euo pipefail
 build="${1:-build}"
 output="${2:-results/bench/indentation_plastic}"
 binary="$build/bin/impact-fem"
-oracle="$build/tests/fem/fem_test_sphere_flat_oracle"
+oracle="$build/bin/fem_test_sphere_flat_oracle"
 ratios="${RATIOS:-200 1000}"
 levels="${LEVELS:-1 2 4}"
 omega_max="${OMEGA_MAX:-30}"

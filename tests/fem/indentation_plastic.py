@@ -47,7 +47,7 @@ print(f"E/Y = {RATIO}: Jackson-Green omega_c = {omega_c*1e6:.4f} um, P_c = {P_c:
 # surface 1.5 times the largest contact radius (fem/bench/
 # indentation_plastic.sh, whose finer levels measure the discretisation
 # error of this one: fem/README.md, "Indentation").
-N_MESH, OMEGA_STAR_MAX, STEPS = 4, 30, 15
+N_MESH, OMEGA_STAR_MAX, STEPS = 2, 30, 15
 a_max = 1.4 * math.sqrt(RADIUS * OMEGA_STAR_MAX * omega_c)
 plastic = {"Scenario/Analysis": "indentation", "Plate/Material model": "rigid",
            "Sphere/Material model": "elastic-plastic",
@@ -60,10 +60,19 @@ plastic = {"Scenario/Analysis": "indentation", "Plate/Material model": "rigid",
            "Mesh/Contact surface radius": 1.5 * a_max,
            "Mesh/Maximum element size": max(40 * a_c / N_MESH, 2e-3)}
 
-# 1. Below yield and the onset: to 1.5 omega_c in 15 steps.
+# 1. Below yield and the onset: to 1.5 omega_c in 15 steps, on a mesh 4
+# times finer (a_c / 8; the contact zone is small): the elastic
+# force-approach curve of a contact a few elements wide ripples by a few %
+# (fem/README.md, "Indentation").
+N_ONSET = 8
+a_onset = 1.4 * math.sqrt(RADIUS * 1.5 * omega_c)
 directory = f"{work}/indentation_plastic_onset"
 run(binary, directory, dict(plastic, **{"Indentation/Maximum approach": 1.5 * omega_c,
-                                        "Indentation/Steps": 15}))
+                                        "Indentation/Steps": 15,
+                                        "Mesh/Contact element size": a_c / N_ONSET,
+                                        "Mesh/Uniform zone radius": 1.3 * a_onset,
+                                        "Mesh/Contact surface radius": 1.5 * a_onset,
+                                        "Mesh/Maximum element size": 2e-3}))
 s = summary(directory)
 approach, force, radius, plastic_strain, unloading = history(
     directory, "approach", "contact_force", "contact_radius", "max_accumulated_plastic_strain",
@@ -82,7 +91,7 @@ onset = s["yield_onset_approach"] / omega_c
 depth = s["yield_onset_depth"] / s["yield_onset_contact_radius"]
 print(f"yield onset at omega = {onset:.3f} omega_c, plastic strain peak at depth "
       f"{s['yield_onset_depth']*1e6:.1f} um = {depth:.3f} a (r = {s['yield_onset_r']*1e6:.1f} um), "
-      f"element {a_c/N_MESH*1e6:.1f} um")
+      f"element {a_c/N_ONSET*1e6:.1f} um")
 # Jackson-Green's omega_c is where the von Mises stress of Hertz's field
 # first reaches Y; the hemisphere is about 1 % stiffer than the half-space,
 # and the steps are 0.1 omega_c: the first plastic step is the one at or
@@ -90,8 +99,8 @@ print(f"yield onset at omega = {onset:.3f} omega_c, plastic strain peak at depth
 checks.check(0.9 <= onset <= 1.1, f"yielding starts at omega_c within one step ({onset:.3f})")
 # Hertz's field (nu = 0.3): the von Mises stress peaks on the axis 0.48 a
 # below the surface (Johnson, Contact Mechanics, 1985, fig. 4.6); the
-# quadrature points are an element (a_c / N_MESH, a / 4 here) apart.
-checks.check(s["yield_onset_r"] < a_c / N_MESH and abs(depth - 0.48) < 1 / N_MESH,
+# quadrature points lie within an element (a_c / N_ONSET = a / 8).
+checks.check(s["yield_onset_r"] < a_c / N_ONSET and abs(depth - 0.48) < 1 / N_ONSET,
              "first plastic strain on the axis, about 0.48 a below the surface")
 
 # 2. and 3. Loading to OMEGA_STAR_MAX omega_c and unloading.
@@ -120,11 +129,22 @@ w_r, brake = s["residual_approach"], end["residual_brake"]
 print(f"residual approach {w_r/omega_c:.4f} omega_c (bracket up to "
       f"{s['residual_approach_upper_bound']/omega_c:.4f}); Brake {brake/omega_c:.4f} omega_c "
       f"({(w_r/brake-1)*100:+.2f} %), contact-radius rule {end['residual_contact_radius']/omega_c:.4f}")
-# Brake's rule recovers omega_max P_m / P_Hertz(omega_max): an elastic
-# recovery on the radius that joins Hertz's law through (omega_max, P_m).
-# It depends on the loading force through P_m, so a force within 5 % of
-# Jackson-Green's moves Brake's residual by 5 % P_m/P_H omega_max / w_r.
-BRAKE_TOLERANCE = None
+# Brake's rule recovers omega_max P_m / P_Hertz(omega_max), Hertzian on the
+# radius through (omega_max, P_m); the contact-radius rule keeps a_m. The
+# FEM's unloading of a dented elastic-perfectly-plastic sphere recovers less
+# than either (fem/README.md: +67 % against Brake at 30 omega_c, on all
+# three meshes of fem/bench/indentation_plastic.sh): no tolerance around
+# Brake can be justified, so the test holds what is measured and bounded:
+# the permanent approach lies above both Hertzian rules (which recover more)
+# and below the maximum approach, and the release is bracketed tightly.
+w_m = s["maximum_approach"]
+brake_own = w_m * (1 - s["force_max"] / hertz(w_m))
+print(f"Brake's rule on the FEM's own maximum force: {brake_own/omega_c:.4f} omega_c "
+      f"(FEM {(w_r/brake_own-1)*100:+.2f} %)")
+checks.check(max(brake, brake_own, end["residual_contact_radius"]) < w_r < w_m,
+             "permanent approach above the Hertzian unloading rules' and below the maximum")
+checks.check(s["residual_approach_upper_bound"] - w_r <= 1.01e-4 * w_m,
+             "permanent approach bracketed to 1e-4 of the maximum approach")
 checks.check(s["released"], "unloading ends with the force released")
 
 # 4. Non-convergence: one iteration cannot solve a plastic step.
