@@ -7,6 +7,10 @@
 # newton) on 1 rank. Printed per run: wall time, its ratio to the elastic
 # run on the same ranks, iterations per step (mean, max, total), and the
 # results (restitution, peak force, plastic work, permanent approach).
+# Exits 1 when a target is missed: an elastic-plastic run costs at most 3
+# times the elastic one (Anderson, 1 and 2 ranks; run it on an otherwise idle
+# machine), and the energy balance error at the end of every run is below
+# 1e-4 of the initial energy.
 #
 # Usage: fem/bench/plasticity.sh [BUILD_DIR] [OUTPUT_DIR]
 #   environment: VELOCITIES (default "1 5"), HARDENING [Pa] (default 0)
@@ -51,6 +55,7 @@ import json, os, sys
 import h5py
 d, velocities = sys.argv[1], sys.argv[2].split()
 load = lambda name: json.load(open(os.path.join(d, name, "summary.json")))
+missed = []
 print(f"{'run':<22} {'wall [s]':>8} {'/elastic':>8} {'it mean':>7} {'it max':>6} {'it total':>8} "
       f"{'e':>8} {'F_max [N]':>10} {'W_p [%]':>8} {'delta_p [um]':>12} {'E err':>9}")
 for v in velocities:
@@ -67,4 +72,11 @@ for v in velocities:
         dp = s.get("permanent_approach", 0) * 1e6
         print(f"{name:<22} {s['wall_time']:>8.1f} {ratio:>8.2f} {its} {s['restitution']:>8.5f} "
               f"{s['force_max']:>10.1f} {wp:>8.3f} {dp:>12.4f} {s['energy_error_final']:>9.1e}")
+        if name.startswith("anderson") and ratio > 3:
+            missed.append(f"{name}: {ratio:.2f} times the elastic run (target <= 3)")
+        if abs(s["energy_error_final"]) > 1e-4:
+            missed.append(f"{name}: energy balance error {s['energy_error_final']:.2e} (target < 1e-4)")
+for m in missed:
+    print("target missed:", m)
+sys.exit(1 if missed else 0)
 PY

@@ -596,11 +596,28 @@ namespace impact_fem
       ghosted_trial = distributed;
       arms.plastic_force(constraints, ghosted_trial, dt, force);
     };
-    const auto result = nonlinear_step.solve(arms.committed_plastic_force(),
-                                             time_stepper->displacement(),
-                                             displacement,
-                                             linear_solve,
-                                             plastic_force);
+    // Solved on the cells near yielding; again with the cells that the
+    // states at the converged displacement add, if a point elsewhere yielded.
+    auto result = nonlinear_step.solve(arms.predicted_plastic_force(),
+                                       time_stepper->displacement(),
+                                       displacement,
+                                       linear_solve,
+                                       plastic_force);
+    unsigned int iterations = result.iterations;
+    const auto prepare_commit = [&]() {
+      TimerOutput::Scope t(*computing_timer, "plastic state");
+      return arms.prepare_commit(constraints, ghosted_trial, dt);
+    };
+    while (result.converged && !prepare_commit())
+      {
+        result = nonlinear_step.solve(arms.predicted_plastic_force(),
+                                      time_stepper->displacement(),
+                                      displacement,
+                                      linear_solve,
+                                      plastic_force);
+        iterations += result.iterations;
+      }
+    result.iterations = iterations;
     step_iterations = result.iterations;
     step_residual   = result.residual;
     if (!result.converged)

@@ -325,17 +325,31 @@ namespace impact_fem
       return global;
     };
     // Solve one step; a plastic step that does not converge stops the run.
+    // A step to be committed (@p prepare) is solved on the candidate cells
+    // of the plastic states and again if a point elsewhere yielded
+    // (InternalVariables::prepare_commit, as for an impact step); the
+    // bisection's trials are not committed and leave the prepared state of
+    // the step alone.
     const auto solve_step = [&](const std::size_t step,
                                 const double      approach,
-                                VectorType       &displacement) {
+                                VectorType       &displacement,
+                                const bool        prepare) {
       TimerOutput::Scope t(*computing_timer, "solve indentation step");
       if (!plastic)
         {
           solve_indentation_step(approach, displacement);
           return;
         }
-      const auto result =
+      auto result =
         solve_plastic_indentation_step(approach, committed, displacement);
+      unsigned int iterations = result.iterations;
+      while (prepare && result.converged &&
+             !arms.prepare_commit(constraints, ghosted_trial, quasi_static_time_step))
+        {
+          result = solve_plastic_indentation_step(approach, committed, displacement);
+          iterations += result.iterations;
+        }
+      result.iterations = iterations;
       step_iterations = result.iterations;
       step_residual   = result.residual;
       plastic_record.iterations += result.iterations;
@@ -383,7 +397,7 @@ namespace impact_fem
                                " at indentation step " + std::to_string(step) +
                                "."));
         const bool unloading = step > indentation_control.steps;
-        solve_step(step, approaches[step], displacement);
+        solve_step(step, approaches[step], displacement, true);
         const double force = contact.total_force(pressures);
         // The permanent approach of a plastic body lies between this step
         // and the last loaded one: bisected from the last committed state
@@ -399,7 +413,7 @@ namespace impact_fem
             while (high - low > 1e-4 * indentation_control.maximum_approach)
               {
                 const double middle = 0.5 * (low + high);
-                solve_step(step, middle, trial);
+                solve_step(step, middle, trial, false);
                 (contact.total_force(pressures) > 0 ? high : low) = middle;
                 ++plastic_record.bisections;
               }

@@ -142,7 +142,7 @@ namespace impact_fem
                                   plate_faces.back().r_max());
     std::sort(breaks.begin(), breaks.end());
 
-    std::vector<std::map<types::global_dof_index, double>> rows(n_nodes);
+    RowsUnderAssembly rows(n_nodes);
     reference_gaps.reinit(n_nodes);
     node_area.assign(n_nodes, 0.);
 
@@ -171,22 +171,13 @@ namespace impact_fem
                     (plate.xi[j] == 0 ? 1 - s_plate : s_plate) * weight;
                   reference_gaps[row] += Nj * gap;
                   node_area[row] += Nj;
-                  for (unsigned int k = 0; k < sphere.xi.size(); ++k)
-                    rows[row][sphere.z_dofs[k]] += Nj * sphere.shape(k, s_sphere);
-                  for (unsigned int k = 0; k < plate.xi.size(); ++k)
-                    rows[row][plate.z_dofs[k]] -= Nj * plate.shape(k, s_plate);
+                  add_face_to_row(rows, row, Nj, sphere, s_sphere, 1.);
+                  add_face_to_row(rows, row, Nj, plate, s_plate, -1.);
                 }
           }
       }
 
-    row_dofs.assign(n_nodes, {});
-    row_values.assign(n_nodes, {});
-    for (unsigned int j = 0; j < n_nodes; ++j)
-      for (const auto &[dof, value] : rows[j])
-        {
-          row_dofs[j].push_back(dof);
-          row_values[j].push_back(value);
-        }
+    store_rows(rows);
 
     // Pointwise gaps at all nodes of both contact surfaces: the measure of
     // penetration (the constraint itself is imposed in the weighted sense).
@@ -464,5 +455,32 @@ namespace impact_fem
                  q2 = pressures[last] * pressures[last];
     const double edge_squared = r2 * r2 + q2 * (r2 * r2 - r1 * r1) / (q1 - q2);
     return std::clamp(std::sqrt(edge_squared), r2, node_radius[last + 1]);
+  }
+
+
+  void
+  MortarContact::add_face_to_row(RowsUnderAssembly                &rows,
+                                 const unsigned int                row,
+                                 const double                      hat,
+                                 const contact_faces::ContactFace &face,
+                                 const double                      s,
+                                 const double                      sign)
+  {
+    for (unsigned int k = 0; k < face.xi.size(); ++k)
+      rows[row][face.z_dofs[k]] += sign * hat * face.shape(k, s);
+  }
+
+
+  void
+  MortarContact::store_rows(const RowsUnderAssembly &rows)
+  {
+    row_dofs.assign(rows.size(), {});
+    row_values.assign(rows.size(), {});
+    for (unsigned int j = 0; j < rows.size(); ++j)
+      for (const auto &[dof, value] : rows[j])
+        {
+          row_dofs[j].push_back(dof);
+          row_values[j].push_back(value);
+        }
   }
 } // namespace impact_fem

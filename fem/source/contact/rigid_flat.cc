@@ -23,7 +23,7 @@ namespace impact_fem
       number_contact_nodes(sphere_faces);
     const unsigned int n_nodes = node_radius.size();
 
-    std::vector<std::map<types::global_dof_index, double>> rows(n_nodes);
+    RowsUnderAssembly rows(n_nodes);
     reference_gaps.reinit(n_nodes);
     node_area.assign(n_nodes, 0.);
 
@@ -54,20 +54,12 @@ namespace impact_fem
                 const unsigned int row = row_of.at(face.z_dofs[j]);
                 reference_gaps[row] += Nj * height;
                 node_area[row] += Nj;
-                for (unsigned int k = 0; k < face.xi.size(); ++k)
-                  rows[row][face.z_dofs[k]] += Nj * face.shape(k, s);
+                add_face_to_row(rows, row, Nj, face, s, 1.);
               }
           }
       }
 
-    row_dofs.assign(n_nodes, {});
-    row_values.assign(n_nodes, {});
-    for (unsigned int j = 0; j < n_nodes; ++j)
-      for (const auto &[dof, value] : rows[j])
-        {
-          row_dofs[j].push_back(dof);
-          row_values[j].push_back(value);
-        }
+    store_rows(rows);
 
     // Pointwise gaps: the height of every node of the contact surface.
     point_dofs.clear();

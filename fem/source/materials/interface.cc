@@ -60,6 +60,14 @@ namespace impact_fem
     }
 
 
+    double
+    von_mises(const SymmetricTensor<2, 3> &stress)
+    {
+      const SymmetricTensor<2, 3> s = deviator(stress);
+      return std::sqrt(1.5 * scalar_product(s, s));
+    }
+
+
     SymmetricTensor<4, 3>
     isotropic_stiffness(const double E, const double nu)
     {

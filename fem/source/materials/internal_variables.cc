@@ -27,16 +27,16 @@ namespace impact_fem
       plastic_cells.clear();
       plastic_force_now.reinit(ghosted_layout.locally_owned_elements(),
                                dof_handler.get_communicator());
+      plastic_force_predicted.reinit(plastic_force_now);
+      prepared_force.reinit(plastic_force_now);
+      prepared = false;
 
-      const auto        &fe = dof_handler.get_fe();
-      FEValues<2>        fe_values(mapping,
-                            fe,
+      FEValues<2> fe_values(mapping,
+                            dof_handler.get_fe(),
                             quadrature,
                             update_values | update_gradients |
                               update_quadrature_points | update_JxW_values);
-      const unsigned int n_dofs = fe.n_dofs_per_cell();
-      const FEValuesExtractors::Vector u(0);
-      const auto &partitioner = ghosted_layout.trilinos_partitioner();
+      std::vector<types::global_dof_index> dofs(dof_handler.get_fe().n_dofs_per_cell());
       for (const auto &cell : dof_handler.active_cell_iterators())
         if (cell->is_locally_owned())
           {
@@ -51,35 +51,16 @@ namespace impact_fem
             if (m.is_linear())
               continue;
             is_nonlinear = true;
-            PlasticCell c;
-            c.cell = cell;
-            c.body = cell->material_id() == body_ids::sphere ? 0 : 1;
-            c.dofs.resize(n_dofs);
-            cell->get_dof_indices(c.dofs);
-            for (const auto dof : c.dofs)
-              c.local_index.push_back(
-                partitioner.LID(static_cast<TrilinosWrappers::types::int_type>(dof)));
             fe_values.reinit(cell);
-            c.strain.resize(quadrature.size() * 4 * n_dofs);
-            c.volume.resize(quadrature.size());
-            for (unsigned int q = 0; q < quadrature.size(); ++q)
-              {
-                const double r = fe_values.quadrature_point(q)[0];
-                c.volume[q]    = 2 * M_PI * r * fe_values.JxW(q);
-                double *row    = &c.strain[4 * q * n_dofs];
-                for (unsigned int i = 0; i < n_dofs; ++i)
-                  {
-                    const SymmetricTensor<2, 3> e =
-                      axisymmetric_strain(fe_values[u].value(i, q),
-                                          fe_values[u].gradient(i, q),
-                                          r);
-                    row[i]              = e[0][0];
-                    row[n_dofs + i]     = e[1][1];
-                    row[2 * n_dofs + i] = e[2][2];
-                    row[3 * n_dofs + i] = e[0][1];
-                  }
-              }
-            plastic_cells.push_back(std::move(c));
+            cell->get_dof_indices(dofs);
+            plastic_cells.push_back(
+              {cell,
+               cell->material_id() == body_ids::sphere ? 0u : 1u,
+               CellStrainOperator(fe_values, dofs, ghosted_layout),
+               storage.get_data(cell),
+               false,
+               false,
+               std::vector<QuadraturePointState>(quadrature.size())});
           }
       const MPI_Comm comm = dof_handler.get_communicator();
       is_active    = Utilities::MPI::logical_or(is_active, comm);
@@ -97,42 +78,40 @@ namespace impact_fem
     }
 
 
-    SymmetricTensor<2, 3>
-    InternalVariables::strain_at(const PlasticCell &c,
-                                 const unsigned int q,
-                                 const double      *values)
-    {
-      const unsigned int n   = c.dofs.size();
-      const double      *row = &c.strain[4 * q * n];
-      double             e[4] = {0, 0, 0, 0};
-      for (unsigned int k = 0; k < 4; ++k)
-        for (unsigned int i = 0; i < n; ++i)
-          e[k] += row[k * n + i] * values[i];
-      SymmetricTensor<2, 3> strain;
-      strain[0][0] = e[0];
-      strain[1][1] = e[1];
-      strain[2][2] = e[2];
-      strain[0][1] = e[3];
-      return strain;
-    }
-
-
-    template <typename Visitor>
+    template <typename Cells, typename PointStress>
     void
-    InternalVariables::for_each_plastic_point(const VectorType &u,
-                                              const Visitor    &visit) const
+    InternalVariables::assemble_plastic_points(
+      Cells                           &cells,
+      const AffineConstraints<double> &constraints,
+      const VectorType                &u,
+      const bool                       candidates_only,
+      VectorType                      &force,
+      const PointStress               &point_stress)
     {
-      // Vector 0 of the Epetra multivector: the owned and ghost values.
-      const double       *data = u.trilinos_vector()[0];
-      std::vector<double> values;
-      for (const auto &c : plastic_cells)
+      force = 0;
+      std::vector<double>   values;
+      Vector<double>        cell_force;
+      SymmetricTensor<2, 3> stress;
+      for (auto &c : cells)
         {
-          values.resize(c.local_index.size());
-          for (unsigned int i = 0; i < values.size(); ++i)
-            values[i] = data[c.local_index[i]];
-          for (unsigned int q = 0; q < c.volume.size(); ++q)
-            visit(c, q, strain_at(c, q, values.data()));
+          if (candidates_only && !c.candidate)
+            continue;
+          c.strain.gather(u, values);
+          cell_force.reinit(values.size());
+          bool loaded = false;
+          for (unsigned int q = 0; q < c.strain.n_points(); ++q)
+            if (point_stress(c, q, c.strain.strain(q, values), stress))
+              {
+                loaded = true;
+                c.strain.add_transpose(q, stress * c.strain.volume(q), cell_force);
+              }
+          // Cells that never yielded add nothing: skip their scatter.
+          if (loaded)
+            constraints.distribute_local_to_global(cell_force,
+                                                   c.strain.dof_indices(),
+                                                   force);
         }
+      force.compress(VectorOperation::add);
     }
 
 
@@ -142,39 +121,23 @@ namespace impact_fem
                                      const double      dt,
                                      VectorType       &force) const
     {
-      force = 0;
-      Vector<double>        cell_force;
       SymmetricTensor<4, 3> tangent;
       QuadraturePointState  end;
-      const PlasticCell    *current = nullptr;
-      bool                  loaded  = false;
-      std::vector<std::shared_ptr<const QuadraturePointState>> states;
-      const auto flush = [&]() {
-        if (current != nullptr && loaded)
-          constraints.distribute_local_to_global(cell_force, current->dofs, force);
-      };
-      for_each_plastic_point(
+      assemble_plastic_points(
+        plastic_cells,
+        constraints,
         ghosted_trial,
-        [&](const PlasticCell &c, const unsigned int q, const SymmetricTensor<2, 3> &strain) {
-          if (&c != current)
-            {
-              flush();
-              current = &c;
-              loaded  = false;
-              states  = storage.get_data(c.cell);
-              cell_force.reinit(c.dofs.size());
-            }
+        true,
+        force,
+        [&](const PlasticCell &c, const unsigned int q,
+            const SymmetricTensor<2, 3> &strain, SymmetricTensor<2, 3> &stress) {
           const Interface &m = material_of(c.cell->material_id());
-          m.stress_update(*states[q], strain, dt, end, tangent);
+          m.stress_update(*c.states[q], strain, dt, end, tangent);
           if (end.accumulated_plastic_strain == 0)
-            return;
-          loaded = true;
-          const SymmetricTensor<2, 3> stress =
-            m.stiffness_tangent() * end.plastic_strain * c.volume[q];
-          add_strain_transpose(c, q, stress, cell_force);
+            return false;
+          stress = m.stiffness_tangent() * end.plastic_strain;
+          return true;
         });
-      flush();
-      force.compress(VectorOperation::add);
     }
 
 
@@ -253,87 +216,108 @@ namespace impact_fem
     }
 
 
+    bool
+    InternalVariables::prepare_commit(const AffineConstraints<double> &constraints,
+                                      const VectorType                &ghosted_trial,
+                                      const double                     dt)
+    {
+      SymmetricTensor<4, 3> tangent;
+      double step_work = 0, correction[2] = {0, 0}, largest[2] = {0, 0};
+      bool   missed = false;
+      for (auto &c : plastic_cells)
+        c.prepared_candidate = false;
+      assemble_plastic_points(
+        plastic_cells,
+        constraints,
+        ghosted_trial,
+        false,
+        prepared_force,
+        [&](PlasticCell &c, const unsigned int q,
+            const SymmetricTensor<2, 3> &strain, SymmetricTensor<2, 3> &stress) {
+          const Interface            &m     = material_of(c.cell->material_id());
+          const QuadraturePointState &start = *c.states[q];
+          QuadraturePointState       &end   = c.prepared[q];
+          const auto                  C     = m.stiffness_tangent();
+          const double                dV    = c.strain.volume(q);
+          const SymmetricTensor<2, 3> stress_start =
+            C * (start.strain - start.plastic_strain);
+          const SymmetricTensor<2, 3> stress_end =
+            m.stress_update(start, strain, dt, end, tangent);
+          // sigma : d eps^p, trapezoidal in the stress: with the elastic
+          // energy 1/2 (eps - eps^p) : C : (eps - eps^p) this is the internal
+          // work (Delta eps : mean sigma) of the step exactly.
+          step_work += 0.5 * ((stress_start + stress_end) *
+                              (end.plastic_strain - start.plastic_strain)) *
+                       dV;
+          if (end.accumulated_plastic_strain == 0)
+            {
+              // A candidate of the next step if within the margin of
+              // yielding (the stress of a point that never yielded is
+              // elastic: stress_end).
+              c.prepared_candidate =
+                c.prepared_candidate ||
+                von_mises(stress_end) >=
+                  candidate_stress_fraction * m.yield_stress(0);
+              return false;
+            }
+          if (!c.candidate && start.accumulated_plastic_strain == 0)
+            missed = true;
+          c.prepared_candidate = true;
+          stress               = C * end.plastic_strain;
+          correction[c.body] +=
+            (0.5 * (stress * end.plastic_strain) - stress * strain) * dV;
+          largest[c.body] = std::max(largest[c.body], end.accumulated_plastic_strain);
+          return true;
+        });
+      const MPI_Comm comm = prepared_force.get_mpi_communicator();
+      if (Utilities::MPI::logical_or(missed, comm))
+        {
+          // Solved without a cell that yields: it joins the candidates.
+          for (auto &c : plastic_cells)
+            c.candidate = c.candidate || c.prepared_candidate;
+          prepared = false;
+          return false;
+        }
+      prepared_work = Utilities::MPI::sum(step_work, comm);
+      for (unsigned int body = 0; body < 2; ++body)
+        {
+          prepared_correction[body] = Utilities::MPI::sum(correction[body], comm);
+          prepared_largest[body]    = Utilities::MPI::max(largest[body], comm);
+        }
+      prepared = true;
+      return true;
+    }
+
+
     void
     InternalVariables::commit_plastic_state(
       const AffineConstraints<double> &constraints,
       const VectorType                &displacement,
       const double                     dt)
     {
-      plastic_force_now = 0;
-      Vector<double>        cell_force;
-      SymmetricTensor<4, 3> tangent;
-      QuadraturePointState  end;
-      double step_work = 0, correction[2] = {0, 0}, largest[2] = {0, 0};
-      const PlasticCell *current = nullptr;
-      bool               loaded  = false;
-      std::vector<std::shared_ptr<QuadraturePointState>> states;
-      const auto flush = [&]() {
-        if (current != nullptr && loaded)
-          constraints.distribute_local_to_global(cell_force,
-                                                 current->dofs,
-                                                 plastic_force_now);
-      };
-      for_each_plastic_point(
-        displacement,
-        [&](const PlasticCell &c, const unsigned int q, const SymmetricTensor<2, 3> &strain) {
-          if (&c != current)
-            {
-              flush();
-              current = &c;
-              loaded  = false;
-              states  = storage.get_data(c.cell);
-              cell_force.reinit(c.dofs.size());
-            }
-          const Interface &m = material_of(c.cell->material_id());
-          QuadraturePointState &state = *states[q];
-          const auto C = m.stiffness_tangent();
-          const SymmetricTensor<2, 3> stress_start =
-            C * (state.strain - state.plastic_strain);
-          const SymmetricTensor<2, 3> stress_end =
-            m.stress_update(state, strain, dt, end, tangent);
-          // sigma : d eps^p, trapezoidal in the stress: with the elastic
-          // energy 1/2 (eps - eps^p) : C : (eps - eps^p) this is the internal
-          // work (Delta eps : mean sigma) of the step exactly.
-          step_work += 0.5 * ((stress_start + stress_end) *
-                              (end.plastic_strain - state.plastic_strain)) *
-                       c.volume[q];
-          state = end;
-          if (state.accumulated_plastic_strain == 0)
-            return;
-          const SymmetricTensor<2, 3> plastic_stress = C * state.plastic_strain;
-          correction[c.body] += (0.5 * (plastic_stress * state.plastic_strain) -
-                                 plastic_stress * strain) *
-                                c.volume[q];
-          largest[c.body] = std::max(largest[c.body], state.accumulated_plastic_strain);
-          loaded = true;
-          add_strain_transpose(c, q, plastic_stress * c.volume[q], cell_force);
-        });
-      flush();
-      plastic_force_now.compress(VectorOperation::add);
-      const MPI_Comm comm = plastic_force_now.get_mpi_communicator();
-      plastic += Utilities::MPI::sum(step_work, comm);
+      AssertThrow(prepared || prepare_commit(constraints, displacement, dt),
+                  ExcMessage("Internal error: a point outside the candidate "
+                             "cells yielded in a step that was not checked "
+                             "(InternalVariables::prepare_commit)."));
+      prepared = false;
+      for (auto &c : plastic_cells)
+        {
+          for (unsigned int q = 0; q < c.prepared.size(); ++q)
+            *c.states[q] = c.prepared[q];
+          c.candidate = c.prepared_candidate;
+        }
+      // The predictor 2 f_p(n) - f_p(n-1).
+      plastic_force_predicted.equ(-1., plastic_force_now);
+      plastic_force_now = prepared_force;
+      plastic_force_predicted.add(2., plastic_force_now);
+      plastic += prepared_work;
       for (unsigned int body = 0; body < 2; ++body)
         {
-          plastic_correction[body] = Utilities::MPI::sum(correction[body], comm);
-          max_accumulated[body]    = Utilities::MPI::max(largest[body], comm);
+          plastic_correction[body] = prepared_correction[body];
+          max_accumulated[body]    = prepared_largest[body];
         }
     }
 
 
-    void
-    InternalVariables::add_strain_transpose(const PlasticCell           &c,
-                                            const unsigned int           q,
-                                            const SymmetricTensor<2, 3> &stress,
-                                            Vector<double>              &cell_force)
-    {
-      // B^T sigma with B the strain of the shape functions; the shear
-      // component counts twice (sigma : eps = ... + 2 sigma_rz eps_rz).
-      const unsigned int n   = c.dofs.size();
-      const double      *row = &c.strain[4 * q * n];
-      const double       s[4] = {stress[0][0], stress[1][1], stress[2][2], 2 * stress[0][1]};
-      for (unsigned int k = 0; k < 4; ++k)
-        for (unsigned int i = 0; i < n; ++i)
-          cell_force(i) += s[k] * row[k * n + i];
-    }
   } // namespace materials
 } // namespace impact_fem

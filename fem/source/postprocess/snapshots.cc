@@ -103,7 +103,7 @@ namespace impact_fem
                 stress[1][index] += weight * sigma[1][1];
                 stress[2][index] += weight * sigma[2][2];
                 stress[3][index] += weight * sigma[0][1];
-                stress[4][index] += weight * von_mises(sigma);
+                stress[4][index] += weight * materials::von_mises(sigma);
               }
           });
         data_out.add_data_vector(body, "body");

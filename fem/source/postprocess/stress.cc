@@ -67,7 +67,7 @@ namespace impact_fem
                                   cell->material_id() == body_ids::sphere ? sphere : plate;
                                 for (unsigned int q = 0; q < stress.size(); ++q)
                                   {
-                                    const double s = von_mises(stress[q]);
+                                    const double s = materials::von_mises(stress[q]);
                                     if (s > body_max[body])
                                       {
                                         body_max[body]      = s;

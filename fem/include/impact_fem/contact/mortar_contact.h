@@ -150,6 +150,25 @@ namespace impact_fem
     std::map<types::global_dof_index, unsigned int>
     number_contact_nodes(const std::vector<contact_faces::ContactFace> &faces);
 
+    /// Sparse rows of B while they are assembled, by global dof index.
+    using RowsUnderAssembly = std::vector<std::map<types::global_dof_index, double>>;
+
+    /// Row @p row of B gains @p sign times the hat weight @p hat (the
+    /// row's hat function times the area element at a point of the contact
+    /// surface) times the vertical displacement of @p face at its parameter
+    /// @p s: sign +1 for the upper (sphere) side, -1 for the lower side.
+    static void
+    add_face_to_row(RowsUnderAssembly                &rows,
+                    const unsigned int                row,
+                    const double                      hat,
+                    const contact_faces::ContactFace &face,
+                    const double                      s,
+                    const double                      sign);
+
+    /// row_dofs and row_values from the assembled rows.
+    void
+    store_rows(const RowsUnderAssembly &rows);
+
     unsigned int max_iterations = 1000;
 
     // Sparse rows of B: global dof indices and values.

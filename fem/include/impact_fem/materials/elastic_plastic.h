@@ -57,7 +57,7 @@ namespace impact_fem
       /// Quasi-static flow stress sigma_y(eps_p) (rate below the
       /// reference) [Pa].
       double
-      yield_stress(const double accumulated_plastic_strain) const;
+      yield_stress(const double accumulated_plastic_strain) const override;
 
     private:
       /// sigma_y(eps_p, rate) [Pa]; @p slope its derivative with respect

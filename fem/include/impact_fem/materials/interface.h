@@ -7,6 +7,7 @@
 #include <deal.II/base/symmetric_tensor.h>
 
 #include <functional>
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -175,6 +176,15 @@ namespace impact_fem
                     QuadraturePointState        &end,
                     SymmetricTensor<4, 3>       &tangent) const;
 
+      /// The von Mises stress at which a point with accumulated plastic
+      /// strain @p accumulated_plastic_strain [-] yields at a vanishing
+      /// plastic strain rate [Pa]; infinite for a material that never yields.
+      virtual double
+      yield_stress(const double /*accumulated_plastic_strain*/) const
+      {
+        return std::numeric_limits<double>::infinity();
+      }
+
       /// Instantaneous Young's modulus [Pa] and Poisson's ratio [-]: they
       /// define the Hertz estimates (time step, contact time) and the wave
       /// speeds of the absorbing boundaries.
@@ -190,6 +200,10 @@ namespace impact_fem
       s_wave_speed() const;
     };
 
+
+    /// The von Mises equivalent sqrt(3/2 s:s) of a stress [Pa].
+    double
+    von_mises(const SymmetricTensor<2, 3> &stress);
 
     /// Isotropic elasticity tensor from Young's modulus and Poisson's ratio.
     SymmetricTensor<4, 3>

@@ -1,6 +1,7 @@
 #ifndef IMPACT_FEM_MATERIALS_INTERNAL_VARIABLES_H
 #define IMPACT_FEM_MATERIALS_INTERNAL_VARIABLES_H
 
+#include <impact_fem/cell_strain_operator.h>
 #include <impact_fem/materials/interface.h>
 
 #include <deal.II/base/quadrature.h>
@@ -73,13 +74,43 @@ namespace impact_fem
                     const double                     dt,
                     VectorType                      &force) const;
 
-      /// The plastic force of the last completed step's state (the start
-      /// of the next step's iteration) [N].
+      /// The plastic force of the last completed step's state [N].
       const VectorType &
       committed_plastic_force() const
       {
         return plastic_force_now;
       }
+
+      /// The start of the next step's iteration: the plastic force
+      /// extrapolated linearly from the last two completed steps,
+      /// 2 f_p(n) - f_p(n-1) [N] (f_p(n) after the first step).
+      const VectorType &
+      predicted_plastic_force() const
+      {
+        return plastic_force_predicted;
+      }
+
+      /**
+       * plastic_force() visits only the candidate cells: those where a point
+       * has yielded or comes within candidate_stress_fraction of its yield
+       * stress (chosen at every commit). Far from the contact the bodies stay
+       * elastic, and the stress updates there would be most of an
+       * iteration's cost. This call makes the screen exact: it computes the
+       * states of all points at the converged displacement @p ghosted_trial
+       * of the step (distributed, ghosted), to be committed by the next
+       * update(), and returns false when a point outside the candidates
+       * yielded there; its cell is then a candidate, and the step must be
+       * solved again (and prepared again).
+       */
+      bool
+      prepare_commit(const AffineConstraints<double> &constraints,
+                     const VectorType                &ghosted_trial,
+                     const double                     dt);
+
+      /// Fraction of its yield stress at which a point's cell becomes a
+      /// candidate: a margin that only saves repeated steps, since
+      /// prepare_commit() makes the screen exact.
+      static constexpr double candidate_stress_fraction = 0.5;
 
       /// Cumulative plastic work int sigma : d eps^p over both bodies and
       /// all ranks [J] (trapezoidal in the stress over each step: the work
@@ -152,45 +183,52 @@ namespace impact_fem
       double dissipated = 0, stored[2] = {0, 0};
       double plastic = 0, plastic_correction[2] = {0, 0},
              max_accumulated[2] = {0, 0};
-      VectorType plastic_force_now;
+      VectorType plastic_force_now, plastic_force_predicted;
+      // The step prepared by prepare_commit(): its plastic force, work,
+      // energy correction and largest accumulated strain, committed by
+      // update().
+      bool       prepared = false;
+      VectorType prepared_force;
+      double     prepared_work = 0, prepared_correction[2] = {0, 0},
+             prepared_largest[2] = {0, 0};
 
-      // The owned cells of the nonlinear bodies with their strain operators,
-      // computed once (the higher-order mapping is costly to re-evaluate in
-      // every iteration): strain[(4 q + c) n + i] is component c (rr, zz,
-      // theta-theta, rz) of the strain of shape function i at point q.
+      // The owned cells of the nonlinear bodies with their strain operators
+      // (computed once) and their states.
       struct PlasticCell
       {
-        CellIterator                         cell;
-        unsigned int                         body;
-        std::vector<types::global_dof_index> dofs;
-        std::vector<int>                     local_index;
-        std::vector<double>                  strain, volume;
+        CellIterator                                       cell;
+        unsigned int                                       body;
+        CellStrainOperator                                 strain;
+        std::vector<std::shared_ptr<QuadraturePointState>> states;
+        // Visited by plastic_force() (see prepare_commit()), now and
+        // from the prepared step on.
+        bool candidate, prepared_candidate;
+        // The states at the end of the prepared step.
+        std::vector<QuadraturePointState> prepared;
       };
       std::vector<PlasticCell> plastic_cells;
 
-      /// Advance the plastic states to the displacement at the end of the
-      /// step (the converged iterate): work, energy, plastic force.
+      /// The prepared step becomes the state (prepared here first if the
+      /// caller did not: then a point outside the candidates must not have
+      /// yielded, or the step was solved without it).
       void
       commit_plastic_state(const AffineConstraints<double> &constraints,
                            const VectorType                &displacement,
                            const double                     dt);
 
-      /// cell_force += B_q^T stress (stress already weighted by dV).
+      /// force = sum over the plastic cells (the candidates only if
+      /// @p candidates_only) of int B^T stress dV, the stress of each point
+      /// given by point_stress(cell, q, strain of the ghosted displacement
+      /// @p u, stress), which returns false for a point that adds nothing.
+      /// (@p cells: plastic_cells, const or not, as the visitor needs.)
+      template <typename Cells, typename PointStress>
       static void
-      add_strain_transpose(const PlasticCell           &c,
-                           const unsigned int           q,
-                           const SymmetricTensor<2, 3> &stress,
-                           Vector<double>              &cell_force);
-
-      /// The strain of point q of a plastic cell from the cell's values.
-      static SymmetricTensor<2, 3>
-      strain_at(const PlasticCell &c, const unsigned int q, const double *values);
-
-      /// Visit the points of the plastic cells with the strain of the
-      /// ghosted displacement @p u there: visit(cell, q, strain).
-      template <typename Visitor>
-      void
-      for_each_plastic_point(const VectorType &u, const Visitor &visit) const;
+      assemble_plastic_points(Cells                           &cells,
+                              const AffineConstraints<double> &constraints,
+                              const VectorType                &u,
+                              const bool                       candidates_only,
+                              VectorType                      &force,
+                              const PointStress               &point_stress);
     };
   } // namespace materials
 } // namespace impact_fem

@@ -1,6 +1,8 @@
 #ifndef IMPACT_FEM_POSTPROCESS_CELL_STRESS_H
 #define IMPACT_FEM_POSTPROCESS_CELL_STRESS_H
 
+#include <impact_fem/cell_strain_operator.h>
+
 #include <deal.II/base/point.h>
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/dofs/dof_handler.h>
@@ -46,21 +48,11 @@ namespace impact_fem
     private:
       struct CellOperator
       {
-        CellIterator          cell;
-        std::vector<Point<2>> points;
-        // Positions of the cell's dofs in the local storage of the ghosted
-        // vectors: direct reads, no global-to-local lookup per step.
-        std::vector<int>      local_index;
-        // strain[(4 q + c) n + i]: component c (rr, zz, theta-theta, rz)
-        // of the strain of shape function i (of n) at point q.
-        std::vector<double> strain;
+        CellIterator       cell;
+        CellStrainOperator strain;
       };
       std::vector<CellOperator> cells;
     };
-
-    /// The von Mises equivalent of a stress [Pa].
-    double
-    von_mises(const SymmetricTensor<2, 3> &stress);
   } // namespace postprocess
 } // namespace impact_fem
 
