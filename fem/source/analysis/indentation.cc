@@ -357,6 +357,12 @@ namespace impact_fem
         std::max(plastic_record.most_iterations, result.iterations);
       if (!result.converged)
         {
+          // The criterion in words, with the force scale of this analysis.
+          std::string       criterion = nonlinear_step.criterion();
+          const std::string impact_scale = "||f_body||";
+          const auto        at = criterion.find(impact_scale);
+          if (at != std::string::npos)
+            criterion.replace(at, impact_scale.size(), "||f_p,n||");
           std::ostringstream message;
           message << std::setprecision(6) << "Indentation step " << step
                   << " (approach " << approach << " m, "
@@ -364,8 +370,7 @@ namespace impact_fem
                   << ") did not converge: after " << result.iterations
                   << " iterations the residual is " << result.residual
                   << " of the load and the increment " << result.increment
-                  << " of the step's; required " << nonlinear_step.criterion()
-                  << ".";
+                  << " of the step's; required " << criterion << ".";
           AssertThrow(false, ExcMessage(message.str()));
         }
     };
