@@ -288,12 +288,19 @@ namespace impact_fem
                            "or support, or Plate side = clamped (dashpots and "
                            "free faces carry no static load)."));
 
-    AssertThrow(!indentation ||
-                  (!has_material_damping() && !has_internal_variables()),
+    // Elastic-plastic bodies are rate-independent in a quasi-static
+    // analysis (the plastic strain rate is zero, so Johnson-Cook's rate
+    // factor is 1); their Kelvin-Voigt retardation time is not.
+    bool linear_memory = false;
+    for (const auto &m : material)
+      linear_memory = linear_memory ||
+                      (m && m->is_linear() && m->n_internal_variables() > 0);
+    AssertThrow(!indentation || (!has_material_damping() && !linear_memory),
                 ExcMessage("The 'indentation' analysis is quasi-static and "
                            "rate-independent: Sphere and Plate must be "
-                           "elastic (Kelvin-Voigt and Maxwell materials need "
-                           "a loading rate)."));
+                           "elastic or elastic-plastic with Elastic-plastic/"
+                           "Retardation time = 0 (Kelvin-Voigt and Maxwell "
+                           "materials need a loading rate)."));
 
     prm.enter_subsection("Time integration");
     scheme                 = prm.get("Scheme");

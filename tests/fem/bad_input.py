@@ -61,6 +61,13 @@ for entry, value, words in [
 expect_failure("plastic_hardening_law", dict(plastic, **{"Plate/Material model": "elastic-plastic",
                                                          "Plate/Elastic-plastic/Hardening law": "voce"}),
                ["Hardening law", "voce"])
+# The quasi-static indentation takes elastic-plastic bodies, but not their
+# viscous part (a retardation time needs a loading rate).
+expect_failure("plastic_indentation_viscous",
+               dict(plastic, **{"Scenario/Analysis": "indentation", "Plate/Material model": "rigid",
+                                "Indentation/Maximum approach": 2e-6,
+                                "Sphere/Elastic-plastic/Retardation time": 1e-7}),
+               ["'indentation'", "Elastic-plastic/Retardation time = 0"])
 expect_failure("bad_velocities", None, ["velocities", "fast"],
                extra_args=["--velocities", "1,fast"])
 expect_failure("missing_gmsh", {"Mesh/Gmsh executable": "/nonexistent/gmsh"}, ["gmsh was not found"])

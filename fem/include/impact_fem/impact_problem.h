@@ -240,6 +240,12 @@ namespace impact_fem
     setup_indentation();
     void
     solve_indentation_step(const double approach, VectorType &displacement);
+    /// The step with elastic-plastic bodies: iterations of the elastic step
+    /// on the plastic force from the committed state (nothing committed).
+    time_integration::NonlinearStep::Result
+    solve_plastic_indentation_step(const double      approach,
+                                   const VectorType &committed_displacement,
+                                   VectorType       &displacement);
     void
     run_indentation();
 
@@ -280,8 +286,10 @@ namespace impact_fem
     double                          step_residual   = 0;
     // Right-hand side part of the Maxwell arms' forces at the next step.
     VectorType     internal_force_predictor;
-    // Indentation: displacement for a unit approach of the base.
-    VectorType     unit_approach_response;
+    // Indentation: displacement for a unit approach of the base, the load
+    // that prescribes it and the rows it holds (owned).
+    VectorType     unit_approach_response, unit_approach_load;
+    std::vector<types::global_dof_index> indentation_held_rows;
     VectorType     ghosted_u, ghosted_v, ghosted_trial;
     Vector<double> pressures;
     double         first_contact_speed = 0;

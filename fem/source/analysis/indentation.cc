@@ -1,19 +1,75 @@
 #include <impact_fem/analysis/indentation.h>
 #include <impact_fem/impact_problem.h>
+#include <impact_fem/result_files.h>
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/dofs/dof_tools.h>
 
 #include <nlohmann/json.hpp>
 
+#include <deal.II/fe/fe_values.h>
+
+#include <array>
 #include <cmath>
 #include <filesystem>
+#include <limits>
 #include <fstream>
 #include <iomanip>
 #include <sstream>
 
 namespace impact_fem
 {
+  namespace
+  {
+    // A quasi-static step has no duration: the plastic strain rate is zero
+    // (Johnson-Cook's rate factor is 1) and no viscous stress arises.
+    constexpr double quasi_static_time_step =
+      std::numeric_limits<double>::infinity();
+
+    // Where the accumulated plastic strain peaks: its value and the point
+    // (radius, depth below the sphere's lowest point, reference
+    // configuration) [-, m, m].
+    struct PlasticZonePeak
+    {
+      double value = 0, radius = 0, depth = 0;
+    };
+
+    // What an elastic-plastic indentation reports beyond the elastic one.
+    struct PlasticIndentation
+    {
+      unsigned int iterations = 0, most_iterations = 0, bisections = 0;
+      // The first step with plastic strain: approach, contact radius and
+      // where the plastic strain is largest then.
+      bool            yielded = false;
+      double          onset_approach = 0, onset_contact_radius = 0;
+      PlasticZonePeak onset, at_force_max;
+      double          force_max = -1;
+      // The permanent approach lies in [first, second].
+      std::array<double, 2> released_between = {{0, 0}};
+
+      void
+      observe(const PlasticZonePeak &peak,
+              const double           approach,
+              const double           force,
+              const double           contact_radius,
+              const bool             unloading)
+      {
+        if (!yielded && peak.value > 0)
+          {
+            yielded              = true;
+            onset                = peak;
+            onset_approach       = approach;
+            onset_contact_radius = contact_radius;
+          }
+        if (!unloading && force > force_max)
+          {
+            force_max    = force;
+            at_force_max = peak;
+          }
+      }
+    };
+  } // namespace
+
   void
   IndentationControl::declare_parameters(ParameterHandler &prm)
   {
@@ -124,6 +180,8 @@ namespace impact_fem
     unit_load.compress(VectorOperation::insert);
     unit_approach_response.reinit(locally_owned_dofs, mpi_communicator);
     direct_solver->solve(unit_approach_response, unit_load);
+    unit_approach_load    = unit_load;
+    indentation_held_rows = held_rows;
   }
 
 
@@ -134,14 +192,57 @@ namespace impact_fem
     // Elastic bodies: K is constant, so the equilibrium with the base at
     // -approach is u = approach u_1 + W lambda (u_1 the response to a unit
     // approach, W = K'^{-1} B^T), lambda from one complementarity problem,
-    // solved exactly. A nonlinear material replaces this by Newton
-    // iterations on r(u) = f_int(u) - B^T lambda with the base prescribed:
-    // each iteration refactorises its tangent with the same base rows, and
-    // solves the same complementarity problem for the increment (fem/
-    // README.md, "Indentation").
+    // solved exactly. Elastic-plastic bodies iterate this step on their
+    // plastic force (solve_plastic_indentation_step).
     displacement.equ(approach, unit_approach_response);
     pressures = contact.solve_complementarity(contact.weighted_gaps(displacement));
     contact.add_contact_response(pressures, displacement);
+  }
+
+
+  time_integration::NonlinearStep::Result
+  ImpactProblem::solve_plastic_indentation_step(
+    const double      approach,
+    const VectorType &committed_displacement,
+    VectorType       &displacement)
+  {
+    // K' u = approach e + f_p(u) + B^T lambda with the plastic force f_p
+    // of the committed state, iterated like an impact step
+    // (NonlinearStep): every iteration is the elastic step above for a
+    // given plastic force. The held rows of the base are prescribed, so
+    // their plastic force is dropped (their equation is u = prescribed).
+    const auto hold = [this](VectorType &force) {
+      for (const auto i : indentation_held_rows)
+        force[i] = 0;
+      force.compress(VectorOperation::insert);
+    };
+    VectorType load(unit_approach_load), contact_force(load), distributed(load),
+      start(arms.committed_plastic_force());
+    hold(start);
+    // The force scale of the convergence criterion: the contact force of
+    // the iterate plus the committed plastic force (which, like the body
+    // force of an impact step, does not vanish when the contact opens: near
+    // the release the contact force alone tends to zero).
+    const double committed_norm = start.l2_norm();
+    const auto linear_solve = [&](const VectorType &plastic_force, VectorType &u) {
+      load = plastic_force;
+      hold(load);
+      load.add(approach, unit_approach_load);
+      solve_linear_step(load, u);
+      contact_force = 0;
+      contact.add_contact_forces(pressures, contact_force);
+      return contact_force.l2_norm() + committed_norm;
+    };
+    const auto plastic_force = [&](const VectorType &u, VectorType &force) {
+      TimerOutput::Scope t(*computing_timer, "plastic force");
+      distributed = u;
+      constraints.distribute(distributed);
+      ghosted_trial = distributed;
+      arms.plastic_force(constraints, ghosted_trial, quasi_static_time_step, force);
+      hold(force);
+    };
+    return nonlinear_step.solve(
+      start, committed_displacement, displacement, linear_solve, plastic_force);
   }
 
 
@@ -164,6 +265,129 @@ namespace impact_fem
                         "radius of the contact nodes",
                         contact.node_radii());
 
+    // Elastic-plastic bodies: iterated steps, the plastic state committed
+    // after each, and what the plastic zone does (analysis/indentation.cc).
+    arms.initialize(dof_handler,
+                    *mapping,
+                    *quadrature,
+                    [this](const types::material_id id)
+                      -> const materials::Interface & { return material_of(id); },
+                    ghosted_u);
+    const bool plastic = arms.nonlinear();
+    PlasticIndentation plastic_record;
+    VectorType committed(locally_owned_dofs, mpi_communicator);
+    if (plastic)
+      {
+        history.declare({
+          {result_files::newton_iterations_dataset, "1", "iterations of the step's nonlinear solve (Nonlinear solver)"},
+          {result_files::newton_residual_dataset, "1", "out-of-balance force of the accepted iterate / (||B^T lambda|| + ||f_p,n||)"},
+          {"max_accumulated_plastic_strain", "1", "largest accumulated plastic strain of both bodies"},
+          {"plastic_work", "J", "cumulative plastic work int sigma : d eps^p"}});
+      }
+    // The sphere's lowest point (reference configuration), from which the
+    // depth of the plastic zone is measured.
+    double lowest = std::numeric_limits<double>::max();
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned() && cell->material_id() == body_ids::sphere)
+        for (const unsigned int v : cell->vertex_indices())
+          lowest = std::min(lowest, cell->vertex(v)[1]);
+    lowest = Utilities::MPI::min(lowest, mpi_communicator);
+    // The largest accumulated plastic strain and where it is (all ranks).
+    const auto plastic_zone_peak = [&]() {
+      FEValues<2>     fe_values(*mapping, *fe, *quadrature, update_quadrature_points);
+      PlasticZonePeak local;
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            const auto states = arms.states(cell);
+            if (states.empty())
+              continue;
+            fe_values.reinit(cell);
+            for (unsigned int q = 0; q < states.size(); ++q)
+              if (states[q]->accumulated_plastic_strain > local.value)
+                {
+                  local.value  = states[q]->accumulated_plastic_strain;
+                  local.radius = fe_values.quadrature_point(q)[0];
+                  local.depth  = fe_values.quadrature_point(q)[1] - lowest;
+                }
+          }
+      PlasticZonePeak global;
+      global.value = Utilities::MPI::max(local.value, mpi_communicator);
+      // The rank that holds the peak gives its place (the others send 0).
+      const bool mine = local.value == global.value && global.value > 0;
+      const unsigned int owner = Utilities::MPI::min(
+        mine ? Utilities::MPI::this_mpi_process(mpi_communicator) :
+               Utilities::MPI::n_mpi_processes(mpi_communicator),
+        mpi_communicator);
+      const bool sends = owner == Utilities::MPI::this_mpi_process(mpi_communicator);
+      global.radius = Utilities::MPI::sum(sends ? local.radius : 0., mpi_communicator);
+      global.depth  = Utilities::MPI::sum(sends ? local.depth : 0., mpi_communicator);
+      return global;
+    };
+    // Solve one step; a plastic step that does not converge stops the run.
+    // A step to be committed (@p prepare) is solved on the candidate cells
+    // of the plastic states and again if a point elsewhere yielded
+    // (InternalVariables::prepare_commit, as for an impact step); the
+    // bisection's trials are not committed and leave the prepared state of
+    // the step alone.
+    const auto solve_step = [&](const std::size_t step,
+                                const double      approach,
+                                VectorType       &displacement,
+                                const bool        prepare) {
+      TimerOutput::Scope t(*computing_timer, "solve indentation step");
+      if (!plastic)
+        {
+          solve_indentation_step(approach, displacement);
+          return;
+        }
+      auto result =
+        solve_plastic_indentation_step(approach, committed, displacement);
+      unsigned int iterations = result.iterations;
+      while (prepare && result.converged &&
+             !arms.prepare_commit(constraints, ghosted_trial, quasi_static_time_step))
+        {
+          result = solve_plastic_indentation_step(approach, committed, displacement);
+          iterations += result.iterations;
+        }
+      result.iterations = iterations;
+      step_iterations = result.iterations;
+      step_residual   = result.residual;
+      plastic_record.iterations += result.iterations;
+      plastic_record.most_iterations =
+        std::max(plastic_record.most_iterations, result.iterations);
+      if (!result.converged)
+        {
+          // The criterion in words, with the force scale of this analysis.
+          std::string       criterion = nonlinear_step.criterion();
+          const std::string impact_scale = "||f_body||";
+          const auto        at = criterion.find(impact_scale);
+          if (at != std::string::npos)
+            criterion.replace(at, impact_scale.size(), "||f_p,n||");
+          std::ostringstream message;
+          message << std::setprecision(6) << "Indentation step " << step
+                  << " (approach " << approach << " m, "
+                  << (step > indentation_control.steps ? "unloading" : "loading")
+                  << ") did not converge: after " << result.iterations
+                  << " iterations the residual is " << result.residual
+                  << " of the load and the increment " << result.increment
+                  << " of the step's; required " << criterion << ".";
+          AssertThrow(false, ExcMessage(message.str()));
+        }
+    };
+    const auto commit = [&](const VectorType &displacement) {
+      committed = displacement;
+      VectorType distributed(displacement), unused(displacement);
+      constraints.distribute(distributed);
+      ghosted_u = distributed;
+      arms.update(dof_handler,
+                  *mapping,
+                  *quadrature,
+                  constraints,
+                  ghosted_u,
+                  quasi_static_time_step,
+                  unused);
+    };
+
     const std::vector<double> approaches = indentation_control.approaches();
     VectorType   displacement(locally_owned_dofs, mpi_communicator);
     double       force_max = 0, radius_at_force_max = 0, deepest = 0;
@@ -178,11 +402,41 @@ namespace impact_fem
                                " at indentation step " + std::to_string(step) +
                                "."));
         const bool unloading = step > indentation_control.steps;
-        {
-          TimerOutput::Scope t(*computing_timer, "solve indentation step");
-          solve_indentation_step(approaches[step], displacement);
-        }
+        solve_step(step, approaches[step], displacement, true);
         const double force = contact.total_force(pressures);
+        // The permanent approach of a plastic body lies between this step
+        // and the last loaded one: bisected from the last committed state
+        // (elastic unloading, no new plastic flow expected) until the
+        // bracket is 1e-4 of the maximum approach.
+        const unsigned int step_iterations_kept = step_iterations;
+        const double       step_residual_kept   = step_residual;
+        if (plastic && unloading && force <= 0)
+          {
+            double      low = approaches[step], high = approaches[step - 1];
+            VectorType  trial(displacement);
+            const Vector<double> kept_pressures(pressures);
+            while (high - low > 1e-4 * indentation_control.maximum_approach)
+              {
+                const double middle = 0.5 * (low + high);
+                solve_step(step, middle, trial, false);
+                (contact.total_force(pressures) > 0 ? high : low) = middle;
+                ++plastic_record.bisections;
+              }
+            pressures = kept_pressures;
+            plastic_record.released_between = {{low, high}};
+          }
+        if (plastic)
+          {
+            commit(displacement);
+            history.append(result_files::newton_iterations_dataset, step_iterations_kept);
+            history.append(result_files::newton_residual_dataset, step_residual_kept);
+            history.append("max_accumulated_plastic_strain",
+                           std::max(arms.max_accumulated_plastic_strain(0),
+                                    arms.max_accumulated_plastic_strain(1)));
+            history.append("plastic_work", arms.plastic_work());
+            plastic_record.observe(plastic_zone_peak(), approaches[step], force,
+                                   contact.contact_radius(pressures), unloading);
+          }
         const double plate_displacement =
           -(weights.plate_bottom_mean * displacement);
         const double penetration = contact.penetration(displacement);
@@ -214,6 +468,11 @@ namespace impact_fem
           {
             released          = true;
             residual_approach = approaches[step] - plate_displacement;
+            if (plastic)
+              {
+                residual_approach    = plastic_record.released_between[0];
+                last_loaded_approach = plastic_record.released_between[1];
+              }
           }
         else if (unloading)
           last_loaded_approach = approaches[step] - plate_displacement;
@@ -245,6 +504,26 @@ namespace impact_fem
     result["contact_nodes"]       = contact.n_contact_nodes();
     result["ranks"]               = Utilities::MPI::n_mpi_processes(mpi_communicator);
     result["wall_time"]           = wall_time;
+    if (plastic)
+      {
+        // The permanent approach bisected to 1e-4 of the maximum approach;
+        // the yield onset and the plastic zone at the largest force.
+        result["residual_approach_bisections"] = plastic_record.bisections;
+        result["plastic_work"]                  = arms.plastic_work();
+        result["max_accumulated_plastic_strain"] =
+          std::max(arms.max_accumulated_plastic_strain(0),
+                   arms.max_accumulated_plastic_strain(1));
+        result["newton_iterations"]      = plastic_record.iterations;
+        result["newton_iterations_max"]  = plastic_record.most_iterations;
+        result["yielded"]                = plastic_record.yielded;
+        result["yield_onset_approach"]   = plastic_record.onset_approach;
+        result["yield_onset_contact_radius"] = plastic_record.onset_contact_radius;
+        result["yield_onset_r"]          = plastic_record.onset.radius;
+        result["yield_onset_depth"]      = plastic_record.onset.depth;
+        result["plastic_strain_peak_at_force_max"] = plastic_record.at_force_max.value;
+        result["plastic_strain_peak_r_at_force_max"] = plastic_record.at_force_max.radius;
+        result["plastic_strain_peak_depth_at_force_max"] = plastic_record.at_force_max.depth;
+      }
     AssertThrow(released,
                 ExcMessage("Internal error: the contact force did not vanish "
                            "at zero approach."));
@@ -253,9 +532,14 @@ namespace impact_fem
       return;
     std::map<std::string, std::string> text_attributes = parameter_attributes();
     text_attributes["definition: residual_approach"] =
-      "approach of the first unloading step with zero contact force (the "
-      "permanent approach lies between it and residual_approach_upper_bound, "
-      "the approach of the step before)";
+      plastic ?
+        "permanent approach: the largest approach with zero contact force "
+        "found by bisection between the last unloading step with force and "
+        "the first without (to 1e-4 of the maximum approach; "
+        "residual_approach_upper_bound the smallest with force)" :
+        "approach of the first unloading step with zero contact force (the "
+        "permanent approach lies between it and residual_approach_upper_bound, "
+        "the approach of the step before)";
     std::map<std::string, double> numeric_attributes;
     for (const auto &[key, value] : result.items())
       if (value.is_number())
@@ -278,7 +562,18 @@ namespace impact_fem
           << " N)\n"
           << "  contact radius    " << radius_at_force_max * 1e3 << " mm (Hertz "
           << std::sqrt(R * omega) * 1e3 << " mm)\n"
-          << "  residual approach " << residual_approach * 1e6 << " um\n"
+          << "  residual approach " << residual_approach * 1e6 << " um\n";
+    if (plastic)
+      pcout << "  plastic work      " << arms.plastic_work() << " J, max accumulated "
+            << "plastic strain " << result["max_accumulated_plastic_strain"].get<double>()
+            << "\n  yield onset       at approach "
+            << plastic_record.onset_approach * 1e6 << " um, peak at r = "
+            << plastic_record.onset.radius * 1e6 << " um, depth "
+            << plastic_record.onset.depth * 1e6 << " um (contact radius "
+            << plastic_record.onset_contact_radius * 1e6 << " um)\n"
+            << "  iterations        " << plastic_record.iterations << " (max "
+            << plastic_record.most_iterations << " in a step)\n";
+    pcout
           << "  max penetration   " << deepest * 1e9 << " nm\n"
           << "  cells " << triangulation.n_global_active_cells() << ", dofs "
           << dof_handler.n_dofs() << ", steps " << step << ", wall time "
