@@ -119,6 +119,34 @@ namespace impact_fem
           history.append(prefix + "rz", (*tensors[k])[0][1]);
         }
     }
+
+
+    // Appends t, the mean strain and stress over a specimen's quadrature
+    // points and the inhomogeneity: the largest deviation of a point's
+    // stress from the mean, relative to the largest mean component.
+    void
+    append_specimen_means(History                                  &history,
+                          const double                              t,
+                          const std::vector<SymmetricTensor<2, 3>> &strains,
+                          const std::vector<SymmetricTensor<2, 3>> &stresses)
+    {
+      SymmetricTensor<2, 3> mean_strain, mean_stress;
+      for (unsigned int k = 0; k < strains.size(); ++k)
+        {
+          mean_strain += strains[k] / strains.size();
+          mean_stress += stresses[k] / stresses.size();
+        }
+      double deviation = 0, scale = 0;
+      for (unsigned int a = 0; a < 3; ++a)
+        for (unsigned int b = a; b < 3; ++b)
+          scale = std::max(scale, std::abs(mean_stress[a][b]));
+      for (const auto &sigma : stresses)
+        for (unsigned int a = 0; a < 3; ++a)
+          for (unsigned int b = a; b < 3; ++b)
+            deviation = std::max(deviation, std::abs(sigma[a][b] - mean_stress[a][b]));
+      append_components(history, t, mean_strain, mean_stress);
+      history.append("inhomogeneity", scale > 0 ? deviation / scale : 0.);
+    }
   } // namespace
 
 
@@ -601,24 +629,10 @@ namespace impact_fem
                        {"newton_iterations", "1", "Newton iterations of the step"}});
       double plastic_work = 0;
       auto   record = [&](const double t, const unsigned int iterations) {
-        SymmetricTensor<2, 3> mean_strain, mean_stress;
-        double                mean_plastic = 0;
-        for (unsigned int k = 0; k < strains.size(); ++k)
-          {
-            mean_strain += strains[k] / strains.size();
-            mean_stress += stresses[k] / stresses.size();
-            mean_plastic += plastic_strains[k] / plastic_strains.size();
-          }
-        double deviation = 0, scale = 0;
-        for (unsigned int a = 0; a < 3; ++a)
-          for (unsigned int b = a; b < 3; ++b)
-            scale = std::max(scale, std::abs(mean_stress[a][b]));
-        for (const auto &sigma : stresses)
-          for (unsigned int a = 0; a < 3; ++a)
-            for (unsigned int b = a; b < 3; ++b)
-              deviation = std::max(deviation, std::abs(sigma[a][b] - mean_stress[a][b]));
-        append_components(history, t, mean_strain, mean_stress);
-        history.append("inhomogeneity", scale > 0 ? deviation / scale : 0.);
+        double mean_plastic = 0;
+        for (const double p : plastic_strains)
+          mean_plastic += p / plastic_strains.size();
+        append_specimen_means(history, t, strains, stresses);
         history.append("accumulated_plastic_strain", mean_plastic);
         history.append("plastic_work", plastic_work);
         history.append("newton_iterations", iterations);
@@ -947,22 +961,7 @@ namespace impact_fem
               stresses.push_back(sigma);
             }
         }
-      SymmetricTensor<2, 3> mean_strain, mean_stress;
-      for (unsigned int k = 0; k < strains.size(); ++k)
-        {
-          mean_strain += strains[k] / strains.size();
-          mean_stress += stresses[k] / stresses.size();
-        }
-      double deviation = 0, scale = 0;
-      for (unsigned int a = 0; a < 3; ++a)
-        for (unsigned int b = a; b < 3; ++b)
-          scale = std::max(scale, std::abs(mean_stress[a][b]));
-      for (const auto &sigma : stresses)
-        for (unsigned int a = 0; a < 3; ++a)
-          for (unsigned int b = a; b < 3; ++b)
-            deviation = std::max(deviation, std::abs(sigma[a][b] - mean_stress[a][b]));
-      append_components(history, t, mean_strain, mean_stress);
-      history.append("inhomogeneity", scale > 0 ? deviation / scale : 0.);
+      append_specimen_means(history, t, strains, stresses);
       history.append("internal_energy", stored);
       history.append("dissipated_energy", dissipated);
     };
