@@ -5,6 +5,7 @@
 #include <impact_fem/output/history.h>
 
 #include <deal.II/base/exceptions.h>
+#include <deal.II/dofs/dof_handler.h>
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/utilities.h>
 
@@ -146,6 +147,25 @@ namespace impact_fem
             deviation = std::max(deviation, std::abs(sigma[a][b] - mean_stress[a][b]));
       append_components(history, t, mean_strain, mean_stress);
       history.append("inhomogeneity", scale > 0 ? deviation / scale : 0.);
+    }
+    // The specimen's history.h5 in @p directory, with its loading, time
+    // step and discretisation as attributes.
+    void
+    write_specimen_history(const History       &history,
+                           const std::string   &directory,
+                           const std::string   &loading,
+                           const double         dt,
+                           const DoFHandler<2> &dof_handler)
+    {
+      std::filesystem::create_directories(directory);
+      std::map<std::string, std::string> text;
+      text["Scenario/Analysis"]      = "specimen";
+      text["Material point/Loading"] = loading;
+      std::map<std::string, double> numbers;
+      numbers["time_step [s]"] = dt;
+      numbers["cells"]         = dof_handler.get_triangulation().n_active_cells();
+      numbers["dofs"]          = dof_handler.n_dofs();
+      history.write_hdf5(directory + "/history.h5", text, numbers, true);
     }
   } // namespace
 
@@ -709,15 +729,7 @@ namespace impact_fem
         }
 
       const std::string &directory = input.directory;
-      std::filesystem::create_directories(directory);
-      std::map<std::string, std::string> text;
-      text["Scenario/Analysis"]      = "specimen";
-      text["Material point/Loading"] = loading;
-      std::map<std::string, double> numbers;
-      numbers["time_step [s]"] = dt;
-      numbers["cells"]         = triangulation.n_active_cells();
-      numbers["dofs"]          = dof_handler.n_dofs();
-      history.write_hdf5(directory + "/history.h5", text, numbers, true);
+      write_specimen_history(history, directory, loading, dt, dof_handler);
       std::cout << "specimen (" << loading << ", general constitutive update): "
                 << triangulation.n_active_cells() << " cells, " << dof_handler.n_dofs()
                 << " dofs, " << n_steps << " steps of " << dt << " s, "
@@ -1017,15 +1029,7 @@ namespace impact_fem
         evaluate_and_update(t, true);
       }
 
-    std::filesystem::create_directories(directory);
-    std::map<std::string, std::string> text;
-    text["Scenario/Analysis"]      = "specimen";
-    text["Material point/Loading"] = loading;
-    std::map<std::string, double> numbers;
-    numbers["time_step [s]"] = dt;
-    numbers["cells"]         = triangulation.n_active_cells();
-    numbers["dofs"]          = dof_handler.n_dofs();
-    history.write_hdf5(directory + "/history.h5", text, numbers, true);
+    write_specimen_history(history, directory, loading, dt, dof_handler);
     std::cout << "specimen (" << loading << "): " << triangulation.n_active_cells()
               << " cells, " << dof_handler.n_dofs() << " dofs, " << n_steps
               << " steps of " << dt << " s -> " << directory << "/history.h5"
