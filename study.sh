@@ -1,21 +1,28 @@
 #!/usr/bin/env bash
-# The default study, the project's main job: the campaign of fem/scenarios/study.prm
-# (Kelvin-Voigt steel ball on a steel plate, V = 0.5, 1, 2, 3, 4, 5 m/s, 2 MPI ranks), each
-# run verified (--verify: two coarser levels, the numerical uncertainty of the FEM), the
-# calibration of Hunt-Crossley and the comparison laws, the export of the calibrated contact
-# to Simbody, MuJoCo and LAMMPS, its runs in those tools, and the validity report with the
-# section "In your simulator". Complete (and verified) runs of an earlier or interrupted
-# study are reused.
+# The studies, the project's main job. Each runs an FEM campaign with every run verified
+# (--verify: two coarser levels, the numerical uncertainty of the FEM), the calibration of
+# Hunt-Crossley, the comparison laws and the elastic-plastic laws, the export of the
+# calibrated contact to Simbody, MuJoCo, LAMMPS (and LIGGGHTS when the bodies yield), its
+# runs in those tools, and the validity report with the section "In your simulator".
+# Complete (and verified) runs of an earlier or interrupted study are reused.
 #
-# The thin-plate study (./study.sh thin-plate): the same ball on Kelvin-Voigt steel plates
-# of 2 mm ... 0.35 m (the massive plate) lying free (fem/scenarios/thin_plate.prm), swept over the plate thickness x
-# V = 0.5, 1, 2, 5 m/s (44 runs, each verified), and the report with its validity maps:
-# where calibrated Hunt-Crossley, the best law and Zener's thin-plate model hold, per
-# thickness and velocity.
+#   ./study.sh [OUTPUT_DIR]                 the default study, fem/scenarios/study.prm:
+#       elastic-plastic Kelvin-Voigt steel ball on a steel plate (J2 plasticity and
+#       viscoelastic damping in both bodies), V = 0.5 ... 5 m/s, 2 MPI ranks
+#       (default OUTPUT_DIR results/study)
+#   ./study.sh viscoelastic [OUTPUT_DIR]    the same without plasticity,
+#       fem/scenarios/study_viscoelastic.prm, the reference of the default study
+#       (results/study-viscoelastic)
+#   ./study.sh plastic [OUTPUT_DIR]         the plasticity-dominated study,
+#       fem/scenarios/steel_on_steel_plastic.prm: the hardened ball on a structural-steel
+#       (AISI 1006, Johnson-Cook) plate, V = 0.1 ... 5 m/s (results/plastic)
+#   ./study.sh thin-plate [OUTPUT_DIR]      the ball on Kelvin-Voigt steel plates of
+#       2 mm ... 0.35 m (the massive plate) lying free (fem/scenarios/thin_plate.prm), swept
+#       over the plate thickness x V = 0.5, 1, 2, 5 m/s (44 runs, each verified), and the
+#       report with its validity maps: where calibrated Hunt-Crossley, the best law and
+#       Zener's thin-plate model hold, per thickness and velocity (results/thin-plate)
 #
-# Usage: ./study.sh [OUTPUT_DIR]              (default results/study)
-#        ./study.sh thin-plate [OUTPUT_DIR]   (default results/thin-plate)
-# Both need a build in build/ (or IMPACT_BUILD_DIR=...); the default study also needs the
+# All need a build in build/ (or IMPACT_BUILD_DIR=...); all but thin-plate also need the
 # simulators (./setup.sh).
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")"
@@ -44,32 +51,39 @@ if [ "${1:-}" = "thin-plate" ]; then
   exit 0
 fi
 
+scenario=fem/scenarios/study.prm
 output="${1:-results/study}"
-for tool in impact-fem impact-calibrate impact-export impact-report impact-drop-lammps; do
+case "${1:-}" in
+  viscoelastic) scenario=fem/scenarios/study_viscoelastic.prm output="${2:-results/study-viscoelastic}" ;;
+  plastic) scenario=fem/scenarios/steel_on_steel_plastic.prm output="${2:-results/plastic}" ;;
+  -*) echo "study: unknown option '$1' (usage: sed -n 9,27p study.sh)" >&2; exit 2 ;;
+esac
+for tool in impact-fem impact-calibrate impact-export impact-report impact-drop-lammps impact-drop-liggghts; do
   [ -x "$bin/$tool" ] || { echo "study: $bin/$tool is missing: build first (README)" >&2; exit 1; }
 done
 # The simulators are checked before the FEM campaign, so that a missing one stops the study
-# at once rather than after it (tests/consumers/run_in_simulators.sh needs all three).
+# at once rather than after it (tests/consumers/run_in_simulators.sh needs all four).
 missing=()
 [ -f /usr/include/simbody/Simbody.h ] || missing+=("Simbody (Debian package libsimbody-dev)")
 [ -x "$bin/impact-drop-mujoco" ] ||
   missing+=("MuJoCo ($bin/impact-drop-mujoco is built only when libmujoco-dev is found: install it, then run cmake and build again)")
 command -v "${IMPACT_LAMMPS:-lmp}" >/dev/null 2>&1 || command -v lmp_serial >/dev/null 2>&1 ||
   command -v lmp_stable >/dev/null 2>&1 || missing+=("LAMMPS (Debian package lammps: lmp)")
+command -v liggghts >/dev/null 2>&1 || missing+=("LIGGGHTS (Debian package liggghts)")
 if [ ${#missing[@]} -gt 0 ]; then
-  echo "study: the section 'In your simulator' needs Simbody, MuJoCo and LAMMPS; missing:" >&2
+  echo "study: the section 'In your simulator' needs Simbody, MuJoCo, LAMMPS and LIGGGHTS; missing:" >&2
   printf '  %s\n' "${missing[@]}" >&2
   echo "study: ./setup.sh installs them" >&2
   exit 1
 fi
 
 start=$SECONDS
-echo "study: FEM campaign, verified -> $output/campaign"
-"${mpirun[@]}" "$bin/impact-fem" fem/scenarios/study.prm --set "Output/Directory=$output/campaign" \
+echo "study: FEM campaign of $scenario, verified -> $output/campaign"
+"${mpirun[@]}" "$bin/impact-fem" "$scenario" --set "Output/Directory=$output/campaign" \
   --verify
 echo "study: calibration -> $output/calibration.json"
 "$bin/impact-calibrate" --campaign "$output/campaign" --output "$output/calibration.json"
-echo "study: export to Simbody, MuJoCo, LAMMPS -> $output/export"
+echo "study: export to Simbody, MuJoCo, LAMMPS, LIGGGHTS -> $output/export"
 "$bin/impact-export" --campaign "$output/campaign" --calibration "$output/calibration.json" \
   --output "$output/export"
 echo "study: the exports run in the simulators -> $output/in_simulator"
