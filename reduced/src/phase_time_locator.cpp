@@ -1,0 +1,396 @@
+// Locating ascending times on a PhaseTimeMap (phase_time_map.hpp): Newton's method on each
+// piece's series, or, on a piece holding more points than its nodes, the Chebyshev series in
+// time of sigma and the companions. The series are evaluated for several points or nodes
+// at once: Clenshaw's recurrence is a chain of dependent operations, and chains of
+// independent points run side by side at little more than the cost of one.
+
+#include "phase_time_map.hpp"
+
+#include "chebyshev_points.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace impact::reduced::detail {
+
+namespace {
+
+constexpr int m = PhaseTimeMap::nodes;
+
+// sum_{j <= m} t_j T_j(x) and sum_{j < m} d_j T_j(x) at N points by Clenshaw's recurrence.
+template <int N>
+void time_and_density(const double* t, const double* d, const double (&x)[N],
+                      double (&time)[N], double (&density)[N]) {
+  double t_next[N], t_after[N] = {}, d_next[N] = {}, d_after[N] = {};
+  for (int i = 0; i < N; ++i) t_next[i] = t[m];
+  for (int j = m - 1; j >= 1; --j)
+    for (int i = 0; i < N; ++i) {
+      const double t_current = t[j] + 2 * x[i] * t_next[i] - t_after[i];
+      const double d_current = d[j] + 2 * x[i] * d_next[i] - d_after[i];
+      t_after[i] = t_next[i];
+      t_next[i] = t_current;
+      d_after[i] = d_next[i];
+      d_next[i] = d_current;
+    }
+  for (int i = 0; i < N; ++i) {
+    time[i] = t[0] + x[i] * t_next[i] - t_after[i];
+    density[i] = d[0] + x[i] * d_next[i] - d_after[i];
+  }
+}
+
+} // namespace
+
+// The companions and sigma^p at panel variables x by Clenshaw's recurrence.
+template <int N>
+void PhaseTimeMap::panel_samples(const Panel& panel, const double (&x)[N],
+                                 PhaseSample (&samples)[N]) const {
+  constexpr int n = phase_companions + 1;
+  const double* series[n];
+  for (int c = 0; c < phase_companions; ++c) series[c] = panel.companions[c];
+  series[phase_companions] = panel.sigma_power;
+  double next[N][n] = {}, after[N][n] = {};
+  for (int j = m - 1; j >= 1; --j)
+    for (int i = 0; i < N; ++i)
+      for (int c = 0; c < n; ++c) {
+        const double current = series[c][j] + 2 * x[i] * next[i][c] - after[i][c];
+        after[i][c] = next[i][c];
+        next[i][c] = current;
+      }
+  for (int i = 0; i < N; ++i) {
+    samples[i].sigma = panel.lower + panel.half_width * (x[i] + 1.0);
+    samples[i].sigma_power =
+        series[phase_companions][0] + x[i] * next[i][phase_companions] - after[i][phase_companions];
+    for (int c = 0; c < phase_companions; ++c)
+      samples[i].companions[c] = series[c][0] + x[i] * next[i][c] - after[i][c];
+  }
+}
+
+// The companions on the first piece, polynomials in tau, by Horner's rule.
+PhaseSample PhaseTimeMap::first_piece_sample(double s, double tau) const {
+  constexpr int K = first_nodes;
+  double sum[phase_companions];
+  for (int c = 0; c < phase_companions; ++c) sum[c] = first_companions_[c][K - 1];
+  for (int k = K - 2; k >= 0; --k)
+    for (int c = 0; c < phase_companions; ++c) sum[c] = sum[c] * tau + first_companions_[c][k];
+  PhaseSample sample;
+  sample.sigma = first_upper_ * s;
+  sample.sigma_power = first_upper_power_ * tau;
+  for (int c = 0; c < phase_companions; ++c) sample.companions[c] = sum[c];
+  return sample;
+}
+
+// t(x) = start_time + half_width T(x), increasing in x on [-1, 1]: Newton's method kept
+// inside a shrinking bracket, bisection where a step would leave it, for N times at once
+// (x holds the guesses). From a guess within 1e-8 of the root one step reaches the root to
+// rounding (quadratic convergence, and t''/t' is of order one in x on a panel).
+template <int N>
+void PhaseTimeMap::solve_in_panel(const Panel& panel, const double (&times)[N],
+                                  double (&x)[N]) const {
+  double target[N], low[N], high[N];
+  bool solved[N];
+  for (int i = 0; i < N; ++i) {
+    target[i] = (times[i] - panel.start_time) / panel.half_width;
+    low[i] = -1;
+    high[i] = 1;
+    x[i] = std::clamp(x[i], -1.0, 1.0);
+    solved[i] = false;
+  }
+  for (int iteration = 0; iteration < 100; ++iteration) {
+    double value[N], slope[N];
+    time_and_density<N>(panel.time, panel.density, x, value, slope);
+    bool all_solved = true;
+    for (int i = 0; i < N; ++i) {
+      if (solved[i]) continue;
+      const double residual = value[i] - target[i];
+      if (residual == 0) {
+        solved[i] = true;
+        continue;
+      }
+      (residual > 0 ? high : low)[i] = x[i];
+      double next = x[i] - residual / slope[i];
+      const bool newton = next >= low[i] && next <= high[i];
+      if (!newton) next = 0.5 * (low[i] + high[i]);
+      const double step = next - x[i];
+      x[i] = next;
+      solved[i] = (newton && std::fabs(step) < 1e-8) ||
+                  high[i] - low[i] < 4 * std::numeric_limits<double>::epsilon();
+      all_solved = all_solved && solved[i];
+    }
+    if (all_solved) break;
+  }
+}
+
+double PhaseTimeMap::panel_end_time(long panel) const {
+  return static_cast<std::size_t>(panel) + 1 < panels_.size() ? panels_[panel + 1].start_time
+                                                             : duration_;
+}
+
+bool PhaseTimeMap::fit_series(const double (&values)[series_count][nodes],
+                              const double (&tolerances)[series_count], SampleSeries& series) {
+  bool converged = true;
+  series.length = 1;
+  for (int c = 0; c < series_count; ++c) {
+    double coefficients[nodes];
+    converged =
+        chebyshev_coefficients<nodes>(values[c], tolerances[c], coefficients) && converged;
+    double dropped = 0;
+    int length = nodes;
+    while (length > 1 && dropped + std::fabs(coefficients[length - 1]) <= tolerances[c])
+      dropped += std::fabs(coefficients[--length]);
+    series.length = std::max(series.length, length);
+    for (int j = 0; j < nodes; ++j) series.coefficients[j][c] = coefficients[j];
+  }
+  for (int j = 0; j < nodes; ++j) series.coefficients[j][series_count] = 0;
+  return converged;
+}
+
+// The series at `Locator::batch` points y at once.
+void PhaseTimeMap::evaluate_series(const SampleSeries& series, const double (&y)[batch],
+                                   double (&values)[batch][series_count]) {
+  constexpr int width = series_count + 1;
+  double next[batch][width] = {}, after[batch][width] = {};
+  for (int j = series.length - 1; j >= 1; --j)
+    for (int i = 0; i < batch; ++i)
+      for (int c = 0; c < width; ++c) {
+        const double current = series.coefficients[j][c] + 2 * y[i] * next[i][c] - after[i][c];
+        after[i][c] = next[i][c];
+        next[i][c] = current;
+      }
+  for (int i = 0; i < batch; ++i)
+    for (int c = 0; c < series_count; ++c)
+      values[i][c] = series.coefficients[0][c] + y[i] * next[i][c] - after[i][c];
+}
+
+// sigma and the companions as functions of t on the panel: their values at the Chebyshev
+// points of the panel's time range, by Newton's method on the panel's series (all nodes at
+// once, from the node's own y: t is nearly linear in x), and their series; false if those
+// of sigma do not decay to 1e-14 of the panel's half width (its values carry rounding
+// errors of a few 1e-16 of it, which is the floor of the coefficients; the state then lies
+// within 1e-14 of a half panel from the exact one, a time error below 1e-14 of the panel's
+// duration) or a companion's not to its tolerance (the inverse is then not used).
+bool PhaseTimeMap::build_inverse(const Panel& panel, double end_time,
+                                 SampleSeries& inverse) const {
+  const auto& cosine = cosine_table<m>();
+  double times[m], x[m];
+  for (int k = 0; k < m; ++k) {
+    x[k] = cosine[1][k];
+    times[k] = panel.start_time + 0.5 * (end_time - panel.start_time) * (1 + x[k]);
+  }
+  solve_in_panel<m>(panel, times, x);
+  PhaseSample samples[m];
+  panel_samples<m>(panel, x, samples);
+  double values[series_count][nodes];
+  for (int k = 0; k < m; ++k) {
+    values[0][k] = samples[k].sigma;
+    values[1][k] = samples[k].sigma_power;
+    for (int c = 0; c < phase_companions; ++c) values[c + 2][k] = samples[k].companions[c];
+  }
+  double tolerances[series_count] = {1e-14 * panel.half_width, 1e-14 * values[1][0]};
+  for (int c = 0; c < phase_companions; ++c) tolerances[c + 2] = companion_tolerance_[c];
+  return fit_series(values, tolerances, inverse);
+}
+
+// t = sigma Q(tau), dt/dsigma = G(tau), tau = (sigma / sigma_0)^p, Newton's method in
+// s = sigma / sigma_0 in [0, 1] as on a panel. Returns s and its tau.
+double PhaseTimeMap::solve_in_first_piece(double time, double guess, double& tau) const {
+  constexpr int K = first_nodes;
+  auto horner = [](const double* c, double t) {
+    double sum = c[K - 1];
+    for (int k = K - 2; k >= 0; --k) sum = sum * t + c[k];
+    return sum;
+  };
+  // tau = s^p after a step s -> s + step: one power at the start, then (1 + e)^p by its
+  // binomial series for |e| = |step / s| < 1e-3 (five terms: error below e^6 < 1e-18).
+  const double p = power_;
+  auto rescale = [p](double tau_before, double e) {
+    return tau_before *
+           (1 + p * e *
+                    (1 + (p - 1) / 2 * e *
+                             (1 + (p - 2) / 3 * e * (1 + (p - 3) / 4 * e * (1 + (p - 4) / 5 * e)))));
+  };
+  const double target = time / first_upper_;
+  double low = 0, high = 1;
+  double s = std::clamp(guess, 0.0, 1.0);
+  tau = std::pow(s, p);
+  for (int iteration = 0; iteration < 100; ++iteration) {
+    const double residual = s * horner(first_time_, tau) - target;
+    if (residual == 0) break;
+    (residual > 0 ? high : low) = s;
+    double next = s - residual / horner(first_density_, tau);
+    const bool newton = next >= low && next <= high;
+    if (!newton) next = 0.5 * (low + high);
+    const double step = next - s;
+    tau = s > 0 && std::fabs(step) < 1e-3 * s ? rescale(tau, step / s) : std::pow(next, p);
+    s = next;
+    if ((newton && std::fabs(step) < 1e-8 * s) ||
+        high - low < 4 * std::numeric_limits<double>::epsilon() * high)
+      break;
+  }
+  return s;
+}
+
+// The first piece's inverse (see the header): R and the companions at the Chebyshev points
+// of w, each by Newton's method from the previous node's solution.
+bool PhaseTimeMap::build_first_inverse(double first_end, SampleSeries& inverse) const {
+  const auto& cosine = cosine_table<m>();
+  double values[series_count][nodes];
+  double guess = 0.5;
+  for (int k = m - 1; k >= 0; --k) { // ascending w
+    const double w = 0.5 * (1.0 + cosine[1][k]);
+    const double u = std::pow(w, 1.0 / power_);
+    double tau;
+    const double s = solve_in_first_piece(u * first_end, guess, tau);
+    guess = s;
+    values[0][k] = s / u;
+    values[1][k] = tau / w;
+    const PhaseSample sample = first_piece_sample(s, tau);
+    for (int c = 0; c < phase_companions; ++c) values[c + 2][k] = sample.companions[c];
+  }
+  double tolerances[series_count] = {1e-14 * std::fabs(values[0][0]),
+                                     1e-14 * std::fabs(values[1][0])};
+  for (int c = 0; c < phase_companions; ++c) tolerances[c + 2] = companion_tolerance_[c];
+  return fit_series(values, tolerances, inverse);
+}
+
+PhaseTimeMap::Locator::Locator(const PhaseTimeMap& map)
+  : map_(map),
+    first_end_(map.first_upper_ > 0 ? map.first_upper_ * [&] {
+      double sum = 0;
+      for (double c : map.first_time_) sum += c;
+      return sum;
+    }() : 0.0) {}
+
+// Piece -1 is the first piece, 0, 1, ... the panels.
+long PhaseTimeMap::Locator::piece_of(double time) const {
+  long piece = piece_ >= -1 ? piece_ : (map_.first_upper_ > 0 ? -1 : 0);
+  if (piece < 0 && time > first_end_ && !map_.panels_.empty()) piece = 0;
+  while (piece >= 0 && static_cast<std::size_t>(piece) + 1 < map_.panels_.size() &&
+         time > map_.panels_[piece + 1].start_time)
+    ++piece;
+  return piece;
+}
+
+double PhaseTimeMap::Locator::piece_start(long piece) const {
+  return piece < 0 ? 0.0 : map_.panels_[piece].start_time;
+}
+
+double PhaseTimeMap::Locator::piece_end(long piece) const {
+  return piece < 0 ? first_end_ : map_.panel_end_time(piece);
+}
+
+bool PhaseTimeMap::Locator::last_piece(long piece) const {
+  return static_cast<std::size_t>(piece + 1) == map_.panels_.size();
+}
+
+// A piece expected to hold more than `nodes` points gets its series in time, so that each
+// point costs five series instead of Newton's method and the piece's series.
+void PhaseTimeMap::Locator::enter(long piece, double time, double spacing) {
+  piece_ = piece;
+  known_ = 0;
+  const double end = piece_end(piece);
+  use_inverse_ = spacing > 0 && std::floor((end - time) / spacing) + 1 > nodes &&
+                 (piece < 0 ? map_.build_first_inverse(first_end_, inverse_)
+                            : map_.build_inverse(map_.panels_[piece], end, inverse_));
+}
+
+// Newton's method from the quadratic extrapolation in time of the last (up to) three
+// solutions in the piece (the solution is smooth in t within a piece): error O(h^3), so that
+// one or two steps suffice.
+PhaseSample PhaseTimeMap::Locator::newton_sample(double time) {
+  double guess;
+  if (known_ == 0) {
+    guess = piece_ < 0 ? time / first_end_ // t is nearly linear in sigma
+                       : -1 + 2 * (time - piece_start(piece_)) /
+                                  (piece_end(piece_) - piece_start(piece_));
+  } else if (known_ == 1) {
+    guess = known_x_[0];
+  } else {
+    guess = 0;
+    for (int a = 0; a < known_; ++a) {
+      double weight = 1;
+      for (int b = 0; b < known_; ++b)
+        if (b != a) weight *= (time - known_time_[b]) / (known_time_[a] - known_time_[b]);
+      guess += weight * known_x_[a];
+    }
+  }
+  PhaseSample sample;
+  double x;
+  if (piece_ < 0) {
+    double tau;
+    x = map_.solve_in_first_piece(time, guess, tau);
+    sample = map_.first_piece_sample(x, tau);
+  } else {
+    const Panel& panel = map_.panels_[piece_];
+    const double times[1] = {time};
+    double solution[1] = {guess};
+    map_.solve_in_panel<1>(panel, times, solution);
+    PhaseSample samples[1];
+    map_.panel_samples<1>(panel, solution, samples);
+    x = solution[0];
+    sample = samples[0];
+  }
+  if (known_ == 3) {
+    for (int a = 0; a < 2; ++a) {
+      known_time_[a] = known_time_[a + 1];
+      known_x_[a] = known_x_[a + 1];
+    }
+    --known_;
+  }
+  known_time_[known_] = time;
+  known_x_[known_] = x;
+  ++known_;
+  return sample;
+}
+
+// On the first piece, with u = t / t(first end) and w = u^p, sigma = sigma_0 u R(w) and
+// sigma^p = sigma_0^p w R(w)^p (one power per point); on a panel the series are in t.
+void PhaseTimeMap::Locator::inverse_samples(const double* times, int count,
+                                            PhaseSample* samples) const {
+  double y[batch], u[batch], w[batch];
+  for (int i = 0; i < batch; ++i) {
+    const double time = times[std::min(i, count - 1)];
+    if (piece_ < 0) {
+      u[i] = std::min(time / first_end_, 1.0);
+      w[i] = std::pow(u[i], map_.power_);
+      y[i] = 2 * w[i] - 1;
+    } else {
+      const double start = piece_start(piece_);
+      y[i] = std::clamp(2 * (time - start) / (piece_end(piece_) - start) - 1, -1.0, 1.0);
+    }
+  }
+  double values[batch][series_count];
+  evaluate_series(inverse_, y, values);
+  for (int i = 0; i < count; ++i) {
+    PhaseSample& sample = samples[i];
+    if (piece_ < 0) {
+      sample.sigma = map_.first_upper_ * u[i] * values[i][0];
+      sample.sigma_power = map_.first_upper_power_ * w[i] * values[i][1];
+    } else {
+      sample.sigma = values[i][0];
+      sample.sigma_power = values[i][1];
+    }
+    for (int c = 0; c < phase_companions; ++c) sample.companions[c] = values[i][c + 2];
+  }
+}
+
+void PhaseTimeMap::Locator::locate(const double* times, int count, double spacing,
+                                   PhaseSample* samples) {
+  int first = 0;
+  while (first < count) {
+    const long piece = piece_of(times[first]);
+    if (piece != piece_) enter(piece, times[first], spacing);
+    // The points of this batch in the same piece.
+    const double end = piece_end(piece);
+    int after = first + 1;
+    while (after < count && (last_piece(piece) || times[after] <= end)) ++after;
+    if (use_inverse_) {
+      inverse_samples(times + first, after - first, samples + first);
+    } else {
+      for (int i = first; i < after; ++i) samples[i] = newton_sample(times[i]);
+    }
+    first = after;
+  }
+}
+
+} // namespace impact::reduced::detail
