@@ -129,37 +129,49 @@ double PhaseTimeMap::panel_end_time(long panel) const {
 bool PhaseTimeMap::fit_series(const double (&values)[series_count][nodes],
                               const double (&tolerances)[series_count], SampleSeries& series) {
   bool converged = true;
+  double coefficients[series_count][nodes];
   series.length = 1;
   for (int c = 0; c < series_count; ++c) {
-    double coefficients[nodes];
     converged =
-        chebyshev_coefficients<nodes>(values[c], tolerances[c], coefficients) && converged;
+        chebyshev_coefficients<nodes>(values[c], tolerances[c], coefficients[c]) && converged;
     double dropped = 0;
     int length = nodes;
-    while (length > 1 && dropped + std::fabs(coefficients[length - 1]) <= tolerances[c])
-      dropped += std::fabs(coefficients[--length]);
+    while (length > 1 && dropped + std::fabs(coefficients[c][length - 1]) <= tolerances[c])
+      dropped += std::fabs(coefficients[c][--length]);
     series.length = std::max(series.length, length);
-    for (int j = 0; j < nodes; ++j) series.coefficients[j][c] = coefficients[j];
   }
-  for (int j = 0; j < nodes; ++j) series.coefficients[j][series_count] = 0;
+  // The power form by T_(j+1) = 2 y T_j - T_(j-1), each T_j's coefficients in turn.
+  const int length = series.length;
+  double previous[nodes] = {1.0}, current[nodes] = {0.0, 1.0};
+  for (int j = 0; j < length; ++j)
+    for (int c = 0; c < series_count; ++c)
+      series.coefficients[j][c] = j == 0 ? coefficients[c][0] : j == 1 ? coefficients[c][1] : 0.0;
+  for (int j = 2; j < length; ++j) {
+    double next[nodes];
+    for (int k = 0; k <= j; ++k)
+      next[k] = (k > 0 ? 2.0 * current[k - 1] : 0.0) - (k < j - 1 ? previous[k] : 0.0);
+    for (int k = 0; k <= j; ++k) {
+      previous[k] = current[k];
+      current[k] = next[k];
+      if (current[k] != 0)
+        for (int c = 0; c < series_count; ++c)
+          series.coefficients[k][c] += coefficients[c][j] * current[k];
+    }
+  }
   return converged;
 }
 
-// The series at `Locator::batch` points y at once.
+// The series at `batch` points y at once, by Horner's rule.
 void PhaseTimeMap::evaluate_series(const SampleSeries& series, const double (&y)[batch],
                                    double (&values)[batch][series_count]) {
-  constexpr int width = series_count + 1;
-  double next[batch][width] = {}, after[batch][width] = {};
-  for (int j = series.length - 1; j >= 1; --j)
-    for (int i = 0; i < batch; ++i)
-      for (int c = 0; c < width; ++c) {
-        const double current = series.coefficients[j][c] + 2 * y[i] * next[i][c] - after[i][c];
-        after[i][c] = next[i][c];
-        next[i][c] = current;
-      }
-  for (int i = 0; i < batch; ++i)
+  double sum[series_count][batch];
+  for (int c = 0; c < series_count; ++c)
+    for (int i = 0; i < batch; ++i) sum[c][i] = series.coefficients[series.length - 1][c];
+  for (int j = series.length - 2; j >= 0; --j)
     for (int c = 0; c < series_count; ++c)
-      values[i][c] = series.coefficients[0][c] + y[i] * next[i][c] - after[i][c];
+      for (int i = 0; i < batch; ++i) sum[c][i] = sum[c][i] * y[i] + series.coefficients[j][c];
+  for (int i = 0; i < batch; ++i)
+    for (int c = 0; c < series_count; ++c) values[i][c] = sum[c][i];
 }
 
 // sigma and the companions as functions of t on the panel: their values at the Chebyshev
