@@ -66,7 +66,11 @@ std::vector<ImpactState> ode_history(DenseStepper stepper, std::size_t points) {
       HuntCrossleyImpact(mass, stiffness, exponent, damping, velocity).approach_max();
   const ScaledImpact system{approach_max, approach_max / velocity};
   stepper.initialize(Scaled{0.0, 1.0}, 0.0, 1e-3);
-  std::vector<DenseStepper> steps;
+  // The copies of the steps reuse one buffer from call to call: at tight tolerances they
+  // fill hundreds of kB, whose fresh allocation (page faults) would otherwise be timed too,
+  // and more or less of it depending on what the allocator did before.
+  thread_local std::vector<DenseStepper> steps;
+  steps.clear();
   do {
     stepper.do_step(system);
     steps.push_back(stepper);
