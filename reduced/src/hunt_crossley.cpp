@@ -491,9 +491,7 @@ std::vector<ImpactState> HuntCrossleyImpact::power_law_history(std::size_t point
     return total * static_cast<double>(i) / static_cast<double>(points - 1);
   };
   const auto state = [](double time, const detail::PhaseSample& sample) {
-    const double sigma = sample.sigma;
-    return ImpactState{time, sigma * sample.companions[1], sample.companions[0],
-                       sample.sigma_power / sigma * sample.companions[2]};
+    return ImpactState{time, sample.quantities[1], sample.quantities[0], sample.quantities[2]};
   };
 
   std::vector<ImpactState> states(points);

@@ -39,9 +39,15 @@ void time_and_density(const double* t, const double* d, const double (&x)[N],
   }
 }
 
+// The quantities c_0, sigma c_1, sigma^(p-1) c_2 (sigma > 0).
+PhaseSample quantities(double sigma, double sigma_power, const double (&companions)[3]) {
+  static_assert(phase_companions == 3);
+  return {{companions[0], sigma * companions[1], sigma_power / sigma * companions[2]}};
+}
+
 } // namespace
 
-// The companions and sigma^p at panel variables x by Clenshaw's recurrence.
+// The quantities at panel variables x, the companions and sigma^p by Clenshaw's recurrence.
 template <int N>
 void PhaseTimeMap::panel_samples(const Panel& panel, const double (&x)[N],
                                  PhaseSample (&samples)[N]) const {
@@ -58,26 +64,24 @@ void PhaseTimeMap::panel_samples(const Panel& panel, const double (&x)[N],
         next[i][c] = current;
       }
   for (int i = 0; i < N; ++i) {
-    samples[i].sigma = panel.lower + panel.half_width * (x[i] + 1.0);
-    samples[i].sigma_power =
-        series[phase_companions][0] + x[i] * next[i][phase_companions] - after[i][phase_companions];
+    double companions[phase_companions];
     for (int c = 0; c < phase_companions; ++c)
-      samples[i].companions[c] = series[c][0] + x[i] * next[i][c] - after[i][c];
+      companions[c] = series[c][0] + x[i] * next[i][c] - after[i][c];
+    samples[i] = quantities(
+        panel.lower + panel.half_width * (x[i] + 1.0),
+        series[phase_companions][0] + x[i] * next[i][phase_companions] - after[i][phase_companions],
+        companions);
   }
 }
 
-// The companions on the first piece, polynomials in tau, by Horner's rule.
+// The quantities on the first piece, the companions polynomials in tau by Horner's rule.
 PhaseSample PhaseTimeMap::first_piece_sample(double s, double tau) const {
   constexpr int K = first_nodes;
   double sum[phase_companions];
   for (int c = 0; c < phase_companions; ++c) sum[c] = first_companions_[c][K - 1];
   for (int k = K - 2; k >= 0; --k)
     for (int c = 0; c < phase_companions; ++c) sum[c] = sum[c] * tau + first_companions_[c][k];
-  PhaseSample sample;
-  sample.sigma = first_upper_ * s;
-  sample.sigma_power = first_upper_power_ * tau;
-  for (int c = 0; c < phase_companions; ++c) sample.companions[c] = sum[c];
-  return sample;
+  return quantities(first_upper_ * s, first_upper_power_ * tau, sum);
 }
 
 // t(x) = start_time + half_width T(x), increasing in x on [-1, 1]: Newton's method kept
@@ -193,14 +197,10 @@ bool PhaseTimeMap::build_inverse(const Panel& panel, double end_time,
   PhaseSample samples[m];
   panel_samples<m>(panel, x, samples);
   double values[series_count][nodes];
-  for (int k = 0; k < m; ++k) {
-    values[0][k] = samples[k].sigma;
-    values[1][k] = samples[k].sigma_power;
-    for (int c = 0; c < phase_companions; ++c) values[c + 2][k] = samples[k].companions[c];
-  }
-  double tolerances[series_count] = {1e-14 * panel.half_width, 1e-14 * values[1][0]};
-  for (int c = 0; c < phase_companions; ++c) tolerances[c + 2] = companion_tolerance_[c];
-  return fit_series(values, tolerances, inverse);
+  for (int k = 0; k < m; ++k)
+    for (int c = 0; c < series_count; ++c) values[c][k] = samples[k].quantities[c];
+  // sigma <= 1: a quantity's error is at most its companion's.
+  return fit_series(values, companion_tolerance_, inverse);
 }
 
 // t = sigma Q(tau), dt/dsigma = G(tau), tau = (sigma / sigma_0)^p, Newton's method in
@@ -254,15 +254,13 @@ bool PhaseTimeMap::build_first_inverse(double first_end, SampleSeries& inverse) 
     double tau;
     const double s = solve_in_first_piece(u * first_end, guess, tau);
     guess = s;
-    values[0][k] = s / u;
-    values[1][k] = tau / w;
     const PhaseSample sample = first_piece_sample(s, tau);
-    for (int c = 0; c < phase_companions; ++c) values[c + 2][k] = sample.companions[c];
+    values[0][k] = sample.quantities[0];
+    values[1][k] = sample.quantities[1] / u;
+    values[2][k] = sample.quantities[2] * u / w;
   }
-  double tolerances[series_count] = {1e-14 * std::fabs(values[0][0]),
-                                     1e-14 * std::fabs(values[1][0])};
-  for (int c = 0; c < phase_companions; ++c) tolerances[c + 2] = companion_tolerance_[c];
-  return fit_series(values, tolerances, inverse);
+  // u <= 1: a quantity's error is at most that of its ratio to u^(e_k).
+  return fit_series(values, companion_tolerance_, inverse);
 }
 
 PhaseTimeMap::Locator::Locator(const PhaseTimeMap& map)
@@ -355,8 +353,8 @@ PhaseSample PhaseTimeMap::Locator::newton_sample(double time) {
   return sample;
 }
 
-// On the first piece, with u = t / t(first end) and w = u^p, sigma = sigma_0 u R(w) and
-// sigma^p = sigma_0^p w R(w)^p (one power per point); on a panel the series are in t.
+// On the first piece, with u = t / t(first end) and w = u^p, the series in w give q_k / u^(e_k)
+// (one power per point); on a panel the series are in t.
 void PhaseTimeMap::Locator::inverse_samples(const double* times, int count,
                                             PhaseSample* samples) const {
   double y[batch], u[batch], w[batch];
@@ -375,14 +373,11 @@ void PhaseTimeMap::Locator::inverse_samples(const double* times, int count,
   evaluate_series(inverse_, y, values);
   for (int i = 0; i < count; ++i) {
     PhaseSample& sample = samples[i];
+    for (int c = 0; c < phase_companions; ++c) sample.quantities[c] = values[i][c];
     if (piece_ < 0) {
-      sample.sigma = map_.first_upper_ * u[i] * values[i][0];
-      sample.sigma_power = map_.first_upper_power_ * w[i] * values[i][1];
-    } else {
-      sample.sigma = values[i][0];
-      sample.sigma_power = values[i][1];
+      sample.quantities[1] *= u[i];
+      sample.quantities[2] *= w[i] / u[i];
     }
-    for (int c = 0; c < phase_companions; ++c) sample.companions[c] = values[i][c + 2];
   }
 }
 
