@@ -120,9 +120,9 @@ public:
   /// 0.1): 17 us for both phases' series, 61 us for 1000 points, 0.32 ms for 10000.
   /// Accuracy, stated (tests/reduced/test_hunt_crossley_history.cpp; measured worst in
   /// brackets): each state lies on the exact trajectory (50-digit references) at a time
-  /// within 1e-13 t_c of its own [3e-15], and approach, rate and force are within 1e-12 of
-  /// x_max, V and F_max [7e-15], for beta in [1e-6, 1e3], n in {1, 1.5, 2.5}; against
-  /// state_at within 1e-12 [2.1e-14] for beta in {0} U [1e-12, 1e3], n in [0.5, 4].
+  /// within 1e-13 t_c of its own [2.1e-15], and approach, rate and force are within 1e-12 of
+  /// x_max, V and F_max [9.5e-15], for beta in [1e-6, 1e3], n in {1, 1.5, 2.5}; against
+  /// state_at within 1e-12 [2.3e-14] for beta in {0} U [1e-12, 1e3], n in [0.5, 4].
   /// Other elastic laws: each instant by Newton's method on the adaptive quadrature, from
   /// the previous one.
   std::vector<ImpactState> history(std::size_t points) const;
