@@ -117,7 +117,7 @@ public:
   /// pieces. On a piece holding more than 16 instants the state is a series in time, built
   /// once for the piece and evaluated for four instants at a time; elsewhere each instant is
   /// located by Newton's method on the piece's series. Cost (bench-reduced, README; beta =
-  /// 0.1): 17 us for both phases' series, 61 us for 1000 points, 0.32 ms for 10000.
+  /// 0.1): 14 us for both phases' series, 57 us for 1000 points, 0.27 ms for 10000.
   /// Accuracy, stated (tests/reduced/test_hunt_crossley_history.cpp; measured worst in
   /// brackets): each state lies on the exact trajectory (50-digit references) at a time
   /// within 1e-13 t_c of its own [2.1e-15], and approach, rate and force are within 1e-12 of
