@@ -11,6 +11,7 @@
 
 #include <quadmath.h>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -467,10 +468,9 @@ std::vector<ImpactState> HuntCrossleyImpact::power_law_history(std::size_t point
     const double approach_scale =
         std::pow(power * mass_ * extent / power_law_->stiffness(), 1.0 / power);
     const double energy_scale = power * mass_ * extent;
-    const auto density = [&, extent, factor, approach_scale, energy_scale](double sigma,
-                                                                          double* state) {
-      const double depth = std::pow(sigma, power);
-      const double distance = extent * depth;
+    const auto density = [&, extent, factor, approach_scale, energy_scale](
+                             double, double sigma_power, double* state) {
+      const double distance = extent * sigma_power;
       const double ratio = phase_energy_ratio(phase, distance);
       const double root = std::pow(ratio, -alpha); // e^(-alpha)
       const double force_factor = phase_force_factor(phase, distance);
@@ -491,31 +491,45 @@ std::vector<ImpactState> HuntCrossleyImpact::power_law_history(std::size_t point
     return total * static_cast<double>(i) / static_cast<double>(points - 1);
   };
   const auto state = [](double time, const detail::PhaseSample& sample) {
-    const double sigma = sample.sigma;
-    return ImpactState{time, sigma * sample.companions[1], sample.companions[0],
-                       sample.sigma_power / sigma * sample.companions[2]};
+    return ImpactState{time, sample.quantities[1], sample.quantities[0], sample.quantities[2]};
   };
 
   std::vector<ImpactState> states(points);
   states.front() = {0.0, 0.0, velocity_, 0.0};
   states.back() = {total, 0.0, rebound_velocity(), 0.0};
-  // Compression points forward from first contact, restitution points backward from
-  // separation, each from its own singular end.
-  std::vector<double> elapsed, remaining;
-  std::size_t last_compression = 0;
-  for (std::size_t i = 1; i + 1 < points && time_at(i) <= compression; ++i) {
-    elapsed.push_back(time_at(i));
-    last_compression = i;
-  }
-  for (std::size_t i = points - 2; i > last_compression; --i) remaining.push_back(total - time_at(i));
-  const auto compression_samples = compression_map.locate(elapsed);
-  for (std::size_t j = 0; j < elapsed.size(); ++j)
-    states[j + 1] = state(elapsed[j], compression_samples[j]);
-  const auto restitution_samples = restitution_map.locate(remaining);
-  for (std::size_t j = 0; j < remaining.size(); ++j) {
-    const std::size_t i = points - 2 - j;
-    states[i] = state(time_at(i), restitution_samples[j]);
-  }
+  // Compression points forward from first contact (points 1 .. compression_points),
+  // restitution points backward from separation, each from its own singular end; the
+  // located points go straight into `states`.
+  const double spacing = total / static_cast<double>(points - 1);
+  std::size_t compression_points =
+      std::min(points - 2, static_cast<std::size_t>(compression / spacing));
+  while (compression_points > 0 && time_at(compression_points) > compression) --compression_points;
+  while (compression_points + 2 < points && time_at(compression_points + 1) <= compression)
+    ++compression_points;
+  const auto locate = [spacing](const detail::PhaseTimeMap& map, std::size_t count,
+                                const auto& time_of, const auto& store) {
+    constexpr int batch = detail::PhaseTimeMap::Locator::batch;
+    detail::PhaseTimeMap::Locator locator(map);
+    for (std::size_t first = 0; first < count; first += batch) {
+      const int size = static_cast<int>(std::min<std::size_t>(batch, count - first));
+      double times[batch];
+      detail::PhaseSample samples[batch];
+      for (int k = 0; k < size; ++k) times[k] = time_of(first + k);
+      locator.locate(times, size, spacing, samples);
+      for (int k = 0; k < size; ++k) store(first + k, samples[k]);
+    }
+  };
+  locate(
+      compression_map, compression_points, [&](std::size_t j) { return time_at(j + 1); },
+      [&](std::size_t j, const detail::PhaseSample& sample) {
+        states[j + 1] = state(time_at(j + 1), sample);
+      });
+  locate(
+      restitution_map, points - 2 - compression_points,
+      [&](std::size_t j) { return total - time_at(points - 2 - j); },
+      [&](std::size_t j, const detail::PhaseSample& sample) {
+        states[points - 2 - j] = state(time_at(points - 2 - j), sample);
+      });
   return states;
 }
 

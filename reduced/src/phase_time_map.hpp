@@ -18,14 +18,13 @@
 // Each piece's time is then a short series that is inverted by Newton's method without
 // further calls of the density.
 //
-// Beside the density the caller supplies `companions`: values that are analytic functions
-// of sigma^p (here the state of the impact: the approach rate, the approach / sigma and the
-// force / sigma^n), computed with the density at the same nodes. sigma^p itself is
-// interpolated on the panels and exact on the first piece (to full relative accuracy near
-// sigma = 0, where the force is sigma^p / sigma times a companion).
-// They are interpolated on the same pieces (a piece is accepted only when their trailing
-// coefficients are small too), so that locating a time also gives them by a few short
-// series: no power, logarithm or root per located time.
+// Beside the density the caller supplies `companions`: values c_k that are analytic
+// functions of sigma^p, computed with the density at the same nodes, of which the caller
+// wants the quantities q_0 = c_0, q_1 = sigma c_1 and q_2 = sigma^(p-1) c_2 (here the state of
+// the impact: the approach rate, the approach and the force, c_2 = force / sigma^n). They are interpolated on the same pieces (a piece is accepted only when their
+// trailing coefficients are small too), sigma^p too (on the panels; it is exact on the first
+// piece), so that locating a time also gives the quantities by a few short series: no power,
+// logarithm or root per located time (one power on the first piece).
 
 #include <cstddef>
 #include <functional>
@@ -36,17 +35,15 @@ namespace impact::reduced::detail {
 /// The number of companion values interpolated with the density.
 inline constexpr int phase_companions = 3;
 
-/// A located time: sigma in [0, 1] and the companions there.
+/// A located time: the quantities c_0, sigma c_1, sigma^(p-1) c_2 there.
 struct PhaseSample {
-  double sigma;
-  double sigma_power; ///< sigma^p
-  double companions[phase_companions];
+  double quantities[phase_companions];
 };
 
 class PhaseTimeMap {
 public:
-  /// density(sigma, companions) returns dt/dsigma and writes the companions at sigma.
-  using Density = std::function<double(double sigma, double* companions)>;
+  /// density(sigma, sigma^p, companions) returns dt/dsigma and writes the companions at sigma.
+  using Density = std::function<double(double sigma, double sigma_power, double* companions)>;
 
   /// Builds the map of t(sigma) = integral_0^sigma density over [0, 1]; `power` is p > 0.
   /// `tolerance` bounds the trailing Chebyshev coefficients of the density (and of each
@@ -61,13 +58,8 @@ public:
   /// Density evaluations made to build the map.
   std::size_t evaluations() const { return evaluations_; }
 
-  /// The sigma in (0, 1] with t(sigma) = time, sigma^p and the companions there, for
-  /// ascending times in (0, duration]: one pass over the pieces, Newton's method on each
-  /// piece's series (safeguarded by bisection) from a quadratic extrapolation of the
-  /// previous points, or, on a piece holding more than `nodes` points, the Chebyshev series
-  /// in time of sigma and the companions (built from Newton's solutions at their nodes; not
-  /// used where they do not converge).
-  std::vector<PhaseSample> locate(const std::vector<double>& ascending_times) const;
+  /// One pass over ascending times in (0, duration] (below).
+  class Locator;
 
   /// Chebyshev points per panel, and interpolation points of the first piece.
   static constexpr int nodes = 16;
@@ -97,32 +89,39 @@ private:
   static constexpr int companion_depth = 9;
   Convergence build_first_piece(const Density& density, double upper);
   Convergence build_panel(const Density& density, double lower, double upper, Panel& panel);
-  PhaseSample panel_sample(const Panel& panel, double x) const;
+  template <int N>
+  void panel_samples(const Panel& panel, const double (&x)[N], PhaseSample (&samples)[N]) const;
   PhaseSample first_piece_sample(double s, double tau) const;
-  // Five Chebyshev series in one variable y in [-1, 1], stored coefficient by coefficient
-  // (the five recurrences of Clenshaw's rule then run side by side), each cut after the last
-  // coefficient that matters: those left out sum to at most the series' tolerance.
-  static constexpr int series_count = phase_companions + 2;
+  // The quantities (or, on the first piece, their ratios to u^(e_k), below) as series in one
+  // variable y in [-1, 1], fitted as Chebyshev series, each cut after the last coefficient
+  // that matters (those left out sum to at most the series' tolerance), and stored as
+  // polynomials in y, coefficient by coefficient: Horner's rule for several points and the
+  // series side by side is half the work and half the registers of Clenshaw's.
+  // (The power form of sum c_j T_j(y) adds rounding errors of at most eps sum |c_j| (1 +
+  // sqrt 2)^j on [-1, 1]: a few eps |c_0|, the coefficients of a converged series decaying
+  // at least 7 times faster than (1 + sqrt 2)^j grows.)
+  static constexpr int series_count = phase_companions;
   struct SampleSeries {
-    double coefficients[nodes][series_count + 1]; // the last column is padding
+    double coefficients[nodes][series_count]; // of y^j
     int length = 0;
   };
   // From the values at the Chebyshev points of y; false if a series does not decay to its
   // tolerance.
   static bool fit_series(const double (&values)[series_count][nodes],
                          const double (&tolerances)[series_count], SampleSeries& series);
-  static void evaluate_series(const SampleSeries& series, double y,
-                              double (&values)[series_count]);
+  static constexpr int batch = 4;
+  static void evaluate_series(const SampleSeries& series, const double (&y)[batch],
+                              double (&values)[batch][series_count]);
   // The first piece's inverse: with u = t / t(first end) and w = u^p, t = s Q(s^p) gives
-  // s = u R(w) and s^p = w R(w)^p, R analytic in w (Q(0) > 0): R and the companions as
-  // Chebyshev series in w in [0, 1], so that a located time costs one power and five
-  // series instead of Newton's method. False if they do not converge (then not used).
+  // s = u R(w), R analytic in w (Q(0) > 0), so that q_k / u^(e_k) (e = 0, 1, p - 1) is
+  // analytic in w: Chebyshev series in w in [0, 1], and a located time costs one power and
+  // three series instead of Newton's method. False if they do not converge (then not used).
   bool build_first_inverse(double first_end, SampleSeries& inverse) const;
-  PhaseSample first_inverse_sample(const SampleSeries& inverse, double u) const;
-  // A panel's sigma and companions as Chebyshev series in its time range (they are analytic
-  // in t there): a located time costs five series.
+  // A panel's quantities as Chebyshev series in its time range (they are analytic in t
+  // there): a located time costs three series.
   bool build_inverse(const Panel& panel, double end_time, SampleSeries& inverse) const;
-  double solve_in_panel(const Panel& panel, double time, double guess) const;
+  template <int N>
+  void solve_in_panel(const Panel& panel, const double (&times)[N], double (&x)[N]) const;
   double panel_end_time(long panel) const;
   double solve_in_first_piece(double time, double guess, double& tau) const;
 
@@ -140,6 +139,40 @@ private:
   std::vector<Panel> panels_;
   double duration_ = 0;
   std::size_t evaluations_ = 0;
+};
+
+/// The quantities at the sigma in (0, 1] with t(sigma) = time, for ascending times: one pass
+/// over the pieces, Newton's method on each piece's series (safeguarded by bisection) from a
+/// quadratic extrapolation of the previous points, or, on a piece expected to hold more than
+/// `nodes` points, the Chebyshev series in time of the quantities (built from Newton's
+/// solutions at their nodes; not used where they do not converge), evaluated for up to
+/// `batch` points at once.
+class PhaseTimeMap::Locator {
+public:
+  static constexpr int batch = PhaseTimeMap::batch;
+  explicit Locator(const PhaseTimeMap& map);
+  /// The samples of `count` in [1, batch] ascending times, each after those of the earlier
+  /// calls. `spacing` > 0 is the typical distance between successive times (it decides where
+  /// series in time pay).
+  void locate(const double* times, int count, double spacing, PhaseSample* samples);
+
+private:
+  long piece_of(double time) const;
+  double piece_start(long piece) const;
+  double piece_end(long piece) const;
+  bool last_piece(long piece) const;
+  void enter(long piece, double time, double spacing);
+  PhaseSample newton_sample(double time);
+  void inverse_samples(const double* times, int count, PhaseSample* samples) const;
+
+  const PhaseTimeMap& map_;
+  double first_end_; // t at the end of the first piece
+  long piece_ = -2;  // -1 the first piece, 0, 1, ... the panels; -2 before the first time
+  // The last (up to) three Newton solutions in the piece, to extrapolate from.
+  double known_time_[3] = {}, known_x_[3] = {};
+  int known_ = 0;
+  SampleSeries inverse_;
+  bool use_inverse_ = false;
 };
 
 } // namespace impact::reduced::detail

@@ -24,7 +24,7 @@ bool simulate_force(const reduced::ContactForceLaw& law, double mass, double vel
                     reduced::ContactEnd end, double* force);
 
 /// The same for the Hunt-Crossley law F = c x^n (1 + b x') (`law`, of `setup`), sampled by
-/// the closed-form history (HuntCrossleyImpact::history, about 1e-15 accurate) instead of
+/// the closed-form history (HuntCrossleyImpact::history, about 1e-14 accurate) instead of
 /// the integration: no tolerance, and faster at the same number of samples.
 bool simulate_hunt_crossley_force(const reduced::ContactForceLaw& law,
                                   const reduced::ContactSetup& setup, double damping,
