@@ -38,9 +38,7 @@ ThinPlatePrediction thin_plate_prediction(const FemRun& run, double damping, boo
     const reduced::ThinPlateImpact model(materials.hertz_stiffness, 1.5, damping, run.mass,
                                          impedance);
     const auto result = model.impact(run.impact_velocity);
-    prediction.quantities = ImpactQuantities{result.restitution, result.contact_time,
-                                             result.force_max, result.time_force_max,
-                                             result.approach_max};
+    prediction.quantities = result.figures();
     std::ostringstream text;
     text.precision(4);
     text << "c = " << materials.hertz_stiffness << " N/m^1.5, n = 1.5, ";

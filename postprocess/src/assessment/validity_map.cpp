@@ -169,7 +169,7 @@ MapModelRow row_model(const Report& row, std::string_view key) {
   }
   // The verdict's rule on the map's quantities (the row's own verdict also judges x_max).
   if (model && verdict && result.missing.empty()) {
-    std::vector<std::optional<ImpactQuantities>> judged;
+    std::vector<std::optional<ImpactFigures>> judged;
     for (const auto& cell : result.cells) judged.push_back(cell.judged);
     for (const auto& band : verdict->tolerances) {
       const ToleranceVerdict decided = tolerance_verdict(
@@ -363,7 +363,7 @@ void add_plate_models(ValidityMap& map, const Report& report, const SweepAxis& a
       else if (!std::isfinite(thickest))
         model.missing =
             "the runs do not record 'Scenario/Plate thickness', so the plate is not known";
-      std::vector<std::optional<ImpactQuantities>> judged;
+      std::vector<std::optional<ImpactFigures>> judged;
       std::ostringstream parameters;
       for (std::size_t i = 0; i < rows.runs[r].size(); ++i) {
         const ReportRun& run = row_report.runs[i];

@@ -715,7 +715,7 @@ void add_reference_models(CampaignCalibration& campaign, const std::vector<FemRu
            fem.restitution > 0 && fem.restitution <= 1
                ? predict_impact(law, fem.mass, fem.impact_velocity, c, hertz_exponent,
                                 {fem.restitution}, options.ode_tolerance)
-               : ImpactPrediction{nan, nan, nan, nan, nan, nan}});
+               : ImpactPrediction{{nan, nan, nan, nan, nan}, nan}});
     }
     campaign.restitution_maps.push_back(std::move(evaluation));
   }
@@ -725,7 +725,7 @@ void add_reference_models(CampaignCalibration& campaign, const std::vector<FemRu
 RankedModel ranked(const std::string& key, const std::vector<RunResidual>& residuals,
                    const std::vector<RunCalibration>& runs, std::size_t free_parameters,
                    double rms_residual, bool converged) {
-  std::vector<ImpactQuantities> in_sample, out_of_sample, measured;
+  std::vector<ImpactFigures> in_sample, out_of_sample, measured;
   bool all_out_of_sample = true;
   for (const auto& residual : residuals) {
     const auto run = std::find_if(runs.begin(), runs.end(), [&](const RunCalibration& r) {
@@ -733,8 +733,8 @@ RankedModel ranked(const std::string& key, const std::vector<RunResidual>& resid
     });
     if (run == runs.end()) continue;
     measured.push_back(run->measured);
-    in_sample.push_back(residual.prediction.quantities());
-    if (residual.out_of_sample) out_of_sample.push_back(residual.out_of_sample->quantities());
+    in_sample.push_back(residual.prediction);
+    if (residual.out_of_sample) out_of_sample.push_back(*residual.out_of_sample);
     else all_out_of_sample = false;
   }
   all_out_of_sample = all_out_of_sample && !out_of_sample.empty();
@@ -814,8 +814,8 @@ const CampaignModelFit* CampaignCalibration::find(const std::string& key) const 
   return nullptr;
 }
 
-RankingScore ranking_score(const std::vector<ImpactQuantities>& predicted,
-                           const std::vector<ImpactQuantities>& measured) {
+RankingScore ranking_score(const std::vector<ImpactFigures>& predicted,
+                           const std::vector<ImpactFigures>& measured) {
   double squares = 0, worst = 0;
   std::size_t count = 0;
   for (std::size_t i = 0; i < predicted.size() && i < measured.size(); ++i)

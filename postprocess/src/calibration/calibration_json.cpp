@@ -41,7 +41,7 @@ json prediction_json(const ImpactPrediction& prediction) {
           {"approach_max", number(prediction.approach_max)}};
 }
 
-json quantities_json(const ImpactQuantities& quantities) {
+json quantities_json(const ImpactFigures& quantities) {
   return {{"restitution", number(quantities.restitution)},
           {"contact_time", number(quantities.contact_time)},
           {"force_max", number(quantities.force_max)},
@@ -283,15 +283,14 @@ FitQuality read_quality(const Reader& node) {
   return {node.number("rms_residual"), node.number("r_squared"), node.count("samples")};
 }
 
-ImpactPrediction read_prediction(const Reader& node) {
-  return {node.number("damping"),      node.number("restitution"),
-          node.number("contact_time"), node.number("force_max"),
+ImpactFigures read_quantities(const Reader& node) {
+  return {node.number("restitution"), node.number("contact_time"), node.number("force_max"),
           node.number("time_force_max"), node.number("approach_max")};
 }
 
-ImpactQuantities read_quantities(const Reader& node) {
-  return {node.number("restitution"), node.number("contact_time"), node.number("force_max"),
-          node.number("time_force_max"), node.number("approach_max")};
+ImpactPrediction read_prediction(const Reader& node) {
+  const double damping = node.number("damping"); // read first: the first missing key is named
+  return {read_quantities(node), damping};
 }
 
 std::vector<double> read_matrix(const Reader& node, std::size_t k) {

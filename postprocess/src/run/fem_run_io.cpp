@@ -284,7 +284,7 @@ void sort_by_velocity(std::vector<FemRun>& runs) {
 
 } // namespace
 
-ImpactQuantities measured_quantities(const FemRun& run) {
+ImpactFigures measured_quantities(const FemRun& run) {
   return {run.restitution, run.contact_time, run.force_max,
           run.time_force_max - run.first_contact_time, run.approach_max};
 }

@@ -104,7 +104,7 @@ FemRunRecord read_fem_run_record(const FemRun& run) {
   return record;
 }
 
-FemUncertainty fem_uncertainty(const FemRunRecord& record, const ImpactQuantities& fem) {
+FemUncertainty fem_uncertainty(const FemRunRecord& record, const ImpactFigures& fem) {
   FemUncertainty uncertainty;
   for (auto& entry : uncertainty)
     entry = {nan, "not known (no verification of the run)"};

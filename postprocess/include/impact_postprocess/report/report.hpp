@@ -41,13 +41,13 @@ struct ImpactHistory {
 
 /// One reduced model at one run.
 struct ModelAtRun {
-  std::optional<ImpactQuantities> in_sample;     ///< fitted to all runs (or not fitted at all)
-  std::optional<ImpactQuantities> out_of_sample; ///< fitted without this velocity
+  std::optional<ImpactFigures> in_sample;     ///< fitted to all runs (or not fitted at all)
+  std::optional<ImpactFigures> out_of_sample; ///< fitted without this velocity
   ImpactHistory history;   ///< of the in-sample model
   std::vector<double> residual; ///< (F_model - F_FEM) / F_max at the FEM history's times
   std::string missing;     ///< why there are no values (empty when there are)
   /// The errors the verdict uses: out of sample when there are, else in sample.
-  const std::optional<ImpactQuantities>& judged() const {
+  const std::optional<ImpactFigures>& judged() const {
     return out_of_sample ? out_of_sample : in_sample;
   }
 };
@@ -85,7 +85,7 @@ struct ReportRun {
   std::string source;
   double velocity;                 ///< m/s
   double mass;                     ///< kg
-  ImpactQuantities fem;            ///< measured (the calibration's numbers when it has the run)
+  ImpactFigures fem;            ///< measured (the calibration's numbers when it has the run)
   ImpactHistory fem_history;       ///< window around the contact, at most ~1500 samples
   bool calibrated = false;         ///< the calibration holds this run
   double damping_from_restitution; ///< b [s/m] of the run (NaN when not calibrated)
@@ -127,9 +127,9 @@ struct PlasticityCheck {
 /// The tools measure e, t_c and F_max: t(F_max) and x_max are NaN.
 struct SimulatorRunAt {
   double velocity;                ///< m/s
-  ImpactQuantities tool;          ///< measured by the tool from its own state
-  ImpactQuantities reduced_model; ///< the exported model's prediction (export.json)
-  ImpactQuantities fem;           ///< the FEM as the file holds it (the calibration's numbers)
+  ImpactFigures tool;          ///< measured by the tool from its own state
+  ImpactFigures reduced_model; ///< the exported model's prediction (export.json)
+  ImpactFigures fem;           ///< the FEM as the file holds it (the calibration's numbers)
 };
 
 /// One result file: one tool (and deck) run at the campaign's velocities.
@@ -152,8 +152,8 @@ struct SimulatorResult {
 struct MapCell {
   double velocity;                              ///< m/s
   std::string source;                           ///< the FEM run
-  std::optional<ImpactQuantities> fem;          ///< measured
-  std::optional<ImpactQuantities> judged;       ///< the model's prediction judged (out of sample where the row allows)
+  std::optional<ImpactFigures> fem;          ///< measured
+  std::optional<ImpactFigures> judged;       ///< the model's prediction judged (out of sample where the row allows)
   FemUncertainty uncertainty;                   ///< the FEM's, of each quantity (relative)
   std::vector<Decision> decisions;              ///< per tolerance of the report (increasing)
   bool yields = false;
