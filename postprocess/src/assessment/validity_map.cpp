@@ -6,12 +6,12 @@
 #include "report/report_parts.hpp"
 #include "impact_postprocess/models/model_keys.hpp"
 
+#include "impact_postprocess/run/fem_run_format.hpp"
 #include "impact_postprocess/run/scenario_materials.hpp"
 
 #include <impact_reduced/invalid_input.hpp>
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <iomanip>
 #include <limits>
@@ -22,13 +22,11 @@ namespace impact::postprocess::detail {
 namespace {
 
 constexpr double nan = std::numeric_limits<double>::quiet_NaN();
-constexpr const char* plate_thickness_parameter = "Scenario/Plate thickness";
+constexpr const char* plate_thickness_parameter = fem_format::plate_thickness.path;
 
+// The unit of a swept parameter, as the FEM's contract declares it.
 std::string unit_of(const std::string& parameter) {
-  for (const char* length : {"thickness", "radius", "Thickness", "Radius"})
-    if (parameter.find(length) != std::string::npos) return "m";
-  if (parameter == velocity_axis) return "m/s";
-  return "";
+  return std::string(fem_format::parameter_unit(parameter));
 }
 
 // The plate thickness of a row: the axis value when the axis is the thickness, else the

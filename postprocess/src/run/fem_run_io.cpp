@@ -153,7 +153,7 @@ double impact_velocity_of(const FemRun& run, const Results& results, const fs::p
   auto velocity = results.number(format::contact_velocity_key);
   if (!velocity) velocity = results.number(format::impact_velocity_key);
   if (!velocity) {
-    const auto parameter = run.text_attributes.find(format::impact_velocity_parameter);
+    const auto parameter = run.text_attributes.find(format::impact_velocity.path);
     if (parameter != run.text_attributes.end()) {
       try {
         velocity = std::stod(parameter->second);
@@ -164,7 +164,7 @@ double impact_velocity_of(const FemRun& run, const Results& results, const fs::p
   if (!velocity)
     fail(file_path, std::string("no impact velocity: neither summary.json nor the file has '") +
                         format::contact_velocity_key + "' or '" + format::impact_velocity_key +
-                        "', and the attribute '" + format::impact_velocity_parameter +
+                        "', and the attribute '" + format::impact_velocity.path +
                         "' is missing");
   if (!(std::isfinite(*velocity) && *velocity > 0))
     fail(file_path, "the impact velocity must be positive (got " + std::to_string(*velocity) + ")");
@@ -551,7 +551,7 @@ fs::path write_fem_run(const FemRun& run, const fs::path& directory, bool comple
     std::ostringstream velocity;
     velocity.precision(17);
     velocity << run.impact_velocity;
-    file.write_attribute(format::impact_velocity_parameter, velocity.str());
+    file.write_attribute(format::impact_velocity.path, velocity.str());
   }
   file.write_attribute(format::sphere_mass_attribute, run.mass);
 
@@ -569,7 +569,7 @@ fs::path write_fem_run(const FemRun& run, const fs::path& directory, bool comple
     if (std::isfinite(value))
       file.write_attribute(format::result_attribute_prefix + std::string(key), value);
   for (const auto& [key, value] : run.text_attributes)
-    if (key != format::status_attribute && key != format::impact_velocity_parameter)
+    if (key != format::status_attribute && key != format::impact_velocity.path)
       file.write_attribute(key, value);
   for (const auto& [key, value] : run.numeric_attributes)
     if (key != format::sphere_mass_attribute &&
@@ -582,10 +582,12 @@ fs::path write_fem_run(const FemRun& run, const fs::path& directory, bool comple
     const char* unit;
     const char* description;
   } series[] = {
-      {format::time_dataset, run.time, "s", "simulated time"},
-      {format::contact_force_dataset, run.contact_force, "N", "total normal contact force"},
-      {format::approach_dataset, run.approach, "m", "approach (indentation) of sphere and plate"},
-      {format::sphere_velocity_dataset, run.sphere_velocity, "m/s",
+      {format::time_dataset, run.time, format::time_unit, "simulated time"},
+      {format::contact_force_dataset, run.contact_force, format::contact_force_unit,
+       "total normal contact force"},
+      {format::approach_dataset, run.approach, format::approach_unit,
+       "approach (indentation) of sphere and plate"},
+      {format::sphere_velocity_dataset, run.sphere_velocity, format::sphere_velocity_unit,
        "centre-of-mass velocity of the sphere, downward positive"}};
   for (const auto& s : series)
     if (!s.values.empty()) file.write_dataset(s.name, s.values, s.unit, s.description);

@@ -6,6 +6,7 @@
 
 #include "impact_postprocess/models/impact_quantities.hpp"
 #include "impact_postprocess/problem.hpp"
+#include "impact_postprocess/run/fem_run_format.hpp"
 
 #include <filesystem>
 #include <map>
@@ -48,7 +49,7 @@ struct SweepAxis {
 };
 
 /// The parameter of the impact-velocity axis (always the last axis of a sweep).
-inline constexpr const char* velocity_axis = "Scenario/Impact velocity";
+inline constexpr const char* velocity_axis = fem_format::impact_velocity.path;
 
 /// The measured quantities of one run. SI units; times from the start of the run. Its scalars
 /// are what the run's files record, on the run's own clock (t(F_max) from the start of the
