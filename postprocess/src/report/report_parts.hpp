@@ -99,6 +99,17 @@ std::optional<double> thin_plate_damping(const FemRun& reference, bool rigid = f
 
 /// The map of a campaign with sweep axes into report.map (nothing for a velocity campaign).
 void add_validity_map(Report& report, const Campaign& campaign, const ReportOptions& options);
+/// The runs and the assessed report of each row of a map, parallel to ValidityMap::rows.
+struct MapRowReports {
+  std::vector<std::vector<FemRun>> runs;
+  std::vector<Report> reports;
+};
+/// The thin-plate and the massive-plate model on every row of the map, with the material's
+/// damping from the row of the most massive plate (map_plate_models.cpp).
+void add_plate_models(ValidityMap& map, const Report& report, const MapRowReports& rows);
+/// Where the map's model `model` is within each band, in a sentence (map_regions.cpp).
+std::string map_region(const ValidityMap& map, std::size_t model,
+                       const std::vector<double>& tolerances);
 /// "Plate thickness" of "Scenario/Plate thickness".
 std::string short_name(const std::string& parameter);
 /// A sweep value with its unit ("0.05 m"; a text value as it is).

@@ -241,22 +241,39 @@ struct Report {
   const ModelVerdict* verdict(std::string_view key) const;
 };
 
+/// One row of a validity map: a value of the other axis and the campaign's runs there.
+struct MapRowRuns {
+  SweepValue value;
+  std::string name;           ///< "Plate thickness = 0.05"
+  std::vector<FemRun> runs;
+};
+
+/// The calibration of one row of a validity map.
+struct MapRowCalibration {
+  std::optional<Calibration> calibration; ///< none when the row has no run or could not be calibrated
+  std::string error;                      ///< why it could not be calibrated ("" otherwise)
+};
+
 struct ReportOptions {
   std::vector<double> tolerances = default_tolerances;
   /// The directory of the simulators' result files (impact-simulator-run, every *.json in it)
   /// for the section "In your simulator"; none: the section says how to make them.
   std::optional<std::filesystem::path> simulators;
-  /// How each row of a validity map is calibrated (the map of a two-axis campaign).
-  CalibrationOptions map_calibration;
   /// The whole sweep campaign whose map is drawn, when the campaign given to build_report is
   /// one row of it (map_detail_row), and that row's name.
   std::optional<Campaign> map_campaign;
   std::string detail_row;
-  /// That row already calibrated with map_calibration's options (impact-report calibrates it
-  /// for the sections after the map): the map takes it for the row of the same runs (the
-  /// same HDF5 sources) instead of calibrating that row a second time.
-  std::optional<Calibration> detail_row_calibration;
+  /// The calibration of each row of the validity map (of map_campaign, else of the campaign
+  /// given to build_report), parallel to its map_rows: made by the report pipeline
+  /// (calibrate_map_rows, pipeline.hpp), judged by the assessment. A row without one is
+  /// judged without calibration.
+  std::vector<MapRowCalibration> map_calibrations;
 };
+
+/// The rows of the validity map of a two-axis campaign (velocity x one other parameter): each
+/// value of the other axis, in the map's order (increasing when every value is a number), with
+/// its runs; none for any other campaign.
+std::vector<MapRowRuns> map_rows(const Campaign& campaign);
 
 /// The row of a two-axis campaign (velocity x one other parameter) that the report's sections
 /// after the map detail, as a velocity campaign of its own: the runs with the largest
