@@ -525,13 +525,10 @@ std::vector<Estimate> jackknife(const std::vector<HeldOutFit>& held_out,
   return estimates;
 }
 
-// One campaign fit of `model` to all runs, then, with at least three velocities, one fit
-// per velocity with that velocity's runs left out (started from the full fit).
-CampaignModelFit fit_campaign_model(const ContactModel& model, const CampaignFitRequest& request,
-                                    const std::vector<PreparedRun>& runs,
-                                    const std::vector<double>& velocities,
-                                    const CampaignStart& start, const CalibrationOptions& options,
-                                    std::vector<Problem>& problems) {
+// The parameters of a campaign fit of `model` and their start (n held when the model or the
+// request fixes it, the dissipation from the campaign's median restitution).
+FitSetup campaign_fit_setup(const ContactModel& model, const CampaignFitRequest& request,
+                            const CampaignStart& start) {
   const std::optional<double> exponent =
       model.required_exponent ? model.required_exponent : request.exponent;
   const bool fixed_exponent = exponent.has_value();
@@ -567,17 +564,68 @@ CampaignModelFit fit_campaign_model(const ContactModel& model, const CampaignFit
     parameter.upper = spec.upper;
     setup.parameters.push_back(parameter);
   }
+  return setup;
+}
 
-  const auto evaluators_of = [&](const std::function<bool(const PreparedRun&)>& take) {
-    std::vector<HistoryEvaluator> evaluators;
-    for (const auto& run : runs)
-      if (take(run))
-        evaluators.push_back({&model, &run, setup.parametrisation, options.ode_tolerance});
-    return evaluators;
-  };
-  const std::vector<HistoryEvaluator> evaluators = evaluators_of([](const PreparedRun&) {
-    return true;
-  });
+// The force-history evaluators of the runs that `take` accepts.
+std::vector<HistoryEvaluator> evaluators_of(const ContactModel& model, const FitSetup& setup,
+                                            const std::vector<PreparedRun>& runs,
+                                            const CalibrationOptions& options,
+                                            const std::function<bool(const PreparedRun&)>& take) {
+  std::vector<HistoryEvaluator> evaluators;
+  for (const auto& run : runs)
+    if (take(run))
+      evaluators.push_back({&model, &run, setup.parametrisation, options.ode_tolerance});
+  return evaluators;
+}
+
+// Leave one velocity out: the prediction at each velocity by the fit to the others (started
+// from the full fit `theta`), and the jackknife of the parameters over those fits.
+void add_held_out_fits(CampaignModelFit& campaign_fit, const ContactModel& model,
+                       const CampaignFitRequest& request, const FitSetup& setup,
+                       const std::vector<double>& theta, const std::vector<PreparedRun>& runs,
+                       const std::vector<double>& velocities, const CalibrationOptions& options,
+                       std::vector<Problem>& problems) {
+  const std::string what =
+      "the campaign fit of " + request.label + " (" + request.key + ")";
+  std::vector<detail::FitParameter> restart = setup.parameters;
+  for (std::size_t j = 0; j < restart.size(); ++j) restart[j].initial = theta[j];
+  for (double left_out : velocities) {
+    const auto others = evaluators_of(model, setup, runs, options, [left_out](const PreparedRun& run) {
+      return !same_velocity(run.run->impact_velocity, left_out);
+    });
+    const auto held = detail::solve_least_squares(
+        restart, residual_blocks(others, request.energy_weight),
+        {options.max_iterations, options.threads});
+    const ModelFit held_fit = to_model_fit(setup, held, options.confidence_level);
+    campaign_fit.held_out.push_back({left_out, held_fit.parameter_values(), held.converged});
+    if (!held.converged)
+      problems.push_back({request.key, ProblemKind::convergence,
+                          what + " without V = " + format_number(left_out) +
+                              " m/s did not converge: " + held.message});
+    for (std::size_t i = 0; i < runs.size(); ++i)
+      if (same_velocity(runs[i].run->impact_velocity, left_out))
+        campaign_fit.runs[i].out_of_sample =
+            predict_impact(model, runs[i].run->mass, runs[i].run->impact_velocity,
+                           held_fit.stiffness.value, held_fit.exponent.value,
+                           held_fit.dissipation(), options.ode_tolerance);
+  }
+  std::vector<bool> fixed;
+  for (const auto& parameter : setup.parameters) fixed.push_back(parameter.fixed);
+  campaign_fit.jackknife = jackknife(campaign_fit.held_out, campaign_fit.fit.parameter_values(),
+                                     fixed, options.confidence_level);
+}
+
+// One campaign fit of `model` to all runs, then, with at least three velocities, one fit
+// per velocity with that velocity's runs left out (started from the full fit).
+CampaignModelFit fit_campaign_model(const ContactModel& model, const CampaignFitRequest& request,
+                                    const std::vector<PreparedRun>& runs,
+                                    const std::vector<double>& velocities,
+                                    const CampaignStart& start, const CalibrationOptions& options,
+                                    std::vector<Problem>& problems) {
+  const FitSetup setup = campaign_fit_setup(model, request, start);
+  const std::vector<HistoryEvaluator> evaluators =
+      evaluators_of(model, setup, runs, options, [](const PreparedRun&) { return true; });
   const auto result =
       detail::solve_least_squares(setup.parameters, residual_blocks(evaluators, request.energy_weight),
                                   {options.max_iterations, options.threads});
@@ -610,34 +658,9 @@ CampaignModelFit fit_campaign_model(const ContactModel& model, const CampaignFit
     problems.push_back({request.key, ProblemKind::convergence, what + " did not converge: " +
                                                         fit.solver_message});
 
-  // Leave one velocity out: the prediction at each velocity by the fit to the others.
-  if (velocities.size() < 3) return campaign_fit;
-  std::vector<detail::FitParameter> restart = setup.parameters;
-  for (std::size_t j = 0; j < restart.size(); ++j) restart[j].initial = result.theta[j];
-  for (double left_out : velocities) {
-    const auto others = evaluators_of([left_out](const PreparedRun& run) {
-      return !same_velocity(run.run->impact_velocity, left_out);
-    });
-    const auto held = detail::solve_least_squares(
-        restart, residual_blocks(others, request.energy_weight),
-        {options.max_iterations, options.threads});
-    const ModelFit held_fit = to_model_fit(setup, held, options.confidence_level);
-    campaign_fit.held_out.push_back({left_out, held_fit.parameter_values(), held.converged});
-    if (!held.converged)
-      problems.push_back({request.key, ProblemKind::convergence,
-                          what + " without V = " + format_number(left_out) +
-                              " m/s did not converge: " + held.message});
-    for (std::size_t i = 0; i < runs.size(); ++i)
-      if (same_velocity(runs[i].run->impact_velocity, left_out))
-        campaign_fit.runs[i].out_of_sample =
-            predict_impact(model, runs[i].run->mass, runs[i].run->impact_velocity,
-                           held_fit.stiffness.value, held_fit.exponent.value,
-                           held_fit.dissipation(), options.ode_tolerance);
-  }
-  std::vector<bool> fixed;
-  for (const auto& parameter : setup.parameters) fixed.push_back(parameter.fixed);
-  campaign_fit.jackknife = jackknife(campaign_fit.held_out, campaign_fit.fit.parameter_values(),
-                                     fixed, options.confidence_level);
+  if (velocities.size() >= 3)
+    add_held_out_fits(campaign_fit, model, request, setup, result.theta, runs, velocities, options,
+                      problems);
   return campaign_fit;
 }
 
