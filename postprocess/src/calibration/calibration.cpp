@@ -12,6 +12,7 @@
 #include "impact_postprocess/models/contact_models.hpp"
 #include "impact_postprocess/run/scenario_materials.hpp"
 #include "calibration/least_squares.hpp"
+#include "calibration/ranking.hpp"
 #include "models/simulated_force.hpp"
 
 #include <impact_reduced/hunt_crossley.hpp>
@@ -27,6 +28,26 @@
 #include <sstream>
 
 namespace impact::postprocess {
+
+namespace detail {
+
+FitQuality combine(const std::vector<FitQuality>& parts) {
+  double squares = 0, weights = 0;
+  std::size_t samples = 0;
+  double r_squared = 0;
+  for (const auto& part : parts) {
+    squares += part.rms_residual * part.rms_residual * double(part.samples);
+    samples += part.samples;
+    r_squared += part.r_squared * double(part.samples);
+    weights += double(part.samples);
+  }
+  return {std::sqrt(squares / double(samples)), r_squared / weights, samples};
+}
+
+} // namespace detail
+
+using detail::combine;
+using detail::rank_campaign;
 
 namespace {
 
@@ -185,18 +206,6 @@ FitQuality quality_of(const std::vector<double>& model, const std::vector<double
   return {std::sqrt(residual / double(n)) / scale, total > 0 ? 1 - residual / total : nan, n};
 }
 
-FitQuality combine(const std::vector<FitQuality>& parts) {
-  double squares = 0, weights = 0;
-  std::size_t samples = 0;
-  double r_squared = 0;
-  for (const auto& part : parts) {
-    squares += part.rms_residual * part.rms_residual * double(part.samples);
-    samples += part.samples;
-    r_squared += part.r_squared * double(part.samples);
-    weights += double(part.samples);
-  }
-  return {std::sqrt(squares / double(samples)), r_squared / weights, samples};
-}
 
 // ---- Force histories and energy loss of a model ---------------------------------------
 
@@ -744,59 +753,6 @@ void add_reference_models(CampaignCalibration& campaign, const std::vector<FemRu
   }
 }
 
-// A model's ranking entry from its per-run predictions.
-RankedModel ranked(const std::string& key, const std::vector<RunResidual>& residuals,
-                   const std::vector<RunCalibration>& runs, std::size_t free_parameters,
-                   double rms_residual, bool converged) {
-  std::vector<ImpactFigures> in_sample, out_of_sample, measured;
-  bool all_out_of_sample = true;
-  for (const auto& residual : residuals) {
-    const auto run = std::find_if(runs.begin(), runs.end(), [&](const RunCalibration& r) {
-      return r.source == residual.source;
-    });
-    if (run == runs.end()) continue;
-    measured.push_back(run->measured);
-    in_sample.push_back(residual.prediction);
-    if (residual.out_of_sample) out_of_sample.push_back(*residual.out_of_sample);
-    else all_out_of_sample = false;
-  }
-  all_out_of_sample = all_out_of_sample && !out_of_sample.empty();
-  const RankingScore inside = ranking_score(in_sample, measured);
-  const RankingScore outside = all_out_of_sample ? ranking_score(out_of_sample, measured) : inside;
-  return {key, free_parameters, outside.rms, all_out_of_sample, outside.worst, inside.rms,
-          rms_residual, converged, {}};
-}
-
-// The ranking of the campaign and reference models by out-of-sample error; the fitted
-// restitution-parametrised laws, which share one force history, as one family.
-std::vector<RankedModel> rank_campaign(const CampaignCalibration& campaign,
-                                       const std::vector<RunCalibration>& runs) {
-  std::vector<RankedModel> ranking;
-  std::optional<std::size_t> family;
-  const auto& maps = restitution_parametrised_laws();
-  for (const CampaignModelFit* model : campaign.models()) {
-    const bool in_family = std::find(maps.begin(), maps.end(), model->key) != maps.end();
-    if (in_family && family) {
-      ranking[*family].family.push_back(model->key);
-      continue;
-    }
-    ranking.push_back(ranked(model->key, model->runs, runs, model->fit.free_parameters(),
-                             model->fit.quality.rms_residual, model->fit.converged));
-    if (in_family) {
-      ranking.back().family = {model->key};
-      family = ranking.size() - 1;
-    }
-  }
-  for (const auto& reference : campaign.reference_models) {
-    FitQuality quality{0, 0, 0};
-    std::vector<FitQuality> parts;
-    for (const auto& run : reference.runs) parts.push_back(run.quality);
-    if (!parts.empty()) quality = combine(parts);
-    ranking.push_back(ranked(reference.key, reference.runs, runs, 0, quality.rms_residual, true));
-  }
-  rank(ranking);
-  return ranking;
-}
 
 } // namespace
 
@@ -837,47 +793,6 @@ const CampaignModelFit* CampaignCalibration::find(const std::string& key) const 
   return nullptr;
 }
 
-RankingScore ranking_score(const std::vector<ImpactFigures>& predicted,
-                           const std::vector<ImpactFigures>& measured) {
-  double squares = 0, worst = 0;
-  std::size_t count = 0;
-  for (std::size_t i = 0; i < predicted.size() && i < measured.size(); ++i)
-    for (Quantity quantity : verdict_quantities) {
-      const double error = relative_error(predicted[i], measured[i], quantity);
-      if (!std::isfinite(error)) continue;
-      squares += error * error;
-      worst = std::max(worst, std::abs(error));
-      ++count;
-    }
-  if (count == 0) return {nan, nan};
-  return {std::sqrt(squares / double(count)), worst};
-}
-
-void rank(std::vector<RankedModel>& models, double tie) {
-  std::vector<std::pair<std::size_t, RankedModel>> indexed;
-  for (std::size_t i = 0; i < models.size(); ++i) indexed.emplace_back(i, models[i]);
-  std::stable_sort(indexed.begin(), indexed.end(), [](const auto& a, const auto& b) {
-    if (std::isnan(a.second.score)) return false;
-    if (std::isnan(b.second.score)) return true;
-    return a.second.score < b.second.score;
-  });
-  // Groups of scores within `tie` of the group's best: fewer free parameters first, then the
-  // given order.
-  for (std::size_t begin = 0; begin < indexed.size();) {
-    std::size_t end = begin + 1;
-    while (end < indexed.size() && std::isfinite(indexed[begin].second.score) &&
-           indexed[end].second.score - indexed[begin].second.score <= tie)
-      ++end;
-    std::sort(indexed.begin() + std::ptrdiff_t(begin), indexed.begin() + std::ptrdiff_t(end),
-              [](const auto& a, const auto& b) {
-                if (a.second.free_parameters != b.second.free_parameters)
-                  return a.second.free_parameters < b.second.free_parameters;
-                return a.first < b.first;
-              });
-    begin = end;
-  }
-  for (std::size_t i = 0; i < models.size(); ++i) models[i] = indexed[i].second;
-}
 
 namespace {
 
