@@ -1,6 +1,7 @@
 #include <impact_fem/analysis/indentation.h>
 #include <impact_fem/contact/mortar_contact.h>
 #include <impact_fem/parameters.h>
+#include <impact_fem/result_files.h>
 #include <impact_fem/postprocess/interface.h>
 #include <impact_fem/time_integration/interface.h>
 
@@ -32,7 +33,12 @@ namespace impact_fem
   void
   Parameters::declare_parameters(ParameterHandler &prm)
   {
-    prm.enter_subsection("Scenario");
+    // The entries the result files' reader interprets carry the contract's names and units.
+    namespace contract = result_files;
+    const auto unit = [](const contract::Parameter &parameter) {
+      return std::string(" [") + parameter.unit + "]";
+    };
+    prm.enter_subsection(contract::scenario_subsection);
     prm.declare_entry("Analysis",
                       "impact",
                       Patterns::Selection(
@@ -58,30 +64,31 @@ namespace impact_fem
                       Patterns::Double(),
                       "Resultant of the body force pressing the sphere in "
                       "the 'static press' analysis [N], > 0.");
-    prm.declare_entry("Impact velocity",
+    prm.declare_entry(contract::impact_velocity.entry,
                       "1",
                       Patterns::Double(),
-                      "Speed of the sphere towards the plate at t = 0 [m/s], "
-                      "in (0, 100].");
-    prm.declare_entry("Initial gap",
+                      "Speed of the sphere towards the plate at t = 0" +
+                        unit(contract::impact_velocity) + ", in (0, 100].");
+    prm.declare_entry(contract::initial_gap.entry,
                       "0",
                       Patterns::Double(),
-                      "Distance between sphere and plate at t = 0 [m], >= 0.");
-    prm.declare_entry("Sphere radius",
+                      "Distance between sphere and plate at t = 0" +
+                        unit(contract::initial_gap) + ", >= 0.");
+    prm.declare_entry(contract::sphere_radius.entry,
                       "0.01452",
                       Patterns::Double(),
-                      "Radius R of the sphere [m], > 0 (0.01452 m: a 0.1 kg "
-                      "steel ball).");
-    prm.declare_entry("Plate radius",
+                      "Radius R of the sphere" + unit(contract::sphere_radius) +
+                        ", > 0 (0.01452 m: a 0.1 kg steel ball).");
+    prm.declare_entry(contract::plate_radius.entry,
                       "0.35",
                       Patterns::Double(),
-                      "Radius Rp of the plate [m], > 2 R (not used with a "
-                      "rigid plate).");
-    prm.declare_entry("Plate thickness",
+                      "Radius Rp of the plate" + unit(contract::plate_radius) +
+                        ", > 2 R (not used with a rigid plate).");
+    prm.declare_entry(contract::plate_thickness.entry,
                       "0.35",
                       Patterns::Double(),
-                      "Thickness H of the plate [m], > 0 (not used with a "
-                      "rigid plate).");
+                      "Thickness H of the plate" + unit(contract::plate_thickness) +
+                        ", > 0 (not used with a rigid plate).");
     prm.declare_entry("Plate side",
                       "absorbing",
                       Patterns::Selection("free|clamped|absorbing"),
@@ -120,11 +127,11 @@ namespace impact_fem
                       "by its own weight).");
     prm.leave_subsection();
 
-    for (const auto *body : {"Sphere", "Plate"})
+    for (const auto *body : {contract::sphere_body, contract::plate_body})
       {
         prm.enter_subsection(body);
-        materials::declare_parameters(prm, "elastic");
-        prm.declare_entry("Yield strength",
+        materials::declare_parameters(prm, contract::elastic_model);
+        prm.declare_entry(contract::yield_strength.entry,
                           "0",
                           Patterns::Double(0),
                           "Yield strength of the body [Pa], >= 0; 0: none. "
@@ -185,15 +192,16 @@ namespace impact_fem
 
   Parameters::Parameters(ParameterHandler &prm)
   {
-    prm.enter_subsection("Scenario");
+    namespace contract = result_files;
+    prm.enter_subsection(contract::scenario_subsection);
     static_press             = prm.get("Analysis") == "static press";
     indentation              = prm.get("Analysis") == "indentation";
     static_force             = prm.get_double("Static force");
-    impact_velocity          = prm.get_double("Impact velocity");
-    geometry.initial_gap     = prm.get_double("Initial gap");
-    geometry.sphere_radius   = prm.get_double("Sphere radius");
-    geometry.plate_radius    = prm.get_double("Plate radius");
-    geometry.plate_thickness = prm.get_double("Plate thickness");
+    impact_velocity          = prm.get_double(contract::impact_velocity.entry);
+    geometry.initial_gap     = prm.get_double(contract::initial_gap.entry);
+    geometry.sphere_radius   = prm.get_double(contract::sphere_radius.entry);
+    geometry.plate_radius    = prm.get_double(contract::plate_radius.entry);
+    geometry.plate_thickness = prm.get_double(contract::plate_thickness.entry);
     const std::string far_boundary = prm.get("Far boundary");
     AssertThrow(far_boundary.empty(),
                 ExcMessage("Scenario/Far boundary was replaced by Scenario/"
@@ -241,9 +249,10 @@ namespace impact_fem
                            text(plate_faces.support_stiffness) + " N/m^3."));
     for (const unsigned int body : {sphere, plate})
       {
-        prm.enter_subsection(body == sphere ? "Sphere" : "Plate");
-        const bool rigid = prm.get("Material model") == materials::rigid_model_name;
-        yield_strength[body] = prm.get_double("Yield strength");
+        prm.enter_subsection(body == sphere ? contract::sphere_body : contract::plate_body);
+        const bool rigid =
+          prm.get(contract::material_model_entry) == materials::rigid_model_name;
+        yield_strength[body] = prm.get_double(contract::yield_strength.entry);
         if (!rigid)
           material[body] = materials::create_material(prm);
         prm.leave_subsection();

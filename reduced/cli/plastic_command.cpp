@@ -12,6 +12,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace impact::cli {
 
@@ -19,10 +20,17 @@ namespace {
 
 constexpr double pi = 3.14159265358979323846;
 
-} // namespace
+// The options of the command, checked.
+struct PlasticOptions {
+  std::string model;
+  double radius, mass, modulus, poisson_ratio, flat_modulus, flat_poisson, yield_strength;
+  std::string criterion_name, unloading_rule;
+  std::vector<double> velocities;
+  long loop_points;
+  std::string format;
+};
 
-int run_plastic_command(CommandLine& options, std::ostream& out) {
-  using namespace impact::reduced;
+PlasticOptions parse_plastic_options(CommandLine& options) {
   const std::string model = options.choice("model", {"thornton", "jackson-green"});
   const Range poisson = Range::open(-1.0, 0.5);
   const double radius = options.real("radius", Range::positive());
@@ -60,6 +68,36 @@ int run_plastic_command(CommandLine& options, std::ostream& out) {
                      "(received " + std::to_string(velocities.size()) + ")");
   const std::string format = options.choice("format", {"json", "csv"}, "json");
   options.finish();
+  return {model,          radius,         mass,       modulus,     poisson_ratio,
+          flat_modulus,   flat_poisson,   yield_strength, criterion_name, unloading_rule,
+          velocities,     loop_points,    format};
+}
+
+// The law in words, for the JSON.
+std::string law_text(const std::string& model, const std::string& unloading_rule) {
+  if (model == "thornton")
+    return "Thornton (1997): Hertz to p0 = p_y, then F = F_y + pi p_y R (x - x_y); Hertzian "
+           "unloading on R_p = 4 E* a_p^3 / (3 F*), a_p^2 = (2 F* + F_y) / (2 pi p_y)";
+  return std::string("Jackson & Green (2005) loading (Hertz up to 1.9 omega_c, their fit "
+                     "beyond); ") +
+         (unloading_rule == "brake"
+              ? "Hertzian unloading of Brake (2015): recovery x_max P_m / P_Hertz(x_max)"
+              : "Hertzian unloading keeping the contact radius of the maximum");
+}
+
+} // namespace
+
+int run_plastic_command(CommandLine& command_line, std::ostream& out) {
+  using namespace impact::reduced;
+  const PlasticOptions options = parse_plastic_options(command_line);
+  const std::string& model = options.model;
+  const double radius = options.radius, mass = options.mass, modulus = options.modulus;
+  const double poisson_ratio = options.poisson_ratio, yield_strength = options.yield_strength;
+  const double flat_modulus = options.flat_modulus, flat_poisson = options.flat_poisson;
+  const std::string &criterion_name = options.criterion_name,
+                    &unloading_rule = options.unloading_rule, &format = options.format;
+  const std::vector<double>& velocities = options.velocities;
+  const long loop_points = options.loop_points;
 
   const double e_star = contact_modulus(modulus, poisson_ratio, flat_modulus, flat_poisson);
   const YieldCriterion criterion = criterion_name == "johnson" ? YieldCriterion::johnson
@@ -103,17 +141,7 @@ int run_plastic_command(CommandLine& options, std::ostream& out) {
   }
   Json result = Json::object();
   result["model"] = model;
-  std::string law;
-  if (model == "thornton")
-    law = "Thornton (1997): Hertz to p0 = p_y, then F = F_y + pi p_y R (x - x_y); Hertzian "
-          "unloading on R_p = 4 E* a_p^3 / (3 F*), a_p^2 = (2 F* + F_y) / (2 pi p_y)";
-  else
-    law = std::string("Jackson & Green (2005) loading (Hertz up to 1.9 omega_c, their fit "
-                      "beyond); ") +
-          (unloading_rule == "brake"
-               ? "Hertzian unloading of Brake (2015): recovery x_max P_m / P_Hertz(x_max)"
-               : "Hertzian unloading keeping the contact radius of the maximum");
-  result["law"] = law;
+  result["law"] = law_text(model, unloading_rule);
   result["yield_criterion"] = criterion_name;
   result["unloading"] = unloading_rule;
   result["radius"] = radius;

@@ -136,7 +136,7 @@ TEST_F(FemRunRecordTest, UncertaintyWithoutVerificationComesFromTheHistory) {
   EXPECT_FALSE(record.verification);
   const double step = run.contact_time / 300;
   EXPECT_NEAR(record.time_step, step, 1e-9 * step);
-  const ImpactQuantities fem{run.restitution, run.contact_time, run.force_max, run.time_force_max,
+  const ImpactFigures fem{run.restitution, run.contact_time, run.force_max, run.time_force_max,
                              run.approach_max};
   const FemUncertainty u = fem_uncertainty(record, fem);
   EXPECT_NEAR(u[std::size_t(Quantity::contact_time)].relative, 1.0 / 300, 1e-9);
@@ -185,7 +185,7 @@ TEST_F(FemRunRecordTest, VerificationGivesTheUncertainty) {
   const FemRunRecord record = read_fem_run_record(run);
   ASSERT_TRUE(record.verification) << record.verification_problem;
   EXPECT_EQ(record.verification->refinement_ratio, 1.5);
-  const ImpactQuantities fem{e, run.contact_time, run.force_max, run.time_force_max, run.approach_max};
+  const ImpactFigures fem{e, run.contact_time, run.force_max, run.time_force_max, run.approach_max};
   const FemUncertainty u = fem_uncertainty(record, fem);
   EXPECT_EQ(u[std::size_t(Quantity::contact_time)].relative, 0.002);
   EXPECT_EQ(u[std::size_t(Quantity::force_max)].relative, 0.004);

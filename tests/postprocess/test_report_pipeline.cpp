@@ -8,6 +8,7 @@
 // parameters (those of the calibration's first-ranked model), and every section after that
 // first screen can be folded.
 
+#include "impact_postprocess/calibration/calibrate_run_set.hpp"
 #include "impact_postprocess/report/pipeline.hpp"
 #include "impact_postprocess/run/fem_run.hpp"
 
@@ -16,6 +17,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -170,6 +172,42 @@ TEST_F(ReportPipeline, NoUsableRunWritesNothing) {
   for (const auto& problem : outcome.report.problems)
     said = said || contains(problem.message, "no usable run: nothing was written");
   EXPECT_TRUE(said);
+}
+
+// A campaign at one velocity cannot be fitted: the report says so once, whether it calibrates
+// the runs itself or reads impact-calibrate's JSON (whose problems already say it).
+TEST_F(ReportPipeline, ACampaignNotFittedIsSaidOnce) {
+  fs::remove_all(directory / "campaign");
+  for (const char* name : {"a", "b"})
+    write_fem_run(campaign_run(1.0), directory / "campaign" / name);
+  const auto statements = [](const Report& report) {
+    std::size_t count = 0;
+    for (const auto& problem : report.problems)
+      count += contains(problem.message, "a single impact velocity") ? 1 : 0;
+    return count;
+  };
+  const ReportOutcome here = write_report(request);
+  ASSERT_TRUE(here.written);
+  ASSERT_TRUE(here.report.calibration);
+  EXPECT_FALSE(here.report.calibration->campaign.fitted);
+  EXPECT_EQ(statements(here.report), 1u);
+
+  CalibrationRequest calibrate;
+  calibrate.campaign = request.campaign;
+  calibrate.output = directory / "calibration.json";
+  const CalibrationOutcome calibrated = write_calibration(calibrate);
+  ASSERT_TRUE(calibrated.written);
+  EXPECT_EQ(std::count_if(calibrated.calibration.problems.begin(),
+                          calibrated.calibration.problems.end(),
+                          [&](const Problem& problem) {
+                            return is_campaign_not_fitted(problem, calibrated.calibration.campaign);
+                          }),
+            1);
+  request.calibration = calibrate.output;
+  request.output = directory / "report_of_json";
+  const ReportOutcome read = write_report(request);
+  ASSERT_TRUE(read.written);
+  EXPECT_EQ(statements(read.report), 1u);
 }
 
 } // namespace

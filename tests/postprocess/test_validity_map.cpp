@@ -17,6 +17,7 @@
 
 #include "impact_postprocess/calibration/calibration.hpp"
 #include "impact_postprocess/run/fem_run.hpp"
+#include "impact_postprocess/report/pipeline.hpp"
 #include "impact_postprocess/report/report.hpp"
 #include "impact_postprocess/run/scenario_materials.hpp"
 
@@ -44,6 +45,14 @@ constexpr double tau_d = 0.5e-6, tau_v = 0.6e-6, hc_damping = 0.1;
 const std::vector<double> velocities = {0.5, 1, 2, 4};
 const std::vector<double> thicknesses = {0.004, 0.04, 0.4};
 constexpr const char* thickness_axis = "Scenario/Plate thickness";
+
+// The rows' calibrations of the map, as the report pipeline makes them: the comparison law
+// of the Kuwabara–Kono row only.
+CalibrationOptions kuwabara_kono_only() {
+  CalibrationOptions options;
+  options.laws = {"kuwabara-kono-no-tension"};
+  return options;
+}
 
 double hertz() { return impact::reduced::hertz_stiffness({young, poisson, radius}, {young, poisson}); }
 
@@ -160,7 +169,7 @@ protected:
     const Campaign campaign = read_campaign(*directory);
     for (const auto& problem : campaign.problems) ADD_FAILURE() << problem.message;
     ReportOptions options;
-    options.map_calibration.laws = {"kuwabara-kono-no-tension"};
+    options.map_calibrations = calibrate_map_rows(campaign, kuwabara_kono_only());
     report = new Report(build_report(campaign, std::nullopt, {}, directory->string(), "", options));
   }
   static void TearDownTestSuite() {
@@ -341,7 +350,7 @@ TEST(ValidityMapThinPlate, TheThinPlateModelIsTheTruthAndHuntCrossleyFailsOnThin
   const Campaign campaign = read_campaign(directory);
   for (const auto& problem : campaign.problems) ADD_FAILURE() << problem.message;
   ReportOptions options;
-  options.map_calibration.laws = {"kuwabara-kono-no-tension"};
+  options.map_calibrations = calibrate_map_rows(campaign, kuwabara_kono_only());
   const Report report = build_report(campaign, std::nullopt, {}, directory.string(), "", options);
   if (const char* keep = std::getenv("IMPACT_MAP_TEST_KEEP")) { // the campaign, for impact-report
     fs::remove_all(fs::path(keep) / "thin_plate_campaign");
@@ -452,7 +461,7 @@ TEST(ValidityMapNoRebound, TheCellSaysWhyAndTheReportStaysComplete) {
   EXPECT_EQ(campaign.problems.front().kind, ProblemKind::no_rebound);
   EXPECT_EQ(*campaign.problems.front().point.at(thickness_axis).number, 0.004);
   ReportOptions options;
-  options.map_calibration.laws = {"kuwabara-kono-no-tension"};
+  options.map_calibrations = calibrate_map_rows(campaign, kuwabara_kono_only());
   const Report report = build_report(campaign, std::nullopt, {}, "no rebound", "", options);
   for (const auto& problem : report.problems) EXPECT_NE(problem.kind, ProblemKind::input) << problem.message;
   EXPECT_TRUE(std::any_of(report.problems.begin(), report.problems.end(),
@@ -488,12 +497,12 @@ TEST(ValidityMapDetailRow, TheDetailRowsCalibrationIsTakenForTheSameRunsOnly) {
     Calibration detail = calibrate(runs, calibration_options);
     detail.problems.push_back({"test", ProblemKind::input, mark});
     ReportOptions options;
-    options.map_calibration = calibration_options;
+    CalibrationOptions map_options = calibration_options;
     std::vector<std::string> lines;
-    options.map_calibration.progress = [&lines](const std::string& line) { lines.push_back(line); };
+    map_options.progress = [&lines](const std::string& line) { lines.push_back(line); };
     options.map_campaign = campaign;
     options.detail_row = row->second;
-    options.detail_row_calibration = detail;
+    options.map_calibrations = calibrate_map_rows(campaign, map_options, detail);
     const Report report = build_report(row->first, detail, {}, "detail row", "", options);
     ASSERT_TRUE(report.map && report.map->available) << report.map->reason;
     const auto count = [&lines](const std::string& text) {

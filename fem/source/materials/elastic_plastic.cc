@@ -1,6 +1,7 @@
 // Small-strain J2 (von Mises) plasticity with isotropic hardening, radial
 // return, optional Kelvin-Voigt viscosity in parallel.
 #include <impact_fem/materials/elastic_plastic.h>
+#include <impact_fem/result_files.h>
 
 #include <deal.II/base/exceptions.h>
 
@@ -41,7 +42,7 @@ namespace impact_fem
       Elastic::declare_parameters(prm);
       // Patterns without bounds: the ranges are checked in parse_parameters
       // with messages that give the entry, its range and the value.
-      prm.declare_entry("Yield strength",
+      prm.declare_entry(result_files::yield_strength.entry,
                         "2.03e9",
                         Patterns::Double(),
                         "Initial yield strength in uniaxial tension Y [Pa], "
@@ -75,7 +76,7 @@ namespace impact_fem
                         Patterns::Double(),
                         "Reference plastic strain rate of Johnson-Cook "
                         "[1/s], > 0.");
-      prm.declare_entry("Retardation time",
+      prm.declare_entry(result_files::retardation_time.entry,
                         "0",
                         Patterns::Double(),
                         "Kelvin-Voigt retardation time tau_r [s], >= 0, of "
@@ -92,7 +93,7 @@ namespace impact_fem
       shear_modulus = young / (2 * (1 + poisson));
       bulk_modulus  = young / (3 * (1 - 2 * poisson));
 
-      yield_strength = prm.get_double("Yield strength");
+      yield_strength = prm.get_double(result_files::yield_strength.entry);
       check_entry(yield_strength > 0, "Yield strength", "be > 0 Pa", yield_strength);
       johnson_cook = prm.get("Hardening law") == "johnson-cook";
       hardening_modulus = prm.get_double("Hardening modulus");
@@ -111,7 +112,7 @@ namespace impact_fem
                   "Reference strain rate",
                   "be > 0 1/s",
                   reference_rate);
-      retardation_time = prm.get_double("Retardation time");
+      retardation_time = prm.get_double(result_files::retardation_time.entry);
       check_entry(retardation_time >= 0,
                   "Retardation time",
                   "be >= 0 s",
@@ -229,7 +230,7 @@ namespace impact_fem
 
     IMPACT_FEM_REGISTER_MATERIAL(
       ElasticPlastic,
-      "elastic-plastic",
+      result_files::elastic_plastic_model,
       "J2 plasticity with isotropic hardening (linear or Johnson-Cook without "
       "the thermal term), optional Kelvin-Voigt viscosity in parallel: E, nu, "
       "rho, Y, hardening law and its constants, retardation time")

@@ -1,10 +1,12 @@
 #include <impact_fem/materials/interface.h>
+#include <impact_fem/result_files.h>
 
 #include <deal.II/base/exceptions.h>
 
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <string_view>
 
 namespace impact_fem
 {
@@ -14,16 +16,16 @@ namespace impact_fem
     {
       using Kinds = Registry<Interface>;
 
-      // The subsection of a kind is its name with an upper-case first letter
-      // ("elastic" -> "Elastic"), as in the parameter files.
+      // The subsection of a kind ("elastic" -> "Elastic"): the result files'
+      // reader finds the constants by the same rule.
       std::string
       subsection_name(const std::string &name)
       {
-        std::string s = name;
-        if (!s.empty())
-          s[0] = static_cast<char>(std::toupper(s[0]));
-        return s;
+        return result_files::material_subsection(name);
       }
+
+      static_assert(std::string_view(rigid_model_name) == result_files::rigid_model,
+                    "the rigid plate's name differs from the result files' one");
     } // namespace
 
 
@@ -117,7 +119,7 @@ namespace impact_fem
     {
       // 'rigid' is no constitutive law (nothing is meshed): the scenario
       // reads it before creating a material and allows it for the plate only.
-      prm.declare_entry("Material model",
+      prm.declare_entry(result_files::material_model_entry,
                         default_model,
                         Patterns::Selection(Kinds::selection() + "|" +
                                             rigid_model_name),
@@ -139,7 +141,7 @@ namespace impact_fem
     std::unique_ptr<Interface>
     create_material(ParameterHandler &prm)
     {
-      const std::string name = prm.get("Material model");
+      const std::string name = prm.get(result_files::material_model_entry);
       std::unique_ptr<Interface> material = Kinds::get(name).create();
       prm.enter_subsection(subsection_name(name));
       material->parse_parameters(prm);

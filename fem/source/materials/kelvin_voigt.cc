@@ -1,6 +1,7 @@
 // Kelvin-Voigt viscoelasticity: sigma = C : (eps + tau_r d eps/dt), with
 // separate retardation times for the deviatoric and the volumetric parts.
 #include <impact_fem/materials/elastic.h>
+#include <impact_fem/result_files.h>
 
 namespace impact_fem
 {
@@ -18,25 +19,25 @@ namespace impact_fem
       static void
       declare_parameters(ParameterHandler &prm)
       {
-        prm.declare_entry("Young's modulus",
+        prm.declare_entry(result_files::youngs_modulus.entry,
                           "2e11",
                           Patterns::Double(0),
                           "Young's modulus E of the spring [Pa], > 0.");
-        prm.declare_entry("Poisson's ratio",
+        prm.declare_entry(result_files::poissons_ratio.entry,
                           "0.25",
                           Patterns::Double(-1, 0.5),
                           "Poisson's ratio nu of the spring [-], in (-1, "
                           "0.5).");
-        prm.declare_entry("Density",
+        prm.declare_entry(result_files::density.entry,
                           "7800",
                           Patterns::Double(0),
                           "Mass density rho [kg/m^3], > 0.");
-        prm.declare_entry("Retardation time",
+        prm.declare_entry(result_files::retardation_time.entry,
                           "1e-7",
                           Patterns::Double(0),
                           "Retardation time tau_r of the deviatoric "
                           "(shear) part [s], >= 0; 0 is elastic.");
-        prm.declare_entry("Volumetric retardation time",
+        prm.declare_entry(result_files::volumetric_retardation_time.entry,
                           "-1",
                           Patterns::Double(-1),
                           "Retardation time of the volumetric part [s], "
@@ -48,8 +49,8 @@ namespace impact_fem
       parse_parameters(ParameterHandler &prm) override
       {
         parse_elastic_constants(prm);
-        const double tau_d = prm.get_double("Retardation time");
-        double       tau_v = prm.get_double("Volumetric retardation time");
+        const double tau_d = prm.get_double(result_files::retardation_time.entry);
+        double       tau_v = prm.get_double(result_files::volumetric_retardation_time.entry);
         AssertThrow(tau_d >= 0,
                     ExcMessage("Kelvin-voigt/Retardation time must not be "
                                "negative."));
@@ -73,7 +74,7 @@ namespace impact_fem
 
     IMPACT_FEM_REGISTER_MATERIAL(
       KelvinVoigt,
-      "kelvin-voigt",
+      result_files::kelvin_voigt_model,
       "sigma = C : (eps + tau_r d eps/dt): E, nu, rho, deviatoric and "
       "volumetric retardation times")
   } // namespace materials

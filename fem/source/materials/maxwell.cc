@@ -1,6 +1,7 @@
 // Generalised Maxwell (standard linear solid): shear and bulk relaxation as
 // Prony series, internal variables integrated exactly over each step.
 #include <impact_fem/materials/elastic.h>
+#include <impact_fem/result_files.h>
 
 #include <cmath>
 
@@ -29,7 +30,7 @@ namespace impact_fem
       static void
       declare_parameters(ParameterHandler &prm)
       {
-        prm.declare_entry("Density",
+        prm.declare_entry(result_files::density.entry,
                           "7800",
                           Patterns::Double(0),
                           "Mass density rho [kg/m^3], > 0.");
@@ -66,7 +67,7 @@ namespace impact_fem
       void
       parse_parameters(ParameterHandler &prm) override
       {
-        mass_density = prm.get_double("Density");
+        mass_density = prm.get_double(result_files::density.entry);
         AssertThrow(mass_density > 0,
                     ExcMessage("Maxwell/Density must be positive."));
         shear_modulus_relaxed = prm.get_double("Long-term shear modulus");

@@ -64,7 +64,7 @@ double number(const json& object, const std::string& key, const std::string& pat
 
 // e, t_c, F_max of one impact (the energy loss and the errors of the file are derived from
 // them and recomputed here, by the report's one relative error).
-ImpactQuantities impact_of(const json& object, const std::string& key, const std::string& path) {
+ImpactFigures impact_of(const json& object, const std::string& key, const std::string& path) {
   const std::string at = path + "." + key;
   const json& figures = member(object, key, path);
   return {number(figures, "restitution", at, true), number(figures, "contact_time", at),
@@ -122,7 +122,7 @@ std::string other_campaign(const Report& report, const SimulatorResult& result) 
     if (!index)
       return "V = " + short_number(run.velocity) + " m/s is not a velocity of this report's "
              "campaign (" + report.campaign_source + ")";
-    const ImpactQuantities& fem = report.runs[*index].fem;
+    const ImpactFigures& fem = report.runs[*index].fem;
     for (Quantity quantity : {Quantity::restitution, Quantity::contact_time, Quantity::force_max}) {
       // The FEM numbers of a result file are the calibration's, passed through JSON files
       // without loss; anything beyond rounding means another campaign or calibration.
@@ -193,7 +193,7 @@ void add_simulators(Report& report, const fs::path& directory) {
                              "calibration: " + why + "; left out of 'In your simulator'");
       continue;
     }
-    std::vector<std::optional<ImpactQuantities>> judged(report.runs.size());
+    std::vector<std::optional<ImpactFigures>> judged(report.runs.size());
     for (const auto& run : result.runs) judged[*report_run(report, run.velocity)] = run.tool;
     for (double tolerance : report.tolerances)
       result.against_fem.push_back(tolerance_verdict(report, judged, tolerance, simulator_judged_quantities,

@@ -21,10 +21,10 @@ namespace impact::postprocess::detail {
 ThinPlatePrediction thin_plate_prediction(const FemRun& run, double damping, bool rigid) {
   ThinPlatePrediction prediction;
   const ScenarioMaterials materials = scenario_materials({run});
-  const auto youngs_modulus = material_constant(run, "Plate", "Young's modulus");
-  const auto poisson_ratio = material_constant(run, "Plate", "Poisson's ratio");
-  const auto density = material_constant(run, "Plate", "Density");
-  const auto thickness = text_number(run, "Scenario/Plate thickness");
+  const auto youngs_modulus = material_constant(run, fem_format::plate_body, fem_format::youngs_modulus);
+  const auto poisson_ratio = material_constant(run, fem_format::plate_body, fem_format::poissons_ratio);
+  const auto density = material_constant(run, fem_format::plate_body, fem_format::density);
+  const auto thickness = text_number(run, fem_format::plate_thickness.path);
   if (!materials.hertz_from_runs || !youngs_modulus || !poisson_ratio || !density || !thickness) {
     prediction.missing = "the run does not record the plate's material (Plate/<Model>/Young's "
                          "modulus, Poisson's ratio, Density), its thickness (Scenario/Plate "
@@ -38,9 +38,7 @@ ThinPlatePrediction thin_plate_prediction(const FemRun& run, double damping, boo
     const reduced::ThinPlateImpact model(materials.hertz_stiffness, 1.5, damping, run.mass,
                                          impedance);
     const auto result = model.impact(run.impact_velocity);
-    prediction.quantities = ImpactQuantities{result.restitution, result.contact_time,
-                                             result.force_max, result.time_force_max,
-                                             result.approach_max};
+    prediction.quantities = result.figures();
     std::ostringstream text;
     text.precision(4);
     text << "c = " << materials.hertz_stiffness << " N/m^1.5, n = 1.5, ";

@@ -31,7 +31,7 @@ std::string band_name(double tolerance) { return format(tolerance * 100) + " %";
 // Within when |error| + U <= tolerance for every quantity judged, outside when
 // |error| - U > tolerance for one, not decided in between (U: the FEM's uncertainty of the
 // quantity, 0 where it is not known), unknown without a prediction.
-Decision decide(const std::optional<ImpactQuantities>& judged, const ReportRun& run,
+Decision decide(const std::optional<ImpactFigures>& judged, const ReportRun& run,
                 double tolerance, const std::vector<Quantity>& quantities) {
   if (!judged) return Decision::unknown;
   bool undecided = false;
@@ -47,7 +47,7 @@ Decision decide(const std::optional<ImpactQuantities>& judged, const ReportRun& 
 }
 
 ToleranceVerdict tolerance_verdict(const Report& report,
-                                   const std::vector<std::optional<ImpactQuantities>>& judged,
+                                   const std::vector<std::optional<ImpactFigures>>& judged,
                                    double tolerance, const std::vector<Quantity>& quantities,
                                    const std::string& basis) {
   ToleranceVerdict verdict{tolerance, {}, std::nullopt, {}};
@@ -112,7 +112,7 @@ ToleranceVerdict tolerance_verdict(const Report& report,
 namespace {
 
 ToleranceVerdict model_verdict(const Report& report, const ReportModel& model, double tolerance) {
-  std::vector<std::optional<ImpactQuantities>> judged;
+  std::vector<std::optional<ImpactFigures>> judged;
   for (const auto& at : model.runs) judged.push_back(at.judged());
   return tolerance_verdict(report, judged, tolerance,
                            {verdict_quantities.begin(), verdict_quantities.end()},

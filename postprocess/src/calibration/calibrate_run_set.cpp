@@ -43,8 +43,7 @@ CalibrationOutcome write_calibration(const CalibrationRequest& request) {
   }
   Calibration calibration = calibrate(input.runs, request.options);
   if (!calibration.campaign.fitted && (request.campaign || request.runs.size() > 1))
-    problems.push_back(
-        {source, ProblemKind::input, "campaign not fitted: " + calibration.campaign.reason});
+    problems.push_back(campaign_not_fitted(source, calibration.campaign));
   problems.insert(problems.end(), calibration.problems.begin(), calibration.problems.end());
   calibration.problems = std::move(problems);
   write_json(request.output, calibration);
@@ -52,6 +51,15 @@ CalibrationOutcome write_calibration(const CalibrationRequest& request) {
   outcome.exit_code = exit_code(calibration.problems);
   outcome.calibration = std::move(calibration);
   return outcome;
+}
+
+Problem campaign_not_fitted(const std::string& source, const CampaignCalibration& campaign) {
+  return {source, ProblemKind::input, "campaign not fitted: " + campaign.reason};
+}
+
+bool is_campaign_not_fitted(const Problem& problem, const CampaignCalibration& campaign) {
+  const Problem stated = campaign_not_fitted("", campaign);
+  return problem.kind == stated.kind && problem.message == stated.message;
 }
 
 std::string calibration_summary(const Calibration& calibration) {

@@ -12,6 +12,7 @@
 #include "impact_postprocess/models/contact_models.hpp"
 #include "impact_postprocess/run/scenario_materials.hpp"
 #include "calibration/least_squares.hpp"
+#include "calibration/ranking.hpp"
 #include "models/simulated_force.hpp"
 
 #include <impact_reduced/hunt_crossley.hpp>
@@ -27,6 +28,26 @@
 #include <sstream>
 
 namespace impact::postprocess {
+
+namespace detail {
+
+FitQuality combine(const std::vector<FitQuality>& parts) {
+  double squares = 0, weights = 0;
+  std::size_t samples = 0;
+  double r_squared = 0;
+  for (const auto& part : parts) {
+    squares += part.rms_residual * part.rms_residual * double(part.samples);
+    samples += part.samples;
+    r_squared += part.r_squared * double(part.samples);
+    weights += double(part.samples);
+  }
+  return {std::sqrt(squares / double(samples)), r_squared / weights, samples};
+}
+
+} // namespace detail
+
+using detail::combine;
+using detail::rank_campaign;
 
 namespace {
 
@@ -185,18 +206,6 @@ FitQuality quality_of(const std::vector<double>& model, const std::vector<double
   return {std::sqrt(residual / double(n)) / scale, total > 0 ? 1 - residual / total : nan, n};
 }
 
-FitQuality combine(const std::vector<FitQuality>& parts) {
-  double squares = 0, weights = 0;
-  std::size_t samples = 0;
-  double r_squared = 0;
-  for (const auto& part : parts) {
-    squares += part.rms_residual * part.rms_residual * double(part.samples);
-    samples += part.samples;
-    r_squared += part.r_squared * double(part.samples);
-    weights += double(part.samples);
-  }
-  return {std::sqrt(squares / double(samples)), r_squared / weights, samples};
-}
 
 // ---- Force histories and energy loss of a model ---------------------------------------
 
@@ -525,13 +534,10 @@ std::vector<Estimate> jackknife(const std::vector<HeldOutFit>& held_out,
   return estimates;
 }
 
-// One campaign fit of `model` to all runs, then, with at least three velocities, one fit
-// per velocity with that velocity's runs left out (started from the full fit).
-CampaignModelFit fit_campaign_model(const ContactModel& model, const CampaignFitRequest& request,
-                                    const std::vector<PreparedRun>& runs,
-                                    const std::vector<double>& velocities,
-                                    const CampaignStart& start, const CalibrationOptions& options,
-                                    std::vector<Problem>& problems) {
+// The parameters of a campaign fit of `model` and their start (n held when the model or the
+// request fixes it, the dissipation from the campaign's median restitution).
+FitSetup campaign_fit_setup(const ContactModel& model, const CampaignFitRequest& request,
+                            const CampaignStart& start) {
   const std::optional<double> exponent =
       model.required_exponent ? model.required_exponent : request.exponent;
   const bool fixed_exponent = exponent.has_value();
@@ -567,17 +573,68 @@ CampaignModelFit fit_campaign_model(const ContactModel& model, const CampaignFit
     parameter.upper = spec.upper;
     setup.parameters.push_back(parameter);
   }
+  return setup;
+}
 
-  const auto evaluators_of = [&](const std::function<bool(const PreparedRun&)>& take) {
-    std::vector<HistoryEvaluator> evaluators;
-    for (const auto& run : runs)
-      if (take(run))
-        evaluators.push_back({&model, &run, setup.parametrisation, options.ode_tolerance});
-    return evaluators;
-  };
-  const std::vector<HistoryEvaluator> evaluators = evaluators_of([](const PreparedRun&) {
-    return true;
-  });
+// The force-history evaluators of the runs that `take` accepts.
+std::vector<HistoryEvaluator> evaluators_of(const ContactModel& model, const FitSetup& setup,
+                                            const std::vector<PreparedRun>& runs,
+                                            const CalibrationOptions& options,
+                                            const std::function<bool(const PreparedRun&)>& take) {
+  std::vector<HistoryEvaluator> evaluators;
+  for (const auto& run : runs)
+    if (take(run))
+      evaluators.push_back({&model, &run, setup.parametrisation, options.ode_tolerance});
+  return evaluators;
+}
+
+// Leave one velocity out: the prediction at each velocity by the fit to the others (started
+// from the full fit `theta`), and the jackknife of the parameters over those fits.
+void add_held_out_fits(CampaignModelFit& campaign_fit, const ContactModel& model,
+                       const CampaignFitRequest& request, const FitSetup& setup,
+                       const std::vector<double>& theta, const std::vector<PreparedRun>& runs,
+                       const std::vector<double>& velocities, const CalibrationOptions& options,
+                       std::vector<Problem>& problems) {
+  const std::string what =
+      "the campaign fit of " + request.label + " (" + request.key + ")";
+  std::vector<detail::FitParameter> restart = setup.parameters;
+  for (std::size_t j = 0; j < restart.size(); ++j) restart[j].initial = theta[j];
+  for (double left_out : velocities) {
+    const auto others = evaluators_of(model, setup, runs, options, [left_out](const PreparedRun& run) {
+      return !same_velocity(run.run->impact_velocity, left_out);
+    });
+    const auto held = detail::solve_least_squares(
+        restart, residual_blocks(others, request.energy_weight),
+        {options.max_iterations, options.threads});
+    const ModelFit held_fit = to_model_fit(setup, held, options.confidence_level);
+    campaign_fit.held_out.push_back({left_out, held_fit.parameter_values(), held.converged});
+    if (!held.converged)
+      problems.push_back({request.key, ProblemKind::convergence,
+                          what + " without V = " + format_number(left_out) +
+                              " m/s did not converge: " + held.message});
+    for (std::size_t i = 0; i < runs.size(); ++i)
+      if (same_velocity(runs[i].run->impact_velocity, left_out))
+        campaign_fit.runs[i].out_of_sample =
+            predict_impact(model, runs[i].run->mass, runs[i].run->impact_velocity,
+                           held_fit.stiffness.value, held_fit.exponent.value,
+                           held_fit.dissipation(), options.ode_tolerance);
+  }
+  std::vector<bool> fixed;
+  for (const auto& parameter : setup.parameters) fixed.push_back(parameter.fixed);
+  campaign_fit.jackknife = jackknife(campaign_fit.held_out, campaign_fit.fit.parameter_values(),
+                                     fixed, options.confidence_level);
+}
+
+// One campaign fit of `model` to all runs, then, with at least three velocities, one fit
+// per velocity with that velocity's runs left out (started from the full fit).
+CampaignModelFit fit_campaign_model(const ContactModel& model, const CampaignFitRequest& request,
+                                    const std::vector<PreparedRun>& runs,
+                                    const std::vector<double>& velocities,
+                                    const CampaignStart& start, const CalibrationOptions& options,
+                                    std::vector<Problem>& problems) {
+  const FitSetup setup = campaign_fit_setup(model, request, start);
+  const std::vector<HistoryEvaluator> evaluators =
+      evaluators_of(model, setup, runs, options, [](const PreparedRun&) { return true; });
   const auto result =
       detail::solve_least_squares(setup.parameters, residual_blocks(evaluators, request.energy_weight),
                                   {options.max_iterations, options.threads});
@@ -610,34 +667,9 @@ CampaignModelFit fit_campaign_model(const ContactModel& model, const CampaignFit
     problems.push_back({request.key, ProblemKind::convergence, what + " did not converge: " +
                                                         fit.solver_message});
 
-  // Leave one velocity out: the prediction at each velocity by the fit to the others.
-  if (velocities.size() < 3) return campaign_fit;
-  std::vector<detail::FitParameter> restart = setup.parameters;
-  for (std::size_t j = 0; j < restart.size(); ++j) restart[j].initial = result.theta[j];
-  for (double left_out : velocities) {
-    const auto others = evaluators_of([left_out](const PreparedRun& run) {
-      return !same_velocity(run.run->impact_velocity, left_out);
-    });
-    const auto held = detail::solve_least_squares(
-        restart, residual_blocks(others, request.energy_weight),
-        {options.max_iterations, options.threads});
-    const ModelFit held_fit = to_model_fit(setup, held, options.confidence_level);
-    campaign_fit.held_out.push_back({left_out, held_fit.parameter_values(), held.converged});
-    if (!held.converged)
-      problems.push_back({request.key, ProblemKind::convergence,
-                          what + " without V = " + format_number(left_out) +
-                              " m/s did not converge: " + held.message});
-    for (std::size_t i = 0; i < runs.size(); ++i)
-      if (same_velocity(runs[i].run->impact_velocity, left_out))
-        campaign_fit.runs[i].out_of_sample =
-            predict_impact(model, runs[i].run->mass, runs[i].run->impact_velocity,
-                           held_fit.stiffness.value, held_fit.exponent.value,
-                           held_fit.dissipation(), options.ode_tolerance);
-  }
-  std::vector<bool> fixed;
-  for (const auto& parameter : setup.parameters) fixed.push_back(parameter.fixed);
-  campaign_fit.jackknife = jackknife(campaign_fit.held_out, campaign_fit.fit.parameter_values(),
-                                     fixed, options.confidence_level);
+  if (velocities.size() >= 3)
+    add_held_out_fits(campaign_fit, model, request, setup, result.theta, runs, velocities, options,
+                      problems);
   return campaign_fit;
 }
 
@@ -715,65 +747,12 @@ void add_reference_models(CampaignCalibration& campaign, const std::vector<FemRu
            fem.restitution > 0 && fem.restitution <= 1
                ? predict_impact(law, fem.mass, fem.impact_velocity, c, hertz_exponent,
                                 {fem.restitution}, options.ode_tolerance)
-               : ImpactPrediction{nan, nan, nan, nan, nan, nan}});
+               : ImpactPrediction{{nan, nan, nan, nan, nan}, nan}});
     }
     campaign.restitution_maps.push_back(std::move(evaluation));
   }
 }
 
-// A model's ranking entry from its per-run predictions.
-RankedModel ranked(const std::string& key, const std::vector<RunResidual>& residuals,
-                   const std::vector<RunCalibration>& runs, std::size_t free_parameters,
-                   double rms_residual, bool converged) {
-  std::vector<ImpactQuantities> in_sample, out_of_sample, measured;
-  bool all_out_of_sample = true;
-  for (const auto& residual : residuals) {
-    const auto run = std::find_if(runs.begin(), runs.end(), [&](const RunCalibration& r) {
-      return r.source == residual.source;
-    });
-    if (run == runs.end()) continue;
-    measured.push_back(run->measured);
-    in_sample.push_back(residual.prediction.quantities());
-    if (residual.out_of_sample) out_of_sample.push_back(residual.out_of_sample->quantities());
-    else all_out_of_sample = false;
-  }
-  all_out_of_sample = all_out_of_sample && !out_of_sample.empty();
-  const RankingScore inside = ranking_score(in_sample, measured);
-  const RankingScore outside = all_out_of_sample ? ranking_score(out_of_sample, measured) : inside;
-  return {key, free_parameters, outside.rms, all_out_of_sample, outside.worst, inside.rms,
-          rms_residual, converged, {}};
-}
-
-// The ranking of the campaign and reference models by out-of-sample error; the fitted
-// restitution-parametrised laws, which share one force history, as one family.
-std::vector<RankedModel> rank_campaign(const CampaignCalibration& campaign,
-                                       const std::vector<RunCalibration>& runs) {
-  std::vector<RankedModel> ranking;
-  std::optional<std::size_t> family;
-  const auto& maps = restitution_parametrised_laws();
-  for (const CampaignModelFit* model : campaign.models()) {
-    const bool in_family = std::find(maps.begin(), maps.end(), model->key) != maps.end();
-    if (in_family && family) {
-      ranking[*family].family.push_back(model->key);
-      continue;
-    }
-    ranking.push_back(ranked(model->key, model->runs, runs, model->fit.free_parameters(),
-                             model->fit.quality.rms_residual, model->fit.converged));
-    if (in_family) {
-      ranking.back().family = {model->key};
-      family = ranking.size() - 1;
-    }
-  }
-  for (const auto& reference : campaign.reference_models) {
-    FitQuality quality{0, 0, 0};
-    std::vector<FitQuality> parts;
-    for (const auto& run : reference.runs) parts.push_back(run.quality);
-    if (!parts.empty()) quality = combine(parts);
-    ranking.push_back(ranked(reference.key, reference.runs, runs, 0, quality.rms_residual, true));
-  }
-  rank(ranking);
-  return ranking;
-}
 
 } // namespace
 
@@ -814,47 +793,6 @@ const CampaignModelFit* CampaignCalibration::find(const std::string& key) const 
   return nullptr;
 }
 
-RankingScore ranking_score(const std::vector<ImpactQuantities>& predicted,
-                           const std::vector<ImpactQuantities>& measured) {
-  double squares = 0, worst = 0;
-  std::size_t count = 0;
-  for (std::size_t i = 0; i < predicted.size() && i < measured.size(); ++i)
-    for (Quantity quantity : verdict_quantities) {
-      const double error = relative_error(predicted[i], measured[i], quantity);
-      if (!std::isfinite(error)) continue;
-      squares += error * error;
-      worst = std::max(worst, std::abs(error));
-      ++count;
-    }
-  if (count == 0) return {nan, nan};
-  return {std::sqrt(squares / double(count)), worst};
-}
-
-void rank(std::vector<RankedModel>& models, double tie) {
-  std::vector<std::pair<std::size_t, RankedModel>> indexed;
-  for (std::size_t i = 0; i < models.size(); ++i) indexed.emplace_back(i, models[i]);
-  std::stable_sort(indexed.begin(), indexed.end(), [](const auto& a, const auto& b) {
-    if (std::isnan(a.second.score)) return false;
-    if (std::isnan(b.second.score)) return true;
-    return a.second.score < b.second.score;
-  });
-  // Groups of scores within `tie` of the group's best: fewer free parameters first, then the
-  // given order.
-  for (std::size_t begin = 0; begin < indexed.size();) {
-    std::size_t end = begin + 1;
-    while (end < indexed.size() && std::isfinite(indexed[begin].second.score) &&
-           indexed[end].second.score - indexed[begin].second.score <= tie)
-      ++end;
-    std::sort(indexed.begin() + std::ptrdiff_t(begin), indexed.begin() + std::ptrdiff_t(end),
-              [](const auto& a, const auto& b) {
-                if (a.second.free_parameters != b.second.free_parameters)
-                  return a.second.free_parameters < b.second.free_parameters;
-                return a.first < b.first;
-              });
-    begin = end;
-  }
-  for (std::size_t i = 0; i < models.size(); ++i) models[i] = indexed[i].second;
-}
 
 namespace {
 

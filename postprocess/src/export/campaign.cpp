@@ -68,11 +68,11 @@ ExportCampaign read_export_campaign(const nlohmann::json& json, const std::strin
       fail(file, where + ".mass = " + std::to_string(run.mass) +
                      " kg differs from runs[0].mass = " + std::to_string(campaign.mass) +
                      " kg: one sphere per export");
-    const MeasuredImpact& m = run.measured;
+    const ImpactFigures& m = run.measured;
     if (!(std::isfinite(m.restitution) && std::isfinite(m.contact_time) &&
           std::isfinite(m.force_max)))
       fail(file, where + ".measured lacks restitution, contact_time or force_max");
-    campaign.runs.push_back({run.source, run.velocity, {m.restitution, m.contact_time, m.force_max}});
+    campaign.runs.push_back({run.source, run.velocity, m});
   }
   std::sort(campaign.runs.begin(), campaign.runs.end(),
             [](const auto& a, const auto& b) { return a.velocity < b.velocity; });
@@ -125,12 +125,12 @@ ImpactFigures hertz_law_impact(const HertzLawFit& law, double mass, double veloc
   if (law.model == model_keys::hunt_crossley) {
     const auto response =
         reduced::HuntCrossleyImpact(mass, law.stiffness, 1.5, law.damping, velocity).response();
-    return {response.restitution, response.contact_time, response.force_max};
+    return response.figures();
   }
   const reduced::ContactSetup setup{mass, law.stiffness, 1.5};
   const auto result = reduced::integrate_impact(
       mass, velocity, reduced::comparison_law(law.model).force_law(law.damping, setup), 1e-12);
-  return {result.restitution, result.contact_time, result.force_max};
+  return result.figures();
 }
 
 } // namespace impact::postprocess

@@ -5,6 +5,7 @@
 
 #include "impact_postprocess/export/liggghts.hpp"
 #include "impact_postprocess/export/simulator_export.hpp"
+#include "impact_postprocess/run/fem_run_format.hpp"
 #include "impact_postprocess/run/run_set.hpp"
 
 #include <cmath>
@@ -28,7 +29,7 @@ nlohmann::json read_calibration_file(const std::filesystem::path& file) {
 } // namespace
 
 double sphere_radius(const Campaign& input) {
-  const std::string key = "Scenario/Sphere radius";
+  const std::string key = fem_format::sphere_radius.path;
   std::optional<double> radius;
   for (const auto& run : input.runs) {
     const auto found = run.text_attributes.find(key);

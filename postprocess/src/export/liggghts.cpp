@@ -56,14 +56,14 @@ ImpactFigures liggghts_thornton_impact(const PlasticContact& contact, double mas
                                        double velocity) {
   const auto response =
       reduced::LiggghtsThorntonImpact(thornton_parameters(contact, mass, radius), velocity).response();
-  return {response.restitution, response.contact_time, response.force_max};
+  return response.figures();
 }
 
 ImpactFigures thornton_impact(const PlasticContact& contact, double mass, double radius,
                               double velocity) {
   const auto response =
       reduced::ThorntonImpact(thornton_parameters(contact, mass, radius), velocity).response();
-  return {response.restitution, response.contact_time, response.force_max};
+  return response.figures();
 }
 
 namespace {

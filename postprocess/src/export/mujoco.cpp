@@ -21,6 +21,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <sstream>
 
 namespace impact::postprocess {
@@ -79,7 +80,8 @@ ImpactFigures linear_contact_impact(double stiffness, double damping, double mas
   const double peak_time = std::max(0.0, (peak_phase - o.phi) / o.omega_d);
   const double force_max = mass * velocity * o.magnitude * std::exp(-o.sigma * peak_time) *
                            std::sin(o.omega_d * peak_time + o.phi);
-  return {-rebound, contact_time, force_max};
+  // x_max is not computed: the exports compare e, t_c and F_max only.
+  return {-rebound, contact_time, force_max, peak_time, std::numeric_limits<double>::quiet_NaN()};
 }
 
 MujocoContact mujoco_contact(double restitution, double contact_time, double velocity) {

@@ -114,9 +114,8 @@ std::array<std::vector<double>, quantity_count> along(const ContactModel& model,
   std::array<std::vector<double>, quantity_count> values;
   const std::vector<double> dissipation(parameters.begin() + 2, parameters.end());
   for (double velocity : grid) {
-    const ImpactQuantities impact =
-        predict_impact(model, mass, velocity, parameters[0], parameters[1], dissipation)
-            .quantities();
+    const ImpactFigures impact =
+        predict_impact(model, mass, velocity, parameters[0], parameters[1], dissipation);
     for (Quantity quantity : all_quantities)
       values[std::size_t(quantity)].push_back(value(impact, quantity));
   }
@@ -191,10 +190,10 @@ ReportModel fitted_model(const std::vector<ReportRun>& runs, const CampaignModel
     ModelAtRun at;
     if (const auto index = matching(fit.runs, run.source, run.velocity)) {
       const RunResidual& residual = fit.runs[*index];
-      const ImpactQuantities in = residual.prediction.quantities();
+      const ImpactFigures in = residual.prediction;
       if (std::isfinite(in.restitution)) at.in_sample = in;
       else at.missing = "the calibration's prediction of " + fit.key + " is incomplete";
-      if (residual.out_of_sample) at.out_of_sample = residual.out_of_sample->quantities();
+      if (residual.out_of_sample) at.out_of_sample = *residual.out_of_sample;
     } else {
       at.missing = "the calibration has no prediction of " + fit.key + " for this run";
     }
@@ -230,7 +229,7 @@ ReportModel reference_model(const std::vector<ReportRun>& runs, const ReferenceM
   for (const auto& run : runs) {
     ModelAtRun at;
     if (const auto index = matching(reference.runs, run.source, run.velocity)) {
-      const ImpactQuantities impact = reference.runs[*index].prediction.quantities();
+      const ImpactFigures impact = reference.runs[*index].prediction;
       if (std::isfinite(impact.restitution)) at.in_sample = at.out_of_sample = impact;
       else at.missing = "the model cannot be evaluated at this run";
     } else {
@@ -271,7 +270,7 @@ ReportModel per_run_model(const std::vector<ReportRun>& runs, const Calibration&
       continue;
     }
     if (!entry->history->converged) model.converged = false;
-    if (entry->history_prediction) at.in_sample = entry->history_prediction->quantities();
+    if (entry->history_prediction) at.in_sample = *entry->history_prediction;
     else at.missing = "the calibration has no prediction of this run's fit";
     try {
       const ModelFit& fit = *entry->history;

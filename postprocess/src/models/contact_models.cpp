@@ -124,35 +124,23 @@ ContactModel contact_model(const std::string& name) {
 ImpactPrediction predict_impact(const ContactModel& model, double mass, double velocity,
                                 double stiffness, double exponent,
                                 const std::vector<double>& dissipation, double tolerance) {
-  ImpactPrediction prediction{nan, nan, nan, nan, nan, nan};
+  ImpactPrediction prediction{{nan, nan, nan, nan, nan}, nan};
   try {
     prediction.damping = damping_at(model, mass, velocity, stiffness, exponent, dissipation);
     if (model.plastic_contact) {
       const auto response = reduced::elastic_plastic_impact(
           mass, velocity, *model.plastic_contact(prediction.damping, {mass, stiffness, exponent}));
-      prediction.restitution = response.restitution;
-      prediction.contact_time = response.contact_time;
-      prediction.force_max = response.force_max;
-      prediction.time_force_max = response.compression_time;
-      prediction.approach_max = response.approach_max;
+      static_cast<ImpactFigures&>(prediction) = response.figures();
     } else if (model.hunt_crossley_force()) {
       const reduced::HuntCrossleyImpact impact(mass, stiffness, exponent, prediction.damping,
                                                velocity);
       const auto response = impact.response();
-      prediction.restitution = response.restitution;
-      prediction.contact_time = response.contact_time;
-      prediction.force_max = response.force_max;
-      prediction.time_force_max = response.time_force_max;
-      prediction.approach_max = response.approach_max;
+      static_cast<ImpactFigures&>(prediction) = response.figures();
     } else {
       const auto impact = reduced::integrate_impact(
           mass, velocity, model.force_law(prediction.damping, {mass, stiffness, exponent}),
           tolerance, model.contact_end);
-      prediction.restitution = impact.restitution;
-      prediction.contact_time = impact.contact_time;
-      prediction.force_max = impact.force_max;
-      prediction.time_force_max = impact.time_force_max;
-      prediction.approach_max = impact.approach_max;
+      static_cast<ImpactFigures&>(prediction) = impact.figures();
     }
   } catch (const std::exception&) {
   }

@@ -6,7 +6,7 @@
 
 namespace impact::postprocess {
 
-double value(const ImpactQuantities& impact, Quantity quantity) {
+double value(const ImpactFigures& impact, Quantity quantity) {
   switch (quantity) {
   case Quantity::energy_loss: return 1 - impact.restitution * impact.restitution;
   case Quantity::restitution_deficit: return 1 - impact.restitution;
@@ -45,7 +45,7 @@ double relative_error(double model, double reference) {
   return (model - reference) / std::abs(reference);
 }
 
-double relative_error(const ImpactQuantities& model, const ImpactQuantities& reference,
+double relative_error(const ImpactFigures& model, const ImpactFigures& reference,
                       Quantity quantity) {
   return relative_error(value(model, quantity), value(reference, quantity));
 }

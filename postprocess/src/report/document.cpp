@@ -27,7 +27,7 @@ std::string decision_word(Decision decision) {
   return "?";
 }
 
-std::string error_cell(const std::optional<ImpactQuantities>& model, const ImpactQuantities& fem,
+std::string error_cell(const std::optional<ImpactFigures>& model, const ImpactFigures& fem,
                        Quantity quantity) {
   return model ? percent_cell(relative_error(*model, fem, quantity)) : "n/a";
 }

@@ -1,10 +1,13 @@
-// write_report (pipeline.hpp): run set -> calibration -> assessment -> figures -> page.
+// write_report (pipeline.hpp): run set -> calibration (and the validity map's rows'
+// calibrations) -> assessment -> figures -> page.
 
 #include "impact_postprocess/report/pipeline.hpp"
 
+#include "impact_postprocess/calibration/calibrate_run_set.hpp"
 #include "impact_postprocess/calibration/calibration_json.hpp"
 #include "impact_postprocess/run/run_set.hpp"
 
+#include <algorithm>
 #include <fstream>
 #include <stdexcept>
 #include <utility>
@@ -57,8 +60,8 @@ ObtainedCalibration calibrate_here(const ReportRequest& request, const Campaign&
   obtained.calibrated_here = calibration;
   std::vector<Problem> all(input.problems.begin(), input.problems.end());
   if (!calibration.campaign.fitted)
-    all.push_back({request.campaign ? request.campaign->string() : "", ProblemKind::input,
-                   "campaign not fitted: " + calibration.campaign.reason});
+    all.push_back(campaign_not_fitted(request.campaign ? request.campaign->string() : "",
+                                      calibration.campaign));
   all.insert(all.end(), calibration.problems.begin(), calibration.problems.end());
   calibration.problems = std::move(all);
   const fs::path file = request.output / "calibration.json";
@@ -72,7 +75,48 @@ ObtainedCalibration calibrate_here(const ReportRequest& request, const Campaign&
   return obtained;
 }
 
+/// Whether the calibration is of exactly these runs (the same HDF5 sources).
+bool same_runs(const Calibration& calibration, const std::vector<FemRun>& runs) {
+  std::vector<std::string> calibrated, given;
+  for (const auto& run : calibration.runs) calibrated.push_back(run.source);
+  for (const auto& run : runs) given.push_back(run.source);
+  std::sort(calibrated.begin(), calibrated.end());
+  std::sort(given.begin(), given.end());
+  return calibrated == given;
+}
+
 } // namespace
+
+std::vector<MapRowCalibration> calibrate_map_rows(const Campaign& campaign,
+                                                  const CalibrationOptions& options,
+                                                  const std::optional<Calibration>& detail) {
+  std::vector<MapRowCalibration> calibrations;
+  for (const MapRowRuns& row : map_rows(campaign)) {
+    MapRowCalibration calibrated;
+    if (!row.runs.empty()) {
+      CalibrationOptions row_options = options;
+      if (row_options.progress) {
+        const auto progress = row_options.progress;
+        row_options.progress = [progress, name = row.name](const std::string& line) {
+          progress("map row " + name + ": " + line);
+        };
+      }
+      if (detail && same_runs(*detail, row.runs)) {
+        calibrated.calibration = detail;
+        if (row_options.progress)
+          row_options.progress("the calibration of the detail row, not repeated");
+      } else {
+        try {
+          calibrated.calibration = calibrate(row.runs, row_options);
+        } catch (const std::exception& error) {
+          calibrated.error = error.what();
+        }
+      }
+    }
+    calibrations.push_back(std::move(calibrated));
+  }
+  return calibrations;
+}
 
 ReportOutcome write_report(const ReportRequest& request) {
   ReportOutcome outcome;
@@ -97,15 +141,19 @@ ReportOutcome write_report(const ReportRequest& request) {
   }
   ObtainedCalibration obtained = request.calibration ? read_calibration(*request.calibration)
                                                      : calibrate_here(request, input);
-  // The map's row of these runs is this calibration (the same options): not computed twice.
-  if (options.map_campaign) options.detail_row_calibration = std::move(obtained.calibrated_here);
   options.tolerances = request.tolerances;
   options.simulators = request.simulators;
-  // The rows of a validity map (a two-axis campaign) are calibrated here, every law.
-  options.map_calibration.published_damping = obtained.calibration
-                                                   ? obtained.calibration->campaign.published_damping
-                                                   : request.published_damping;
-  options.map_calibration.progress = request.progress;
+  // The rows of a validity map (a two-axis campaign) are calibrated here, every law; the row
+  // of the detail's runs is this calibration (the same options): not computed twice.
+  if (options.map_campaign) {
+    CalibrationOptions map_options;
+    map_options.published_damping = obtained.calibration
+                                        ? obtained.calibration->campaign.published_damping
+                                        : request.published_damping;
+    map_options.progress = request.progress;
+    options.map_calibrations =
+        calibrate_map_rows(*options.map_campaign, map_options, obtained.calibrated_here);
+  }
   outcome.report = build_report(input, obtained.calibration, obtained.problems, campaign_source,
                                 obtained.source, options);
 

@@ -6,6 +6,8 @@
 
 #include "report/report_parts.hpp"
 
+#include "impact_postprocess/calibration/calibrate_run_set.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -159,14 +161,16 @@ Report build_report(const Campaign& campaign, const std::optional<Calibration>& 
   report.models = detail::report_models(report.runs, calibration, problems);
 
   // Without a campaign fit there is no verdict: that is missing input (e.g. a single run or
-  // velocity given explicitly, which impact-calibrate itself accepts as a per-run job).
+  // velocity given explicitly, which impact-calibrate itself accepts as a per-run job). Said
+  // once: not again when the calibration's problems already say that its campaign was not
+  // fitted (impact-calibrate's JSON of a campaign, impact-report's own calibration).
   if (!report.campaign_fitted && calibration) {
     const std::string reason = report.campaign_reason.empty()
                                    ? std::string("the calibration has no campaign fit")
                                    : report.campaign_reason;
-    const bool said = std::any_of(problems.begin(), problems.end(), [&](const Problem& p) {
-      return p.message.find(reason) != std::string::npos;
-    });
+    const bool said =
+        std::any_of(calibration->problems.begin(), calibration->problems.end(),
+                    [&](const Problem& p) { return is_campaign_not_fitted(p, calibration->campaign); });
     if (!said) problems.push_back({calibration_source, ProblemKind::input, "no validity verdict: " + reason});
   }
   report.problems = std::move(problems);

@@ -58,12 +58,12 @@ std::string band_name(double tolerance);
 /// The decision at one run: within when every |error| + U of `quantities` is within the
 /// tolerance, outside when one |error| - U exceeds it, not decided in between (U: the FEM's
 /// uncertainty of the run), unknown without values. The one rule of every decision on the page.
-Decision decide(const std::optional<ImpactQuantities>& judged, const ReportRun& run,
+Decision decide(const std::optional<ImpactFigures>& judged, const ReportRun& run,
                 double tolerance, const std::vector<Quantity>& quantities);
 /// The decisions at every run (`judged` parallel to report.runs), the widest range within and
 /// the sentence ("Within 2 %: V = ... m/s" + basis + ...).
 ToleranceVerdict tolerance_verdict(const Report& report,
-                                   const std::vector<std::optional<ImpactQuantities>>& judged,
+                                   const std::vector<std::optional<ImpactFigures>>& judged,
                                    double tolerance, const std::vector<Quantity>& quantities,
                                    const std::string& basis);
 
@@ -86,7 +86,7 @@ std::string simulator_tool_name(const std::string& tool);
 /// The thin-plate model (Zener) at one run: Hertz contact with the run's materials on an
 /// infinite Kirchhoff plate of the run's thickness and material, Hunt–Crossley damping b.
 struct ThinPlatePrediction {
-  std::optional<ImpactQuantities> quantities;
+  std::optional<ImpactFigures> quantities;
   std::string missing;     ///< why there are none (the run does not record the plate, ...)
   std::string parameters;  ///< c, Z, lambda as text
 };
@@ -99,6 +99,17 @@ std::optional<double> thin_plate_damping(const FemRun& reference, bool rigid = f
 
 /// The map of a campaign with sweep axes into report.map (nothing for a velocity campaign).
 void add_validity_map(Report& report, const Campaign& campaign, const ReportOptions& options);
+/// The runs and the assessed report of each row of a map, parallel to ValidityMap::rows.
+struct MapRowReports {
+  std::vector<std::vector<FemRun>> runs;
+  std::vector<Report> reports;
+};
+/// The thin-plate and the massive-plate model on every row of the map, with the material's
+/// damping from the row of the most massive plate (map_plate_models.cpp).
+void add_plate_models(ValidityMap& map, const Report& report, const MapRowReports& rows);
+/// Where the map's model `model` is within each band, in a sentence (map_regions.cpp).
+std::string map_region(const ValidityMap& map, std::size_t model,
+                       const std::vector<double>& tolerances);
 /// "Plate thickness" of "Scenario/Plate thickness".
 std::string short_name(const std::string& parameter);
 /// A sweep value with its unit ("0.05 m"; a text value as it is).
@@ -190,7 +201,7 @@ void energy_section(Document& doc, const Report& report);
 extern const std::array<double, quantity_count> page_scale;
 extern const std::array<const char*, quantity_count> page_name;
 std::string decision_word(Decision decision);
-std::string error_cell(const std::optional<ImpactQuantities>& model, const ImpactQuantities& fem,
+std::string error_cell(const std::optional<ImpactFigures>& model, const ImpactFigures& fem,
                        Quantity quantity);
 std::string not_converged(const ReportModel& model);
 

@@ -310,9 +310,9 @@ void users_section(Document& doc, const Report& report) {
       const ReportRun* fem = nullptr;
       for (const auto& candidate : report.runs)
         if (same_source(candidate.source, run.source)) fem = &candidate;
-      const ImpactQuantities produced = run.prediction.quantities();
-      const ImpactQuantities reference =
-          fem ? fem->fem : ImpactQuantities{run.target, nan, nan, nan, nan};
+      const ImpactFigures produced = run.prediction;
+      const ImpactFigures reference =
+          fem ? fem->fem : ImpactFigures{run.target, nan, nan, nan, nan};
       table.rows.push_back({map.law, fem ? velocity_cell(*fem) : cell(run.velocity),
                             cell(run.target), cell(produced.restitution),
                             percent_cell(relative_error(produced.restitution, run.target)),

@@ -77,8 +77,10 @@ FemRunRecord read_fem_run_record(const FemRun& run) {
                                  fem_format::yield_strength_prefix + sphere,
                                  fem_format::yield_strength_prefix + plate})
     consider(key, value(key));
-  for (const char* key : {"Sphere/Yield strength", "Plate/Yield strength"})
+  for (const char* body : {fem_format::sphere_body, fem_format::plate_body}) {
+    const std::string key = fem_format::body_parameter(body, fem_format::yield_strength);
     consider(key, text_number(run, key));
+  }
   if (summary.is_object() && summary.contains(fem_format::yield_exceeded_key) &&
       summary[fem_format::yield_exceeded_key].is_boolean())
     record.yields = summary[fem_format::yield_exceeded_key].get<bool>();
@@ -104,7 +106,7 @@ FemRunRecord read_fem_run_record(const FemRun& run) {
   return record;
 }
 
-FemUncertainty fem_uncertainty(const FemRunRecord& record, const ImpactQuantities& fem) {
+FemUncertainty fem_uncertainty(const FemRunRecord& record, const ImpactFigures& fem) {
   FemUncertainty uncertainty;
   for (auto& entry : uncertainty)
     entry = {nan, "not known (no verification of the run)"};

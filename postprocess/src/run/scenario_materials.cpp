@@ -3,14 +3,11 @@
 #include <impact_reduced/hertz_stiffness.hpp>
 #include <impact_reduced/viscoelastic_dissipation.hpp>
 
-#include <cctype>
 #include <sstream>
 
 namespace impact::postprocess {
 
 namespace {
-
-constexpr const char* sphere_radius_parameter = "Scenario/Sphere radius";
 
 std::string format(double value) {
   std::ostringstream text;
@@ -29,20 +26,17 @@ struct Body {
 
 // "<Body>/Material model" = name, constants in "<Body>/<Name>/Young's modulus", ...
 std::optional<Body> body_of(const FemRun& run, const std::string& body) {
-  const auto model = run.text_attributes.find(body + "/Material model");
+  const auto model = run.text_attributes.find(fem_format::material_model_parameter(body));
   if (model == run.text_attributes.end() || model->second.empty()) return std::nullopt;
-  std::string section = model->second;
-  section[0] = char(std::toupper((unsigned char)section[0]));
-  const std::string prefix = body + "/" + section + "/";
-  const auto young = text_number(run, prefix + "Young's modulus");
-  const auto poisson = text_number(run, prefix + "Poisson's ratio");
+  const auto young = material_constant(run, body, fem_format::youngs_modulus);
+  const auto poisson = material_constant(run, body, fem_format::poissons_ratio);
   if (!young || !poisson) return std::nullopt;
   Body result{model->second, *young, *poisson, std::nullopt, std::nullopt};
-  if (model->second == "elastic") {
+  if (model->second == fem_format::elastic_model) {
     result.deviatoric_retardation_time = result.volumetric_retardation_time = 0.0;
-  } else if (model->second == "kelvin-voigt") {
-    result.deviatoric_retardation_time = text_number(run, prefix + "Retardation time");
-    const auto volumetric = text_number(run, prefix + "Volumetric retardation time");
+  } else if (model->second == fem_format::kelvin_voigt_model) {
+    result.deviatoric_retardation_time = material_constant(run, body, fem_format::retardation_time);
+    const auto volumetric = material_constant(run, body, fem_format::volumetric_retardation_time);
     if (result.deviatoric_retardation_time && volumetric)
       result.volumetric_retardation_time =
           *volumetric < 0 ? *result.deviatoric_retardation_time : *volumetric;
@@ -53,7 +47,7 @@ std::optional<Body> body_of(const FemRun& run, const std::string& body) {
 std::string describe(const std::string& name, const Body& body) {
   std::string text = name + " " + body.model + " E = " + format(body.youngs_modulus) +
                      " Pa, nu = " + format(body.poisson_ratio);
-  if (body.model == "kelvin-voigt" && body.deviatoric_retardation_time &&
+  if (body.model == fem_format::kelvin_voigt_model && body.deviatoric_retardation_time &&
       body.volumetric_retardation_time)
     text += ", tau_d = " + format(*body.deviatoric_retardation_time) +
             " s, tau_v = " + format(*body.volumetric_retardation_time) + " s";
@@ -75,12 +69,10 @@ std::optional<double> text_number(const FemRun& run, const std::string& key) {
 }
 
 std::optional<double> material_constant(const FemRun& run, const std::string& body,
-                                        const std::string& entry) {
-  const auto model = run.text_attributes.find(body + "/Material model");
+                                        const fem_format::MaterialEntry& entry) {
+  const auto model = run.text_attributes.find(fem_format::material_model_parameter(body));
   if (model == run.text_attributes.end() || model->second.empty()) return std::nullopt;
-  std::string section = model->second;
-  section[0] = char(std::toupper((unsigned char)section[0]));
-  return text_number(run, body + "/" + section + "/" + entry);
+  return text_number(run, fem_format::material_parameter(body, model->second, entry));
 }
 
 ScenarioMaterials scenario_materials(const std::vector<FemRun>& runs) {
@@ -90,17 +82,18 @@ ScenarioMaterials scenario_materials(const std::vector<FemRun>& runs) {
                               false, std::nullopt,
                               "the runs do not record the bodies' materials"};
   for (const auto& run : runs) {
-    const auto sphere = body_of(run, "Sphere");
+    const auto sphere = body_of(run, fem_format::sphere_body);
     // "Plate/Material model = rigid" (impact-fem): the fixed rigid plane, no
     // compliance. Hertz's E* is then the sphere's own, twice the E* of two
     // bodies of the sphere's material, and the compliance-weighted A of
     // Kuwabara–Kono is the sphere's own, that of two such bodies: the
     // formulas below are applied to the sphere twice and c doubled.
-    const auto plate_model = run.text_attributes.find("Plate/Material model");
+    const auto plate_model =
+        run.text_attributes.find(fem_format::material_model_parameter(fem_format::plate_body));
     const bool rigid_plate =
-        plate_model != run.text_attributes.end() && plate_model->second == "rigid";
-    const auto plate = rigid_plate ? sphere : body_of(run, "Plate");
-    const auto radius = text_number(run, sphere_radius_parameter);
+        plate_model != run.text_attributes.end() && plate_model->second == fem_format::rigid_model;
+    const auto plate = rigid_plate ? sphere : body_of(run, fem_format::plate_body);
+    const auto radius = text_number(run, fem_format::sphere_radius.path);
     if (!sphere || !plate || !radius) continue;
     try {
       materials.hertz_stiffness =
@@ -121,7 +114,7 @@ ScenarioMaterials scenario_materials(const std::vector<FemRun>& runs) {
     const bool viscoelastic =
         sphere->deviatoric_retardation_time && sphere->volumetric_retardation_time &&
         plate->deviatoric_retardation_time && plate->volumetric_retardation_time;
-    if (sphere->model == "elastic" && plate->model == "elastic") {
+    if (sphere->model == fem_format::elastic_model && plate->model == fem_format::elastic_model) {
       materials.dissipative_basis = rigid_plate ?
           "the sphere is elastic and the plate rigid: A = 0, the Hertz model" :
           "the bodies are elastic: A = 0, the Hertz model";

@@ -26,13 +26,16 @@ struct BodyStrength {
 
 // A body's yield strength and elastic constants; none without a yield strength.
 std::optional<BodyStrength> body_strength(const FemRun& run, const std::string& body) {
-  const auto model = run.text_attributes.find(body + "/Material model");
-  const bool plastic = model != run.text_attributes.end() && model->second == "elastic-plastic";
-  const std::string key = plastic ? body + "/Elastic-plastic/Yield strength" : body + "/Yield strength";
-  const auto strength = plastic ? material_constant(run, body, "Yield strength") : text_number(run, key);
+  const auto model = run.text_attributes.find(fem_format::material_model_parameter(body));
+  const bool plastic =
+      model != run.text_attributes.end() && model->second == fem_format::elastic_plastic_model;
+  const std::string key =
+      plastic ? fem_format::material_parameter(body, model->second, fem_format::yield_strength)
+              : fem_format::body_parameter(body, fem_format::yield_strength);
+  const auto strength = text_number(run, key);
   if (!strength || !(*strength > 0)) return std::nullopt;
-  const auto young = material_constant(run, body, "Young's modulus");
-  const auto poisson = material_constant(run, body, "Poisson's ratio");
+  const auto young = material_constant(run, body, fem_format::youngs_modulus);
+  const auto poisson = material_constant(run, body, fem_format::poissons_ratio);
   if (!young || !poisson || !(*young > 0) || !(*poisson > -1 && *poisson < 0.5))
     throw PlasticContactError(run.source + ": '" + key + "' = " + format(*strength) +
                               " Pa, but the body's material does not record a Young's modulus "
@@ -46,15 +49,17 @@ std::optional<BodyStrength> body_strength(const FemRun& run, const std::string& 
 std::optional<PlasticContact> scenario_plastic_contact(const std::vector<FemRun>& runs) {
   if (runs.empty()) return std::nullopt;
   const FemRun& run = runs.front();
-  const auto model = run.text_attributes.find("Plate/Material model");
-  const bool rigid_plate = model != run.text_attributes.end() && model->second == "rigid";
-  const auto sphere = body_strength(run, "Sphere");
-  const auto plate = rigid_plate ? std::nullopt : body_strength(run, "Plate");
+  const auto model =
+      run.text_attributes.find(fem_format::material_model_parameter(fem_format::plate_body));
+  const bool rigid_plate =
+      model != run.text_attributes.end() && model->second == fem_format::rigid_model;
+  const auto sphere = body_strength(run, fem_format::sphere_body);
+  const auto plate = rigid_plate ? std::nullopt : body_strength(run, fem_format::plate_body);
   if (!sphere && !plate) return std::nullopt;
   // Both bodies' elastic constants are needed for E*, also of a body that does not yield.
   const auto elastic = [&](const std::string& body) {
-    const auto young = material_constant(run, body, "Young's modulus");
-    const auto poisson = material_constant(run, body, "Poisson's ratio");
+    const auto young = material_constant(run, body, fem_format::youngs_modulus);
+    const auto poisson = material_constant(run, body, fem_format::poissons_ratio);
     if (!young || !poisson)
       throw PlasticContactError(run.source + ": the " + body + "'s Young's modulus and Poisson's "
                                 "ratio are not recorded ('" + body + "/Material model' and its "
@@ -62,13 +67,13 @@ std::optional<PlasticContact> scenario_plastic_contact(const std::vector<FemRun>
     return std::pair<double, double>{*young, *poisson};
   };
   const auto [sphere_e, sphere_nu] = sphere ? std::pair{sphere->youngs_modulus, sphere->poisson_ratio}
-                                            : elastic("Sphere");
+                                            : elastic(fem_format::sphere_body);
   PlasticContact contact;
   contact.sphere_youngs_modulus = sphere_e;
   contact.sphere_poisson_ratio = sphere_nu;
   if (!rigid_plate) {
     const auto [plate_e, plate_nu] =
-        plate ? std::pair{plate->youngs_modulus, plate->poisson_ratio} : elastic("Plate");
+        plate ? std::pair{plate->youngs_modulus, plate->poisson_ratio} : elastic(fem_format::plate_body);
     contact.plate_youngs_modulus = plate_e;
     contact.plate_poisson_ratio = plate_nu;
     contact.contact_modulus = reduced::contact_modulus(sphere_e, sphere_nu, plate_e, plate_nu);

@@ -60,6 +60,11 @@ struct ElasticPlasticImpactResponse {
   double rebound_velocity;   ///< approach rate at separation [m/s], negative
   double restitution;        ///< -rebound_velocity / V [-]
   double dissipated_energy;  ///< m V^2 (1 - e^2) / 2 [J], the plastic work
+  /// The figures by which impacts are compared (impact_figures.hpp); the peak force is at
+  /// x_max, so t(F_max) is the compression time.
+  ImpactFigures figures() const {
+    return {restitution, contact_time, force_max, compression_time, approach_max};
+  }
 };
 
 /// The impact of mass m > 0 [kg] at velocity V > 0 [m/s] under `contact`. Throws

@@ -11,6 +11,7 @@
 /// approach rate, evaluated by tanh-sinh quadrature, so there is no ODE and no step size.
 
 #include "impact_reduced/elastic_force.hpp"
+#include "impact_reduced/impact_figures.hpp"
 
 #include <cstddef>
 #include <memory>
@@ -56,6 +57,10 @@ struct ImpactResponse {
   double rebound_velocity;   ///< approach rate at separation [m/s], negative (moving away)
   double restitution;        ///< -rebound_velocity / V [-]
   double energy_loss;        ///< kinetic energy lost, m V^2 (1 - k^2) / 2 [J]
+  /// The figures by which impacts are compared (impact_figures.hpp).
+  ImpactFigures figures() const {
+    return {restitution, contact_time, force_max, time_force_max, approach_max};
+  }
 };
 
 /// One Hunt-Crossley impact. Construction validates the parameters and precomputes the

@@ -31,6 +31,8 @@
 ///
 /// No Boost type appears in this header.
 
+#include "impact_reduced/impact_figures.hpp"
+
 #include <cstddef>
 #include <functional>
 #include <stdexcept>
@@ -76,6 +78,10 @@ struct OdeImpactResult {
                               ///< known defect
   std::size_t steps;          ///< accepted integration steps
   double approach_at_separation; ///< m, x at the end of contact: 0 for ContactEnd::zero_approach
+  /// The figures by which impacts are compared (impact_figures.hpp).
+  ImpactFigures figures() const {
+    return {restitution, contact_time, force_max, time_force_max, approach_max};
+  }
 };
 
 /// One point of the time history of an impact.

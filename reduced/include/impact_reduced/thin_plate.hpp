@@ -44,6 +44,8 @@
 /// Valid while the flexural waves do not return from the plate's edges during the contact
 /// and the contact radius is small against h (Zener's conditions).
 
+#include "impact_reduced/impact_figures.hpp"
+
 #include <cstddef>
 #include <vector>
 
@@ -79,7 +81,10 @@ struct ThinPlateImpactResult {
   double damping_energy_fraction; ///< integral b c x^n x'^2 dt over m V^2 / 2: contact damping
   double plate_deflection;        ///< m, w of the plate point after the impact (it stays there)
   std::size_t number_of_contacts; ///< always 1 in this model (see the file comment)
-  double zener_lambda;            ///< lambda = m / (Z t0) [-] (Zener's parameter for n = 3/2)
+  double zener_lambda;            ///< lambda = m / (Z t0) [-] (Zener's parameter for n = 3/2)  /// The figures by which impacts are compared (impact_figures.hpp).
+  ImpactFigures figures() const {
+    return {restitution, contact_time, force_max, time_force_max, approach_max};
+  }
 };
 
 /// One point of the time history. SI units.

@@ -19,6 +19,9 @@
  *   verification.json  the numerical uncertainty, when the run was verified.
  */
 
+#include <string>
+#include <string_view>
+
 namespace impact_fem::result_files
 {
   // ---- Files of a run directory ------------------------------------------------------------
@@ -36,7 +39,6 @@ namespace impact_fem::result_files
   inline constexpr const char *status_incomplete       = "incomplete";
   inline constexpr const char *result_attribute_prefix = "result: "; // + a summary key
   inline constexpr const char *sphere_mass_attribute   = "sphere_mass [kg]";
-  inline constexpr const char *impact_velocity_parameter = "Scenario/Impact velocity";
   // Attributes of every dataset.
   inline constexpr const char *unit_attribute        = "unit";
   inline constexpr const char *description_attribute = "description";
@@ -56,7 +58,7 @@ namespace impact_fem::result_files
   inline constexpr const char *newton_residual_dataset   = "newton_residual";
 
   // ---- Keys of summary.json (and, with the prefix above, of the result attributes) ---------
-  // Units in the comments: SI, 1 for a ratio.
+  // Their units: summary_units below.
   inline constexpr const char *complete_key           = "complete";         // boolean
   inline constexpr const char *impact_velocity_key    = "impact_velocity";  // m/s, at t = 0
   inline constexpr const char *contact_velocity_key   = "contact_velocity"; // m/s, first contact
@@ -84,4 +86,155 @@ namespace impact_fem::result_files
   inline constexpr const char *yield_strength_prefix = "yield_strength_";
   inline constexpr const char *max_von_mises_key     = "max_von_mises";  // Pa
   inline constexpr const char *yield_exceeded_key    = "yield_exceeded"; // boolean
+
+  /// The unit of each numeric summary key (SI; "1" for a ratio), by the names above.
+  struct KeyUnit
+  {
+    const char *key;
+    const char *unit;
+  };
+  inline constexpr KeyUnit summary_units[] = {
+    {impact_velocity_key, "m/s"},  {contact_velocity_key, "m/s"},
+    {sphere_mass_key, "kg"},       {restitution_key, "1"},
+    {first_contact_time_key, "s"}, {contact_time_key, "s"},
+    {force_max_key, "N"},          {time_force_max_key, "s"},
+    {approach_max_key, "m"},       {rebound_velocity_key, "m/s"},
+    {time_step_key, "s"},          {force_oscillation_key, "1"},
+    {force_after_release_key, "1"}, {energy_error_key, "1"},
+    {lost_energy_fraction_key, "1"}, {radiated_energy_fraction_key, "1"},
+    {dissipated_energy_fraction_key, "1"}, {max_von_mises_key, "Pa"}};
+
+  /// The unit of a numeric summary key ("von_mises_max_<body>" and "yield_strength_<body>":
+  /// Pa); none for "complete", "yield_exceeded" and any other text.
+  inline const char *
+  summary_unit(const std::string_view key)
+  {
+    for (const KeyUnit &entry : summary_units)
+      if (key == entry.key)
+        return entry.unit;
+    if (key.substr(0, std::string_view(von_mises_max_prefix).size()) == von_mises_max_prefix ||
+        key.substr(0, std::string_view(yield_strength_prefix).size()) == yield_strength_prefix)
+      return "Pa";
+    return nullptr;
+  }
+
+  // ---- The run's parameters --------------------------------------------------------------
+  // impact-fem records each entry of its parameter file as a text attribute of the HDF5 root
+  // named "<subsection>/<entry>" (nested subsections joined by '/'); a sweep axis is named
+  // the same way. The entries the reader interprets are declared by impact-fem under these
+  // names, with the units of their help texts.
+  inline constexpr const char *scenario_subsection = "Scenario";
+  struct Parameter
+  {
+    const char *subsection; // of the parameter file
+    const char *entry;      // the entry's name in it
+    const char *path;       // "<subsection>/<entry>": the attribute, the sweep axis
+    const char *unit;       // SI; "" for a text, a count or a ratio
+  };
+  inline constexpr Parameter impact_velocity{scenario_subsection, "Impact velocity",
+                                             "Scenario/Impact velocity", "m/s"};
+  inline constexpr Parameter initial_gap{scenario_subsection, "Initial gap", "Scenario/Initial gap", "m"};
+  inline constexpr Parameter sphere_radius{scenario_subsection, "Sphere radius", "Scenario/Sphere radius",
+                                           "m"};
+  inline constexpr Parameter plate_radius{scenario_subsection, "Plate radius", "Scenario/Plate radius",
+                                          "m"};
+  inline constexpr Parameter plate_thickness{scenario_subsection, "Plate thickness",
+                                             "Scenario/Plate thickness", "m"};
+  /// The parameters with a unit that a sweep may vary (a sweep axis of any other parameter
+  /// carries no unit on the page).
+  inline constexpr Parameter scenario_parameters[] = {impact_velocity, initial_gap, sphere_radius,
+                                                      plate_radius, plate_thickness};
+
+  /// Whether every path above is its subsection and entry joined by '/'.
+  constexpr bool
+  paths_are_joined()
+  {
+    for (const Parameter &parameter : scenario_parameters)
+      {
+        const char *path = parameter.path;
+        for (const char *c = parameter.subsection; *c; ++c, ++path)
+          if (*path != *c)
+            return false;
+        if (*path++ != '/')
+          return false;
+        for (const char *c = parameter.entry; *c; ++c, ++path)
+          if (*path != *c)
+            return false;
+        if (*path != '\0')
+          return false;
+      }
+    return true;
+  }
+  static_assert(paths_are_joined(), "a parameter's path is not <subsection>/<entry>");
+
+  /// The unit of the parameter at `path` ("Scenario/Plate thickness" -> "m"); "" for any
+  /// parameter not listed above.
+  inline std::string_view
+  parameter_unit(const std::string_view path)
+  {
+    for (const Parameter &parameter : scenario_parameters)
+      if (path == parameter.path)
+        return parameter.unit;
+    return "";
+  }
+
+  // Each body ("Sphere", "Plate") has the entry "Material model" (a material's name, or
+  // "rigid" for a fixed rigid plate) and one subsection per material named by
+  // material_subsection, holding the material's constants: "<body>/<subsection>/<entry>".
+  inline constexpr const char *sphere_body          = "Sphere";
+  inline constexpr const char *plate_body           = "Plate";
+  inline constexpr const char *material_model_entry = "Material model";
+  inline constexpr const char *elastic_model        = "elastic";
+  inline constexpr const char *kelvin_voigt_model   = "kelvin-voigt";
+  inline constexpr const char *elastic_plastic_model = "elastic-plastic";
+  inline constexpr const char *rigid_model          = "rigid";
+  // The constants of a material, with their units ("1": a ratio).
+  struct MaterialEntry
+  {
+    const char *entry;
+    const char *unit;
+  };
+  inline constexpr MaterialEntry youngs_modulus{"Young's modulus", "Pa"};
+  inline constexpr MaterialEntry poissons_ratio{"Poisson's ratio", "1"};
+  inline constexpr MaterialEntry density{"Density", "kg/m^3"};
+  inline constexpr MaterialEntry retardation_time{"Retardation time", "s"};
+  // < 0: the deviatoric "Retardation time" (Kelvin-Voigt).
+  inline constexpr MaterialEntry volumetric_retardation_time{"Volumetric retardation time", "s"};
+  // Of an elastic-plastic material; also the body's own entry beside "Material model"
+  // ("<body>/Yield strength", body_parameter: the stress postprocessor's check, 0: none).
+  inline constexpr MaterialEntry yield_strength{"Yield strength", "Pa"};
+
+  /// The subsection of a material's constants: its name with an upper-case first letter
+  /// ("kelvin-voigt" -> "Kelvin-voigt").
+  inline std::string
+  material_subsection(const std::string_view model)
+  {
+    std::string name(model);
+    if (!name.empty() && name[0] >= 'a' && name[0] <= 'z')
+      name[0] = static_cast<char>(name[0] - 'a' + 'A');
+    return name;
+  }
+
+  /// "<body>/Material model".
+  inline std::string
+  material_model_parameter(const std::string_view body)
+  {
+    return std::string(body) + "/" + material_model_entry;
+  }
+
+  /// "<body>/<entry>": an entry of the body's own subsection.
+  inline std::string
+  body_parameter(const std::string_view body, const MaterialEntry &entry)
+  {
+    return std::string(body) + "/" + entry.entry;
+  }
+
+  /// "<body>/<material_subsection(model)>/<entry>": a constant of the body's material.
+  inline std::string
+  material_parameter(const std::string_view body,
+                     const std::string_view model,
+                     const MaterialEntry   &entry)
+  {
+    return std::string(body) + "/" + material_subsection(model) + "/" + entry.entry;
+  }
 } // namespace impact_fem::result_files

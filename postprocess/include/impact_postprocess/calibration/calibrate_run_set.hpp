@@ -36,6 +36,14 @@ struct CalibrationOutcome {
 /// be written.
 CalibrationOutcome write_calibration(const CalibrationRequest& request);
 
+/// The problem (kind input) by which a calibration's problems say that its campaign was not
+/// fitted and why: written by impact-calibrate for a campaign (or several runs) and by
+/// impact-report when it calibrates the runs itself.
+Problem campaign_not_fitted(const std::string& source, const CampaignCalibration& campaign);
+/// Whether `problem` is campaign_not_fitted of `campaign` (by its kind and its statement,
+/// whichever tool wrote it and from wherever).
+bool is_campaign_not_fitted(const Problem& problem, const CampaignCalibration& campaign);
+
 /// The campaign's Hunt–Crossley fits and the model ranked first, in a few lines.
 std::string calibration_summary(const Calibration& calibration);
 

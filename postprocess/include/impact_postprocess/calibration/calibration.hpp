@@ -205,13 +205,13 @@ struct CampaignCalibration {
 inline constexpr double hertz_exponent = 1.5;
 
 /// The measured figures of a run (FEM), for comparison with the predictions.
-using MeasuredImpact = ImpactQuantities;
+using ImpactFigures = ImpactFigures;
 
 struct RunCalibration {
   std::string source;
   double velocity;             ///< m/s at first contact
   double mass;                 ///< kg
-  MeasuredImpact measured;
+  ImpactFigures measured;
   double damping_from_restitution;   ///< b [s/m] (0 for e >= 1)
   double impact_parameter;           ///< beta = b V
   std::optional<ModelFit> loading;   ///< c, n (b fixed)
@@ -256,8 +256,8 @@ struct RankingScore {
   double rms;
   double worst;
 };
-RankingScore ranking_score(const std::vector<ImpactQuantities>& predicted,
-                           const std::vector<ImpactQuantities>& measured);
+RankingScore ranking_score(const std::vector<ImpactFigures>& predicted,
+                           const std::vector<ImpactFigures>& measured);
 
 /// Orders models best first: by score; scores within `tie` (absolute, in relative error) of
 /// the best of a group count as equal, and among equals fewer free parameters come first

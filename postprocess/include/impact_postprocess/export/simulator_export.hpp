@@ -8,6 +8,7 @@
 /// JSON of impact-calibrate is the source of every number; the LIGGGHTS export also takes the
 /// scenario's materials from the runs.
 
+#include "impact_postprocess/models/impact_quantities.hpp"
 #include "impact_postprocess/run/scenario_plastic_contact.hpp"
 
 #include <nlohmann/json.hpp>
@@ -27,19 +28,11 @@ public:
   using std::runtime_error::runtime_error;
 };
 
-/// Restitution, contact time [s] (first touch to the end of the contact force) and peak
-/// force [N] of one impact.
-struct ImpactFigures {
-  double restitution;
-  double contact_time;
-  double force_max;
-};
-
 /// One run of the campaign as the calibration measured it.
 struct CampaignImpact {
   std::string source;
   double velocity;          ///< m/s
-  ImpactFigures fem;
+  ImpactFigures fem;        ///< the exports compare e, t_c and F_max
 };
 
 /// A law with c [N/m^1.5] at n = 3/2 and one damping constant, fitted over the campaign.
@@ -103,7 +96,8 @@ struct MujocoContact {
 };
 
 /// The impact of the clamped linear spring-damper x'' = -(K x + B x') (no pull) at velocity
-/// V, in closed form: exact for damping ratio in [0, 1).
+/// V, in closed form: exact for damping ratio in [0, 1); its x_max is NaN (not computed: the
+/// exports compare e, t_c and F_max).
 ImpactFigures linear_contact_impact(double stiffness, double damping, double mass,
                                     double velocity);
 

@@ -8,32 +8,21 @@
 /// e = 1 it, not e, is what a model must get right: e = 0.9907 against 0.9461 is +4.7 % in e
 /// but -83 % in 1 - e^2.
 
+#include <impact_reduced/impact_figures.hpp>
+
 #include <array>
 #include <cstddef>
 #include <vector>
 
 namespace impact::postprocess {
 
-/// The figures of one impact (FEM or model). SI units; times from first contact.
-struct ImpactQuantities {
-  double restitution;     ///< e = rebound speed / V [1]
-  double contact_time;    ///< t_c [s]
-  double force_max;       ///< F_max [N]
-  double time_force_max;  ///< t(F_max) [s since first contact]
-  double approach_max;    ///< x_max [m]
-};
+/// The figures of one impact (FEM or model): the reduced library's one struct.
+using reduced::ImpactFigures;
 
-/// What a model predicts for one impact: its figures and the law's damping constant there.
-struct ImpactPrediction {
-  double damping;          ///< the law's damping constant at this velocity
-  double restitution;
-  double contact_time;     ///< s
-  double force_max;        ///< N
-  double time_force_max;   ///< s since first contact
-  double approach_max;     ///< m
-  ImpactQuantities quantities() const {
-    return {restitution, contact_time, force_max, time_force_max, approach_max};
-  }
+/// What a model predicts for one impact: its figures and, beyond them, the law's damping
+/// constant at this velocity (what the calibration JSON records with each prediction).
+struct ImpactPrediction : ImpactFigures {
+  double damping;  ///< the law's damping constant at this velocity
 };
 
 /// Everything the report compares, in the order of its tables.
@@ -63,7 +52,7 @@ inline constexpr std::array<Quantity, 3> map_quantities = {
     Quantity::energy_loss, Quantity::contact_time, Quantity::force_max};
 
 /// The value of `quantity` for an impact (1 - e^2 and 1 - e derived from e).
-double value(const ImpactQuantities& impact, Quantity quantity);
+double value(const ImpactFigures& impact, Quantity quantity);
 /// "energy_loss", "restitution_deficit", "restitution", "contact_time", "force_max",
 /// "time_force_max", "approach_max".
 const char* quantity_key(Quantity quantity);
@@ -76,7 +65,7 @@ const char* quantity_words(Quantity quantity);
 /// (model - reference) / |reference|: the one relative error of the project's comparisons.
 /// NaN when either value is not finite or the reference is 0.
 double relative_error(double model, double reference);
-double relative_error(const ImpactQuantities& model, const ImpactQuantities& reference,
+double relative_error(const ImpactFigures& model, const ImpactFigures& reference,
                       Quantity quantity);
 
 /// The tolerance bands of the verdict (fractions, increasing): 2 % and 5 % unless

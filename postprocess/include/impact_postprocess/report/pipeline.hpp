@@ -59,6 +59,15 @@ struct ReportOutcome {
   int exit_code = 0;
 };
 
+/// Calibrates every row of the validity map of `campaign` (map_rows; none for a campaign
+/// without map) with `options`, parallel to map_rows; a row of the same runs (the same HDF5
+/// sources) as `detail` takes `detail` instead of being calibrated again. Progress lines of a
+/// row start with "map row <row name>: ". Never throws for a row that cannot be calibrated
+/// (MapRowCalibration::error says why).
+std::vector<MapRowCalibration> calibrate_map_rows(const Campaign& campaign,
+                                                  const CalibrationOptions& options,
+                                                  const std::optional<Calibration>& detail = {});
+
 /// Makes the report of `request`. Never throws for bad input (every problem is in
 /// report.problems, the page lists it); throws std::runtime_error when a file cannot be
 /// written.

@@ -41,13 +41,13 @@ struct ImpactHistory {
 
 /// One reduced model at one run.
 struct ModelAtRun {
-  std::optional<ImpactQuantities> in_sample;     ///< fitted to all runs (or not fitted at all)
-  std::optional<ImpactQuantities> out_of_sample; ///< fitted without this velocity
+  std::optional<ImpactFigures> in_sample;     ///< fitted to all runs (or not fitted at all)
+  std::optional<ImpactFigures> out_of_sample; ///< fitted without this velocity
   ImpactHistory history;   ///< of the in-sample model
   std::vector<double> residual; ///< (F_model - F_FEM) / F_max at the FEM history's times
   std::string missing;     ///< why there are no values (empty when there are)
   /// The errors the verdict uses: out of sample when there are, else in sample.
-  const std::optional<ImpactQuantities>& judged() const {
+  const std::optional<ImpactFigures>& judged() const {
     return out_of_sample ? out_of_sample : in_sample;
   }
 };
@@ -85,7 +85,7 @@ struct ReportRun {
   std::string source;
   double velocity;                 ///< m/s
   double mass;                     ///< kg
-  ImpactQuantities fem;            ///< measured (the calibration's numbers when it has the run)
+  ImpactFigures fem;            ///< measured (the calibration's numbers when it has the run)
   ImpactHistory fem_history;       ///< window around the contact, at most ~1500 samples
   bool calibrated = false;         ///< the calibration holds this run
   double damping_from_restitution; ///< b [s/m] of the run (NaN when not calibrated)
@@ -127,9 +127,9 @@ struct PlasticityCheck {
 /// The tools measure e, t_c and F_max: t(F_max) and x_max are NaN.
 struct SimulatorRunAt {
   double velocity;                ///< m/s
-  ImpactQuantities tool;          ///< measured by the tool from its own state
-  ImpactQuantities reduced_model; ///< the exported model's prediction (export.json)
-  ImpactQuantities fem;           ///< the FEM as the file holds it (the calibration's numbers)
+  ImpactFigures tool;          ///< measured by the tool from its own state
+  ImpactFigures reduced_model; ///< the exported model's prediction (export.json)
+  ImpactFigures fem;           ///< the FEM as the file holds it (the calibration's numbers)
 };
 
 /// One result file: one tool (and deck) run at the campaign's velocities.
@@ -152,8 +152,8 @@ struct SimulatorResult {
 struct MapCell {
   double velocity;                              ///< m/s
   std::string source;                           ///< the FEM run
-  std::optional<ImpactQuantities> fem;          ///< measured
-  std::optional<ImpactQuantities> judged;       ///< the model's prediction judged (out of sample where the row allows)
+  std::optional<ImpactFigures> fem;          ///< measured
+  std::optional<ImpactFigures> judged;       ///< the model's prediction judged (out of sample where the row allows)
   FemUncertainty uncertainty;                   ///< the FEM's, of each quantity (relative)
   std::vector<Decision> decisions;              ///< per tolerance of the report (increasing)
   bool yields = false;
@@ -241,22 +241,39 @@ struct Report {
   const ModelVerdict* verdict(std::string_view key) const;
 };
 
+/// One row of a validity map: a value of the other axis and the campaign's runs there.
+struct MapRowRuns {
+  SweepValue value;
+  std::string name;           ///< "Plate thickness = 0.05"
+  std::vector<FemRun> runs;
+};
+
+/// The calibration of one row of a validity map.
+struct MapRowCalibration {
+  std::optional<Calibration> calibration; ///< none when the row has no run or could not be calibrated
+  std::string error;                      ///< why it could not be calibrated ("" otherwise)
+};
+
 struct ReportOptions {
   std::vector<double> tolerances = default_tolerances;
   /// The directory of the simulators' result files (impact-simulator-run, every *.json in it)
   /// for the section "In your simulator"; none: the section says how to make them.
   std::optional<std::filesystem::path> simulators;
-  /// How each row of a validity map is calibrated (the map of a two-axis campaign).
-  CalibrationOptions map_calibration;
   /// The whole sweep campaign whose map is drawn, when the campaign given to build_report is
   /// one row of it (map_detail_row), and that row's name.
   std::optional<Campaign> map_campaign;
   std::string detail_row;
-  /// That row already calibrated with map_calibration's options (impact-report calibrates it
-  /// for the sections after the map): the map takes it for the row of the same runs (the
-  /// same HDF5 sources) instead of calibrating that row a second time.
-  std::optional<Calibration> detail_row_calibration;
+  /// The calibration of each row of the validity map (of map_campaign, else of the campaign
+  /// given to build_report), parallel to its map_rows: made by the report pipeline
+  /// (calibrate_map_rows, pipeline.hpp), judged by the assessment. A row without one is
+  /// judged without calibration.
+  std::vector<MapRowCalibration> map_calibrations;
 };
+
+/// The rows of the validity map of a two-axis campaign (velocity x one other parameter): each
+/// value of the other axis, in the map's order (increasing when every value is a number), with
+/// its runs; none for any other campaign.
+std::vector<MapRowRuns> map_rows(const Campaign& campaign);
 
 /// The row of a two-axis campaign (velocity x one other parameter) that the report's sections
 /// after the map detail, as a velocity campaign of its own: the runs with the largest

@@ -6,6 +6,7 @@
 
 #include "impact_postprocess/models/impact_quantities.hpp"
 #include "impact_postprocess/problem.hpp"
+#include "impact_postprocess/run/fem_run_format.hpp"
 
 #include <filesystem>
 #include <map>
@@ -48,9 +49,13 @@ struct SweepAxis {
 };
 
 /// The parameter of the impact-velocity axis (always the last axis of a sweep).
-inline constexpr const char* velocity_axis = "Scenario/Impact velocity";
+inline constexpr const char* velocity_axis = fem_format::impact_velocity.path;
 
-/// The measured quantities of one run. SI units; times from the start of the run.
+/// The measured quantities of one run. SI units; times from the start of the run. Its scalars
+/// are what the run's files record, on the run's own clock (t(F_max) from the start of the
+/// run, not from first contact), beside the histories they were derived from; the figures by
+/// which the models are compared with it (ImpactFigures, from first contact) are
+/// measured_quantities(run).
 struct FemRun {
   std::string source;         ///< the HDF5 file read (or written)
   double impact_velocity;     ///< V [m/s]: the sphere's speed at first contact (x'(0) of the
@@ -102,7 +107,7 @@ struct Campaign {
 
 /// The figures of the run by which the reduced models are compared with it (t(F_max) since
 /// first contact).
-ImpactQuantities measured_quantities(const FemRun& run);
+ImpactFigures measured_quantities(const FemRun& run);
 
 /// Reads a list of runs (files or run directories), collecting the problems instead of
 /// throwing, so that one bad run does not hide the others.

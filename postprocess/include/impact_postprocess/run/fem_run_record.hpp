@@ -53,6 +53,6 @@ using FemUncertainty = std::array<QuantityUncertainty, quantity_count>;
 /// (its largest sample lies about half the oscillation above a smooth history's), one time
 /// step or the release chatter, whichever is longer, for the contact time, one time step for
 /// the time of the peak force; not known for e, 1 - e^2, 1 - e and x_max.
-FemUncertainty fem_uncertainty(const FemRunRecord& record, const ImpactQuantities& fem);
+FemUncertainty fem_uncertainty(const FemRunRecord& record, const ImpactFigures& fem);
 
 } // namespace impact::postprocess

@@ -9,6 +9,7 @@
 /// ".../Volumetric retardation time" (< 0: the deviatoric one), "Scenario/Sphere radius".
 
 #include "impact_postprocess/run/fem_run.hpp"
+#include "impact_postprocess/run/fem_run_format.hpp"
 
 #include <optional>
 #include <string>
@@ -31,11 +32,12 @@ struct ScenarioMaterials {
 /// The materials of the first run that records them all.
 ScenarioMaterials scenario_materials(const std::vector<FemRun>& runs);
 
-/// A constant of one body's material model, "<Body>/<Model>/<entry>" with <Model> the value
-/// of "<Body>/Material model" capitalised (e.g. body "Plate", entry "Density" reads
-/// "Plate/Elastic/Density" for an elastic plate), or none.
+/// A constant of one body's material model, "<Body>/<Model>/<entry>" with <Model> the
+/// subsection of the value of "<Body>/Material model" (the FEM's contract names them: e.g.
+/// body "Plate", entry fem_format::density reads "Plate/Elastic/Density" for an elastic
+/// plate), or none.
 std::optional<double> material_constant(const FemRun& run, const std::string& body,
-                                        const std::string& entry);
+                                        const fem_format::MaterialEntry& entry);
 
 /// A number stored as a text attribute of the run (its parameters), or none.
 std::optional<double> text_number(const FemRun& run, const std::string& key);
