@@ -5,6 +5,7 @@
 
 #include "report/report_parts.hpp"
 #include "impact_postprocess/models/contact_models.hpp"
+#include "impact_postprocess/models/plastic_models.hpp"
 #include "impact_postprocess/models/model_keys.hpp"
 
 #include <cmath>
@@ -165,7 +166,7 @@ std::string recommended_block(const Report& report, const RankedModel& best) {
         list.push_back({reference.parameter_name, reference.dissipation.front(),
                         reference.parameter_unit});
       return parameter_block(heading + reference.label + " (nothing fitted: " + reference.basis + ")",
-                             force_law(contact_model(reference.model).formula), list);
+                             force_law(model_formula(reference.model)), list);
     }
   return "";
 }

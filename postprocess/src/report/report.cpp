@@ -156,7 +156,7 @@ Report build_report(const Campaign& campaign, const std::optional<Calibration>& 
     report.problems = std::move(problems);
     return report;
   }
-  report.models = detail::report_models(report.runs, calibration, problems);
+  report.models = detail::report_models(report.runs, campaign.runs, calibration, problems);
 
   // Without a campaign fit there is no verdict: that is missing input (e.g. a single run or
   // velocity given explicitly, which impact-calibrate itself accepts as a per-run job).

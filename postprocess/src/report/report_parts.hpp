@@ -45,6 +45,7 @@ std::optional<std::size_t> report_run(const Report& report, double velocity);
 
 /// The models compared at the runs, calibrated Hunt–Crossley first (see report_models.cpp).
 std::vector<ReportModel> report_models(const std::vector<ReportRun>& runs,
+                                       const std::vector<FemRun>& fem_runs,
                                        const std::optional<Calibration>& calibration,
                                        std::vector<Problem>& problems);
 
