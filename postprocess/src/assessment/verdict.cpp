@@ -185,6 +185,7 @@ std::string summary_of(const Report& report) {
             format(nearest.slope, 3) + ")" +
             (nearest.slope == 1.0 ? "." : ", not Hunt–Crossley with a constant b (V^1).");
   }
+  if (report.plastic_laws) text += " " + report.family_text;
   if (report.plasticity.first_yielding_velocity)
     text += " Above " +
             format(report.plasticity.onset_estimate.value_or(*report.plasticity.first_yielding_velocity), 3) +
@@ -328,6 +329,31 @@ std::string hertz_offsets(const Report& report) {
   return note;
 }
 
+// An elastic-plastic FEM: where it yields, and that it stays valid there.
+PlasticityCheck plastic_material_check(const std::vector<ReportRun>& runs,
+                                       const std::optional<PlasticLaws>& laws) {
+  PlasticityCheck check;
+  check.plastic_material = true;
+  const ReportRun* first_yielding = nullptr;
+  for (const auto& run : runs) {
+    check.recorded = check.recorded || (run.record.yield_strength && run.record.max_von_mises);
+    if (!first_yielding && run.record.yields.value_or(false)) first_yielding = &run;
+  }
+  std::string text = "The FEM's material is elastic-plastic (a body with 'Material model = "
+                     "elastic-plastic', J2 plasticity): the FEM itself yields";
+  if (first_yielding)
+    text += " (from V = " + format(first_yielding->velocity) + " m/s on, by its own record)";
+  if (laws)
+    text += "; the material's yield velocity is V_y = " + format(laws->yield_velocity, 4) +
+            " m/s (Johnson's p_y = 1.6 Y; " + format(laws->jackson_green_yield_velocity, 4) +
+            " m/s with Jackson–Green's p_y = C(nu) Y)";
+  text += ". It stays valid above yield, so no velocity is flagged: there the viscoelastic "
+          "laws are compared with a plastic FEM, and the elastic-plastic laws (Thornton, "
+          "Jackson–Green; section Elastic-plastic laws) are the ones built for it.";
+  check.text = text;
+  return check;
+}
+
 PlasticityCheck plasticity_check(const std::vector<ReportRun>& runs) {
   PlasticityCheck check;
   const ReportRun* last_elastic = nullptr;
@@ -438,7 +464,17 @@ void add_verdict(Report& report) {
   else
     report.trend_text = "Velocity trend of the FEM's energy loss: not fitted (it needs three "
                         "runs with 0 < e < 1 at two or more velocities).";
-  report.plasticity = plasticity_check(report.runs);
+  const bool plastic_material = std::any_of(report.runs.begin(), report.runs.end(),
+                                            [](const ReportRun& run) { return run.record.plastic_material; });
+  report.plasticity = plastic_material ? plastic_material_check(report.runs, report.plastic_laws)
+                                       : plasticity_check(report.runs);
+  const std::optional<double> yield_velocity =
+      report.plastic_laws ? std::optional<double>(report.plastic_laws->yield_velocity) : std::nullopt;
+  report.family_ranges = family_ranges(velocities, restitutions, yield_velocity,
+                                       report.calibration ? report.calibration->confidence_level
+                                                          : 0.95);
+  report.family_text = family_ranges_text(report.family_ranges, yield_velocity);
+  report.alpha_text = effective_alpha_text(report.runs);
   report.uncertainty_text = uncertainty_summary(report.runs);
 
   for (const auto& model : report.models) {

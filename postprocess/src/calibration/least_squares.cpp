@@ -2,6 +2,7 @@
 
 #include <ceres/ceres.h>
 
+#include <cmath>
 #include <memory>
 
 namespace impact::postprocess::detail {
@@ -109,7 +110,12 @@ LeastSquaresResult solve_least_squares(const std::vector<FitParameter>& paramete
     for (std::size_t j = i; j < p; ++j)
       if (!parameters[i].fixed && !parameters[j].fixed)
         pairs.emplace_back(blocks_of_theta[i], blocks_of_theta[j]);
-  if (degrees_of_freedom == 0 || pairs.empty() || !covariance.Compute(pairs, &problem)) {
+  // No covariance where the residuals or their Jacobian could not be evaluated: Ceres' dense
+  // SVD would work on an undefined Jacobian.
+  const bool evaluated =
+      summary.termination_type != ceres::FAILURE && std::isfinite(summary.final_cost);
+  if (degrees_of_freedom == 0 || pairs.empty() || !evaluated ||
+      !covariance.Compute(pairs, &problem)) {
     result.covariance.clear();
     return result;
   }

@@ -478,6 +478,7 @@ std::vector<ReportFigure> report_figures(const Report& report) {
                                "its largest error and the FEM's uncertainty.",
                        std::move(data)});
   }
+  for (auto& figure : detail::plastic_figures(report)) figures.push_back(std::move(figure));
   figures.push_back({FigureId::errors, "", "errors.png",
                      "Each model's error in the four quantities the verdict judges (out of sample "
                      "where the model is fitted and there are three velocities or more), the "

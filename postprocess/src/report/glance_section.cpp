@@ -99,6 +99,12 @@ std::string limits_line(const Report& report) {
                *report.plasticity.first_yielding_velocity)) +
            " m/s the FEM exceeds the yield strength: no viscoelastic model, reduced or FEM, is "
            "valid there.";
+  else if (report.plasticity.plastic_material)
+    text = "The FEM's material is elastic-plastic: it stays valid above the yield velocity" +
+           (report.plastic_laws ? " (V_y = " + three_digits(report.plastic_laws->yield_velocity) +
+                                      " m/s)"
+                                : std::string()) +
+           ", where the elastic-plastic laws are compared (section Elastic-plastic laws).";
   else if (report.plasticity.recorded)
     text = "The FEM stays below the yield strength at every tested velocity.";
   else
