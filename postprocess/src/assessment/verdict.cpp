@@ -177,7 +177,7 @@ std::string summary_of(const Report& report) {
                 : " Where a velocity is not decided, the FEM's own numerical uncertainty (its "
                   "force oscillation, its time step) is as large as the margin: a cleaner or "
                   "verified FEM is needed to decide.";
-  if (report.trend) {
+  if (report.trend && !report.plastic_laws) {
     const ReferenceSlope& nearest = nearest_reference(*report.trend);
     text += " The FEM's 1 - e grows as V^" + format(report.trend->exponent, 3) + " [" +
             format(report.trend->lower, 3) + ", " + format(report.trend->upper, 3) +
@@ -460,7 +460,11 @@ void add_verdict(Report& report) {
         format(report.trend->exponent, 3) + " [" + format(report.trend->lower, 3) + ", " +
         format(report.trend->upper, 3) + "] (" + format(report.trend->level * 100, 3) +
         " % interval, " + std::to_string(report.trend->points) + " runs): " +
-        trend_family(*report.trend) + ".";
+        trend_family(*report.trend) + "." +
+        (report.plastic_laws ? " For an elastic-plastic FEM this one slope over every run mixes "
+                               "the elastic and the plastic range; the family ranges (\"Which "
+                               "family the FEM follows\") say which family holds where."
+                             : "");
   else
     report.trend_text = "Velocity trend of the FEM's energy loss: not fitted (it needs three "
                         "runs with 0 < e < 1 at two or more velocities).";
@@ -470,9 +474,16 @@ void add_verdict(Report& report) {
                                        : plasticity_check(report.runs);
   const std::optional<double> yield_velocity =
       report.plastic_laws ? std::optional<double>(report.plastic_laws->yield_velocity) : std::nullopt;
+  // The plastic family's reference over the tested range: the laws from the material (the
+  // fitted ones are fits to this FEM).
+  std::vector<PlasticReference> plastic_references;
+  if (report.plastic_laws)
+    for (const auto& law : report.plastic_laws->laws)
+      if (!law.fitted) plastic_references.push_back({law.label, law.run_restitution});
   report.family_ranges = family_ranges(velocities, restitutions, yield_velocity,
                                        report.calibration ? report.calibration->confidence_level
-                                                          : 0.95);
+                                                          : 0.95,
+                                       plastic_references);
   report.family_text = family_ranges_text(report.family_ranges, yield_velocity);
   report.alpha_text = effective_alpha_text(report.runs);
   report.uncertainty_text = uncertainty_summary(report.runs);

@@ -10,7 +10,8 @@ namespace impact::postprocess::detail {
 namespace {
 
 // One residual block; each parameter is its own 1-D Ceres parameter block, so that a
-// parameter can be held constant (Ceres then asks for no Jacobian column for it).
+// parameter can be held constant (Ceres then asks for no Jacobian column for it). Jacobian by
+// central differences, forward where the model cannot be evaluated below the parameter.
 class CentralDifferenceCost final : public ceres::CostFunction {
 public:
   CentralDifferenceCost(ResidualFunction function, std::size_t residuals,
@@ -36,8 +37,13 @@ public:
       shifted[j] = theta[j] + h;
       if (!function_(shifted.data(), plus.data())) return false;
       shifted[j] = theta[j] - h;
-      if (!function_(shifted.data(), minus.data())) return false;
-      for (std::size_t i = 0; i < n; ++i) jacobians[j][i] = (plus[i] - minus[i]) / (2 * h);
+      if (function_(shifted.data(), minus.data())) {
+        for (std::size_t i = 0; i < n; ++i) jacobians[j][i] = (plus[i] - minus[i]) / (2 * h);
+        continue;
+      }
+      // A parameter at the edge of the model's domain (a damping at its bound 0, where the
+      // law is not defined below): the forward difference.
+      for (std::size_t i = 0; i < n; ++i) jacobians[j][i] = (plus[i] - residuals[i]) / h;
     }
     return true;
   }

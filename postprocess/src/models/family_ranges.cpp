@@ -45,8 +45,10 @@ std::string slope_words(const std::string& of, double slope,
 }
 
 FamilyRange judge(const std::vector<double>& v, const std::vector<double>& e, bool above_yield,
-                  bool plastic_possible, std::optional<double> yield_velocity, double level) {
-  FamilyRange range{v.front(), v.back(), v.size(), above_yield, "", nan, "", std::nullopt, ""};
+                  bool plastic_possible, std::optional<double> yield_velocity, double level,
+                  const std::vector<PlasticReference>& laws) {
+  FamilyRange range{v.front(), v.back(), v.size(), above_yield, "", nan, "", std::nullopt,
+                    plastic_restitution_slope, plastic_restitution_slope, ""};
   std::string where = "V = " + format(range.low) +
                       (range.high > range.low ? " to " + format(range.high) : "") + " m/s";
   if (yield_velocity)
@@ -75,12 +77,29 @@ FamilyRange judge(const std::vector<double>& v, const std::vector<double>& e, bo
     range.slope = s;
     range.slope_of = "e";
     range.trend = restitution_trend;
-    const bool plastic = std::abs(s - plastic_restitution_slope) < std::abs(s);
+    std::string laws_words;
+    bool first = true;
+    for (const auto& law : laws) {
+      std::optional<PowerLawTrend> ignored;
+      const double slope = slope_of(v, law.restitution, false, ignored, level);
+      if (!std::isfinite(slope)) continue;
+      range.plastic_low = first ? slope : std::min(range.plastic_low, slope);
+      range.plastic_high = first ? slope : std::max(range.plastic_high, slope);
+      first = false;
+      laws_words += (laws_words.empty() ? "" : ", ") + law.law + " " + format(slope);
+    }
+    // Distance to the plastic band and to a constant e (slope 0).
+    const double to_plastic =
+        s < range.plastic_low ? range.plastic_low - s : (s > range.plastic_high ? s - range.plastic_high : 0.0);
+    const bool plastic = to_plastic < std::abs(s);
+    const std::string reference =
+        laws_words.empty() ? "the plastic family (reference slope -1/4 far above V_y, Thornton 1997)"
+                           : "the plastic family (the plastic laws' own slopes over these "
+                             "velocities: " + laws_words + "; -1/4 far above V_y)";
     range.family = plastic ? "plastic" : "constant restitution";
     range.text = where + ": " + slope_words("e", s, restitution_trend) + ": " +
-                 (plastic ? "the plastic family (reference slope -1/4 far above V_y, Thornton "
-                            "1997), not a constant e (slope 0)"
-                          : "nearer a constant e (slope 0) than the plastic family (-1/4)") +
+                 (plastic ? reference + ", not a constant e (slope 0)"
+                          : "nearer a constant e (slope 0) than " + reference) +
                  "; there " + slope_words("1 - e", p, loss_trend) + ".";
     return range;
   }
@@ -103,23 +122,30 @@ FamilyRange judge(const std::vector<double>& v, const std::vector<double>& e, bo
 
 std::vector<FamilyRange> family_ranges(const std::vector<double>& velocity,
                                        const std::vector<double>& restitution,
-                                       std::optional<double> yield_velocity, double level) {
+                                       std::optional<double> yield_velocity, double level,
+                                       const std::vector<PlasticReference>& plastic_laws) {
   std::vector<std::size_t> order(std::min(velocity.size(), restitution.size()));
   std::iota(order.begin(), order.end(), 0);
   std::sort(order.begin(), order.end(),
             [&](std::size_t a, std::size_t b) { return velocity[a] < velocity[b]; });
   std::vector<double> below_v, below_e, above_v, above_e;
+  std::vector<PlasticReference> above_laws;
+  for (const auto& law : plastic_laws) above_laws.push_back({law.law, {}});
   for (std::size_t i : order) {
     const bool above = yield_velocity && velocity[i] > *yield_velocity;
     (above ? above_v : below_v).push_back(velocity[i]);
     (above ? above_e : below_e).push_back(restitution[i]);
+    if (above)
+      for (std::size_t k = 0; k < plastic_laws.size(); ++k)
+        above_laws[k].restitution.push_back(
+            i < plastic_laws[k].restitution.size() ? plastic_laws[k].restitution[i] : nan);
   }
   std::vector<FamilyRange> ranges;
   const bool plastic = yield_velocity.has_value();
   if (!below_v.empty())
-    ranges.push_back(judge(below_v, below_e, false, plastic, yield_velocity, level));
+    ranges.push_back(judge(below_v, below_e, false, plastic, yield_velocity, level, {}));
   if (!above_v.empty())
-    ranges.push_back(judge(above_v, above_e, true, plastic, yield_velocity, level));
+    ranges.push_back(judge(above_v, above_e, true, plastic, yield_velocity, level, above_laws));
   return ranges;
 }
 

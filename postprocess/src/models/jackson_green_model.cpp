@@ -66,12 +66,16 @@ double yield_strength_for_restitution(double restitution, double velocity, doubl
 
 } // namespace
 
-std::string jackson_green_formula() {
+std::string jackson_green_formula(std::optional<double> radius, std::optional<double> poisson_ratio) {
+  const std::string scenario =
+      radius && poisson_ratio
+          ? "R = " + format(*radius) + " m and nu = " + format(*poisson_ratio) + " of the scenario"
+          : "R and nu of the scenario";
   return "F = c x^(3/2) up to 1.9 omega_c, then Jackson & Green's fit P/P_c = "
          "exp(-w^(5/12)/4) w^(3/2) + (4 H_G/(C Y)) (1 - exp(-w^(5/9)/25)) w, w = x/omega_c, "
-         "P_c = c omega_c^(3/2), H_G/Y = 2.84 (1 - exp(-0.82 (a/R)^-0.7)); unloading Hertzian "
-         "on the radius that keeps the contact radius of the maximum; E* = 3 c/(4 sqrt R), "
-         "omega_c = (pi C Y/(2 E*))^2 R, C = 1.295 exp(0.736 nu), R and nu of the scenario; "
+         "P_c = c omega_c^(3/2), H_G/Y = 2.84 (1 - exp(-0.82 (a/R)^-0.7)), E* = 3 c/(4 sqrt R), "
+         "omega_c = (pi C Y/(2 E*))^2 R, C = 1.295 exp(0.736 nu), with " + scenario +
+         "; unloading Hertzian on the radius that keeps the contact radius of the maximum; "
          "no rate dependence, no hardening";
 }
 
@@ -80,7 +84,7 @@ ContactModel jackson_green_model(double radius, double poisson_ratio) {
   reduced::require_open_interval("poisson_ratio", poisson_ratio, -1.0, 0.5);
   ContactModel model;
   model.name = std::string(model_keys::jackson_green);
-  model.formula = jackson_green_formula();
+  model.formula = jackson_green_formula(radius, poisson_ratio);
   model.reference = "Jackson & Green, J. Tribol. 127 (2005) 343-354 (loading, elastic-perfectly-"
                     "plastic sphere on a rigid flat); unloading on the radius of the maximum "
                     "contact, after Etsion, Kligerman & Kadin, Int. J. Solids Struct. 42 (2005) "

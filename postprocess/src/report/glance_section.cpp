@@ -80,7 +80,19 @@ std::string comparison_line(const Report& report, const RankedModel& best) {
   const auto [low, high] = error_range(report, *other, Quantity::energy_loss);
   std::string text = other->label + ": " + ranges(report, *verdict) + "; its energy loss is off by " +
                      percent_cell(low) + " to " + percent_cell(high) + ".";
-  if (other == &calibrated && report.trend) {
+  if (other == &calibrated && report.plastic_laws && !report.family_ranges.empty()) {
+    // An elastic-plastic FEM: the family of each velocity range, not one loss trend.
+    text += " The FEM follows:";
+    for (const auto& range : report.family_ranges)
+      text += std::string(&range == &report.family_ranges.front() ? " " : "; ") +
+              (range.family.empty() ? "no trend" : range.family) + " at V = " +
+              short_number(range.low) +
+              (range.high > range.low ? " to " + short_number(range.high) : "") + " m/s" +
+              (std::isfinite(range.slope) ? " (" + range.slope_of + " ∝ V^" +
+                                                three_digits(range.slope) + ")"
+                                          : "");
+    text += ".";
+  } else if (other == &calibrated && report.trend) {
     const ReferenceSlope& nearest = nearest_reference(*report.trend);
     text += " The FEM's 1 - e grows as V^" + three_digits(report.trend->exponent) + ", nearest " +
             nearest.family + " (V^" + short_number(nearest.slope) + ")" +

@@ -74,6 +74,16 @@ json restitution_figure(const Report& report, const PlasticLaws& laws) {
   panel["series"].push_back(fem);
   panel["series"].push_back(line("V = V_y", numbers({1.0, 1.0}), numbers({0.9 * lowest, 1.05}),
                                  "0.3", "-."));
+  // Plain tick labels: e in steps of 0.1, V/V_y at 1-2-5 steps.
+  json yticks = json::array(), xticks = json::array();
+  for (double tick = std::floor(lowest * 10) / 10; tick <= 1.0001; tick += 0.1)
+    yticks.push_back(std::round(tick * 10) / 10);
+  const double low = laws.laws.front().velocity.front() / v_y;
+  for (double decade = 0.1; decade <= 1000; decade *= 10)
+    for (double step : {1.0, 2.0, 5.0})
+      if (step * decade >= low && step * decade <= high) xticks.push_back(step * decade);
+  panel["yticks"] = yticks;
+  panel["xticks"] = xticks;
   return {{"title", ""}, {"columns", 1}, {"width", 8.0}, {"row_height", 4.6},
           {"shared_legend", true}, {"legend_columns", 2}, {"panels", json::array({panel})}};
 }
@@ -108,8 +118,14 @@ json loops_figure(const Report& report, const PlasticLaws& laws) {
                   {"xlabel", "approach x [µm]"},
                   {"ylabel", "contact force F [kN]"},
                   {"series", json::array()}};
-    panel["series"].push_back(line("FEM", numbers(run.fem_history.approach, 1e6),
-                                   numbers(run.fem_history.force, 1e-3), "black", "-"));
+    // The FEM from first contact to separation (the history's window extends beyond both).
+    std::vector<double> approach, force;
+    for (std::size_t k = 0; k < run.fem_history.time.size(); ++k)
+      if (run.fem_history.time[k] >= 0 && run.fem_history.time[k] <= run.fem.contact_time) {
+        approach.push_back(run.fem_history.approach[k]);
+        force.push_back(run.fem_history.force[k]);
+      }
+    panel["series"].push_back(line("FEM", numbers(approach, 1e6), numbers(force, 1e-3), "black", "-"));
     for (const auto& law : laws.laws)
       if (!law.loops[i].approach.empty())
         panel["series"].push_back(line(law.label, numbers(law.loops[i].approach, 1e6),

@@ -67,7 +67,8 @@ void verdict_section(Document& doc, const Report& report) {
   }
   doc.paragraph("Cause: " + report.cause);
   doc.paragraph(report.trend_text);
-  if (!report.family_text.empty()) doc.paragraph(report.family_text);
+  if (!report.family_text.empty() && report.summary.find(report.family_text) == std::string::npos)
+    doc.paragraph(report.family_text);
   doc.paragraph(report.plasticity.text);
   doc.paragraph(report.uncertainty_text);
   if (!report.verdict_available || !verdict) return;

@@ -41,8 +41,10 @@ struct SphereFlatScenario {
 /// without elastic constants).
 std::optional<SphereFlatScenario> sphere_flat_scenario(const std::vector<FemRun>& runs);
 
-/// The law in words (ContactModel::formula of jackson_green_model).
-std::string jackson_green_formula();
+/// The law in words (ContactModel::formula of jackson_green_model), with the scenario's R [m]
+/// and nu when given.
+std::string jackson_green_formula(std::optional<double> radius = std::nullopt,
+                                  std::optional<double> poisson_ratio = std::nullopt);
 
 /// The fitted model "jackson-green" for sphere radius R > 0 [m] and Poisson ratio nu in
 /// (-1, 0.5) of the yielding body; its damping constant is Y [Pa]. Throws
