@@ -13,6 +13,33 @@
 
 namespace impact::testing {
 
+/// The impact of a rate-independent elastic-plastic `law` (its loading branch while x' >= 0,
+/// its unloading branch after) at `velocity`, integrated by the general impact ODE at 1e-12
+/// until the force returns to 0, sampled like synthetic_run.
+inline postprocess::FemRun plastic_law_run(double mass, double velocity,
+                                           const reduced::ContactForceLaw& law) {
+  const auto impact =
+      reduced::integrate_impact(mass, velocity, law, 1e-12, reduced::ContactEnd::zero_force);
+  return sampled_run(mass, velocity, impact.restitution, impact.contact_time, impact.force_max,
+                     impact.time_force_max, impact.approach_max, impact.approach_at_separation,
+                     impact.rebound_velocity,
+                     reduced::integrate_impact_history(mass, velocity, law, 301, 1e-12,
+                                                       reduced::ContactEnd::zero_force));
+}
+
+/// The scenario as impact-fem records an elastic-plastic sphere (Young's modulus E, Poisson
+/// ratio nu, yield strength Y, radius R) on a rigid flat.
+inline void record_elastic_plastic_sphere(postprocess::FemRun& run, double youngs_modulus,
+                                          double poisson_ratio, double yield_strength,
+                                          double radius) {
+  run.text_attributes["Sphere/Material model"] = "elastic-plastic";
+  run.text_attributes["Sphere/Elastic-plastic/Young's modulus"] = exact_text(youngs_modulus);
+  run.text_attributes["Sphere/Elastic-plastic/Poisson's ratio"] = exact_text(poisson_ratio);
+  run.text_attributes["Sphere/Elastic-plastic/Yield strength"] = exact_text(yield_strength);
+  run.text_attributes["Plate/Material model"] = "rigid";
+  run.text_attributes["Scenario/Sphere radius"] = exact_text(radius);
+}
+
 constexpr double pi = 3.14159265358979323846;
 
 // Steel ball R = 10 mm on steel (E* = 2.1e11 / 1.82 Pa), Johnson's p_y for Y = 1 GPa.
@@ -45,25 +72,11 @@ inline postprocess::FemRun thornton_run(const Truth& t, double velocity) {
     if (rate >= 0) return x <= x_y ? c * std::pow(std::max(x, 0.0), 1.5) : f_y + slope * (x - x_y);
     return k_u * std::pow(std::max(x - x_p, 0.0), 1.5);
   };
-  const auto impact = reduced::integrate_impact(t.mass, velocity, law, 1e-12,
-                                                reduced::ContactEnd::zero_force);
-  postprocess::FemRun run = sampled_run(
-      t.mass, velocity, impact.restitution, impact.contact_time, impact.force_max,
-      impact.time_force_max, impact.approach_max, impact.approach_at_separation,
-      impact.rebound_velocity,
-      reduced::integrate_impact_history(t.mass, velocity, law, 301, 1e-12,
-                                        reduced::ContactEnd::zero_force));
+  postprocess::FemRun run = plastic_law_run(t.mass, velocity, law);
   run.source = "thornton_v" + std::to_string(velocity);
-  // The scenario as impact-fem records it: an elastic-plastic sphere (E* = E / (1 - nu^2) on a
-  // rigid plate), Y = p_y / 1.6, the radius.
-  run.text_attributes["Sphere/Material model"] = "elastic-plastic";
-  run.text_attributes["Sphere/Elastic-plastic/Young's modulus"] =
-      exact_text(t.contact_modulus * (1 - 0.09));
-  run.text_attributes["Sphere/Elastic-plastic/Poisson's ratio"] = "0.3";
-  run.text_attributes["Sphere/Elastic-plastic/Yield strength"] =
-      exact_text(t.yield_pressure / 1.6);
-  run.text_attributes["Plate/Material model"] = "rigid";
-  run.text_attributes["Scenario/Sphere radius"] = exact_text(t.radius);
+  // E* = E / (1 - nu^2) of the sphere on the rigid flat, Y = p_y / 1.6.
+  record_elastic_plastic_sphere(run, t.contact_modulus * (1 - 0.09), 0.3, t.yield_pressure / 1.6,
+                                t.radius);
   return run;
 }
 

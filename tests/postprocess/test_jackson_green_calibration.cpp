@@ -5,7 +5,7 @@
 // truth itself, and the two are ranked first, out of sample, with their numbers of free
 // parameters. Without the scenario's radius the fitted law is left out, not guessed.
 
-#include "synthetic_runs.hpp"
+#include "plastic_runs.hpp"
 
 #include "impact_postprocess/calibration/calibration.hpp"
 #include "impact_postprocess/models/jackson_green_model.hpp"
@@ -55,24 +55,10 @@ FemRun jackson_green_run(const Truth& t, double velocity) {
     if (rate >= 0) return contact.loading_force(std::max(x, 0.0));
     return unloading.stiffness * std::pow(std::max(x - unloading.residual_approach, 0.0), 1.5);
   };
-  const auto impact = reduced::integrate_impact(t.mass, velocity, law, 1e-12,
-                                                reduced::ContactEnd::zero_force);
-  FemRun run = impact::testing::sampled_run(
-      t.mass, velocity, impact.restitution, impact.contact_time, impact.force_max,
-      impact.time_force_max, impact.approach_max, impact.approach_at_separation,
-      impact.rebound_velocity,
-      reduced::integrate_impact_history(t.mass, velocity, law, 301, 1e-12,
-                                        reduced::ContactEnd::zero_force));
+  FemRun run = impact::testing::plastic_law_run(t.mass, velocity, law);
   run.source = "jackson_green_v" + std::to_string(velocity);
-  run.text_attributes["Sphere/Material model"] = "elastic-plastic";
-  run.text_attributes["Sphere/Elastic-plastic/Young's modulus"] =
-      impact::testing::exact_text(t.youngs_modulus);
-  run.text_attributes["Sphere/Elastic-plastic/Poisson's ratio"] =
-      impact::testing::exact_text(t.poisson_ratio);
-  run.text_attributes["Sphere/Elastic-plastic/Yield strength"] =
-      impact::testing::exact_text(t.yield_strength);
-  run.text_attributes["Plate/Material model"] = "rigid";
-  run.text_attributes["Scenario/Sphere radius"] = impact::testing::exact_text(t.radius);
+  impact::testing::record_elastic_plastic_sphere(run, t.youngs_modulus, t.poisson_ratio,
+                                                 t.yield_strength, t.radius);
   return run;
 }
 

@@ -2,6 +2,7 @@
 
 #include "impact_postprocess/models/jackson_green_model.hpp"
 #include "impact_postprocess/models/model_keys.hpp"
+#include "impact_postprocess/models/plastic_models.hpp"
 #include "impact_postprocess/run/scenario_materials.hpp"
 #include "impact_postprocess/run/scenario_plastic_contact.hpp"
 
@@ -11,18 +12,12 @@
 
 #include <cmath>
 #include <memory>
-#include <sstream>
 
 namespace impact::postprocess {
 
 namespace {
 
-std::string format(double value) {
-  std::ostringstream text;
-  text.precision(6);
-  text << value;
-  return text.str();
-}
+std::string format(double value) { return six_digits(value); }
 
 // E* of the law for stiffness c: c = (4/3) E* sqrt(R).
 double contact_modulus_of(double stiffness, double radius) {
@@ -82,20 +77,13 @@ std::string jackson_green_formula(std::optional<double> radius, std::optional<do
 ContactModel jackson_green_model(double radius, double poisson_ratio) {
   reduced::require_positive("radius", radius);
   reduced::require_open_interval("poisson_ratio", poisson_ratio, -1.0, 0.5);
-  ContactModel model;
-  model.name = std::string(model_keys::jackson_green);
-  model.formula = jackson_green_formula(radius, poisson_ratio);
-  model.reference = "Jackson & Green, J. Tribol. 127 (2005) 343-354 (loading, elastic-perfectly-"
-                    "plastic sphere on a rigid flat); unloading on the radius of the maximum "
-                    "contact, after Etsion, Kligerman & Kadin, Int. J. Solids Struct. 42 (2005) "
-                    "3716 (their own fits not implemented)";
-  model.damping_name = "Y";
-  model.damping_unit = "Pa";
-  model.parameter = DissipationParameter::damping;
-  model.required_exponent = 1.5;
-  model.damping = [](const std::vector<double>& p, double, const reduced::ContactSetup&) {
-    return p.at(0);
-  };
+  ContactModel model = plastic_model_base(
+      std::string(model_keys::jackson_green), jackson_green_formula(radius, poisson_ratio),
+      "Jackson & Green, J. Tribol. 127 (2005) 343-354 (loading, elastic-perfectly-plastic "
+      "sphere on a rigid flat); unloading on the radius of the maximum contact, after Etsion, "
+      "Kligerman & Kadin, Int. J. Solids Struct. 42 (2005) 3716 (their own fits not "
+      "implemented)",
+      "Y", "Pa");
   model.damping_for_restitution = [radius, poisson_ratio](double e, double velocity,
                                                           const reduced::ContactSetup& setup) {
     return yield_strength_for_restitution(e, velocity, radius, poisson_ratio, setup);

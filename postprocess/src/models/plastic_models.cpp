@@ -43,21 +43,15 @@ double thornton_velocity_ratio(double restitution) {
 }
 
 ContactModel thornton_model() {
-  ContactModel model;
-  model.name = std::string(model_keys::thornton);
-  model.formula = "F = c x^(3/2) to the yield approach x_y, then F = F_y + (3/2) c sqrt(x_y) "
-                  "(x - x_y) (pi p_y R); unloading Hertzian on the enlarged radius R_p about the "
-                  "permanent approach; p_y = 3 c sqrt(x_y) / (2 pi R); no rate dependence, "
-                  "no hardening";
-  model.reference = "Thornton, J. Appl. Mech. 64 (1997) 383-386 (elastic-perfectly-plastic "
-                    "spheres; limiting pressure p_y = 1.6 Y after Johnson, Contact Mechanics, 1985)";
-  model.damping_name = "x_y";
-  model.damping_unit = "m";
-  model.parameter = DissipationParameter::damping;
-  model.required_exponent = 1.5;
-  model.damping = [](const std::vector<double>& p, double, const reduced::ContactSetup&) {
-    return p.at(0);
-  };
+  ContactModel model = plastic_model_base(
+      std::string(model_keys::thornton),
+      "F = c x^(3/2) to the yield approach x_y, then F = F_y + (3/2) c sqrt(x_y) "
+      "(x - x_y) (pi p_y R); unloading Hertzian on the enlarged radius R_p about the "
+      "permanent approach; p_y = 3 c sqrt(x_y) / (2 pi R); no rate dependence, "
+      "no hardening",
+      "Thornton, J. Appl. Mech. 64 (1997) 383-386 (elastic-perfectly-plastic "
+      "spheres; limiting pressure p_y = 1.6 Y after Johnson, Contact Mechanics, 1985)",
+      "x_y", "m");
   model.damping_for_restitution = [](double e, double velocity,
                                      const reduced::ContactSetup& setup) {
     return thornton_yield_approach(thornton_velocity_ratio(e) * velocity, setup.mass,
@@ -68,6 +62,22 @@ ContactModel thornton_model() {
 }
 
 } // namespace
+
+ContactModel plastic_model_base(std::string name, std::string formula, std::string reference,
+                                std::string symbol, std::string unit) {
+  ContactModel model;
+  model.name = std::move(name);
+  model.formula = std::move(formula);
+  model.reference = std::move(reference);
+  model.damping_name = std::move(symbol);
+  model.damping_unit = std::move(unit);
+  model.parameter = DissipationParameter::damping;
+  model.required_exponent = 1.5;
+  model.damping = [](const std::vector<double>& p, double, const reduced::ContactSetup&) {
+    return p.at(0);
+  };
+  return model;
+}
 
 const std::vector<std::string>& plastic_model_names() {
   static const std::vector<std::string> names = {std::string(model_keys::thornton),

@@ -10,14 +10,16 @@
 
 namespace impact::postprocess {
 
-namespace {
-
-std::string format(double value) {
+std::string six_digits(double value) {
   std::ostringstream text;
   text.precision(6);
   text << value;
   return text.str();
 }
+
+namespace {
+
+std::string format(double value) { return six_digits(value); }
 
 struct BodyStrength {
   double youngs_modulus, poisson_ratio, yield_strength;

@@ -26,6 +26,12 @@
 
 namespace impact::postprocess {
 
+/// What the plastic models share: n = 3/2 fixed, one dissipation parameter (the law's yield
+/// parameter `symbol` [`unit`]) used as the damping constant itself, no force law F(x, x').
+/// The caller sets damping_for_restitution and plastic_contact.
+ContactModel plastic_model_base(std::string name, std::string formula, std::string reference,
+                                std::string symbol, std::string unit);
+
 /// The plastic models' names ("thornton", "jackson-green": jackson_green_model.hpp).
 const std::vector<std::string>& plastic_model_names();
 
