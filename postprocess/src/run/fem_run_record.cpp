@@ -97,6 +97,13 @@ FemRunRecord read_fem_run_record(const FemRun& run) {
     consider(key, value(key));
   for (const char* key : {"Sphere/Yield strength", "Plate/Yield strength"})
     consider(key, text_number(run, key));
+  // An elastic-plastic body's initial yield strength (its material's constant).
+  for (const std::string body : {"Sphere", "Plate"}) {
+    const auto model = run.text_attributes.find(body + "/Material model");
+    if (model != run.text_attributes.end() && model->second == "elastic-plastic")
+      consider(body + "/Elastic-plastic/Yield strength",
+               material_constant(run, body, "Yield strength"));
+  }
   if (summary.is_object() && summary.contains(fem_format::yield_exceeded_key) &&
       summary[fem_format::yield_exceeded_key].is_boolean())
     record.yields = summary[fem_format::yield_exceeded_key].get<bool>();
