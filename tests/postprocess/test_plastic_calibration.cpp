@@ -5,7 +5,7 @@
 // radius, and Thornton (fitted, or from the material's yield strength with nothing fitted) is
 // ranked first, out of sample, with its number of free parameters.
 
-#include "synthetic_runs.hpp"
+#include "plastic_runs.hpp"
 
 #include "impact_postprocess/calibration/calibration.hpp"
 #include "impact_postprocess/models/contact_models.hpp"
@@ -26,56 +26,8 @@ namespace {
 using namespace impact::postprocess;
 namespace reduced = impact::reduced;
 
-constexpr double pi = 3.14159265358979323846;
-
-// Steel ball R = 10 mm on steel (E* = 2.1e11 / 1.82 Pa), Johnson's p_y for Y = 1 GPa.
-struct Truth {
-  double mass = 0.1, radius = 0.01, contact_modulus = 2.1e11 / 1.82, yield_pressure = 1.6e9;
-  double stiffness() const { return 4.0 / 3.0 * contact_modulus * std::sqrt(radius); }
-  double yield_approach() const {
-    const double ratio = pi * yield_pressure / (2 * contact_modulus);
-    return radius * ratio * ratio;
-  }
-};
-
-// Thornton's law at velocity V, written again: Hertz to x_y, slope pi p_y R, unloading
-// (4/3) E* sqrt(R_p) (x - x_p)^(3/2) with a_p^2 = (2 F* + F_y) / (2 pi p_y),
-// R_p = 4 E* a_p^3 / (3 F*), x_p = x_max - 3 F* / (4 E* a_p); x_max from the energy.
-FemRun thornton_run(const Truth& t, double velocity) {
-  const double c = t.stiffness(), x_y = t.yield_approach(), f_y = c * std::pow(x_y, 1.5);
-  const double slope = pi * t.yield_pressure * t.radius;
-  const double plastic_energy = 0.5 * t.mass * velocity * velocity - 0.4 * f_y * x_y;
-  const double excess = (-f_y + std::sqrt(f_y * f_y + 2 * slope * plastic_energy)) / slope;
-  const double x_max = x_y + excess, f_max = f_y + slope * excess;
-  const double a_p = std::sqrt((2 * f_max + f_y) / (2 * pi * t.yield_pressure));
-  const double r_p = 4 * t.contact_modulus * a_p * a_p * a_p / (3 * f_max);
-  const double x_p = x_max - 3 * f_max / (4 * t.contact_modulus * a_p);
-  const double k_u = 4.0 / 3.0 * t.contact_modulus * std::sqrt(r_p);
-  const reduced::ContactForceLaw law = [=](double x, double rate) {
-    if (rate >= 0) return x <= x_y ? c * std::pow(std::max(x, 0.0), 1.5) : f_y + slope * (x - x_y);
-    return k_u * std::pow(std::max(x - x_p, 0.0), 1.5);
-  };
-  const auto impact = reduced::integrate_impact(t.mass, velocity, law, 1e-12,
-                                                reduced::ContactEnd::zero_force);
-  FemRun run = impact::testing::sampled_run(
-      t.mass, velocity, impact.restitution, impact.contact_time, impact.force_max,
-      impact.time_force_max, impact.approach_max, impact.approach_at_separation,
-      impact.rebound_velocity,
-      reduced::integrate_impact_history(t.mass, velocity, law, 301, 1e-12,
-                                        reduced::ContactEnd::zero_force));
-  run.source = "thornton_v" + std::to_string(velocity);
-  // The scenario as impact-fem records it: an elastic-plastic sphere (E* = E / (1 - nu^2) on a
-  // rigid plate), Y = p_y / 1.6, the radius.
-  run.text_attributes["Sphere/Material model"] = "elastic-plastic";
-  run.text_attributes["Sphere/Elastic-plastic/Young's modulus"] =
-      impact::testing::exact_text(t.contact_modulus * (1 - 0.09));
-  run.text_attributes["Sphere/Elastic-plastic/Poisson's ratio"] = "0.3";
-  run.text_attributes["Sphere/Elastic-plastic/Yield strength"] =
-      impact::testing::exact_text(t.yield_pressure / 1.6);
-  run.text_attributes["Plate/Material model"] = "rigid";
-  run.text_attributes["Scenario/Sphere radius"] = impact::testing::exact_text(t.radius);
-  return run;
-}
+using impact::testing::Truth;
+using impact::testing::thornton_run;
 
 TEST(PlasticCalibration, ThorntonCampaignRecoversTheYieldPressureAndRanksThorntonFirst) {
   const Truth truth;

@@ -177,7 +177,7 @@ std::string summary_of(const Report& report) {
                 : " Where a velocity is not decided, the FEM's own numerical uncertainty (its "
                   "force oscillation, its time step) is as large as the margin: a cleaner or "
                   "verified FEM is needed to decide.";
-  if (report.trend) {
+  if (report.trend && !report.plastic_laws) {
     const ReferenceSlope& nearest = nearest_reference(*report.trend);
     text += " The FEM's 1 - e grows as V^" + format(report.trend->exponent, 3) + " [" +
             format(report.trend->lower, 3) + ", " + format(report.trend->upper, 3) +
@@ -185,6 +185,7 @@ std::string summary_of(const Report& report) {
             format(nearest.slope, 3) + ")" +
             (nearest.slope == 1.0 ? "." : ", not Hunt–Crossley with a constant b (V^1).");
   }
+  if (report.plastic_laws) text += " " + report.family_text;
   if (report.plasticity.first_yielding_velocity)
     text += " Above " +
             format(report.plasticity.onset_estimate.value_or(*report.plasticity.first_yielding_velocity), 3) +
@@ -328,6 +329,31 @@ std::string hertz_offsets(const Report& report) {
   return note;
 }
 
+// An elastic-plastic FEM: where it yields, and that it stays valid there.
+PlasticityCheck plastic_material_check(const std::vector<ReportRun>& runs,
+                                       const std::optional<PlasticLaws>& laws) {
+  PlasticityCheck check;
+  check.plastic_material = true;
+  const ReportRun* first_yielding = nullptr;
+  for (const auto& run : runs) {
+    check.recorded = check.recorded || (run.record.yield_strength && run.record.max_von_mises);
+    if (!first_yielding && run.record.yields.value_or(false)) first_yielding = &run;
+  }
+  std::string text = "The FEM's material is elastic-plastic (a body with 'Material model = "
+                     "elastic-plastic', J2 plasticity): the FEM itself yields";
+  if (first_yielding)
+    text += " (from V = " + format(first_yielding->velocity) + " m/s on, by its own record)";
+  if (laws)
+    text += "; the material's yield velocity is V_y = " + format(laws->yield_velocity, 4) +
+            " m/s (Johnson's p_y = 1.6 Y; " + format(laws->jackson_green_yield_velocity, 4) +
+            " m/s with Jackson–Green's p_y = C(nu) Y)";
+  text += ". It stays valid above yield, so no velocity is flagged: there the viscoelastic "
+          "laws are compared with a plastic FEM, and the elastic-plastic laws (Thornton, "
+          "Jackson–Green; section Elastic-plastic laws) are the ones built for it.";
+  check.text = text;
+  return check;
+}
+
 PlasticityCheck plasticity_check(const std::vector<ReportRun>& runs) {
   PlasticityCheck check;
   const ReportRun* last_elastic = nullptr;
@@ -434,11 +460,32 @@ void add_verdict(Report& report) {
         format(report.trend->exponent, 3) + " [" + format(report.trend->lower, 3) + ", " +
         format(report.trend->upper, 3) + "] (" + format(report.trend->level * 100, 3) +
         " % interval, " + std::to_string(report.trend->points) + " runs): " +
-        trend_family(*report.trend) + ".";
+        trend_family(*report.trend) + "." +
+        (report.plastic_laws ? " For an elastic-plastic FEM this one slope over every run mixes "
+                               "the elastic and the plastic range; the family ranges (\"Which "
+                               "family the FEM follows\") say which family holds where."
+                             : "");
   else
     report.trend_text = "Velocity trend of the FEM's energy loss: not fitted (it needs three "
                         "runs with 0 < e < 1 at two or more velocities).";
-  report.plasticity = plasticity_check(report.runs);
+  const bool plastic_material = std::any_of(report.runs.begin(), report.runs.end(),
+                                            [](const ReportRun& run) { return run.record.plastic_material; });
+  report.plasticity = plastic_material ? plastic_material_check(report.runs, report.plastic_laws)
+                                       : plasticity_check(report.runs);
+  const std::optional<double> yield_velocity =
+      report.plastic_laws ? std::optional<double>(report.plastic_laws->yield_velocity) : std::nullopt;
+  // The plastic family's reference over the tested range: the laws from the material (the
+  // fitted ones are fits to this FEM).
+  std::vector<PlasticReference> plastic_references;
+  if (report.plastic_laws)
+    for (const auto& law : report.plastic_laws->laws)
+      if (!law.fitted) plastic_references.push_back({law.label, law.run_restitution});
+  report.family_ranges = family_ranges(velocities, restitutions, yield_velocity,
+                                       report.calibration ? report.calibration->confidence_level
+                                                          : 0.95,
+                                       plastic_references);
+  report.family_text = family_ranges_text(report.family_ranges, yield_velocity);
+  report.alpha_text = effective_alpha_text(report.runs);
   report.uncertainty_text = uncertainty_summary(report.runs);
 
   for (const auto& model : report.models) {

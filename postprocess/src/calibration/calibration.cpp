@@ -10,6 +10,7 @@
 #include "impact_postprocess/same_value.hpp"
 
 #include "impact_postprocess/models/contact_models.hpp"
+#include "impact_postprocess/models/jackson_green_model.hpp"
 #include "impact_postprocess/run/scenario_materials.hpp"
 #include "calibration/least_squares.hpp"
 #include "calibration/ranking.hpp"
@@ -735,6 +736,12 @@ void add_reference_models(CampaignCalibration& campaign, const std::vector<FemRu
         std::string(model_keys::thornton_material), "Thornton, p_y = 1.6 Y from the material (no fit)",
         contact_model("thornton"), thornton->basis, thornton->stiffness, hertz_exponent,
         {thornton->yield_approach}, runs, options));
+  if (const auto jackson_green = material_jackson_green(fem_runs))
+    campaign.reference_models.push_back(reference_model(
+        std::string(model_keys::jackson_green_material),
+        "Jackson–Green, E*, Y, nu from the material (no fit)", jackson_green->model,
+        jackson_green->basis, jackson_green->stiffness, hertz_exponent,
+        {jackson_green->yield_strength}, runs, options));
 
   // The restitution maps as users apply them: the FEM's e at each run, c from Hertz.
   for (const auto& name : restitution_parametrised_laws()) {
@@ -847,12 +854,15 @@ CampaignStart campaign_start(const std::vector<FemRun>& runs,
 
 Calibration calibrate(const std::vector<FemRun>& runs, const CalibrationOptions& options) {
   check_options(options);
-  std::vector<ContactModel> laws;
-  for (const auto& name : options.laws) laws.push_back(comparison_model(name));
+  std::vector<std::string> left_out;
+  const std::vector<ContactModel> laws = comparison_models(options.laws, runs, left_out);
 
   Calibration calibration;
   calibration.confidence_level = options.confidence_level;
   Progress progress(options.progress);
+  for (const auto& name : left_out)
+    progress("law " + name + " left out: the runs do not record the sphere radius and Poisson "
+             "ratio it needs");
 
   std::vector<PreparedRun> prepared;
   for (const auto& run : runs) prepared.push_back(prepare(run));

@@ -2,6 +2,7 @@
 
 #include <ceres/ceres.h>
 
+#include <cmath>
 #include <memory>
 
 namespace impact::postprocess::detail {
@@ -9,7 +10,8 @@ namespace impact::postprocess::detail {
 namespace {
 
 // One residual block; each parameter is its own 1-D Ceres parameter block, so that a
-// parameter can be held constant (Ceres then asks for no Jacobian column for it).
+// parameter can be held constant (Ceres then asks for no Jacobian column for it). Jacobian by
+// central differences, forward where the model cannot be evaluated below the parameter.
 class CentralDifferenceCost final : public ceres::CostFunction {
 public:
   CentralDifferenceCost(ResidualFunction function, std::size_t residuals,
@@ -35,8 +37,13 @@ public:
       shifted[j] = theta[j] + h;
       if (!function_(shifted.data(), plus.data())) return false;
       shifted[j] = theta[j] - h;
-      if (!function_(shifted.data(), minus.data())) return false;
-      for (std::size_t i = 0; i < n; ++i) jacobians[j][i] = (plus[i] - minus[i]) / (2 * h);
+      if (function_(shifted.data(), minus.data())) {
+        for (std::size_t i = 0; i < n; ++i) jacobians[j][i] = (plus[i] - minus[i]) / (2 * h);
+        continue;
+      }
+      // A parameter at the edge of the model's domain (a damping at its bound 0, where the
+      // law is not defined below): the forward difference.
+      for (std::size_t i = 0; i < n; ++i) jacobians[j][i] = (plus[i] - residuals[i]) / h;
     }
     return true;
   }
@@ -109,7 +116,12 @@ LeastSquaresResult solve_least_squares(const std::vector<FitParameter>& paramete
     for (std::size_t j = i; j < p; ++j)
       if (!parameters[i].fixed && !parameters[j].fixed)
         pairs.emplace_back(blocks_of_theta[i], blocks_of_theta[j]);
-  if (degrees_of_freedom == 0 || pairs.empty() || !covariance.Compute(pairs, &problem)) {
+  // No covariance where the residuals or their Jacobian could not be evaluated: Ceres' dense
+  // SVD would work on an undefined Jacobian.
+  const bool evaluated =
+      summary.termination_type != ceres::FAILURE && std::isfinite(summary.final_cost);
+  if (degrees_of_freedom == 0 || pairs.empty() || !evaluated ||
+      !covariance.Compute(pairs, &problem)) {
     result.covariance.clear();
     return result;
   }

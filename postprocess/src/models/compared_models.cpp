@@ -16,6 +16,7 @@
 #include "impact_postprocess/same_value.hpp"
 
 #include "impact_postprocess/models/contact_models.hpp"
+#include "impact_postprocess/models/plastic_models.hpp"
 
 #include <boost/math/distributions/students_t.hpp>
 
@@ -171,7 +172,13 @@ void add_histories(ReportModel& model, const ContactModel& law, const std::vecto
   }
 }
 
-ReportModel fitted_model(const std::vector<ReportRun>& runs, const CampaignModelFit& fit,
+// The model of `name` with the scenario's constants where it needs them.
+ContactModel model_named(const std::string& name, const std::vector<FemRun>& fem_runs) {
+  return needs_scenario(name) ? comparison_model(name, fem_runs) : contact_model(name);
+}
+
+ReportModel fitted_model(const std::vector<ReportRun>& runs, const std::vector<FemRun>& fem_runs,
+                         const CampaignModelFit& fit,
                          std::string key, std::string label, std::string basis, double level) {
   const ModelFit& parameters = fit.fit;
   std::vector<std::string> units{"N/m^n", "1", parameters.parameter_unit};
@@ -200,7 +207,7 @@ ReportModel fitted_model(const std::vector<ReportRun>& runs, const CampaignModel
     model.runs.push_back(std::move(at));
   }
   try {
-    const ContactModel law = contact_model(parameters.model);
+    const ContactModel law = model_named(parameters.model, fem_runs);
     add_histories(model, law, runs, parameters.parameter_values());
     const auto grid = velocity_grid(runs);
     if (!grid.empty()) {
@@ -214,7 +221,8 @@ ReportModel fitted_model(const std::vector<ReportRun>& runs, const CampaignModel
   return model;
 }
 
-ReportModel reference_model(const std::vector<ReportRun>& runs, const ReferenceModel& reference,
+ReportModel reference_model(const std::vector<ReportRun>& runs, const std::vector<FemRun>& fem_runs,
+                            const ReferenceModel& reference,
                             std::string label) {
   ReportModel model;
   model.key = reference.key;
@@ -238,7 +246,7 @@ ReportModel reference_model(const std::vector<ReportRun>& runs, const ReferenceM
     model.runs.push_back(std::move(at));
   }
   try {
-    const ContactModel law = contact_model(reference.model);
+    const ContactModel law = model_named(reference.model, fem_runs);
     add_histories(model, law, runs, values);
     const auto grid = velocity_grid(runs);
     if (!grid.empty()) model.curve = curve_of(law, median_mass(runs), grid, values);
@@ -315,6 +323,7 @@ bool same_source(const std::string& a, const std::string& b) {
 bool same_velocity(double a, double b) { return same_value(a, b); }
 
 std::vector<ReportModel> report_models(const std::vector<ReportRun>& runs,
+                                       const std::vector<FemRun>& fem_runs,
                                        const std::optional<Calibration>& calibration,
                                        std::vector<Problem>& problems) {
   std::vector<ReportModel> models;
@@ -326,7 +335,7 @@ std::vector<ReportModel> report_models(const std::vector<ReportRun>& runs,
   const CampaignCalibration& campaign = calibration->campaign;
   const double level = calibration->confidence_level;
   if (campaign.fitted && campaign.hunt_crossley)
-    models.push_back(fitted_model(runs, *campaign.hunt_crossley, std::string(model_keys::calibrated),
+    models.push_back(fitted_model(runs, fem_runs, *campaign.hunt_crossley, std::string(model_keys::calibrated),
                                   "Hunt–Crossley (calibrated)",
                                   "campaign fit of the calibration to the force histories of "
                                   "all runs: one (c, n, b) for all runs",
@@ -337,13 +346,13 @@ std::vector<ReportModel> report_models(const std::vector<ReportRun>& runs,
                                                            : campaign.reason));
   if (campaign.fitted && campaign.hunt_crossley_energy)
     models.push_back(fitted_model(
-        runs, *campaign.hunt_crossley_energy, campaign.hunt_crossley_energy->key,
+        runs, fem_runs, *campaign.hunt_crossley_energy, campaign.hunt_crossley_energy->key,
         "Hunt–Crossley (force + energy)",
         "campaign fit to the force histories and the energy loss of every run (energy weight " +
             short_number(campaign.hunt_crossley_energy->energy_weight) + ")",
         level));
   if (campaign.fitted && campaign.hunt_crossley_velocity_damping)
-    models.push_back(fitted_model(runs, *campaign.hunt_crossley_velocity_damping,
+    models.push_back(fitted_model(runs, fem_runs, *campaign.hunt_crossley_velocity_damping,
                                   campaign.hunt_crossley_velocity_damping->key,
                                   "Hunt–Crossley b(V)",
                                   "b(V) = b_1 (V / 1 m/s)^-q, " +
@@ -357,7 +366,7 @@ std::vector<ReportModel> report_models(const std::vector<ReportRun>& runs,
       if (best) break;
     }
     if (best)
-      models.push_back(fitted_model(runs, *best, std::string(model_keys::best_law), best->key + " (best law)",
+      models.push_back(fitted_model(runs, fem_runs, *best, std::string(model_keys::best_law), best->key + " (best law)",
                                     "the comparison law ranked first by out-of-sample error, "
                                     "fitted to the force histories of all runs",
                                     level));
@@ -371,10 +380,10 @@ std::vector<ReportModel> report_models(const std::vector<ReportRun>& runs,
     return nullptr;
   };
   if (const auto* material = reference(std::string(model_keys::kuwabara_kono_material)))
-    models.push_back(reference_model(runs, *material, "Kuwabara–Kono (A from the material)"));
+    models.push_back(reference_model(runs, fem_runs, *material, "Kuwabara–Kono (A from the material)"));
   if (const auto* published = reference(std::string(model_keys::hunt_crossley_published)))
-    models.push_back(reference_model(runs, *published, published->label));
-  if (const auto* hertz = reference(std::string(model_keys::hertz))) models.push_back(reference_model(runs, *hertz, hertz->label));
+    models.push_back(reference_model(runs, fem_runs, *published, published->label));
+  if (const auto* hertz = reference(std::string(model_keys::hertz))) models.push_back(reference_model(runs, fem_runs, *hertz, hertz->label));
   for (const auto& model : models)
     if (!model.converged)
       problems.push_back({model.label, ProblemKind::convergence,

@@ -1,6 +1,8 @@
 // The elastic-plastic comparison models (plastic_models.hpp).
 
 #include "impact_postprocess/models/plastic_models.hpp"
+#include "impact_postprocess/models/jackson_green_model.hpp"
+#include "impact_postprocess/models/model_keys.hpp"
 #include "impact_postprocess/run/scenario_materials.hpp"
 #include "impact_postprocess/run/scenario_plastic_contact.hpp"
 
@@ -41,21 +43,15 @@ double thornton_velocity_ratio(double restitution) {
 }
 
 ContactModel thornton_model() {
-  ContactModel model;
-  model.name = "thornton";
-  model.formula = "F = c x^(3/2) to the yield approach x_y, then F = F_y + (3/2) c sqrt(x_y) "
-                  "(x - x_y) (pi p_y R); unloading Hertzian on the enlarged radius R_p about the "
-                  "permanent approach; p_y = 3 c sqrt(x_y) / (2 pi R); no rate dependence, "
-                  "no hardening";
-  model.reference = "Thornton, J. Appl. Mech. 64 (1997) 383-386 (elastic-perfectly-plastic "
-                    "spheres; limiting pressure p_y = 1.6 Y after Johnson, Contact Mechanics, 1985)";
-  model.damping_name = "x_y";
-  model.damping_unit = "m";
-  model.parameter = DissipationParameter::damping;
-  model.required_exponent = 1.5;
-  model.damping = [](const std::vector<double>& p, double, const reduced::ContactSetup&) {
-    return p.at(0);
-  };
+  ContactModel model = plastic_model_base(
+      std::string(model_keys::thornton),
+      "F = c x^(3/2) to the yield approach x_y, then F = F_y + (3/2) c sqrt(x_y) "
+      "(x - x_y) (pi p_y R); unloading Hertzian on the enlarged radius R_p about the "
+      "permanent approach; p_y = 3 c sqrt(x_y) / (2 pi R); no rate dependence, "
+      "no hardening",
+      "Thornton, J. Appl. Mech. 64 (1997) 383-386 (elastic-perfectly-plastic "
+      "spheres; limiting pressure p_y = 1.6 Y after Johnson, Contact Mechanics, 1985)",
+      "x_y", "m");
   model.damping_for_restitution = [](double e, double velocity,
                                      const reduced::ContactSetup& setup) {
     return thornton_yield_approach(thornton_velocity_ratio(e) * velocity, setup.mass,
@@ -67,8 +63,25 @@ ContactModel thornton_model() {
 
 } // namespace
 
+ContactModel plastic_model_base(std::string name, std::string formula, std::string reference,
+                                std::string symbol, std::string unit) {
+  ContactModel model;
+  model.name = std::move(name);
+  model.formula = std::move(formula);
+  model.reference = std::move(reference);
+  model.damping_name = std::move(symbol);
+  model.damping_unit = std::move(unit);
+  model.parameter = DissipationParameter::damping;
+  model.required_exponent = 1.5;
+  model.damping = [](const std::vector<double>& p, double, const reduced::ContactSetup&) {
+    return p.at(0);
+  };
+  return model;
+}
+
 const std::vector<std::string>& plastic_model_names() {
-  static const std::vector<std::string> names = {"thornton"};
+  static const std::vector<std::string> names = {std::string(model_keys::thornton),
+                                                  std::string(model_keys::jackson_green)};
   return names;
 }
 
@@ -78,9 +91,44 @@ bool is_plastic_model(const std::string& name) {
 }
 
 ContactModel plastic_model(const std::string& name) {
-  if (name == "thornton") return thornton_model();
-  throw reduced::InvalidInput("model", "model must be one of the plastic models (thornton), got '" +
-                                           name + "'");
+  if (name == model_keys::thornton) return thornton_model();
+  if (name == model_keys::jackson_green)
+    throw reduced::InvalidInput("model", "the model jackson-green needs the scenario's sphere "
+                                         "radius and Poisson ratio: build it from the runs "
+                                         "(comparison_model(name, runs))");
+  throw reduced::InvalidInput("model", "model must be one of the plastic models (thornton, "
+                                       "jackson-green), got '" + name + "'");
+}
+
+std::string model_formula(const std::string& name) {
+  return name == model_keys::jackson_green ? jackson_green_formula() : contact_model(name).formula;
+}
+
+bool needs_scenario(const std::string& name) { return name == model_keys::jackson_green; }
+
+ContactModel comparison_model(const std::string& name, const std::vector<FemRun>& runs) {
+  if (!needs_scenario(name)) return comparison_model(name);
+  const auto scenario = sphere_flat_scenario(runs);
+  if (!scenario)
+    throw reduced::InvalidInput("model", "the model " + name + " needs the sphere radius "
+                                "('Scenario/Sphere radius') and the Poisson ratio of the "
+                                "yielding body, which the runs do not record");
+  return jackson_green_model(scenario->radius, scenario->poisson_ratio);
+}
+
+std::vector<ContactModel> comparison_models(const std::vector<std::string>& names,
+                                            const std::vector<FemRun>& runs,
+                                            std::vector<std::string>& left_out) {
+  std::vector<ContactModel> models;
+  const bool scenario = sphere_flat_scenario(runs).has_value();
+  for (const auto& name : names) {
+    if (needs_scenario(name) && !scenario) {
+      left_out.push_back(name);
+      continue;
+    }
+    models.push_back(comparison_model(name, runs));
+  }
+  return models;
 }
 
 std::vector<std::string> comparison_model_names() {
@@ -126,7 +174,7 @@ std::optional<MaterialThornton> material_thornton(const std::vector<FemRun>& run
   basis.precision(6);
   basis << "no fit: E* = " << e_star << " Pa, R = " << *radius << " m, p_y = "
         << contact->yield_pressure << " Pa from " << contact->yield_basis
-        << "; c = (4/3) E* sqrt(R), x_y = R (pi p_y / (2 E*))^2; no hardening";
+        << "; c = (4/3) E* sqrt(R), x_y = R (pi p_y / (2 E*))^2; " << hardening_note(runs.front());
   return MaterialThornton{4.0 / 3.0 * e_star * std::sqrt(*radius), *radius * ratio * ratio,
                           basis.str()};
 }

@@ -74,7 +74,7 @@ void runs_section(Document& doc, const Report& report) {
   doc.paragraph("FEM quantities (the calibration's 'measured' numbers) and the per-run "
                 "calibration: b from the restitution through the exact inverse of k(bV), and "
                 "c, n, b of the run's force-history fit with its interval.");
-  Table table{{"V [m/s]", "mass [kg]", "e [1]", "t_c [µs]", "F_max [kN]", "x_max [µm]",
+  Table table{{"V [m/s]", "mass [kg]", "e [1]", "(1 - e)/V [s/m]", "t_c [µs]", "F_max [kN]", "x_max [µm]",
                "b from e [s/m]", "b history fit [s/m]", "b interval [s/m]", "n history fit",
                "c history fit [N/m^n]", "source"},
               {}};
@@ -87,7 +87,7 @@ void runs_section(Document& doc, const Report& report) {
   for (const auto& run : report.runs)
     table.rows.push_back(
         {velocity_cell(run), cell(run.mass), cell(run.fem.restitution),
-         cell(run.fem.contact_time * 1e6), cell(run.fem.force_max * 1e-3),
+         cell(effective_alpha(run)), cell(run.fem.contact_time * 1e6), cell(run.fem.force_max * 1e-3),
          cell(run.fem.approach_max * 1e6), cell(run.damping_from_restitution),
          cell(run.history_damping.value),
          std::isfinite(run.history_damping.lower)
@@ -96,6 +96,7 @@ void runs_section(Document& doc, const Report& report) {
          cell(run.history_exponent.value), cell(run.history_stiffness.value),
          shown_source(run.source) + (run.calibrated ? "" : " (not in the calibration)")});
   doc.table(table);
+  if (!report.alpha_text.empty()) doc.paragraph(report.alpha_text);
 }
 
 void models_section(Document& doc, const Report& report) {
@@ -188,8 +189,12 @@ void energy_section(Document& doc, const Report& report) {
     else if (!record.yield_strength) check = "yield strength not recorded";
     else {
       const double ratio = *record.max_von_mises / *record.yield_strength;
-      check = (run.yields ? "YIELDS: " : "elastic: ") + short_number(ratio * 100) +
-              " % of the yield strength (" + record.yield_source + ")";
+      const std::string state = record.plastic_material
+                                    ? (record.yields.value_or(false) ? "yields (elastic-plastic material, valid): "
+                                                                     : "below yield: ")
+                                    : (run.yields ? "YIELDS: " : "elastic: ");
+      check = state + short_number(ratio * 100) + " % of the yield strength (" +
+              record.yield_source + ")";
     }
     table.rows.push_back({velocity_cell(run), optional_cell(record.energy_error, 100),
                           cell((1 - run.fem.restitution * run.fem.restitution) * 100),

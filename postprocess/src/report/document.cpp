@@ -71,6 +71,7 @@ Document build_document(const Report& report, const fs::path& figures_directory)
   ranking_section(doc, report);
   parameters_section(doc, report);
   trend_section(doc, report, figure);
+  plastic_section(doc, report, figure);
   users_section(doc, report);
   simulators_section(doc, report);
   quality_section(doc, report);

@@ -252,6 +252,18 @@ json energy_loss_figure(const Report& report) {
   json fem = fem_points(report, Quantity::restitution_deficit, 1);
   panel["series"].push_back(fem);
   add_yield_band(panel, report);
+  // A model without loss at some velocities (an elastic-plastic law below its yield, 1 - e = 0)
+  // has no point on the log scale: values far below the FEM's smallest loss are not drawn, so
+  // that its band does not stretch the axis over ten decades.
+  double smallest = INFINITY;
+  for (const auto& run : report.runs)
+    if (run.fem.restitution < 1) smallest = std::min(smallest, 1 - run.fem.restitution);
+  if (std::isfinite(smallest))
+    for (auto& entry : panel["series"])
+      for (const char* key : {"y", "y0", "y1"})
+        if (entry.contains(key))
+          for (auto& y : entry[key])
+            if (y.is_number() && y.get<double>() < 1e-2 * smallest) y = nullptr;
   return {{"title", "Energy loss against V"}, {"columns", 1},
           {"shared_legend", true}, {"panels", json::array({panel})}};
 }
@@ -478,6 +490,7 @@ std::vector<ReportFigure> report_figures(const Report& report) {
                                "its largest error and the FEM's uncertainty.",
                        std::move(data)});
   }
+  for (auto& figure : detail::plastic_figures(report)) figures.push_back(std::move(figure));
   figures.push_back({FigureId::errors, "", "errors.png",
                      "Each model's error in the four quantities the verdict judges (out of sample "
                      "where the model is fitted and there are three velocities or more), the "

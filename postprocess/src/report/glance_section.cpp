@@ -5,6 +5,7 @@
 
 #include "report/report_parts.hpp"
 #include "impact_postprocess/models/contact_models.hpp"
+#include "impact_postprocess/models/plastic_models.hpp"
 #include "impact_postprocess/models/model_keys.hpp"
 
 #include <cmath>
@@ -79,7 +80,19 @@ std::string comparison_line(const Report& report, const RankedModel& best) {
   const auto [low, high] = error_range(report, *other, Quantity::energy_loss);
   std::string text = other->label + ": " + ranges(report, *verdict) + "; its energy loss is off by " +
                      percent_cell(low) + " to " + percent_cell(high) + ".";
-  if (other == &calibrated && report.trend) {
+  if (other == &calibrated && report.plastic_laws && !report.family_ranges.empty()) {
+    // An elastic-plastic FEM: the family of each velocity range, not one loss trend.
+    text += " The FEM follows:";
+    for (const auto& range : report.family_ranges)
+      text += std::string(&range == &report.family_ranges.front() ? " " : "; ") +
+              (range.family.empty() ? "no trend" : range.family) + " at V = " +
+              short_number(range.low) +
+              (range.high > range.low ? " to " + short_number(range.high) : "") + " m/s" +
+              (std::isfinite(range.slope) ? " (" + range.slope_of + " ∝ V^" +
+                                                three_digits(range.slope) + ")"
+                                          : "");
+    text += ".";
+  } else if (other == &calibrated && report.trend) {
     const ReferenceSlope& nearest = nearest_reference(*report.trend);
     text += " The FEM's 1 - e grows as V^" + three_digits(report.trend->exponent) + ", nearest " +
             nearest.family + " (V^" + short_number(nearest.slope) + ")" +
@@ -98,6 +111,12 @@ std::string limits_line(const Report& report) {
                *report.plasticity.first_yielding_velocity)) +
            " m/s the FEM exceeds the yield strength: no viscoelastic model, reduced or FEM, is "
            "valid there.";
+  else if (report.plasticity.plastic_material)
+    text = "The FEM's material is elastic-plastic: it stays valid above the yield velocity" +
+           (report.plastic_laws ? " (V_y = " + three_digits(report.plastic_laws->yield_velocity) +
+                                      " m/s)"
+                                : std::string()) +
+           ", where the elastic-plastic laws are compared (section Elastic-plastic laws).";
   else if (report.plasticity.recorded)
     text = "The FEM stays below the yield strength at every tested velocity.";
   else
@@ -165,7 +184,7 @@ std::string recommended_block(const Report& report, const RankedModel& best) {
         list.push_back({reference.parameter_name, reference.dissipation.front(),
                         reference.parameter_unit});
       return parameter_block(heading + reference.label + " (nothing fitted: " + reference.basis + ")",
-                             force_law(contact_model(reference.model).formula), list);
+                             force_law(model_formula(reference.model)), list);
     }
   return "";
 }

@@ -135,7 +135,8 @@ Report build_report(const Campaign& campaign, const std::optional<Calibration>& 
                               ": only its FEM data are shown"});
     }
     run.uncertainty = fem_uncertainty(run.record, run.fem);
-    run.yields = run.record.yields.value_or(false);
+    // An elastic-plastic FEM yields and stays valid: only a body without plasticity is flagged.
+    run.yields = !run.record.plastic_material && run.record.yields.value_or(false);
     add_quality_warnings(run, problems);
     report.runs.push_back(std::move(run));
   }
@@ -158,7 +159,8 @@ Report build_report(const Campaign& campaign, const std::optional<Calibration>& 
     report.problems = std::move(problems);
     return report;
   }
-  report.models = detail::report_models(report.runs, calibration, problems);
+  report.models = detail::report_models(report.runs, campaign.runs, calibration, problems);
+  report.plastic_laws = detail::plastic_laws(campaign.runs, report.runs, calibration);
 
   // Without a campaign fit there is no verdict: that is missing input (e.g. a single run or
   // velocity given explicitly, which impact-calibrate itself accepts as a per-run job). Said

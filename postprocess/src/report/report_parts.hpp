@@ -45,6 +45,7 @@ std::optional<std::size_t> report_run(const Report& report, double velocity);
 
 /// The models compared at the runs, calibrated Hunt–Crossley first (see report_models.cpp).
 std::vector<ReportModel> report_models(const std::vector<ReportRun>& runs,
+                                       const std::vector<FemRun>& fem_runs,
                                        const std::optional<Calibration>& calibration,
                                        std::vector<Problem>& problems);
 
@@ -66,6 +67,19 @@ ToleranceVerdict tolerance_verdict(const Report& report,
                                    const std::vector<std::optional<ImpactFigures>>& judged,
                                    double tolerance, const std::vector<Quantity>& quantities,
                                    const std::string& basis);
+
+/// The elastic-plastic laws of a campaign whose material is elastic-plastic (plastic_laws.cpp);
+/// none otherwise, or when the runs do not record the material's constants.
+std::optional<PlasticLaws> plastic_laws(const std::vector<FemRun>& fem_runs,
+                                        const std::vector<ReportRun>& runs,
+                                        const std::optional<Calibration>& calibration);
+
+/// The seed paper's measured range of (1 - e)/V [s/m] (steel, glass, brass; Goldsmith).
+inline constexpr double measured_alpha_low = 0.08, measured_alpha_high = 0.32;
+/// (1 - e)/V [s/m] of the FEM run (effective_alpha.cpp).
+double effective_alpha(const ReportRun& run);
+/// The FEM's effective alpha over the runs against the measured range, in words.
+std::string effective_alpha_text(const std::vector<ReportRun>& runs);
 
 // ---- In your simulator (report_simulators.cpp) ------------------------------------------
 
@@ -194,6 +208,12 @@ void quantities_section(Document& doc, const Report& report,
                         const std::function<void(FigureId)>& figure);
 void errors_section(Document& doc, const Report& report);
 void energy_section(Document& doc, const Report& report);
+/// "Elastic-plastic laws" (plastic_section.cpp), for a campaign whose material is elastic-
+/// plastic, and its figures, declared there: e against V/V_y, the permanent approach against
+/// V, the loops with the plastic unloading branch.
+void plastic_section(Document& doc, const Report& report,
+                     const std::function<void(FigureId)>& figure);
+std::vector<ReportFigure> plastic_figures(const Report& report);
 
 // Shared by the sections (document.cpp): each quantity's display scale and name (order of
 // Quantity), a decision in a word, a model's error in a cell, the mark of a fit that did not

@@ -67,6 +67,8 @@ void verdict_section(Document& doc, const Report& report) {
   }
   doc.paragraph("Cause: " + report.cause);
   doc.paragraph(report.trend_text);
+  if (!report.family_text.empty() && report.summary.find(report.family_text) == std::string::npos)
+    doc.paragraph(report.family_text);
   doc.paragraph(report.plasticity.text);
   doc.paragraph(report.uncertainty_text);
   if (!report.verdict_available || !verdict) return;
@@ -274,6 +276,7 @@ void trend_section(Document& doc, const Report& report,
                 " The reference slopes: Hunt–Crossley with a constant b, 1 - e = (2/3) b V + "
                 "..., slope 1; the viscoelastic sphere (Kuwabara–Kono, Brilliantov), 1 - e = "
                 "1.7302 A (c/m)^(2/5) V^(1/5) + ..., slope 1/5; a constant e, slope 0.");
+  if (!report.family_text.empty()) doc.paragraph(report.family_text);
   figure(FigureId::energy_loss);
   Table table{{"V [m/s]", "FEM 1 - e", "power law a V^p"}, {}};
   for (const auto& model : report.models) table.header.push_back(model.label);

@@ -32,6 +32,24 @@ double median_step(const std::vector<double>& time) {
   return steps[steps.size() / 2];
 }
 
+// The approach at time t, linearly interpolated; NaN outside the history.
+double approach_at(const FemRun& run, double t) {
+  for (std::size_t i = 1; i < run.time.size(); ++i)
+    if (run.time[i - 1] <= t && t <= run.time[i]) {
+      const double w = (t - run.time[i - 1]) / (run.time[i] - run.time[i - 1]);
+      return (1 - w) * run.approach[i - 1] + w * run.approach[i];
+    }
+  return nan;
+}
+
+bool has_plastic_material(const FemRun& run) {
+  for (const char* key : {"Sphere/Material model", "Plate/Material model"}) {
+    const auto model = run.text_attributes.find(key);
+    if (model != run.text_attributes.end() && model->second == "elastic-plastic") return true;
+  }
+  return false;
+}
+
 } // namespace
 
 FemRunRecord read_fem_run_record(const FemRun& run) {
@@ -80,12 +98,27 @@ FemRunRecord read_fem_run_record(const FemRun& run) {
   for (const char* body : {fem_format::sphere_body, fem_format::plate_body}) {
     const std::string key = fem_format::body_parameter(body, fem_format::yield_strength);
     consider(key, text_number(run, key));
+    // An elastic-plastic body's initial yield strength (its material's constant).
+    const auto model = run.text_attributes.find(fem_format::material_model_parameter(body));
+    if (model != run.text_attributes.end() && model->second == fem_format::elastic_plastic_model)
+      consider(fem_format::material_parameter(body, fem_format::elastic_plastic_model,
+                                              fem_format::yield_strength),
+               material_constant(run, body, fem_format::yield_strength));
   }
   if (summary.is_object() && summary.contains(fem_format::yield_exceeded_key) &&
       summary[fem_format::yield_exceeded_key].is_boolean())
     record.yields = summary[fem_format::yield_exceeded_key].get<bool>();
   else if (record.yield_strength && record.max_von_mises)
     record.yields = *record.max_von_mises > *record.yield_strength;
+
+  record.plastic_material = has_plastic_material(run);
+  if (record.plastic_material) {
+    record.permanent_approach = value("permanent_approach"); // impact-fem's plasticity summary
+    if (!record.permanent_approach) {
+      const double measured = approach_at(run, run.first_contact_time + run.contact_time);
+      if (std::isfinite(measured)) record.permanent_approach = std::max(measured, 0.0);
+    }
+  }
 
   const auto oscillation = value(fem_format::force_oscillation_key);
   const auto after_release = value(fem_format::force_after_release_key);

@@ -10,18 +10,21 @@
 
 namespace impact::postprocess {
 
-namespace {
-
-std::string format(double value) {
+std::string six_digits(double value) {
   std::ostringstream text;
   text.precision(6);
   text << value;
   return text.str();
 }
 
+namespace {
+
+std::string format(double value) { return six_digits(value); }
+
 struct BodyStrength {
   double youngs_modulus, poisson_ratio, yield_strength;
   std::string where; // the parameter Y was read from
+  bool elastic_plastic;
 };
 
 // A body's yield strength and elastic constants; none without a yield strength.
@@ -41,7 +44,7 @@ std::optional<BodyStrength> body_strength(const FemRun& run, const std::string& 
                               " Pa, but the body's material does not record a Young's modulus "
                               "> 0 and a Poisson's ratio in (-1, 0.5) ('" + body +
                               "/Material model' and its constants)");
-  return BodyStrength{*young, *poisson, *strength, key};
+  return BodyStrength{*young, *poisson, *strength, key, plastic};
 }
 
 } // namespace
@@ -84,10 +87,38 @@ std::optional<PlasticContact> scenario_plastic_contact(const std::vector<FemRun>
   const BodyStrength& yielding = !plate || (sphere && sphere->yield_strength <= plate->yield_strength)
                                      ? *sphere : *plate;
   contact.yield_pressure = reduced::johnson_yield_pressure(yielding.yield_strength);
+  contact.yield_strength = yielding.yield_strength;
+  contact.yield_poisson_ratio = yielding.poisson_ratio;
+  contact.elastic_plastic = yielding.elastic_plastic;
   contact.yield_basis = "Johnson's p_y = 1.6 Y with Y = " +
                         format(yielding.yield_strength) + " Pa ('" + yielding.where +
                         "' of " + run.source + ", the body that yields first)";
   return contact;
+}
+
+std::string hardening_note(const FemRun& run) {
+  std::string left_out;
+  for (const std::string body : {"Sphere", "Plate"}) {
+    const auto model = run.text_attributes.find(body + "/Material model");
+    if (model == run.text_attributes.end() || model->second != "elastic-plastic") continue;
+    const auto law = run.text_attributes.find(body + "/Elastic-plastic/Hardening law");
+    const bool johnson_cook = law != run.text_attributes.end() && law->second == "johnson-cook";
+    std::string hardening;
+    if (johnson_cook) {
+      const double b = material_constant(run, body, "Johnson-Cook B").value_or(0);
+      const double c = material_constant(run, body, "Johnson-Cook C").value_or(0);
+      if (b > 0 || c > 0)
+        hardening = "Johnson-Cook B = " + format(b) + " Pa, C = " + format(c);
+    } else if (const auto h = material_constant(run, body, "Hardening modulus"); h && *h > 0) {
+      hardening = "linear hardening modulus " + format(*h) + " Pa";
+    }
+    if (!hardening.empty())
+      left_out += (left_out.empty() ? "" : "; ") + std::string("the ") + body + "'s " + hardening;
+  }
+  return left_out.empty() ? "no hardening: the law is elastic-perfectly-plastic, like the runs' "
+                            "material"
+                          : "no hardening enters the law (elastic-perfectly-plastic): it leaves "
+                            "out " + left_out + " recorded by the runs";
 }
 
 } // namespace impact::postprocess

@@ -30,6 +30,14 @@ inline constexpr std::string_view hunt_crossley_published = "hunt-crossley-publi
 inline constexpr std::string_view kuwabara_kono_material = "kuwabara-kono-material";
 /// Thornton's elastic-plastic law with p_y = 1.6 Y from the material (plastic_models.hpp).
 inline constexpr std::string_view thornton_material = "thornton-material";
+/// Jackson–Green's elastic-plastic law with E*, Y, nu from the material (jackson_green_model.hpp).
+inline constexpr std::string_view jackson_green_material = "jackson-green-material";
+
+// ---- Elastic-plastic comparison models, fitted (plastic_models.hpp) -----------------------
+/// Thornton (1997), c and the yield approach x_y free.
+inline constexpr std::string_view thornton = "thornton";
+/// Jackson–Green (2005), c and the yield strength Y free.
+inline constexpr std::string_view jackson_green = "jackson-green";
 
 // ---- Roles on the page ---------------------------------------------------------------------
 /// The calibrated Hunt–Crossley law: the campaign's hunt_crossley fit.

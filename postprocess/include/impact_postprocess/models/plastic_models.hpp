@@ -26,14 +26,41 @@
 
 namespace impact::postprocess {
 
-/// The plastic models' names ("thornton").
+/// What the plastic models share: n = 3/2 fixed, one dissipation parameter (the law's yield
+/// parameter `symbol` [`unit`]) used as the damping constant itself, no force law F(x, x').
+/// The caller sets damping_for_restitution and plastic_contact.
+ContactModel plastic_model_base(std::string name, std::string formula, std::string reference,
+                                std::string symbol, std::string unit);
+
+/// The plastic models' names ("thornton", "jackson-green": jackson_green_model.hpp).
 const std::vector<std::string>& plastic_model_names();
 
 /// True for a name of plastic_model_names().
 bool is_plastic_model(const std::string& name);
 
-/// The plastic model `name`; throws reduced::InvalidInput("model") for another name.
+/// The plastic model `name`; throws reduced::InvalidInput("model") for another name and for
+/// a model that needs the scenario (needs_scenario).
 ContactModel plastic_model(const std::string& name);
+
+/// Whether the model needs constants of the scenario beyond c (jackson-green: the sphere
+/// radius and the Poisson ratio of the yielding body).
+bool needs_scenario(const std::string& name);
+
+/// The comparison model `name` (contact_models.hpp, comparison_model) with the constants of
+/// the runs' scenario where it needs them (sphere_flat_scenario); throws
+/// reduced::InvalidInput("model") naming what the runs do not record.
+ContactModel comparison_model(const std::string& name, const std::vector<FemRun>& runs);
+
+/// The formula of any model by name (contact_model(name).formula), also of those that need
+/// the scenario.
+std::string model_formula(const std::string& name);
+
+/// The comparison models `names` for the runs: those that need the scenario are left out,
+/// and named in `left_out`, when the runs do not record it; throws reduced::InvalidInput for
+/// an unknown name.
+std::vector<ContactModel> comparison_models(const std::vector<std::string>& names,
+                                            const std::vector<FemRun>& runs,
+                                            std::vector<std::string>& left_out);
 
 /// The comparison models impact-calibrate fits: the reduced library's comparison laws, then
 /// the plastic models.

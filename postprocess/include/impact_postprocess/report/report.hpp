@@ -18,6 +18,7 @@
 #include "impact_postprocess/run/fem_run.hpp"
 #include "impact_postprocess/run/fem_run_record.hpp"
 #include "impact_postprocess/models/impact_quantities.hpp"
+#include "impact_postprocess/models/family_ranges.hpp"
 #include "impact_postprocess/models/velocity_trend.hpp"
 
 #include <nlohmann/json.hpp>
@@ -94,7 +95,10 @@ struct ReportRun {
   ReportEstimate history_exponent;
   FemRunRecord record;
   FemUncertainty uncertainty;      ///< of each FEM quantity (relative)
-  bool yields = false;             ///< the FEM exceeds the yield strength at this run
+  /// The FEM exceeds the yield strength of a body without plasticity at this run: the flag
+  /// "(yields)" (never set when the material is elastic-plastic, FemRunRecord::plastic_material:
+  /// that FEM yields and stays valid).
+  bool yields = false;
 };
 
 /// The decision for one model at one run and tolerance.
@@ -115,11 +119,40 @@ struct ModelVerdict {
 };
 
 /// Where the viscoelastic FEM model itself is not valid: the runs above the yield strength.
+/// With an elastic-plastic material the FEM is valid above yield: then plastic_material is set
+/// and first_yielding_velocity stays empty (no velocity is flagged).
 struct PlasticityCheck {
   bool recorded = false;            ///< some run records a yield strength and its stress
+  bool plastic_material = false;    ///< the FEM's material is elastic-plastic
   std::optional<double> first_yielding_velocity; ///< m/s, the lowest tested velocity that yields
   std::optional<double> onset_estimate; ///< m/s, log-log interpolation of the stress to the yield strength
   std::string text;
+};
+
+/// One elastic-plastic law against an elastic-plastic FEM campaign (plastic_laws.cpp): its
+/// restitution and permanent approach over the tested range and at the runs, and its
+/// force-approach loop at each run (reduced::elastic_plastic_impact, _loop).
+struct PlasticLawCurve {
+  std::string key;         ///< the calibration's key ("thornton-material", "jackson-green", ...)
+  std::string label;
+  bool fitted = false;     ///< a campaign fit (else nothing fitted)
+  std::string parameters;  ///< the values used, as text with units
+  std::vector<double> velocity;           ///< m/s, the curve's grid
+  std::vector<double> restitution;        ///< e on the grid
+  std::vector<double> permanent_approach; ///< x_p [m] on the grid
+  std::vector<double> run_restitution;    ///< e at each report run (NaN where it failed)
+  std::vector<double> run_permanent_approach; ///< x_p [m] at each report run
+  std::vector<ImpactHistory> loops;       ///< per report run (empty where it failed)
+};
+
+/// The elastic-plastic laws of an elastic-plastic campaign (none otherwise).
+struct PlasticLaws {
+  double yield_velocity;              ///< V_y [m/s], Johnson's p_y = 1.6 Y (Thornton's)
+  double jackson_green_yield_velocity; ///< V_y [m/s] with p_y = C(nu) Y
+  std::string yield_basis;            ///< the constants, in words
+  std::vector<PlasticLawCurve> laws;  ///< no-fit Thornton and Jackson–Green, then the fits
+  std::vector<double> fem_permanent_approach; ///< m, per report run (NaN: not recorded)
+  std::string text;                   ///< the comparison in words
 };
 
 /// What a simulator measured at one velocity with a file of impact-export (a result file of
@@ -225,6 +258,13 @@ struct Report {
   std::optional<PowerLawTrend> trend;   ///< 1 - e ~ V^p of the FEM
   std::string trend_text;
   PlasticityCheck plasticity;
+  /// Which family the FEM follows in which velocity range (family_ranges.hpp).
+  std::vector<FamilyRange> family_ranges;
+  std::string family_text;
+  /// The elastic-plastic laws, for a campaign whose material is elastic-plastic.
+  std::optional<PlasticLaws> plastic_laws;
+  /// The FEM's effective alpha (1 - e)/V per run against the measured 0.08–0.32 s/m.
+  std::string alpha_text;
   std::string uncertainty_text;         ///< what the FEM's uncertainty does to the verdict
   std::string summary;                  ///< the verdict in a few sentences
   /// The directory of the simulators' result files (--simulators), none when not given.
@@ -296,7 +336,7 @@ Report build_report(const Campaign& campaign, const std::optional<Calibration>& 
 /// (and, for a validity map, the map model's key); a figure whose data do not exist (the
 /// damping figure without a calibration, the maps without a map) is not declared.
 enum class FigureId { loops, histories, residuals, quantities, energy_loss, damping, errors,
-                      validity_map };
+                      validity_map, plastic_restitution, permanent_approach, plastic_loops };
 
 /// A figure, declared once: identity, file name (in the figures directory), caption and the
 /// data to draw it (title, columns, panels: the input of report_figures.py).

@@ -30,6 +30,13 @@ struct FemRunRecord {
   /// The run exceeded a yield strength: the FEM's own flag (yield_exceeded) or its largest
   /// von Mises stress above the yield strength; none without a yield strength.
   std::optional<bool> yields;
+  /// A body's material model is elastic-plastic ("<Body>/Material model" of the run's
+  /// parameters): the FEM itself yields, and stays valid, above the yield strength.
+  bool plastic_material = false;
+  /// The permanent approach [m] (summary key "permanent_approach" of impact-fem: the approach
+  /// at separation, linearly interpolated), else measured the same way on the history at the
+  /// end of contact (first contact + t_c); none for a run without plastic material.
+  std::optional<double> permanent_approach;
   ForceSmoothness smoothness;
   std::string smoothness_source;             ///< "summary.json" or "measured on history.h5"
   double time_step;                          ///< s, median step of the history

@@ -22,6 +22,9 @@ struct PlasticContact {
   std::optional<double> plate_poisson_ratio;  ///< -; none: a rigid plate (or E* not split)
   double contact_modulus;                     ///< E* [Pa] of the two bodies
   double yield_pressure;                      ///< p_y [Pa]
+  double yield_strength;                      ///< Y [Pa] of the body that yields first
+  double yield_poisson_ratio;                 ///< nu of that body (Jackson–Green's C(nu))
+  bool elastic_plastic = false;               ///< that body's material model is elastic-plastic
   std::string yield_basis;                    ///< where p_y comes from, in words
 };
 
@@ -43,5 +46,14 @@ public:
 /// PlasticContactError naming the run and the parameter when a body's elastic constants are
 /// missing.
 std::optional<PlasticContact> scenario_plastic_contact(const std::vector<FemRun>& runs);
+
+/// A number with six significant digits, as the models' bases write the scenario's constants.
+std::string six_digits(double value);
+
+/// How the hardening the run records enters the elastic–perfectly-plastic laws (Thornton,
+/// Jackson–Green): it does not; the sentence names the hardening of each elastic-plastic
+/// body ("<Body>/Elastic-plastic/Hardening law" linear with "Hardening modulus" > 0, or
+/// johnson-cook with "Johnson-Cook B" or "Johnson-Cook C" > 0) that the laws leave out.
+std::string hardening_note(const FemRun& run);
 
 } // namespace impact::postprocess

@@ -1,0 +1,171 @@
+// The elastic-plastic laws against an elastic-plastic FEM campaign (report.hpp, PlasticLaws):
+// Thornton (1997) and Jackson–Green (2005) from the scenario's material with nothing fitted,
+// and their campaign fits when the calibration holds them; their restitution and permanent
+// approach over the tested range and at the runs, and their loops at the runs. The
+// restitution formula of Jackson, Green & Marghitu (2010) is not among them: it could not be
+// read (README, "Elastic-plastic impact laws").
+
+#include "report/report_parts.hpp"
+#include "impact_postprocess/models/jackson_green_model.hpp"
+#include "impact_postprocess/models/model_keys.hpp"
+#include "impact_postprocess/models/plastic_models.hpp"
+
+#include <impact_reduced/yield_velocity.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace impact::postprocess::detail {
+
+namespace {
+
+constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+constexpr std::size_t grid_points = 80;
+constexpr std::size_t loop_points = 80; // per branch
+
+double median_mass(const std::vector<ReportRun>& runs) {
+  std::vector<double> masses;
+  for (const auto& run : runs) masses.push_back(run.mass);
+  std::nth_element(masses.begin(), masses.begin() + std::ptrdiff_t(masses.size() / 2), masses.end());
+  return masses[masses.size() / 2];
+}
+
+// One law (its contact for c, p) over the grid and at the runs.
+PlasticLawCurve curve_of(std::string key, std::string label, bool fitted, std::string parameters,
+                         const ContactModel& model, double stiffness, double parameter,
+                         const std::vector<double>& grid, double mass,
+                         const std::vector<ReportRun>& runs) {
+  PlasticLawCurve curve{std::move(key), std::move(label), fitted, std::move(parameters),
+                        {}, {}, {}, {}, {}, {}};
+  const auto contact_for = [&](double m) {
+    return model.plastic_contact(parameter, reduced::ContactSetup{m, stiffness, 1.5});
+  };
+  const auto contact = contact_for(mass);
+  for (double v : grid) {
+    curve.velocity.push_back(v);
+    try {
+      const auto response = reduced::elastic_plastic_impact(mass, v, *contact);
+      curve.restitution.push_back(response.restitution);
+      curve.permanent_approach.push_back(response.residual_approach);
+    } catch (const std::exception&) {
+      curve.restitution.push_back(nan);
+      curve.permanent_approach.push_back(nan);
+    }
+  }
+  for (const auto& run : runs) {
+    ImpactHistory loop;
+    double e = nan, x_p = nan;
+    try {
+      const auto run_contact = contact_for(run.mass);
+      const auto response = reduced::elastic_plastic_impact(run.mass, run.velocity, *run_contact);
+      e = response.restitution;
+      x_p = response.residual_approach;
+      for (const auto& sample :
+           reduced::elastic_plastic_impact_loop(run.mass, run.velocity, *run_contact, loop_points)) {
+        loop.time.push_back(sample.time);
+        loop.approach.push_back(sample.approach);
+        loop.force.push_back(sample.force);
+      }
+    } catch (const std::exception&) {
+      loop = {};
+    }
+    curve.run_restitution.push_back(e);
+    curve.run_permanent_approach.push_back(x_p);
+    curve.loops.push_back(std::move(loop));
+  }
+  return curve;
+}
+
+// The grid of the curves: from half of V_y (or below the slowest run) to above the fastest
+// run, geometric.
+std::vector<double> velocity_grid(const std::vector<ReportRun>& runs, double yield_velocity) {
+  double low = 0.5 * yield_velocity, high = 2 * yield_velocity;
+  for (const auto& run : runs) {
+    low = std::min(low, 0.8 * run.velocity);
+    high = std::max(high, 1.25 * run.velocity);
+  }
+  std::vector<double> grid;
+  for (std::size_t i = 0; i < grid_points; ++i)
+    grid.push_back(low * std::pow(high / low, double(i) / double(grid_points - 1)));
+  return grid;
+}
+
+std::string comparison_text(const PlasticLaws& laws, const std::vector<ReportRun>& runs) {
+  std::string text = "The FEM's restitution against the elastic-plastic laws (law / FEM - 1 in "
+                     "e, per run):";
+  for (const auto& law : laws.laws) {
+    text += " " + law.label + ":";
+    for (std::size_t i = 0; i < runs.size(); ++i)
+      text += std::string(i ? "," : "") + " " + percent_cell(law.run_restitution[i] /
+                                                             runs[i].fem.restitution - 1) +
+              " at " + short_number(runs[i].velocity) + " m/s";
+    text += ";";
+  }
+  text.back() = '.';
+  text += " Where the FEM records its permanent approach, the dent of each law is drawn beside it "
+          "(figure below).";
+  return text;
+}
+
+} // namespace
+
+std::optional<PlasticLaws> plastic_laws(const std::vector<FemRun>& fem_runs,
+                                        const std::vector<ReportRun>& runs,
+                                        const std::optional<Calibration>& calibration) {
+  const bool plastic = std::any_of(runs.begin(), runs.end(), [](const ReportRun& run) {
+    return run.record.plastic_material;
+  });
+  if (!plastic || runs.empty()) return std::nullopt;
+  const auto thornton = material_thornton(fem_runs);
+  const auto jackson_green = material_jackson_green(fem_runs);
+  const auto scenario = sphere_flat_scenario(fem_runs);
+  if (!thornton || !scenario || !scenario->contact_modulus || !scenario->yield_strength)
+    return std::nullopt;
+  const double mass = median_mass(runs);
+  PlasticLaws laws;
+  laws.yield_velocity = thornton_yield_velocity(thornton->yield_approach, mass, thornton->stiffness);
+  laws.jackson_green_yield_velocity = reduced::yield_velocity(
+      reduced::yield_pressure(reduced::YieldCriterion::jackson_green, *scenario->yield_strength,
+                              scenario->poisson_ratio),
+      *scenario->contact_modulus, scenario->radius, mass);
+  laws.yield_basis = "m = " + short_number(mass) + " kg, " + scenario->basis;
+  const auto grid = velocity_grid(runs, laws.yield_velocity);
+
+  const std::string y = short_number(*scenario->yield_strength / 1e9) + " GPa";
+  laws.laws.push_back(curve_of(std::string(model_keys::thornton_material),
+                               "Thornton (p_y = 1.6 Y, no fit)", false,
+                               "c = " + cell(thornton->stiffness) + " N/m^1.5, x_y = " +
+                                   cell(thornton->yield_approach) + " m (Y = " + y + ")",
+                               plastic_model(std::string(model_keys::thornton)),
+                               thornton->stiffness, thornton->yield_approach, grid, mass, runs));
+  if (jackson_green)
+    laws.laws.push_back(curve_of(std::string(model_keys::jackson_green_material),
+                                 "Jackson–Green (Y of the material, no fit)", false,
+                                 "c = " + cell(jackson_green->stiffness) + " N/m^1.5, Y = " + y,
+                                 jackson_green->model, jackson_green->stiffness,
+                                 jackson_green->yield_strength, grid, mass, runs));
+  if (calibration)
+    for (const auto& [key, label] :
+         {std::pair{model_keys::thornton, "Thornton (fitted)"},
+          std::pair{model_keys::jackson_green, "Jackson–Green (fitted)"}})
+      if (const CampaignModelFit* fit = calibration->campaign.find(std::string(key)))
+        if (fit->fit.converged) try {
+            const ModelFit& parameters = fit->fit;
+            laws.laws.push_back(curve_of(
+                std::string(key), label, true,
+                "c = " + cell(parameters.stiffness.value) + " N/m^1.5, " +
+                    parameters.parameter_name + " = " + cell(parameters.parameter.value) + " " +
+                    parameters.parameter_unit,
+                comparison_model(std::string(key), fem_runs), parameters.stiffness.value,
+                parameters.parameter.value, grid, mass, runs));
+          } catch (const std::exception&) {
+            // the model cannot be built for these runs: left out of the curves
+          }
+  for (const auto& run : runs)
+    laws.fem_permanent_approach.push_back(run.record.permanent_approach.value_or(nan));
+  laws.text = comparison_text(laws, runs);
+  return laws;
+}
+
+} // namespace impact::postprocess::detail
