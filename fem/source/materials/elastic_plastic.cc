@@ -47,19 +47,19 @@ namespace impact_fem
                         Patterns::Double(),
                         "Initial yield strength in uniaxial tension Y [Pa], "
                         "> 0 (the constant A of Johnson-Cook).");
-      prm.declare_entry("Hardening law",
+      prm.declare_entry(result_files::hardening_law_entry,
                         "linear",
                         Patterns::Selection("linear|johnson-cook"),
                         "linear: sigma_y = Y + H eps_p; johnson-cook: "
                         "sigma_y = (Y + B eps_p^n)(1 + C ln(max(rate / "
                         "reference rate, 1))), eps_p the accumulated plastic "
                         "strain, rate its rate (no thermal term).");
-      prm.declare_entry("Hardening modulus",
+      prm.declare_entry(result_files::hardening_modulus.entry,
                         "0",
                         Patterns::Double(),
                         "H of the linear law [Pa], >= 0; 0 is perfectly "
                         "plastic.");
-      prm.declare_entry("Johnson-Cook B",
+      prm.declare_entry(result_files::johnson_cook_b.entry,
                         "0",
                         Patterns::Double(),
                         "Strain-hardening coefficient B [Pa], >= 0.");
@@ -67,7 +67,7 @@ namespace impact_fem
                         "1",
                         Patterns::Double(),
                         "Strain-hardening exponent n [-], in (0, 1].");
-      prm.declare_entry("Johnson-Cook C",
+      prm.declare_entry(result_files::johnson_cook_c.entry,
                         "0",
                         Patterns::Double(),
                         "Strain-rate coefficient C [-], >= 0.");
@@ -95,17 +95,17 @@ namespace impact_fem
 
       yield_strength = prm.get_double(result_files::yield_strength.entry);
       check_entry(yield_strength > 0, "Yield strength", "be > 0 Pa", yield_strength);
-      johnson_cook = prm.get("Hardening law") == "johnson-cook";
-      hardening_modulus = prm.get_double("Hardening modulus");
+      johnson_cook = prm.get(result_files::hardening_law_entry) == result_files::johnson_cook_law;
+      hardening_modulus = prm.get_double(result_files::hardening_modulus.entry);
       check_entry(hardening_modulus >= 0,
                   "Hardening modulus",
                   "be >= 0 Pa (0: perfectly plastic)",
                   hardening_modulus);
-      jc_b = prm.get_double("Johnson-Cook B");
+      jc_b = prm.get_double(result_files::johnson_cook_b.entry);
       check_entry(jc_b >= 0, "Johnson-Cook B", "be >= 0 Pa", jc_b);
       jc_n = prm.get_double("Johnson-Cook n");
       check_entry(jc_n > 0 && jc_n <= 1, "Johnson-Cook n", "lie in (0, 1]", jc_n);
-      jc_c = prm.get_double("Johnson-Cook C");
+      jc_c = prm.get_double(result_files::johnson_cook_c.entry);
       check_entry(jc_c >= 0, "Johnson-Cook C", "be >= 0", jc_c);
       reference_rate = prm.get_double("Reference strain rate");
       check_entry(reference_rate > 0,

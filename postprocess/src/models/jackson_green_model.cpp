@@ -98,7 +98,7 @@ ContactModel jackson_green_model(double radius, double poisson_ratio) {
 
 std::optional<SphereFlatScenario> sphere_flat_scenario(const std::vector<FemRun>& runs) {
   if (runs.empty()) return std::nullopt;
-  const auto radius = text_number(runs.front(), "Scenario/Sphere radius");
+  const auto radius = text_number(runs.front(), fem_format::sphere_radius.path);
   if (!radius || !(*radius > 0)) return std::nullopt;
   std::optional<PlasticContact> contact;
   try {
@@ -114,7 +114,7 @@ std::optional<SphereFlatScenario> sphere_flat_scenario(const std::vector<FemRun>
                                   format(contact->yield_poisson_ratio) + " and Y = " +
                                   format(contact->yield_strength) + " Pa of the body that "
                                   "yields first (" + contact->yield_basis + ")"};
-  const auto nu = material_constant(runs.front(), "Sphere", "Poisson's ratio");
+  const auto nu = material_constant(runs.front(), fem_format::sphere_body, fem_format::poissons_ratio);
   if (!nu || !(*nu > -1 && *nu < 0.5)) return std::nullopt;
   return SphereFlatScenario{*radius, *nu, std::nullopt, std::nullopt,
                             "R = " + format(*radius) + " m ('Scenario/Sphere radius'), nu = " +

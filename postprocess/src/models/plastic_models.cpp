@@ -166,7 +166,7 @@ std::optional<MaterialThornton> material_thornton(const std::vector<FemRun>& run
   } catch (const PlasticContactError&) {
     return std::nullopt;
   }
-  const auto radius = text_number(runs.front(), "Scenario/Sphere radius");
+  const auto radius = text_number(runs.front(), fem_format::sphere_radius.path);
   if (!contact || !radius || !(*radius > 0)) return std::nullopt;
   const double e_star = contact->contact_modulus;
   const double ratio = pi * contact->yield_pressure / (2 * e_star);

@@ -98,18 +98,22 @@ std::optional<PlasticContact> scenario_plastic_contact(const std::vector<FemRun>
 
 std::string hardening_note(const FemRun& run) {
   std::string left_out;
-  for (const std::string body : {"Sphere", "Plate"}) {
-    const auto model = run.text_attributes.find(body + "/Material model");
-    if (model == run.text_attributes.end() || model->second != "elastic-plastic") continue;
-    const auto law = run.text_attributes.find(body + "/Elastic-plastic/Hardening law");
-    const bool johnson_cook = law != run.text_attributes.end() && law->second == "johnson-cook";
+  for (const std::string body : {fem_format::sphere_body, fem_format::plate_body}) {
+    const auto model = run.text_attributes.find(fem_format::material_model_parameter(body));
+    if (model == run.text_attributes.end() || model->second != fem_format::elastic_plastic_model)
+      continue;
+    const auto law = run.text_attributes.find(
+        body + "/" + fem_format::material_subsection(fem_format::elastic_plastic_model) + "/" +
+        fem_format::hardening_law_entry);
+    const bool johnson_cook =
+        law != run.text_attributes.end() && law->second == fem_format::johnson_cook_law;
     std::string hardening;
     if (johnson_cook) {
-      const double b = material_constant(run, body, "Johnson-Cook B").value_or(0);
-      const double c = material_constant(run, body, "Johnson-Cook C").value_or(0);
+      const double b = material_constant(run, body, fem_format::johnson_cook_b).value_or(0);
+      const double c = material_constant(run, body, fem_format::johnson_cook_c).value_or(0);
       if (b > 0 || c > 0)
         hardening = "Johnson-Cook B = " + format(b) + " Pa, C = " + format(c);
-    } else if (const auto h = material_constant(run, body, "Hardening modulus"); h && *h > 0) {
+    } else if (const auto h = material_constant(run, body, fem_format::hardening_modulus); h && *h > 0) {
       hardening = "linear hardening modulus " + format(*h) + " Pa";
     }
     if (!hardening.empty())

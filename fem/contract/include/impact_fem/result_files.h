@@ -203,6 +203,12 @@ namespace impact_fem::result_files
   // Of an elastic-plastic material; also the body's own entry beside "Material model"
   // ("<body>/Yield strength", body_parameter: the stress postprocessor's check, 0: none).
   inline constexpr MaterialEntry yield_strength{"Yield strength", "Pa"};
+  // The hardening of an elastic-plastic material: "Hardening law" is linear or johnson-cook.
+  inline constexpr const char *hardening_law_entry  = "Hardening law";
+  inline constexpr const char *johnson_cook_law     = "johnson-cook";
+  inline constexpr MaterialEntry hardening_modulus{"Hardening modulus", "Pa"};
+  inline constexpr MaterialEntry johnson_cook_b{"Johnson-Cook B", "Pa"};
+  inline constexpr MaterialEntry johnson_cook_c{"Johnson-Cook C", "1"};
 
   /// The subsection of a material's constants: its name with an upper-case first letter
   /// ("kelvin-voigt" -> "Kelvin-voigt").
