@@ -82,7 +82,11 @@ echo "study: FEM campaign of $scenario, verified -> $output/campaign"
 "${mpirun[@]}" "$bin/impact-fem" "$scenario" --set "Output/Directory=$output/campaign" \
   --verify
 echo "study: calibration -> $output/calibration.json"
-"$bin/impact-calibrate" --campaign "$output/campaign" --output "$output/calibration.json"
+# Exit 3: the calibration is written but some fit did not converge or a figure of merit is
+# missing; the study goes on and its report lists these problems. Any other failure stops it.
+status=0
+"$bin/impact-calibrate" --campaign "$output/campaign" --output "$output/calibration.json" || status=$?
+[ "$status" -eq 0 ] || [ "$status" -eq 3 ] || exit "$status"
 echo "study: export to Simbody, MuJoCo, LAMMPS, LIGGGHTS -> $output/export"
 "$bin/impact-export" --campaign "$output/campaign" --calibration "$output/calibration.json" \
   --output "$output/export"
@@ -91,7 +95,11 @@ rm -rf "$output/in_simulator" # no result of an earlier export stays
 IMPACT_BUILD_DIR="$(dirname "$bin")" tests/consumers/run_in_simulators.sh "$output/export" \
   "$output/in_simulator"
 echo "study: report -> $output/report"
+report_status=0
 "$bin/impact-report" --campaign "$output/campaign" --calibration "$output/calibration.json" \
-  --simulators "$output/in_simulator" --output "$output/report"
+  --simulators "$output/in_simulator" --output "$output/report" || report_status=$?
+[ "$report_status" -eq 0 ] || [ "$report_status" -eq 3 ] || exit "$report_status"
 echo "study: done in $((SECONDS - start)) s"
 echo "report: $(realpath "$output/report/report.html")"
+# 3: complete but with problems the report lists (its section Status).
+[ "$status" -eq 0 ] && [ "$report_status" -eq 0 ] || exit 3
