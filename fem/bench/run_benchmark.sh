@@ -2,7 +2,7 @@
 # Benchmark of impact-fem: the default scenario at V = 1 m/s with each time
 # integration scheme on 1 and 2 MPI ranks (wall time, cells, DoFs, steps,
 # contact time, peak force, restitution, balance error, force oscillation),
-# then the study's campaign (fem/scenarios/study.prm, six velocities) on 2
+# then the study's campaign (fem/scenarios/study_viscoelastic.prm, six velocities) on 2
 # ranks as two groups of one rank (the default) and as every run on both.
 #
 # Usage: fem/bench/run_benchmark.sh [BUILD_DIR] [OUTPUT_DIR]
@@ -52,7 +52,7 @@ for scheme in bdf2 newmark; do
 done
 
 if [ "${CAMPAIGN:-1}" = 1 ]; then
-  study="$here/../scenarios/study.prm"
+  study="$here/../scenarios/study_viscoelastic.prm"
   for ranks_per_run in 1 0; do
     name="campaign-rpr$ranks_per_run"
     rm -rf "$output/$name"
@@ -62,7 +62,7 @@ if [ "${CAMPAIGN:-1}" = 1 ]; then
       || { echo "campaign $name failed, see $output/$name.log" >&2; exit 1; }
     wall=$(/usr/bin/python3 -c "import time,sys; print(f'{time.time() - float(sys.argv[1]):.1f}')" "$start")
     echo
-    echo "study campaign (fem/scenarios/study.prm, 6 velocities), 2 ranks, Ranks per run = $ranks_per_run: $wall s wall"
+    echo "study campaign (fem/scenarios/study_viscoelastic.prm, 6 velocities), 2 ranks, Ranks per run = $ranks_per_run: $wall s wall"
     /usr/bin/python3 - "$output/$name" <<'PY'
 import json, os, sys
 d = sys.argv[1]

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The time integration schemes at equal accuracy: the study's Kelvin-Voigt
-# case (fem/scenarios/study.prm) at 1 and 4 m/s with newmark (average
+# case (fem/scenarios/study_viscoelastic.prm) at 1 and 4 m/s with newmark (average
 # acceleration), newmark with gamma = 0.6 (numerically damped, first order)
 # and bdf2, each at 150, 300 and 600 steps per contact time. Printed: the
 # step-to-step force oscillation and the force after release (fractions of
@@ -20,7 +20,7 @@ mkdir -p "$output"
 run() { # name velocity steps --set arguments...
   local name="$1" v="$2" steps="$3"; shift 3
   [ -f "$output/$name/summary.json" ] && return 0
-  "$binary" "$here/../scenarios/study.prm" --set "Campaign/Impact velocities=" \
+  "$binary" "$here/../scenarios/study_viscoelastic.prm" --set "Campaign/Impact velocities=" \
     --set "Scenario/Impact velocity=$v" --set "Time integration/Steps per contact time=$steps" \
     --set "Output/Directory=$output/$name" "$@" > "$output/$name.log" 2>&1 \
     || { echo "run $name failed, see $output/$name.log" >&2; exit 1; }

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The numerical uncertainty of the study: every run of fem/scenarios/study.prm
+# The numerical uncertainty of the study: every run of fem/scenarios/study_viscoelastic.prm
 # verified (impact-fem --verify: the run and two coarser discretisations,
 # refinement ratio 1.5 in space and time) on 2 ranks, and the table of the
 # grid convergence index of contact time, peak force, its time, peak
@@ -17,7 +17,7 @@ mpirun=(mpirun --oversubscribe -np 2)
 [ "$(id -u)" -eq 0 ] && mpirun+=(--allow-run-as-root)
 rm -rf "$output"
 start=$(date +%s)
-"${mpirun[@]}" "$binary" "$here/../scenarios/study.prm" --verify --set "Output/Directory=$output" \
+"${mpirun[@]}" "$binary" "$here/../scenarios/study_viscoelastic.prm" --verify --set "Output/Directory=$output" \
   > "$output.log" 2>&1 || { echo "verification failed, see $output.log" >&2; exit 1; }
 echo "verification of the study (6 velocities x 3 levels, 2 ranks): $(( $(date +%s) - start )) s wall"
 /usr/bin/python3 - "$output" <<'PY'
