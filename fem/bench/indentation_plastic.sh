@@ -18,7 +18,9 @@
 #
 # Usage: fem/bench/indentation_plastic.sh [BUILD_DIR] [OUTPUT_DIR]
 #   environment: RATIOS (default "200 1000"), LEVELS (default "1 2 4"),
-#   OMEGA_MAX (default 30), STEPS (default 15), CHECK (default "10 20 30")
+#   OMEGA_MAX (default 30), STEPS (default 15), CHECK (default "10 20 30"),
+#   MAX_ITERATIONS (default 100, Nonlinear solver/Maximum iterations: beyond
+#   about 75 omega_c the iteration of a step on the finer meshes needs more)
 set -euo pipefail
 build="${1:-build}"
 output="${2:-results/bench/indentation_plastic}"
@@ -29,6 +31,7 @@ levels="${LEVELS:-1 2 4}"
 omega_max="${OMEGA_MAX:-30}"
 steps="${STEPS:-15}"
 check="${CHECK:-10 20 30}"
+max_iterations="${MAX_ITERATIONS:-100}"
 for program in "$binary" "$oracle"; do
   [ -x "$program" ] || { echo "indentation_plastic: no executable $program (build impact-fem and fem_test_sphere_flat_oracle)" >&2; exit 1; }
 done
@@ -62,6 +65,7 @@ PY
       --set "Sphere/Elastic-plastic/Yield strength=$yield" \
       --set "Sphere/Elastic-plastic/Hardening modulus=0" \
       --set "Indentation/Maximum approach=$approach" --set "Indentation/Steps=$steps" \
+      --set "Nonlinear solver/Maximum iterations=$max_iterations" \
       --set "Mesh/Contact element size=$size" --set "Mesh/Uniform zone radius=$zone" \
       --set "Mesh/Contact surface radius=$surface" --set "Mesh/Maximum element size=$largest" \
       --set "Output/Directory=$output/$name" > "$output/$name.log" 2>&1 \

@@ -835,8 +835,11 @@ namespace impact_fem
     postprocess_step();
 
     // An interrupted run (SIGINT, SIGTERM) and a failing one keep what they
-    // computed in history.incomplete.h5, which is also refreshed every
-    // minute so that even a killed run leaves its history behind.
+    // computed in history.incomplete.h5. It is also written after the first
+    // step and refreshed every minute, so that even a killed run leaves its
+    // history behind: mpirun kills ranks that have not stopped within a
+    // second of its SIGTERM, and a rank in a long step (or on a loaded
+    // machine) cannot reach its next check in that time.
     // Checked before every step and once more after the last one, so that a
     // signal received at any time of the loop leaves the run incomplete.
     const auto stop_if_interrupted = [&]() {
@@ -856,11 +859,13 @@ namespace impact_fem
             stop_if_interrupted();
             solve_time_step();
             postprocess_step();
-            const bool checkpoint_due = Utilities::MPI::broadcast(
-              mpi_communicator,
-              std::chrono::steady_clock::now() - last_checkpoint >
-                std::chrono::seconds(60),
-              0);
+            const bool checkpoint_due =
+              time_stepper->step_number() == 1 ||
+              Utilities::MPI::broadcast(mpi_communicator,
+                                        std::chrono::steady_clock::now() -
+                                            last_checkpoint >
+                                          std::chrono::seconds(60),
+                                        0);
             if (checkpoint_due)
               {
                 write_results(false);
