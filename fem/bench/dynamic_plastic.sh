@@ -4,7 +4,10 @@
 # 52100, Y = 2.03 GPa, nu = 0.3), each run with --verify (three levels,
 # refinement ratio 1.5), side by side with Thornton's closed forms (J. Appl.
 # Mech. 64 (1997) 383; `impact-reduced plastic --model thornton`, the same
-# V_y = 1.56 sqrt(p_y^5 / (E*^4 rho)), p_y = 1.6 Y).
+# V_y = 1.56 sqrt(p_y^5 / (E*^4 rho)), p_y = 1.6 Y) and the restitution fit of
+# Jackson, Green & Marghitu (2010) that the same command prints (e JGM; its
+# constants as read in one implementation, unconfirmed: reduced/include/
+# impact_reduced/jackson_green_marghitu.hpp).
 # The mesh follows the contact radius: contact elements of a_T / PER_RADIUS,
 # a uniform zone of 1.5 a_T and a contact surface of 2.5 a_T, with a_T
 # Thornton's contact radius at the maximum, a_p^2 = (2 F* + F_y)/(2 pi p_y)
@@ -89,11 +92,12 @@ def gci(q, key, absolute=False):
     return (f"{g:.1e}" if absolute else f"{g:.3f} %") + (f" ({p:.2f})" if p else " (-)")
 
 print()
-print("| V/V_y | V [m/s] | h [um] | e FEM | e Thornton | F_max FEM [kN] | Thornton | x_max FEM [um] | Thornton "
+print("| V/V_y | V [m/s] | h [um] | e FEM | e Thornton | e JGM | F_max FEM [kN] | Thornton | x_max FEM [um] | Thornton "
       "| x_p FEM [um] | Thornton | t_c FEM [us] | Thornton | W_p / E_0 | eps_p max | wall 3 levels [s] |")
-print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
+print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
 for ratio, v, h, s, q, t, wall in rows:
     print(f"| {ratio:g} | {v:.4f} | {h * 1e6:.1f} | {s['restitution']:.4f} | {float(t['restitution']):.4f} "
+          f"| {float(t['restitution_jackson_green_marghitu']):.4f} "
           f"| {s['force_max'] / 1e3:.4f} | {float(t['force_max']) / 1e3:.4f} "
           f"| {s['approach_max'] * 1e6:.3f} | {float(t['approach_max']) * 1e6:.3f} "
           f"| {s['permanent_approach'] * 1e6:.3f} | {float(t['residual_approach']) * 1e6:.3f} "

@@ -4,6 +4,7 @@
 
 #include "cli_runner.hpp"
 
+#include "impact_reduced/jackson_green_marghitu.hpp"
 #include "impact_reduced/sphere_flat_fits.hpp"
 #include "impact_reduced/thornton.hpp"
 #include "impact_reduced/yield_velocity.hpp"
@@ -50,6 +51,9 @@ TEST(PlasticCli, ThorntonGivesTheLibrarysImpacts) {
     EXPECT_EQ(impact["force_max"].get<double>(), expected.force_max);
     EXPECT_EQ(impact["approach_max"].get<double>(), expected.approach_max);
     EXPECT_EQ(impact["residual_approach"].get<double>(), expected.residual_approach);
+    // Jackson, Green & Marghitu's fit beside the law, for the same contact and mass.
+    EXPECT_EQ(impact["restitution_jackson_green_marghitu"].get<double>(),
+              jackson_green_marghitu_restitution(velocities[i], {0.01, e_star, 1e9, 0.3}, mass));
   }
   EXPECT_EQ(json["impacts"][0]["restitution"].get<double>(), 1.0);  // below V_y
 }
@@ -68,7 +72,8 @@ TEST(PlasticCli, JacksonGreenTwoMaterialsAsCsv) {
   std::string line;
   std::getline(lines, line);
   EXPECT_EQ(line, "velocity,velocity_ratio,restitution,contact_time,compression_time,"
-                  "force_max,approach_max,residual_approach,dissipated_energy");
+                  "force_max,approach_max,residual_approach,dissipated_energy,"
+                  "restitution_jackson_green_marghitu");
   const double e_star = contact_modulus(2.1e11, 0.3, 7e10, 0.33);
   const JacksonGreenContact contact({0.01, e_star, 1e9, 0.3});
   for (const double velocity : {0.1, 1.0, 5.0}) {
@@ -77,10 +82,14 @@ TEST(PlasticCli, JacksonGreenTwoMaterialsAsCsv) {
     std::stringstream fields(line);
     std::string field;
     while (std::getline(fields, field, ',')) values.push_back(std::stod(field));
-    ASSERT_EQ(values.size(), 9u);
+    ASSERT_EQ(values.size(), 10u);
     const auto expected = elastic_plastic_impact(0.05, velocity, contact);
     EXPECT_EQ(values[2], expected.restitution);
     EXPECT_EQ(values[7], expected.residual_approach);
+    // CSV carries 17 significant digits.
+    EXPECT_NEAR(values[9],
+                jackson_green_marghitu_restitution(velocity, {0.01, e_star, 1e9, 0.3}, 0.05),
+                1e-15);
   }
 }
 

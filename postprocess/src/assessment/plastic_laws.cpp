@@ -1,15 +1,17 @@
 // The elastic-plastic laws against an elastic-plastic FEM campaign (report.hpp, PlasticLaws):
 // Thornton (1997) and Jackson–Green (2005) from the scenario's material with nothing fitted,
 // and their campaign fits when the calibration holds them; their restitution and permanent
-// approach over the tested range and at the runs, and their loops at the runs. The
-// restitution formula of Jackson, Green & Marghitu (2010) is not among them: it could not be
-// read (README, "Elastic-plastic impact laws").
+// approach over the tested range and at the runs, and their loops at the runs; and the
+// restitution fit of Jackson, Green & Marghitu (2010) from the material (e only; its constants
+// as read in one implementation, unconfirmed: README, "Elastic-plastic impact laws").
 
 #include "report/report_parts.hpp"
 #include "impact_postprocess/models/jackson_green_model.hpp"
 #include "impact_postprocess/models/model_keys.hpp"
 #include "impact_postprocess/models/plastic_models.hpp"
 
+#include <impact_reduced/invalid_input.hpp>
+#include <impact_reduced/jackson_green_marghitu.hpp>
 #include <impact_reduced/yield_velocity.hpp>
 
 #include <algorithm>
@@ -74,6 +76,37 @@ PlasticLawCurve curve_of(std::string key, std::string label, bool fitted, std::s
     curve.run_permanent_approach.push_back(x_p);
     curve.loops.push_back(std::move(loop));
   }
+  return curve;
+}
+
+// Jackson, Green & Marghitu's restitution fit for the scenario's contact, over the grid and
+// at the runs (NaN where the fit gives e <= 0, far above its range). No force history: the
+// permanent approach and the loops stay empty.
+PlasticLawCurve jackson_green_marghitu_curve(const reduced::SphereFlatContact& contact,
+                                             const std::vector<double>& grid, double mass,
+                                             const std::vector<ReportRun>& runs) {
+  const auto restitution = [&](double velocity, double m) {
+    try {
+      return reduced::jackson_green_marghitu_restitution(velocity, contact, m);
+    } catch (const reduced::InvalidInput&) {
+      return nan;
+    }
+  };
+  PlasticLawCurve curve{std::string(model_keys::jackson_green_marghitu_material),
+                        "Jackson–Green–Marghitu (e only, no fit)", false,
+                        "V_c = " + short_number(reduced::jackson_green_marghitu_critical_velocity(
+                                       contact, mass)) +
+                            " m/s, eps_y = C(nu) Y / E* = " +
+                            short_number(reduced::jackson_green_yield_coefficient(
+                                             contact.poisson_ratio) *
+                                         contact.yield_strength / contact.contact_modulus) +
+                            "; constants as read in one implementation, unconfirmed",
+                        {}, {}, {}, {}, {}, {}};
+  for (double v : grid) {
+    curve.velocity.push_back(v);
+    curve.restitution.push_back(restitution(v, mass));
+  }
+  for (const auto& run : runs) curve.run_restitution.push_back(restitution(run.velocity, run.mass));
   return curve;
 }
 
@@ -145,6 +178,10 @@ std::optional<PlasticLaws> plastic_laws(const std::vector<FemRun>& fem_runs,
                                  "c = " + cell(jackson_green->stiffness) + " N/m^1.5, Y = " + y,
                                  jackson_green->model, jackson_green->stiffness,
                                  jackson_green->yield_strength, grid, mass, runs));
+  laws.laws.push_back(jackson_green_marghitu_curve(
+      {scenario->radius, *scenario->contact_modulus, *scenario->yield_strength,
+       scenario->poisson_ratio},
+      grid, mass, runs));
   if (calibration)
     for (const auto& [key, label] :
          {std::pair{model_keys::thornton, "Thornton (fitted)"},

@@ -30,6 +30,7 @@ json line(const std::string& label, json x, json y, const std::string& color,
 }
 
 std::string color_of(const PlasticLawCurve& law) {
+  if (law.key == model_keys::jackson_green_marghitu_material) return "tab:purple";
   const bool thornton = law.key == model_keys::thornton || law.key == model_keys::thornton_material;
   return thornton ? "tab:blue" : "tab:green";
 }
@@ -94,8 +95,10 @@ json permanent_approach_figure(const Report& report, const PlasticLaws& laws) {
                 {"ylabel", "permanent approach x_p [µm]"},
                 {"series", json::array()}};
   for (const auto& law : laws.laws)
-    panel["series"].push_back(line(law.label, numbers(law.velocity), numbers(law.permanent_approach, 1e6),
-                                   color_of(law), style_of(law)));
+    if (!law.permanent_approach.empty())  // not the restitution fit
+      panel["series"].push_back(line(law.label, numbers(law.velocity),
+                                     numbers(law.permanent_approach, 1e6), color_of(law),
+                                     style_of(law)));
   std::vector<double> v;
   for (const auto& run : report.runs) v.push_back(run.velocity);
   panel["series"].push_back(line("FEM (approach at separation)", numbers(v),
@@ -127,7 +130,7 @@ json loops_figure(const Report& report, const PlasticLaws& laws) {
       }
     panel["series"].push_back(line("FEM", numbers(approach, 1e6), numbers(force, 1e-3), "black", "-"));
     for (const auto& law : laws.laws)
-      if (!law.loops[i].approach.empty())
+      if (i < law.loops.size() && !law.loops[i].approach.empty())  // none of the e fit
         panel["series"].push_back(line(law.label, numbers(law.loops[i].approach, 1e6),
                                        numbers(law.loops[i].force, 1e-3), color_of(law),
                                        style_of(law)));
@@ -147,7 +150,9 @@ std::vector<ReportFigure> plastic_figures(const Report& report) {
       {FigureId::plastic_restitution, "", "plastic_restitution.png",
        "Restitution against V/V_y in log-log: the FEM (error bars: the grid convergence index of "
        "its verification, where the run was verified), Thornton (1997) and Jackson–Green (2005) "
-       "from the material (solid) and fitted (dashed), and the plastic family's slope -1/4.",
+       "from the material (solid) and fitted (dashed), Jackson–Green–Marghitu's (2010) "
+       "restitution fit from the material (constants unconfirmed), and the plastic family's "
+       "slope -1/4.",
        restitution_figure(report, laws)},
       {FigureId::permanent_approach, "", "permanent_approach.png",
        "Permanent approach against V: the FEM's approach at separation (dent plus the sphere's "
@@ -173,8 +178,13 @@ void plastic_section(Document& doc, const Report& report,
                 short_number(laws.yield_velocity) + " m/s with Johnson's p_y = 1.6 Y and " +
                 short_number(laws.jackson_green_yield_velocity) +
                 " m/s with Jackson–Green's p_y = C(nu) Y (" + laws.yield_basis +
-                "). The restitution formula of Jackson, Green & Marghitu (Nonlinear Dyn. "
-                "60:217, 2010) is not shown: it could not be read here.");
+                "). Beside them, the restitution that Jackson, Green & Marghitu fitted to "
+                "their finite-element impacts of an elastic–perfectly-plastic sphere on a rigid "
+                "flat (Nonlinear Dyn. 60:217, 2010): e = 1 - 0.0361 eps_y^-0.114 ln(V/V_c) "
+                "(V/V_c - 1)^(9.5 eps_y), V_c the critical velocity of p_y = C(nu) Y, "
+                "eps_y = C(nu) Y / E*. The paper could not be read here; the formula was read "
+                "in one public implementation, and its constants and the definition of eps_y "
+                "could not be confirmed. It gives e only (no force, no dent).");
   std::vector<std::string> items;
   for (const auto& law : laws.laws)
     items.push_back(law.label + ": " + law.parameters +
@@ -186,7 +196,7 @@ void plastic_section(Document& doc, const Report& report,
   Table table{{"V [m/s]", "V/V_y", "FEM e", "FEM x_p [µm]"}, {}};
   for (const auto& law : laws.laws) {
     table.header.push_back(law.label + " e");
-    table.header.push_back(law.label + " x_p [µm]");
+    if (!law.run_permanent_approach.empty()) table.header.push_back(law.label + " x_p [µm]");
   }
   for (std::size_t i = 0; i < report.runs.size(); ++i) {
     const ReportRun& run = report.runs[i];
@@ -197,7 +207,8 @@ void plastic_section(Document& doc, const Report& report,
                                      : "not recorded"};
     for (const auto& law : laws.laws) {
       row.push_back(cell(law.run_restitution[i]));
-      row.push_back(cell(law.run_permanent_approach[i] * 1e6));
+      if (!law.run_permanent_approach.empty())
+        row.push_back(cell(law.run_permanent_approach[i] * 1e6));
     }
     table.rows.push_back(row);
   }

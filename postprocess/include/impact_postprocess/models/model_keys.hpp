@@ -32,6 +32,10 @@ inline constexpr std::string_view kuwabara_kono_material = "kuwabara-kono-materi
 inline constexpr std::string_view thornton_material = "thornton-material";
 /// Jackson–Green's elastic-plastic law with E*, Y, nu from the material (jackson_green_model.hpp).
 inline constexpr std::string_view jackson_green_material = "jackson-green-material";
+/// Jackson, Green & Marghitu's (2010) restitution fit from the material: e only, no force
+/// history (impact_reduced/jackson_green_marghitu.hpp); drawn in the report's elastic-plastic
+/// section, not ranked (the ranking judges t_c, F_max and x_max as well).
+inline constexpr std::string_view jackson_green_marghitu_material = "jackson-green-marghitu-material";
 
 // ---- Elastic-plastic comparison models, fitted (plastic_models.hpp) -----------------------
 /// Thornton (1997), c and the yield approach x_y free.

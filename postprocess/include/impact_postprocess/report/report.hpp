@@ -139,9 +139,9 @@ struct PlasticLawCurve {
   std::string parameters;  ///< the values used, as text with units
   std::vector<double> velocity;           ///< m/s, the curve's grid
   std::vector<double> restitution;        ///< e on the grid
-  std::vector<double> permanent_approach; ///< x_p [m] on the grid
+  std::vector<double> permanent_approach; ///< x_p [m] on the grid (empty: a restitution fit)
   std::vector<double> run_restitution;    ///< e at each report run (NaN where it failed)
-  std::vector<double> run_permanent_approach; ///< x_p [m] at each report run
+  std::vector<double> run_permanent_approach; ///< x_p [m] at each report run (likewise)
   std::vector<ImpactHistory> loops;       ///< per report run (empty where it failed)
 };
 
@@ -150,7 +150,9 @@ struct PlasticLaws {
   double yield_velocity;              ///< V_y [m/s], Johnson's p_y = 1.6 Y (Thornton's)
   double jackson_green_yield_velocity; ///< V_y [m/s] with p_y = C(nu) Y
   std::string yield_basis;            ///< the constants, in words
-  std::vector<PlasticLawCurve> laws;  ///< no-fit Thornton and Jackson–Green, then the fits
+  /// No-fit Thornton and Jackson–Green, Jackson–Green–Marghitu's restitution fit (e only,
+  /// no loops), then the campaign fits.
+  std::vector<PlasticLawCurve> laws;
   std::vector<double> fem_permanent_approach; ///< m, per report run (NaN: not recorded)
   std::string text;                   ///< the comparison in words
 };
