@@ -54,6 +54,17 @@ json restitution_figure(const Report& report, const PlasticLaws& laws) {
     for (double e : law.restitution)
       if (std::isfinite(e)) lowest = std::min(lowest, e);
   }
+  // The calibrated Hunt–Crossley law (constant b), the viscoelastic law the study calibrates,
+  // over the same range: how it bends against the plastic laws.
+  if (const ReportModel* calibrated = report.model(model_keys::calibrated))
+    if (calibrated->curve) {
+      std::vector<double> ratio;
+      for (double v : calibrated->curve->velocity) ratio.push_back(v / v_y);
+      const auto& e = calibrated->curve->center[std::size_t(Quantity::restitution)];
+      panel["series"].push_back(line(calibrated->label, numbers(ratio), numbers(e), "tab:red", "-"));
+      for (double value : e)
+        if (std::isfinite(value)) lowest = std::min(lowest, value);
+    }
   // Thornton's far-field limit e -> 1.185 (V/V_y)^(-1/4) (reduced/thornton.hpp): the slope of
   // the plastic family.
   const double high = laws.laws.front().velocity.back() / v_y;
@@ -151,8 +162,8 @@ std::vector<ReportFigure> plastic_figures(const Report& report) {
        "Restitution against V/V_y in log-log: the FEM (error bars: the grid convergence index of "
        "its verification, where the run was verified), Thornton (1997) and Jackson–Green (2005) "
        "from the material (solid) and fitted (dashed), Jackson–Green–Marghitu's (2010) "
-       "restitution fit from the material (constants unconfirmed), and the plastic family's "
-       "slope -1/4.",
+       "restitution fit from the material (constants unconfirmed), the calibrated Hunt–Crossley "
+       "law (red) and the plastic family's slope -1/4.",
        restitution_figure(report, laws)},
       {FigureId::permanent_approach, "", "permanent_approach.png",
        "Permanent approach against V: the FEM's approach at separation (dent plus the sphere's "
