@@ -55,7 +55,13 @@ std::pair<double, double> error_range(const Report& report, const ReportModel& m
 // Line 1: the model ranked first, where it holds.
 std::string recommendation_line(const Report& report, const RankedModel& best) {
   const ReportModel* shown = shown_model(report, best.key);
-  std::string text = "Use " + (shown ? shown->label + " (" + best.key + ")" : best.key) +
+  // The no-fit plastic laws are ranked but not among the judged models: their label is the
+  // one of the section "Elastic-plastic laws".
+  std::string label = shown ? shown->label : "";
+  if (!shown && report.plastic_laws)
+    for (const auto& law : report.plastic_laws->laws)
+      if (law.key == best.key) label = law.label;
+  std::string text = "Use " + (label.empty() ? best.key : label + " (" + best.key + ")") +
                      ": ranked first by " +
                      (best.out_of_sample ? "out-of-sample" : "in-sample") + " error (RMS " +
                      unsigned_percent(best.score) + " over 1 - e^2, t_c, F_max and x_max, " +
