@@ -13,6 +13,7 @@
 #include "impact_postprocess/calibration/calibration.hpp"
 #include "impact_postprocess/calibration/calibration_json.hpp"
 #include "impact_postprocess/models/family_ranges.hpp"
+#include "impact_postprocess/models/model_keys.hpp"
 #include "impact_postprocess/models/plastic_models.hpp"
 #include "impact_postprocess/report/report.hpp"
 
@@ -147,6 +148,31 @@ TEST(PlasticReport, AnElasticPlasticFemIsValidAboveYieldAndFollowsThePlasticFami
   EXPECT_GT(report.family_ranges[1].slope, -0.25);
   EXPECT_TRUE(contains(report.summary, "the plastic family")) << report.summary;
   std::printf("%s\n", report.family_text.c_str());
+
+  // The campaign made by Thornton's law: its fit (the best comparison law) is valid
+  // everywhere, within the tightest tolerance at every velocity, out of sample.
+  const ReportModel* best = report.model(model_keys::best_law);
+  ASSERT_NE(best, nullptr);
+  EXPECT_EQ(best->calibration_key, "thornton");
+  const ModelVerdict* verdict = report.verdict(best->key);
+  ASSERT_NE(verdict, nullptr);
+  EXPECT_TRUE(verdict->out_of_sample);
+  ASSERT_FALSE(verdict->tolerances.empty());
+  for (const auto& band : verdict->tolerances)
+    for (std::size_t i = 0; i < band.decisions.size(); ++i)
+      EXPECT_EQ(band.decisions[i], Decision::within)
+          << "tolerance " << band.tolerance << ", V = " << report.runs[i].velocity << ": "
+          << band.text;
+  // Jackson–Green–Marghitu's restitution fit is drawn beside the laws: e only, no loops.
+  const auto jgm = std::find_if(laws.laws.begin(), laws.laws.end(), [](const PlasticLawCurve& law) {
+    return law.key == model_keys::jackson_green_marghitu_material;
+  });
+  ASSERT_NE(jgm, laws.laws.end());
+  EXPECT_FALSE(jgm->fitted);
+  EXPECT_EQ(jgm->run_restitution.size(), report.runs.size());
+  EXPECT_TRUE(jgm->loops.empty() && jgm->permanent_approach.empty());
+  EXPECT_EQ(jgm->run_restitution.front(), 1.0);  // below V_y (and V_c)
+  EXPECT_LT(jgm->run_restitution.back(), 1.0);
 
   // The effective alpha against the measured range.
   EXPECT_TRUE(contains(report.alpha_text, "0.08–0.32 s/m")) << report.alpha_text;

@@ -302,3 +302,21 @@ TEST(VerdictOnSyntheticCampaigns, StepToStepOscillationIsFlagged) {
 }
 
 } // namespace
+
+namespace {
+
+// Two elastic impacts: the losses at round-off (a restitution read from an integrated history
+// is 1 - 1.2e-11) and exactly 0 agree; a real loss is still judged relatively.
+TEST(VerdictOnSyntheticCampaigns, TwoElasticImpactsAgreeInTheirLoss) {
+  using namespace impact::postprocess;
+  ImpactFigures model{}, reference{};
+  model.restitution = 1;
+  reference.restitution = 0.99999999998768185;
+  for (Quantity loss : {Quantity::energy_loss, Quantity::restitution_deficit})
+    EXPECT_EQ(relative_error(model, reference, loss), 0.0) << quantity_key(loss);
+  reference.restitution = 0.999;  // 1 - e^2 = 2.0e-3: the model's 0 is -100 % off
+  EXPECT_DOUBLE_EQ(relative_error(model, reference, Quantity::energy_loss), -1.0);
+  EXPECT_DOUBLE_EQ(relative_error(model, reference, Quantity::restitution_deficit), -1.0);
+}
+
+} // namespace

@@ -47,7 +47,11 @@ double relative_error(double model, double reference) {
 
 double relative_error(const ImpactFigures& model, const ImpactFigures& reference,
                       Quantity quantity) {
-  return relative_error(value(model, quantity), value(reference, quantity));
+  const double m = value(model, quantity), r = value(reference, quantity);
+  const bool loss = quantity == Quantity::energy_loss || quantity == Quantity::restitution_deficit;
+  if (loss && std::abs(m) < elastic_loss_resolution && std::abs(r) < elastic_loss_resolution)
+    return 0;  // both elastic
+  return relative_error(m, r);
 }
 
 } // namespace impact::postprocess

@@ -65,6 +65,15 @@ const char* quantity_words(Quantity quantity);
 /// (model - reference) / |reference|: the one relative error of the project's comparisons.
 /// NaN when either value is not finite or the reference is 0.
 double relative_error(double model, double reference);
+
+/// The losses 1 - e^2 and 1 - e below which an impact counts as elastic: a restitution read
+/// from velocities (or an integrated history) carries round-off of about 1e-12, so two losses
+/// under 1e-9 are both "none" and their ratio is noise (a synthetic elastic run at 1 - e^2 =
+/// 2.5e-11 against a model's exact 0 would be a -100 % error).
+inline constexpr double elastic_loss_resolution = 1e-9;
+
+/// relative_error of a quantity; 0 for the losses 1 - e^2 and 1 - e when the model's and the
+/// reference's are both below elastic_loss_resolution (both elastic).
 double relative_error(const ImpactFigures& model, const ImpactFigures& reference,
                       Quantity quantity);
 
