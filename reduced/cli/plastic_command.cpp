@@ -107,6 +107,7 @@ int run_plastic_command(CommandLine& command_line, std::ostream& out) {
   const YieldCriterion criterion = criterion_name == "johnson" ? YieldCriterion::johnson
                                                                : YieldCriterion::jackson_green;
   const double p_y = yield_pressure(criterion, yield_strength, poisson_ratio);
+  const SphereFlatContact sphere_flat{radius, e_star, yield_strength, poisson_ratio};
   const double v_y = yield_velocity(p_y, e_star, radius, mass);
 
   std::unique_ptr<ElasticPlasticContact> contact;
@@ -114,7 +115,7 @@ int run_plastic_command(CommandLine& command_line, std::ostream& out) {
     contact = std::make_unique<ThorntonContact>(radius, e_star, p_y);
   else
     contact = std::make_unique<JacksonGreenContact>(
-        SphereFlatContact{radius, e_star, yield_strength, poisson_ratio},
+        sphere_flat,
         unloading_rule == "brake" ? JacksonGreenUnloading::brake
                                   : JacksonGreenUnloading::contact_radius);
 
@@ -131,7 +132,6 @@ int run_plastic_command(CommandLine& command_line, std::ostream& out) {
       "velocity",        "velocity_ratio",   "restitution",      "contact_time",
       "compression_time", "force_max",       "approach_max",     "residual_approach",
       "dissipated_energy", "restitution_jackson_green_marghitu"};
-  const SphereFlatContact sphere_flat{radius, e_star, yield_strength, poisson_ratio};
   std::vector<std::vector<double>> rows;
   for (const double velocity : velocities) {
     const ElasticPlasticImpactResponse r =

@@ -24,6 +24,13 @@ double jackson_green_marghitu_restitution(double velocity_ratio, double yield_st
   return e;
 }
 
+double jackson_green_marghitu_yield_strain(const SphereFlatContact& contact) {
+  require_positive("contact_modulus", contact.contact_modulus);
+  require_positive("yield_strength", contact.yield_strength);
+  return jackson_green_yield_coefficient(contact.poisson_ratio) * contact.yield_strength /
+         contact.contact_modulus;
+}
+
 double jackson_green_marghitu_critical_velocity(const SphereFlatContact& contact, double mass) {
   const double p_c = yield_pressure(YieldCriterion::jackson_green, contact.yield_strength,
                                     contact.poisson_ratio);
@@ -34,10 +41,8 @@ double jackson_green_marghitu_restitution(double velocity, const SphereFlatConta
                                           double mass) {
   require_non_negative("velocity", velocity);
   const double v_c = jackson_green_marghitu_critical_velocity(contact, mass);
-  const double eps_y =
-      jackson_green_yield_coefficient(contact.poisson_ratio) * contact.yield_strength /
-      contact.contact_modulus;
-  return jackson_green_marghitu_restitution(velocity / v_c, eps_y);
+  return jackson_green_marghitu_restitution(velocity / v_c,
+                                            jackson_green_marghitu_yield_strain(contact));
 }
 
 } // namespace impact::reduced

@@ -46,6 +46,7 @@ TEST(JacksonGreenMarghitu, TheStudysBallOnARigidFlat) {
   const double mass = 4.0 / 3.0 * pi * std::pow(0.01452, 3) * 7810;
   const double v_c = jackson_green_marghitu_critical_velocity(contact, mass);
   EXPECT_NEAR(v_c, 0.22496351852169464451, 1e-15);
+  EXPECT_NEAR(jackson_green_marghitu_yield_strain(contact), 0.014916585596523549494, 1e-17);
   EXPECT_NEAR(v_c, yield_velocity(yield_pressure(YieldCriterion::jackson_green, 2.03e9, 0.3),
                                   contact.contact_modulus, contact.radius, mass),
               1e-16);

@@ -97,9 +97,7 @@ PlasticLawCurve jackson_green_marghitu_curve(const reduced::SphereFlatContact& c
                         "V_c = " + short_number(reduced::jackson_green_marghitu_critical_velocity(
                                        contact, mass)) +
                             " m/s, eps_y = C(nu) Y / E* = " +
-                            short_number(reduced::jackson_green_yield_coefficient(
-                                             contact.poisson_ratio) *
-                                         contact.yield_strength / contact.contact_modulus) +
+                            short_number(reduced::jackson_green_marghitu_yield_strain(contact)) +
                             "; constants as read in one implementation, unconfirmed",
                         {}, {}, {}, {}, {}, {}};
   for (double v : grid) {

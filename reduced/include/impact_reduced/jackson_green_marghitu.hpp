@@ -36,12 +36,15 @@ namespace impact::reduced {
 /// "yield_strain".
 double jackson_green_marghitu_restitution(double velocity_ratio, double yield_strain);
 
+/// The yield strain eps_y = C(nu) Y / E* [-] of the contact (the reading's definition, above).
+double jackson_green_marghitu_yield_strain(const SphereFlatContact& contact);
+
 /// The critical velocity V_c [m/s] of the contact (R, E*, Y, nu) for the effective mass m > 0
 /// [kg]: yield_velocity(C(nu) Y, E*, R, m).
 double jackson_green_marghitu_critical_velocity(const SphereFlatContact& contact, double mass);
 
 /// e [-] of the impact at V >= 0 [m/s] of the effective mass m > 0 [kg] on the contact:
-/// jackson_green_marghitu_restitution(V / V_c, C(nu) Y / E*).
+/// jackson_green_marghitu_restitution(V / V_c, jackson_green_marghitu_yield_strain(contact)).
 double jackson_green_marghitu_restitution(double velocity, const SphereFlatContact& contact,
                                           double mass);
 
