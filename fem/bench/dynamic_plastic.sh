@@ -1,24 +1,32 @@
 #!/usr/bin/env bash
-# Dynamic elastic-perfectly-plastic impact on the rigid flat at V / V_y = 1 to
-# 50 (fem/scenarios/plastic_on_rigid.prm: the study's ball, hardened AISI
+# Dynamic elastic-perfectly-plastic impact on the rigid flat at V / V_y = 1
+# to 50 (fem/scenarios/plastic_on_rigid.prm: the study's ball, hardened AISI
 # 52100, Y = 2.03 GPa, nu = 0.3), each run with --verify (three levels,
-# refinement ratio 1.5), side by side with Thornton's closed forms (J. Appl.
-# Mech. 64 (1997) 383; `impact-reduced plastic --model thornton`, the same
-# V_y = 1.56 sqrt(p_y^5 / (E*^4 rho)), p_y = 1.6 Y) and the restitution fit of
-# Jackson, Green & Marghitu (2010) that the same command prints (e JGM; its
-# constants as read in one implementation, unconfirmed: reduced/include/
-# impact_reduced/jackson_green_marghitu.hpp).
+# refinement ratio 1.5, or 2 with MESHES=nested), side by side with
+# Thornton's closed forms (J. Appl. Mech. 64 (1997) 383; `impact-reduced
+# plastic --model thornton`, the same V_y = 1.56 sqrt(p_y^5 / (E*^4 rho)),
+# p_y = 1.6 Y) and the restitution fit of Jackson, Green & Marghitu (2010)
+# that the same command prints (e JGM; its constants as read in one
+# implementation, unconfirmed: reduced/include/impact_reduced/
+# jackson_green_marghitu.hpp).
 # The mesh follows the contact radius: contact elements of a_T / PER_RADIUS,
-# a uniform zone of 1.5 a_T and a contact surface of 2.5 a_T, with a_T
-# Thornton's contact radius at the maximum, a_p^2 = (2 F* + F_y)/(2 pi p_y)
-# (the Hertz radius sqrt(R x_y) at V = V_y), so that every velocity is resolved alike.
+# a uniform zone of UNIFORM_ZONE a_T and a contact surface of SURFACE a_T,
+# with a_T Thornton's contact radius at the maximum, a_p^2 = (2 F* + F_y) /
+# (2 pi p_y) (the Hertz radius sqrt(R x_y) at V = V_y), so that every
+# velocity is resolved alike.
 # Prints the table of fem/README.md ("Dynamic elastic-plastic impact") and
 # writes loops.csv files (force-approach loops of the FEM's fine level and
 # of Thornton's law) for fem/bench/dynamic_plastic_loops.py.
 #
 # Usage: fem/bench/dynamic_plastic.sh [BUILD_DIR] [OUTPUT_DIR]
 #   environment: RATIOS (default "1 2 5 10 20 50"), PER_RADIUS (default 20),
-#                STEPS (steps per contact time, default 150)
+#                UNIFORM_ZONE (default 1.5; the plastic zone of 50 V_y reaches
+#                2.1 a_T deep on the axis),
+#                SURFACE (default 2.5),
+#                STEPS (steps per contact time, default 150),
+#                MESHES (remeshed, the default, or nested: gmsh meshes
+#                elements of 4 a_T / PER_RADIUS, refined twice within the
+#                contact surface on the fine level, once on the medium)
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 build="${1:-build}"
@@ -30,9 +38,11 @@ for b in "$fem" "$reduced"; do
 done
 mkdir -p "$output"
 exec /usr/bin/python3 - "$fem" "$reduced" "$here/../scenarios/plastic_on_rigid.prm" "$output" \
-  "${RATIOS:-1 2 5 10 20 50}" "${PER_RADIUS:-20}" "${STEPS:-150}" <<'PY'
+  "${RATIOS:-1 2 5 10 20 50}" "${PER_RADIUS:-20}" "${STEPS:-150}" "${UNIFORM_ZONE:-1.5}" \
+  "${SURFACE:-2.5}" "${MESHES:-remeshed}" <<'PY'
 import csv, io, json, math, os, subprocess, sys
-fem, reduced, scenario, out, ratios, per_radius, steps = sys.argv[1:8]
+fem, reduced, scenario, out, ratios, per_radius, steps, zone, surface, meshes = sys.argv[1:11]
+assert meshes in ("remeshed", "nested"), f"MESHES must be remeshed or nested, got {meshes}"
 ratios = [float(r) for r in ratios.split()]
 per_radius = float(per_radius)
 # The scenario's constants (fem/scenarios/plastic_on_rigid.prm).
@@ -62,9 +72,12 @@ for ratio in ratios:
         with open(directory + ".log", "w") as log:
             subprocess.run([fem, scenario, "--verify",
                             "--set", f"Scenario/Impact velocity={v!r}",
-                            "--set", f"Mesh/Contact element size={h!r}",
-                            "--set", f"Mesh/Uniform zone radius={1.5 * a_T!r}",
-                            "--set", f"Mesh/Contact surface radius={2.5 * a_T!r}",
+                            "--set", f"Mesh/Contact element size={h * (4 if meshes == 'nested' else 1)!r}",
+                            "--set", f"Mesh/Contact refinements={2 if meshes == 'nested' else 0}",
+                            "--set", f"Verification/Meshes={meshes}",
+                            "--set", f"Verification/Refinement ratio={2 if meshes == 'nested' else 1.5}",
+                            "--set", f"Mesh/Uniform zone radius={float(zone) * a_T!r}",
+                            "--set", f"Mesh/Contact surface radius={float(surface) * a_T!r}",
                             "--set", f"Time integration/Steps per contact time={steps}",
                             "--set", f"Output/Directory={directory}"],
                            check=True, stdout=log, stderr=subprocess.STDOUT)

@@ -10,11 +10,14 @@ difference for a non-monotone sequence). A campaign with --verify links
 each run's verification.json from index.json, and a restart skips the
 verified runs; a complete campaign verified later keeps its runs. Bad input
 (refinement ratio below 1.5, a coarsest level with fewer than 10 steps per
-contact time) stops with a message naming the entry and writes no
-verification.json.
+contact time, nested meshes with a ratio other than 2 or fewer than two
+contact refinements) stops with a message naming the entry and writes no
+verification.json. Nested levels (Verification/Meshes = nested) drop one
+contact refinement each.
 """
 import math
 import os
+import re
 import shutil
 import subprocess
 from fem_test_lib import *
@@ -126,11 +129,43 @@ checks.check(later.returncode == 0 and "complete, verifying" in later.stdout and
              os.path.exists(f"{plain}/v1/verification.json") and summary(f"{plain}/v1")["wall_time"] == wall,
              "a complete run is verified later and kept")
 
+# Nested levels: one contact refinement fewer per level, ratio 2, the
+# contact element size doubling and the mesh beyond the contact surface the
+# same (the fine level's cells outnumber the medium's by less than 4).
+nested = f"{work}/verification_nested"
+NESTED = dict(SMALL, **{"Mesh/Contact element size": 200e-6, "Mesh/Contact refinements": 2,
+                        "Verification/Refinement ratio": 2, "Verification/Meshes": "nested"})
+result = verify(nested, NESTED)
+print(result.stdout[-1200:])
+checks.check(result.returncode == 0, "--verify with nested meshes runs")
+with open(f"{nested}/verification.json") as f:
+    v = json.load(f)
+levels = v["levels"]
+sizes = [level["contact_element_size"] for level in levels]
+steps = [level["time_step"] for level in levels]
+cells = [level["cells"] for level in levels]
+checks.check(v["meshes"] == "nested" and v["refinement_ratio"] == 2 and sizes == [50e-6, 100e-6, 200e-6]
+             and all(abs(steps[i + 1] / steps[i] - 2) < 1e-9 for i in range(2)),
+             f"nested levels: contact element sizes {sizes}, time steps {steps}")
+checks.check(cells[0] > cells[1] > cells[2] and cells[0] < 4 * cells[1],
+             f"only the contact zone is refined: {cells} cells")
+meshes = []
+for level in ("", "/verification/level1", "/verification/level2"):
+    with open(f"{nested}{level}/mesh.msh", "rb") as f:
+        meshes.append(f.read())
+checks.check(meshes[0] == meshes[1] == meshes[2], "the three levels refine the same gmsh mesh")
+checks.check(all(f"verification: level {level} (contact refinements {2 - level}," in result.stdout
+                 for level in (0, 1, 2)), "the levels have 2, 1 and 0 contact refinements")
+
 # Bad input.
-for entry, value, words in (("Verification/Refinement ratio", 1.2, "Refinement ratio"),
-                            ("Time integration/Steps per contact time", 20, "Steps per contact time")):
+NESTED_2 = dict(SMALL, **{"Verification/Meshes": "nested", "Verification/Refinement ratio": 2})
+for base, entry, value, words in ((SMALL, "Verification/Refinement ratio", 1.2, "Refinement ratio"),
+                                  (SMALL, "Time integration/Steps per contact time", 20,
+                                   "Steps per contact time"),
+                                  (SMALL, "Verification/Meshes", "nested", "Refinement ratio must be 2"),
+                                  (NESTED_2, "Mesh/Contact refinements", 1, "Contact refinements >= 2")):
     directory = f"{work}/verification_bad"
-    result = verify(directory, dict(SMALL, **{entry: value}))
+    result = verify(directory, dict(base, **{entry: value}))
     message = result.stderr.strip().splitlines()[-1] if result.stderr.strip() else ""
     print(f"{entry} = {value}: exit {result.returncode}: {message}")
     checks.check(result.returncode != 0 and words in result.stderr and

@@ -87,6 +87,19 @@ namespace impact_fem
                         "Ratio r of the element sizes and time steps of "
                         "neighbouring levels [-], in [1.5, 3] (Roache: at "
                         "least 1.3; 1.5 here).");
+      prm.declare_entry("Meshes",
+                        "remeshed",
+                        Patterns::Selection("remeshed|nested"),
+                        "How the coarser levels are meshed: 'remeshed' "
+                        "(gmsh meshes each level anew with its sizes times "
+                        "r: the meshes are not nested, so where the nodes "
+                        "fall against the contact radius changes from level "
+                        "to level) or 'nested' (each coarser level has one "
+                        "Mesh/Contact refinement fewer: the levels are "
+                        "nested within the contact surface radius; needs "
+                        "Refinement ratio = 2 and Mesh/Contact refinements "
+                        ">= 2; the mesh beyond the contact surface radius is "
+                        "the same on all levels).");
       prm.leave_subsection();
     }
 
@@ -112,6 +125,22 @@ namespace impact_fem
       AssertThrow(r >= 1.5 && r <= 3,
                   ExcMessage("Verification/Refinement ratio must lie in [1.5, "
                              "3], got " + std::to_string(r) + "."));
+      prm.enter_subsection("Verification");
+      const bool nested = prm.get("Meshes") == "nested";
+      prm.leave_subsection();
+      prm.enter_subsection("Mesh");
+      const int refinements = prm.get_integer("Contact refinements");
+      prm.leave_subsection();
+      AssertThrow(!nested || r == 2,
+                  ExcMessage("Verification/Refinement ratio must be 2 with "
+                             "Verification/Meshes = nested (each coarser "
+                             "level has one contact refinement fewer), got " +
+                             std::to_string(r) + "."));
+      AssertThrow(!nested || refinements >= 2,
+                  ExcMessage("Verification/Meshes = nested needs Mesh/Contact "
+                             "refinements >= 2 on the fine level (the coarsest "
+                             "has two fewer), got " +
+                             std::to_string(refinements) + "."));
       prm.enter_subsection("Output");
       const std::string directory = prm.get("Directory");
       prm.leave_subsection();
@@ -135,6 +164,7 @@ namespace impact_fem
         {"Mesh", "Maximum element size"},
         {"Mesh", "Growth factor"},
         {"Mesh", "Elements across the plate thickness"},
+        {"Mesh", "Contact refinements"},
         {"Time integration", "Time step"},
         {"Time integration", "Steps per contact time"},
         {"Output", "Directory"}};
@@ -163,7 +193,14 @@ namespace impact_fem
                          directory + "/verification/level" + std::to_string(level);
           if (!(level == 0 && fine_done))
             {
-              if (level > 0)
+              if (level > 0 && nested)
+                {
+                  prm.enter_subsection("Mesh");
+                  prm.set("Contact refinements",
+                          std::to_string(refinements - static_cast<int>(level)));
+                  prm.leave_subsection();
+                }
+              else if (level > 0)
                 {
                   set_number(prm, "Mesh", "Contact element size", hc * scale);
                   set_number(prm, "Mesh", "Maximum element size", hmax * scale);
@@ -172,6 +209,9 @@ namespace impact_fem
                              "Mesh",
                              "Elements across the plate thickness",
                              std::max(1.0, across / scale));
+                }
+              if (level > 0)
+                {
                   if (dt > 0)
                     set_number(prm, "Time integration", "Time step", dt * scale);
                   else
@@ -181,7 +221,11 @@ namespace impact_fem
                   prm.leave_subsection();
                 }
               if (root)
-                log << "verification: level " << level << " (sizes and step x "
+                log << "verification: level " << level
+                    << (nested ? " (contact refinements " +
+                                   std::to_string(refinements - static_cast<int>(level)) +
+                                   ", step x " :
+                                 std::string(" (sizes and step x "))
                     << scale << ") -> " << level_directory << std::endl;
               std::unique_ptr<ImpactProblem> problem;
               try
@@ -204,9 +248,11 @@ namespace impact_fem
                             {"directory", level == 0 ? "." :
                                                        "verification/level" + std::to_string(level)},
                             {"scale", scale},
-                            {"contact_element_size", hc * scale},
-                            {"maximum_element_size", hmax * scale},
-                            {"growth_factor", 1 + (g - 1) * scale},
+                            {"contact_element_size",
+                             nested ? hc / std::pow(2., refinements - static_cast<int>(level)) :
+                                      hc * scale},
+                            {"maximum_element_size", nested ? hmax : hmax * scale},
+                            {"growth_factor", nested ? g : 1 + (g - 1) * scale},
                             {"time_step", summary["time_step"]},
                             {"cells", summary["cells"]},
                             {"dofs", summary["dofs"]},
@@ -220,6 +266,7 @@ namespace impact_fem
       nlohmann::json result = {{"format", "impact-verification"},
                                {"format_version", 1},
                                {"refinement_ratio", r},
+                               {"meshes", nested ? "nested" : "remeshed"},
                                {"formal_order", formal_order},
                                {"levels", levels}};
       std::ostringstream table;

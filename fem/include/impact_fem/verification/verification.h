@@ -28,7 +28,12 @@ namespace impact_fem
      * coarsened together by the refinement ratio r per level: the mesh size
      * field h(d) = min(hmax, hc + (g - 1) max(0, d - rz)) becomes r h(d)
      * (Contact element size and Maximum element size times r, Growth factor
-     * 1 + (g - 1) r, the uniform zone kept) and the time step r dt. For
+     * 1 + (g - 1) r, the uniform zone kept) and the time step r dt; with
+     * Verification/Meshes = nested (r = 2) each coarser level has one
+     * Mesh/Contact refinement fewer instead, so that the levels are nested
+     * within the contact surface radius (gmsh's meshes of scaled sizes are
+     * not: where the contact nodes fall moves from level to level, which
+     * makes a plastic impact's restitution oscillate). For
      * contact_time, force_max, time_force_max, approach_max and restitution
      * it writes Output/Directory/verification.json (observed order,
      * Richardson extrapolation, GCI: grid_convergence.h) and prints the
