@@ -24,7 +24,13 @@ x_y = R * (math.pi * p_y / (2 * E_star)) ** 2
 F_y = math.pi ** 3 * R ** 2 * p_y ** 3 / (6 * E_star ** 2)
 runs = sorted(glob.glob(os.path.join(sys.argv[1], "ratio*", "loops.csv")),
               key=lambda p: float(os.path.basename(os.path.dirname(p))[5:]))
-fig, axes = plt.subplots(2, (len(runs) + 1) // 2, figsize=(4.2 * ((len(runs) + 1) // 2), 8))
+if not runs:
+    sys.exit(f"dynamic_plastic_loops: no ratio*/loops.csv in {sys.argv[1]}")
+rows = 1 if len(runs) == 1 else 2
+columns = (len(runs) + rows - 1) // rows
+fig, axes = plt.subplots(rows, columns, figsize=(4.2 * columns, 4 * rows), squeeze=False)
+for ax in axes.flat[len(runs):]:
+    ax.remove()  # an odd number of runs leaves one panel empty
 for ax, path in zip(axes.flat, runs):
     data = {"fem": ([], []), "thornton": ([], [])}
     with open(path) as f:
