@@ -26,7 +26,8 @@
 #                STEPS (steps per contact time, default 150),
 #                MESHES (remeshed, the default, or nested: gmsh meshes
 #                elements of 4 a_T / PER_RADIUS, refined twice within the
-#                contact surface on the fine level, once on the medium)
+#                contact surface on the fine level, once on the medium),
+#                RANKS (MPI ranks per run, default 1)
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 build="${1:-build}"
@@ -39,9 +40,11 @@ done
 mkdir -p "$output"
 exec /usr/bin/python3 - "$fem" "$reduced" "$here/../scenarios/plastic_on_rigid.prm" "$output" \
   "${RATIOS:-1 2 5 10 20 50}" "${PER_RADIUS:-20}" "${STEPS:-150}" "${UNIFORM_ZONE:-1.5}" \
-  "${SURFACE:-2.5}" "${MESHES:-remeshed}" <<'PY'
+  "${SURFACE:-2.5}" "${MESHES:-remeshed}" "${RANKS:-1}" <<'PY'
 import csv, io, json, math, os, subprocess, sys
-fem, reduced, scenario, out, ratios, per_radius, steps, zone, surface, meshes = sys.argv[1:11]
+fem, reduced, scenario, out, ratios, per_radius, steps, zone, surface, meshes, ranks = sys.argv[1:12]
+launch = [] if int(ranks) == 1 else \
+    ["mpirun", "--oversubscribe", "-np", ranks] + (["--allow-run-as-root"] if os.getuid() == 0 else [])
 assert meshes in ("remeshed", "nested"), f"MESHES must be remeshed or nested, got {meshes}"
 ratios = [float(r) for r in ratios.split()]
 per_radius = float(per_radius)
@@ -70,7 +73,7 @@ for ratio in ratios:
     directory = os.path.join(out, f"ratio{ratio:g}")
     if not os.path.exists(os.path.join(directory, "verification.json")):
         with open(directory + ".log", "w") as log:
-            subprocess.run([fem, scenario, "--verify",
+            subprocess.run(launch + [fem, scenario, "--verify",
                             "--set", f"Scenario/Impact velocity={v!r}",
                             "--set", f"Mesh/Contact element size={h * (4 if meshes == 'nested' else 1)!r}",
                             "--set", f"Mesh/Contact refinements={2 if meshes == 'nested' else 0}",
