@@ -301,10 +301,6 @@ TEST(VerdictOnSyntheticCampaigns, StepToStepOscillationIsFlagged) {
     EXPECT_EQ(decision, Decision::within) << verdict->tolerances[1].text;
 }
 
-} // namespace
-
-namespace {
-
 // Two elastic impacts: the losses at round-off (a restitution read from an integrated history
 // is 1 - 1.2e-11) and exactly 0 agree; a real loss is still judged relatively.
 TEST(VerdictOnSyntheticCampaigns, TwoElasticImpactsAgreeInTheirLoss) {

@@ -191,27 +191,33 @@ namespace impact_fem
           const std::string level_directory =
             level == 0 ? directory :
                          directory + "/verification/level" + std::to_string(level);
+          // The level's discretisation: nested levels drop contact
+          // refinements of one mesh, remeshed ones scale the size field.
+          const int    level_refinements = refinements - static_cast<int>(level);
+          const double level_hc =
+            nested ? hc / std::pow(2., level_refinements) : hc * scale;
+          const double level_hmax = nested ? hmax : hmax * scale;
+          const double level_g    = nested ? g : 1 + (g - 1) * scale;
           if (!(level == 0 && fine_done))
             {
-              if (level > 0 && nested)
-                {
-                  prm.enter_subsection("Mesh");
-                  prm.set("Contact refinements",
-                          std::to_string(refinements - static_cast<int>(level)));
-                  prm.leave_subsection();
-                }
-              else if (level > 0)
-                {
-                  set_number(prm, "Mesh", "Contact element size", hc * scale);
-                  set_number(prm, "Mesh", "Maximum element size", hmax * scale);
-                  set_number(prm, "Mesh", "Growth factor", 1 + (g - 1) * scale);
-                  set_number(prm,
-                             "Mesh",
-                             "Elements across the plate thickness",
-                             std::max(1.0, across / scale));
-                }
               if (level > 0)
                 {
+                  if (nested)
+                    {
+                      prm.enter_subsection("Mesh");
+                      prm.set("Contact refinements", std::to_string(level_refinements));
+                      prm.leave_subsection();
+                    }
+                  else
+                    {
+                      set_number(prm, "Mesh", "Contact element size", level_hc);
+                      set_number(prm, "Mesh", "Maximum element size", level_hmax);
+                      set_number(prm, "Mesh", "Growth factor", level_g);
+                      set_number(prm,
+                                 "Mesh",
+                                 "Elements across the plate thickness",
+                                 std::max(1.0, across / scale));
+                    }
                   if (dt > 0)
                     set_number(prm, "Time integration", "Time step", dt * scale);
                   else
@@ -223,8 +229,7 @@ namespace impact_fem
               if (root)
                 log << "verification: level " << level
                     << (nested ? " (contact refinements " +
-                                   std::to_string(refinements - static_cast<int>(level)) +
-                                   ", step x " :
+                                   std::to_string(level_refinements) + ", step x " :
                                  std::string(" (sizes and step x "))
                     << scale << ") -> " << level_directory << std::endl;
               std::unique_ptr<ImpactProblem> problem;
@@ -248,11 +253,9 @@ namespace impact_fem
                             {"directory", level == 0 ? "." :
                                                        "verification/level" + std::to_string(level)},
                             {"scale", scale},
-                            {"contact_element_size",
-                             nested ? hc / std::pow(2., refinements - static_cast<int>(level)) :
-                                      hc * scale},
-                            {"maximum_element_size", nested ? hmax : hmax * scale},
-                            {"growth_factor", nested ? g : 1 + (g - 1) * scale},
+                            {"contact_element_size", level_hc},
+                            {"maximum_element_size", level_hmax},
+                            {"growth_factor", level_g},
                             {"time_step", summary["time_step"]},
                             {"cells", summary["cells"]},
                             {"dofs", summary["dofs"]},
