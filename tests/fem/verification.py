@@ -159,10 +159,10 @@ checks.check(all(f"verification: level {level} (contact refinements {2 - level},
 
 # Bad input.
 NESTED_2 = dict(SMALL, **{"Verification/Meshes": "nested", "Verification/Refinement ratio": 2})
-for base, entry, value, words in ((SMALL, "Verification/Refinement ratio", 1.2, "Refinement ratio"),
+for base, entry, value, words in ((SMALL, "Verification/Refinement ratio", 1.2, "Refinement ratio must lie in [1.5, 3], got 1.2."),
                                   (SMALL, "Time integration/Steps per contact time", 20,
                                    "Steps per contact time"),
-                                  (SMALL, "Verification/Meshes", "nested", "Refinement ratio must be 2"),
+                                  (SMALL, "Verification/Meshes", "nested", "got 1.5."),
                                   (NESTED_2, "Mesh/Contact refinements", 1, "Contact refinements >= 2")):
     directory = f"{work}/verification_bad"
     result = verify(directory, dict(base, **{entry: value}))

@@ -30,6 +30,16 @@ namespace impact_fem
       // The time integration and the contact are second order.
       constexpr double formal_order = 2;
 
+      // A number as a reader wrote it ("1.5", not std::to_string's
+      // "1.500000"), for the messages that refuse an entry.
+      std::string
+      as_written(const double x)
+      {
+        std::ostringstream s;
+        s << std::setprecision(10) << x;
+        return s.str();
+      }
+
       nlohmann::json
       number(const double x)
       {
@@ -124,7 +134,7 @@ namespace impact_fem
       const double r  = get_number(prm, "Verification", "Refinement ratio");
       AssertThrow(r >= 1.5 && r <= 3,
                   ExcMessage("Verification/Refinement ratio must lie in [1.5, "
-                             "3], got " + std::to_string(r) + "."));
+                             "3], got " + as_written(r) + "."));
       prm.enter_subsection("Verification");
       const bool nested = prm.get("Meshes") == "nested";
       prm.leave_subsection();
@@ -135,7 +145,7 @@ namespace impact_fem
                   ExcMessage("Verification/Refinement ratio must be 2 with "
                              "Verification/Meshes = nested (each coarser "
                              "level has one contact refinement fewer), got " +
-                             std::to_string(r) + "."));
+                             as_written(r) + "."));
       AssertThrow(!nested || refinements >= 2,
                   ExcMessage("Verification/Meshes = nested needs Mesh/Contact "
                              "refinements >= 2 on the fine level (the coarsest "
@@ -156,7 +166,7 @@ namespace impact_fem
                   ExcMessage("Verification: the coarsest level would have "
                              "fewer than 10 steps per contact time; raise "
                              "Time integration/Steps per contact time to at "
-                             "least " + std::to_string(10 * r * r) + "."));
+                             "least " + as_written(10 * r * r) + "."));
 
       // The entries the levels change, as text, to restore them exactly.
       const std::pair<const char *, const char *> changed[] = {
