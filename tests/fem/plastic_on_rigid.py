@@ -66,6 +66,9 @@ for label, fem_value, th_value in (
 
 p_max = pressure.max()
 print(f"largest contact pressure {p_max / Y:.3f} Y (p_y = 1.6 Y)")
+checks.check(s["dent_radius"] is None and s["max_accumulated_plastic_strain_plate"] is None
+             and s["sphere_dent_radius"] > 0,
+             "no plate body: its dent radius and plastic strain are null; the sphere's dent > 0")
 checks.check(1.6 * Y < p_max < 3 * Y, "contact pressure capped between 1.6 Y and 3 Y")
 checks.check(s["force_max"] > t["force_max"], "peak force above Thornton's (pressure above 1.6 Y)")
 checks.check(s["approach_max"] < t["approach_max"], "peak approach below Thornton's")

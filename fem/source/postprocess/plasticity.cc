@@ -85,8 +85,12 @@ namespace impact_fem
           states.plastic_work() / (0.5 * problem.scenario().sphere_mass * V * V);
         summary["max_accumulated_plastic_strain_sphere"] =
           states.max_accumulated_plastic_strain(sphere);
+        // A rigid flat is no body: its keys are null, not a plate that
+        // stayed elastic.
+        const bool rigid_flat = problem.scenario().rigid_plate;
         summary["max_accumulated_plastic_strain_plate"] =
-          states.max_accumulated_plastic_strain(plate);
+          rigid_flat ? nlohmann::json(nullptr) :
+                       nlohmann::json(states.max_accumulated_plastic_strain(plate));
         summary["max_accumulated_plastic_strain"] =
           std::max(states.max_accumulated_plastic_strain(sphere),
                    states.max_accumulated_plastic_strain(plate));
@@ -121,15 +125,21 @@ namespace impact_fem
 
         const double plate_dent  = dent_radius(problem, boundary_ids::plate_contact);
         const double sphere_dent = dent_radius(problem, boundary_ids::sphere_contact);
-        summary["dent_radius"]        = plate_dent;
+        summary["dent_radius"] =
+          rigid_flat ? nlohmann::json(nullptr) : nlohmann::json(plate_dent);
         summary["sphere_dent_radius"] = sphere_dent;
         report << "  plasticity: plastic work "
                << summary["plastic_work_fraction"].get<double>() * 100
                << " % of the impact energy, max accumulated plastic strain "
                << summary["max_accumulated_plastic_strain"].get<double>()
                << ", permanent approach " << permanent * 1e6
-               << " um, dent radius " << plate_dent * 1e3 << " mm (sphere "
-               << sphere_dent * 1e3 << " mm), yield from "
+               << " um, dent radius ";
+        if (rigid_flat)
+          report << "(rigid flat) sphere " << sphere_dent * 1e3 << " mm";
+        else
+          report << plate_dent * 1e3 << " mm (sphere " << sphere_dent * 1e3
+                 << " mm)";
+        report << ", yield from "
                << (onset_time >= 0 ? onset_time * 1e6 : nan)
                << " us, at an impact-equivalent velocity "
                << summary["yield_onset_velocity"] << " m/s\n";
