@@ -1,3 +1,4 @@
+#include <impact_fem/as_written.h>
 #include <impact_fem/axisymmetric_strain.h>
 #include <impact_fem/impact_problem.h>
 #include <impact_fem/quadrature.h>
@@ -139,10 +140,10 @@ namespace impact_fem
     AssertThrow(parameters.static_press ||
                   expected_contact_radius < mesh.contact_surface_radius,
                 ExcMessage("Mesh/Contact surface radius (" +
-                           std::to_string(mesh.contact_surface_radius) +
+                           as_written(mesh.contact_surface_radius) +
                            " m) is smaller than the expected contact radius "
                            "(Hertz: " +
-                           std::to_string(expected_contact_radius) +
+                           as_written(expected_contact_radius) +
                            " m); increase it."));
     if (parameters.indentation)
       {
@@ -847,7 +848,7 @@ namespace impact_fem
         Utilities::MPI::max(static_cast<int>(interrupt_signal), mpi_communicator);
       AssertThrow(signal == 0,
                   ExcMessage("Interrupted by signal " + std::to_string(signal) +
-                             " at t = " + std::to_string(time_stepper->time()) +
+                             " at t = " + as_written(time_stepper->time()) +
                              " s; the history so far is in " + directory +
                              "/history.incomplete.h5."));
     };

@@ -32,7 +32,12 @@ def expect_failure(name, settings, words, extra_args=None):
 
 
 expect_failure("poisson", {"Sphere/Elastic/Poisson's ratio": 0.5}, ["Poisson's ratio", "0.5"])
-expect_failure("negative_size", {"Mesh/Contact element size": -1e-5}, ["Contact element size", "positive"])
+# The value refused is shown as given ("-1e-05", not std::to_string's "-0.000010").
+expect_failure("negative_size", {"Mesh/Contact element size": -1e-5},
+               ["Contact element size", "positive", "got -1e-05 m"])
+expect_failure("zero_tolerance", {"Sphere/Material model": "elastic-plastic",
+                                  "Nonlinear solver/Residual tolerance": 0},
+               ["Residual tolerance", "> 0", "got 0 and 1e-06"])
 expect_failure("size_above_sphere", {"Mesh/Contact element size": 0.02}, ["Contact element size", "sphere radius"])
 expect_failure("negative_gap", {"Scenario/Initial gap": -1e-3}, ["Initial gap"])
 expect_failure("unknown_entry_set", {"Scenario/Impact speed": 1}, ["Impact speed"])

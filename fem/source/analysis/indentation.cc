@@ -1,3 +1,4 @@
+#include <impact_fem/as_written.h>
 #include <impact_fem/analysis/indentation.h>
 #include <impact_fem/impact_problem.h>
 #include <impact_fem/result_files.h>
@@ -106,7 +107,7 @@ namespace impact_fem
     prm.leave_subsection();
     AssertThrow(maximum_approach > 0,
                 ExcMessage("Indentation/Maximum approach must be positive, got " +
-                           std::to_string(maximum_approach) + " m."));
+                           as_written(maximum_approach) + " m."));
     AssertThrow(n >= 1 && n <= 100000,
                 ExcMessage("Indentation/Steps must lie in [1, 100000], got " +
                            std::to_string(n) + "."));

@@ -1,3 +1,4 @@
+#include <impact_fem/as_written.h>
 #include <impact_fem/analysis/material_point.h>
 #include <impact_fem/quadrature.h>
 #include <impact_fem/axisymmetric_strain.h>
@@ -712,11 +713,11 @@ namespace impact_fem
               AssertThrow(iteration < max_iterations,
                           ExcMessage("Specimen: the Newton iteration of step " +
                                      std::to_string(step) + " (t = " +
-                                     std::to_string(t) + " s) did not converge in " +
+                                     as_written(t) + " s) did not converge in " +
                                      std::to_string(max_iterations) +
                                      " iterations: out-of-balance force " +
-                                     std::to_string(norm) + " N, criterion 1e-10 of " +
-                                     std::to_string(internal_force.l2_norm()) + " N."));
+                                     as_written(norm) + " N, criterion 1e-10 of " +
+                                     as_written(internal_force.l2_norm()) + " N."));
               SparseDirectUMFPACK solver;
               solver.initialize(tangent_matrix);
               solver.vmult(increment, residual);

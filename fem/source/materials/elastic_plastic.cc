@@ -1,5 +1,6 @@
 // Small-strain J2 (von Mises) plasticity with isotropic hardening, radial
 // return, optional Kelvin-Voigt viscosity in parallel.
+#include <impact_fem/as_written.h>
 #include <impact_fem/materials/elastic_plastic.h>
 #include <impact_fem/result_files.h>
 
@@ -14,14 +15,6 @@ namespace impact_fem
   {
     namespace
     {
-      std::string
-      format(const double x)
-      {
-        std::ostringstream s;
-        s << x;
-        return s.str();
-      }
-
       // "Elastic-plastic/<entry> must <range>, got <value>."
       void
       check_entry(const bool         valid,
@@ -31,7 +24,7 @@ namespace impact_fem
       {
         AssertThrow(valid,
                     ExcMessage("Elastic-plastic/" + entry + " must " + range +
-                               ", got " + format(value) + "."));
+                               ", got " + as_written(value) + "."));
       }
     } // namespace
 

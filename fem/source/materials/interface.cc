@@ -1,3 +1,4 @@
+#include <impact_fem/as_written.h>
 #include <impact_fem/materials/interface.h>
 #include <impact_fem/result_files.h>
 
@@ -101,16 +102,16 @@ namespace impact_fem
     {
       AssertThrow(young > 0,
                   ExcMessage("Young's modulus must be positive, got " +
-                             std::to_string(young) + " Pa."));
+                             as_written(young) + " Pa."));
       AssertThrow(poisson > -1 && poisson < 0.5,
                   ExcMessage("Poisson's ratio must lie in (-1, 0.5), got " +
-                             std::to_string(poisson) +
+                             as_written(poisson) +
                              ": nu >= 0.5 is an incompressible material, "
                              "which this displacement formulation cannot "
                              "represent."));
       AssertThrow(mass_density > 0,
                   ExcMessage("Density must be positive, got " +
-                             std::to_string(mass_density) + " kg/m^3."));
+                             as_written(mass_density) + " kg/m^3."));
     }
 
 

@@ -1,3 +1,4 @@
+#include <impact_fem/as_written.h>
 #include <impact_fem/mesh/sphere_plate_mesh.h>
 
 #include <deal.II/base/mpi.h>
@@ -106,34 +107,34 @@ namespace impact_fem
     const double R = geometry.sphere_radius;
     AssertThrow(contact_element_size > 0,
                 ExcMessage("Mesh/Contact element size must be positive, got " +
-                           std::to_string(contact_element_size) + " m."));
+                           as_written(contact_element_size) + " m."));
     AssertThrow(contact_element_size < R,
                 ExcMessage("Mesh/Contact element size (" +
-                           std::to_string(contact_element_size) +
+                           as_written(contact_element_size) +
                            " m) is larger than the sphere radius (" +
-                           std::to_string(R) + " m)."));
+                           as_written(R) + " m)."));
     AssertThrow(uniform_zone_radius >= 0,
                 ExcMessage("Mesh/Uniform zone radius must not be negative."));
     AssertThrow(growth_factor >= 1 && growth_factor <= 3,
                 ExcMessage("Mesh/Growth factor must lie in [1, 3], got " +
-                           std::to_string(growth_factor) + "."));
+                           as_written(growth_factor) + "."));
     AssertThrow(maximum_element_size >= contact_element_size,
                 ExcMessage("Mesh/Maximum element size must not be smaller "
                            "than the contact element size."));
     AssertThrow(elements_across_thickness >= 1 && elements_across_thickness <= 1000,
                 ExcMessage("Mesh/Elements across the plate thickness must lie "
                            "in [1, 1000], got " +
-                           std::to_string(elements_across_thickness) + "."));
+                           as_written(elements_across_thickness) + "."));
     AssertThrow(contact_element_size <= far_field_element_size(),
                 ExcMessage("Mesh/Contact element size (" +
-                           std::to_string(contact_element_size) +
+                           as_written(contact_element_size) +
                            " m) exceeds the plate thickness / Elements across "
                            "the plate thickness (" +
-                           std::to_string(far_field_element_size()) + " m)."));
+                           as_written(far_field_element_size()) + " m)."));
     AssertThrow(contact_surface_radius > 0 && contact_surface_radius <= 0.5 * R,
                 ExcMessage("Mesh/Contact surface radius must lie in (0, R/2] "
-                           "= (0, " + std::to_string(0.5 * R) + "] m, got " +
-                           std::to_string(contact_surface_radius) + " m."));
+                           "= (0, " + as_written(0.5 * R) + "] m, got " +
+                           as_written(contact_surface_radius) + " m."));
     AssertThrow(contact_surface_radius < geometry.plate_radius,
                 ExcMessage("Mesh/Contact surface radius must be smaller than "
                            "the plate radius."));

@@ -1,3 +1,4 @@
+#include <impact_fem/as_written.h>
 #include <impact_fem/impact_problem.h>
 #include <impact_fem/postprocess/interface.h>
 
@@ -36,7 +37,7 @@ namespace impact_fem
         prm.leave_subsection();
         AssertThrow(interval >= 0,
                     ExcMessage("Output/Progress interval must not be negative, "
-                               "got " + std::to_string(interval) + " s."));
+                               "got " + as_written(interval) + " s."));
       }
 
       void

@@ -1,3 +1,4 @@
+#include <impact_fem/as_written.h>
 #include <impact_fem/impact_problem.h>
 #include <impact_fem/postprocess/cell_stress.h>
 #include <impact_fem/postprocess/interface.h>
@@ -43,7 +44,7 @@ namespace impact_fem
         prm.leave_subsection();
         AssertThrow(interval >= 0,
                     ExcMessage("Output/Snapshot interval must not be negative, "
-                               "got " + std::to_string(interval) + " s."));
+                               "got " + as_written(interval) + " s."));
       }
 
       void

@@ -1,3 +1,4 @@
+#include <impact_fem/as_written.h>
 #include <impact_fem/time_integration/interface.h>
 
 namespace impact_fem
@@ -44,13 +45,13 @@ namespace impact_fem
         AssertThrow(gamma >= 0.5 && gamma <= 1,
                     ExcMessage("Time integration/Newmark gamma must lie in "
                                "[0.5, 1] for stability, got " +
-                               std::to_string(gamma) + "."));
+                               as_written(gamma) + "."));
         AssertThrow(beta >= 0.25 * (gamma + 0.5) * (gamma + 0.5) - 1e-12 &&
                       beta <= 0.5,
                     ExcMessage("Time integration/Newmark beta must lie in "
                                "[(gamma + 1/2)^2 / 4, 1/2] for unconditional "
                                "stability, got " +
-                               std::to_string(beta) + "."));
+                               as_written(beta) + "."));
       }
 
       double

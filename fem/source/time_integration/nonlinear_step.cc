@@ -1,3 +1,4 @@
+#include <impact_fem/as_written.h>
 #include <impact_fem/time_integration/nonlinear_step.h>
 
 #include <deal.II/base/exceptions.h>
@@ -63,8 +64,8 @@ namespace impact_fem
       AssertThrow(residual_tolerance > 0 && increment_tolerance > 0,
                   ExcMessage("Nonlinear solver/Residual tolerance and "
                              "Increment tolerance must be > 0, got " +
-                             std::to_string(residual_tolerance) + " and " +
-                             std::to_string(increment_tolerance) + "."));
+                             as_written(residual_tolerance) + " and " +
+                             as_written(increment_tolerance) + "."));
     }
 
 

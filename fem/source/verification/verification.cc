@@ -1,3 +1,4 @@
+#include <impact_fem/as_written.h>
 #include <impact_fem/impact_problem.h>
 #include <impact_fem/verification/grid_convergence.h>
 #include <impact_fem/verification/verification.h>
@@ -29,16 +30,6 @@ namespace impact_fem
 
       // The time integration and the contact are second order.
       constexpr double formal_order = 2;
-
-      // A number as a reader wrote it ("1.5", not std::to_string's
-      // "1.500000"), for the messages that refuse an entry.
-      std::string
-      as_written(const double x)
-      {
-        std::ostringstream s;
-        s << std::setprecision(10) << x;
-        return s.str();
-      }
 
       nlohmann::json
       number(const double x)

@@ -1,6 +1,7 @@
 #ifndef IMPACT_FEM_CONTACT_CONTACT_FACE_H
 #define IMPACT_FEM_CONTACT_CONTACT_FACE_H
 
+#include <impact_fem/as_written.h>
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/point.h>
 #include <deal.II/base/types.h>
@@ -153,7 +154,7 @@ namespace impact_fem
           return face;
       AssertThrow(false,
                   ExcMessage("Internal error: no contact face at radius " +
-                             std::to_string(r)));
+                             as_written(r)));
       return faces.front();
     }
   } // namespace contact_faces
