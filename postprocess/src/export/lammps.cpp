@@ -93,13 +93,13 @@ std::string lammps_file(const ExportCampaign& campaign, const HertzLawFit& law,
       << "atom_style      sphere\n"
       << "atom_modify     map array\n"
       << "boundary        f f f\n"
-      << "variable        V index " << exact(campaign.runs.front().velocity)
+      << "variable        V index " << as_written(campaign.runs.front().velocity)
       << "     # impact velocity [m/s]\n"
       << "variable        out index lammps_drop.txt\n"
-      << "variable        mass equal " << exact(campaign.mass) << "     # kg\n"
-      << "variable        radius equal " << exact(campaign.radius) << "   # m\n"
-      << "variable        kn equal " << exact(contact.normal_stiffness) << "       # Pa\n"
-      << "variable        damping equal " << exact(contact.damping_coefficient)
+      << "variable        mass equal " << as_written(campaign.mass) << "     # kg\n"
+      << "variable        radius equal " << as_written(campaign.radius) << "   # m\n"
+      << "variable        kn equal " << as_written(contact.normal_stiffness) << "       # Pa\n"
+      << "variable        damping equal " << as_written(contact.damping_coefficient)
       << (kuwabara_kono ? "  # eta_n0 [1/(m s)]\n" : "  # e_in [-] of LAMMPS's Tsuji polynomial\n")
       << "# Hertz's contact time 2.94 (5 m / (4 c))^(2/5) V^(-1/5) sets the step (1/2000 of it).\n"
       << "variable        hertz_time equal 2.94*(5*v_mass/(4*v_kn*sqrt(v_radius)))^0.4*v_V^(-0.2)\n"

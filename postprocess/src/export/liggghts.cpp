@@ -71,7 +71,7 @@ namespace {
 std::string liggghts_file(const ExportCampaign& campaign, const PlasticContact& plastic,
                           const LiggghtsContact& contact, const std::vector<ImpactFigures>& model,
                           const std::vector<ImpactFigures>& paper) {
-  using export_text::exact;
+  using export_text::as_written;
   using export_text::rounded;
   std::ostringstream out;
   out << "# LIGGGHTS 3.8 input: the sphere dropped on a granular wall with the elastic-plastic\n"
@@ -109,13 +109,13 @@ std::string liggghts_file(const ExportCampaign& campaign, const PlasticContact& 
       << "boundary        f f f\n"
       << "newton          off\n"
       << "communicate     single vel yes\n"
-      << "variable        V index " << exact(campaign.runs.front().velocity) << "     # impact velocity [m/s]\n"
+      << "variable        V index " << as_written(campaign.runs.front().velocity) << "     # impact velocity [m/s]\n"
       << "variable        out index liggghts_drop.txt\n"
       << "variable        N index 5000     # time steps per Hertz contact time (error in e about 1.2 / N)\n"
-      << "variable        mass equal " << exact(campaign.mass) << "     # kg\n"
-      << "variable        radius equal " << exact(campaign.radius) << "   # m\n"
-      << "variable        density equal " << exact(contact.density) << "   # kg/m^3, m / (4/3 pi R^3)\n"
-      << "variable        contact_modulus equal " << exact(plastic.contact_modulus) << "   # E* [Pa]\n"
+      << "variable        mass equal " << as_written(campaign.mass) << "     # kg\n"
+      << "variable        radius equal " << as_written(campaign.radius) << "   # m\n"
+      << "variable        density equal " << as_written(contact.density) << "   # kg/m^3, m / (4/3 pi R^3)\n"
+      << "variable        contact_modulus equal " << as_written(plastic.contact_modulus) << "   # E* [Pa]\n"
       << "# Hertz's contact time 2.94 (5 m / (4 c))^(2/5) V^(-1/5), c = (4/3) E* sqrt(R), sets the step;\n"
       << "# the run lasts 3 of them (the plastic contact lasts about one).\n"
       << "variable        hertz_time equal 2.94*(15*v_mass/(16*v_contact_modulus*sqrt(v_radius)))^0.4*v_V^(-0.2)\n"
@@ -127,11 +127,11 @@ std::string liggghts_file(const ExportCampaign& campaign, const PlasticContact& 
       << "neigh_modify    delay 0\n"
       << "# Atom type 1: the sphere; type 2: the wall.\n"
       << "fix             m1 all property/global youngsModulus peratomtype "
-      << exact(contact.sphere_youngs_modulus) << " " << exact(contact.wall_youngs_modulus) << "\n"
+      << as_written(contact.sphere_youngs_modulus) << " " << as_written(contact.wall_youngs_modulus) << "\n"
       << "fix             m2 all property/global poissonsRatio peratomtype "
-      << exact(contact.sphere_poisson_ratio) << " " << exact(contact.wall_poisson_ratio) << "\n"
+      << as_written(contact.sphere_poisson_ratio) << " " << as_written(contact.wall_poisson_ratio) << "\n"
       << "fix             m3 all property/global coefficientYieldRatio peratomtype "
-      << exact(contact.yield_ratio) << " " << exact(contact.yield_ratio) << "\n"
+      << as_written(contact.yield_ratio) << " " << as_written(contact.yield_ratio) << "\n"
       << "fix             m4 all property/global surfaceEnergy peratomtypepair 2 0 0 0 0\n"
       << "# Required by thornton_ning's tangential part, without effect on a normal impact (no\n"
       << "# tangential motion): coefficientRestitution sets only the tangential damping.\n"

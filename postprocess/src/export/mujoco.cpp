@@ -113,8 +113,8 @@ namespace export_text {
 
 std::string mujoco_file(const ExportCampaign& campaign, const MujocoContact& contact,
                         const std::vector<ImpactFigures>& model) {
-  const std::string d = exact(contact.impedance);
-  const std::string solref = "-" + exact(contact.stiffness) + " -" + exact(contact.damping);
+  const std::string d = as_written(contact.impedance);
+  const std::string solref = "-" + as_written(contact.stiffness) + " -" + as_written(contact.damping);
   const std::string solimp = d + " " + d + " 0.001 0.5 2";
   std::ostringstream out;
   out << "<!--\n"
@@ -144,7 +144,7 @@ std::string mujoco_file(const ExportCampaign& campaign, const MujocoContact& con
       << "-->\n"
       << "<mujoco model=\"impact_drop\">\n"
       << "  <!-- no gravity, as in the FEM: the sphere arrives with the impact velocity -->\n"
-      << "  <option timestep=\"" << exact(contact.timestep)
+      << "  <option timestep=\"" << as_written(contact.timestep)
       << "\" gravity=\"0 0 0\" integrator=\"Euler\"/>\n"
       << "  <default>\n"
       << "    <default class=\"impact_contact\">\n"
@@ -154,10 +154,10 @@ std::string mujoco_file(const ExportCampaign& campaign, const MujocoContact& con
       << "  </default>\n"
       << "  <worldbody>\n"
       << "    <geom name=\"plate\" class=\"impact_contact\" type=\"plane\" size=\"0.1 0.1 0.01\"/>\n"
-      << "    <body name=\"sphere\" pos=\"0 0 " << exact(campaign.radius) << "\">\n"
+      << "    <body name=\"sphere\" pos=\"0 0 " << as_written(campaign.radius) << "\">\n"
       << "      <freejoint name=\"sphere\"/>\n"
       << "      <geom name=\"sphere\" class=\"impact_contact\" type=\"sphere\" size=\""
-      << exact(campaign.radius) << "\" mass=\"" << exact(campaign.mass) << "\"/>\n"
+      << as_written(campaign.radius) << "\" mass=\"" << as_written(campaign.mass) << "\"/>\n"
       << "    </body>\n"
       << "  </worldbody>\n"
       << "</mujoco>\n";

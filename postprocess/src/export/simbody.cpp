@@ -54,12 +54,12 @@ std::string simbody_file(const ExportCampaign& campaign, const SimbodyContact& c
       << "#pragma once\n\n"
       << "#include <Simbody.h>\n\n"
       << "namespace impact_contact {\n\n"
-      << "inline constexpr double sphere_mass = " << exact(campaign.mass) << ";   // kg\n"
-      << "inline constexpr double sphere_radius = " << exact(campaign.radius)
+      << "inline constexpr double sphere_mass = " << as_written(campaign.mass) << ";   // kg\n"
+      << "inline constexpr double sphere_radius = " << as_written(campaign.radius)
       << "; // m, of ContactGeometry::Sphere\n"
-      << "inline constexpr double stiffness = " << exact(contact.surface_stiffness)
+      << "inline constexpr double stiffness = " << as_written(contact.surface_stiffness)
       << ";   // Pa, both surfaces\n"
-      << "inline constexpr double dissipation = " << exact(contact.surface_dissipation)
+      << "inline constexpr double dissipation = " << as_written(contact.surface_dissipation)
       << "; // s/m, both surfaces\n\n"
       << "/// Gives the sphere's and the plane's surfaces of a HuntCrossleyForce the calibrated\n"
       << "/// contact (no friction, as in the FEM).\n"

@@ -3,7 +3,6 @@
 #include "export/text.hpp"
 
 #include <cstdio>
-#include <cstdlib>
 #include <sstream>
 
 namespace impact::postprocess::export_text {
@@ -24,15 +23,6 @@ std::string error(double model, double fem) {
 }
 
 } // namespace
-
-// The shortest of 15, 16, 17 significant digits that reads back as the same double.
-std::string exact(double value) {
-  for (int digits = 15; digits < 17; ++digits) {
-    const std::string text = format("%.*g", value, digits);
-    if (std::strtod(text.c_str(), nullptr) == value) return text;
-  }
-  return format("%.*g", value, 17);
-}
 
 std::string rounded(double value, int digits) { return format("%.*g", value, digits); }
 

@@ -4,13 +4,16 @@
 
 #include "impact_postprocess/export/simulator_export.hpp"
 
+#include <impact_fem/as_written.h>
+
 #include <string>
 #include <vector>
 
 namespace impact::postprocess::export_text {
 
-/// `value` with 17 significant digits: the exported numbers reproduce the doubles.
-std::string exact(double value);
+/// The exported numbers reproduce the doubles: the fewest significant digits that read back
+/// as the same double.
+using impact_fem::as_written;
 /// `value` with `digits` significant digits, for comments.
 std::string rounded(double value, int digits = 6);
 
