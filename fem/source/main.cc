@@ -2,6 +2,7 @@
 // frictionless contact. Usage: see print_usage() or fem/README.md.
 
 #include <impact_fem/analysis/material_point.h>
+#include <impact_fem/analysis/specimen.h>
 #include <impact_fem/campaign.h>
 #include <impact_fem/impact_problem.h>
 #include <impact_fem/parameter_path.h>

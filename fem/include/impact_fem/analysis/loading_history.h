@@ -1,0 +1,74 @@
+#ifndef IMPACT_FEM_ANALYSIS_LOADING_HISTORY_H
+#define IMPACT_FEM_ANALYSIS_LOADING_HISTORY_H
+
+#include <impact_fem/materials/interface.h>
+#include <impact_fem/output/history.h>
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/symmetric_tensor.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace impact_fem
+{
+  using namespace dealii;
+
+  /**
+   * What the material-point and the specimen analyses share: the
+   * prescribed history of subsection "Material point" (declared by
+   * MaterialPointTest::declare_parameters), and the history.h5 columns of
+   * a strain and a stress in the (r, z, theta) basis.
+   */
+  namespace loading_history
+  {
+    /**
+     * (rr, zz, theta-theta, rz) -> the 3x3 symmetric tensor in (r, z,
+     * theta); @p c must have 4 entries.
+     */
+    SymmetricTensor<2, 3>
+    tensor_from(const std::vector<double> &c);
+
+    /**
+     * What both analyses read: the sphere's material, the output directory
+     * and the prescribed history.
+     */
+    struct Loading
+    {
+      std::unique_ptr<materials::Interface> material;
+      std::string                           directory;
+      std::string                           loading;
+      std::vector<double>                   strain_hat, stress_hat;
+      std::vector<SymmetricTensor<2, 3>>    path;
+      std::vector<double>                   axial_path;
+      double ramp_time = 0, omega = 0, duration = 0, dt = 0;
+    };
+
+    /**
+     * Reads subsections "Sphere", "Output" and "Material point"; refuses a
+     * strain-path point without 4 components and a non-positive time step,
+     * duration or ramp time, naming the entry.
+     */
+    Loading
+    read_loading(ParameterHandler &prm);
+
+    /**
+     * Declares the history's time, strain_* and stress_* columns (rr, zz,
+     * theta-theta, rz); the descriptions are "<before>strain rr<after>".
+     */
+    void
+    declare_components(History           &history,
+                       const std::string &before,
+                       const std::string &after);
+
+    /** Appends t and the components of the strain and the stress. */
+    void
+    append_components(History                     &history,
+                      double                       t,
+                      const SymmetricTensor<2, 3> &strain,
+                      const SymmetricTensor<2, 3> &stress);
+  } // namespace loading_history
+} // namespace impact_fem
+
+#endif
