@@ -6,6 +6,9 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
 
+#include <algorithm>
+#include <cmath>
+
 namespace impact_fem
 {
   namespace loading_history
@@ -58,6 +61,22 @@ namespace impact_fem
                   ExcMessage("Material point: Time step, Duration and Ramp "
                              "time must be positive."));
       return l;
+    }
+
+
+    double
+    strain_factor(const Loading &loading, const double t)
+    {
+      return loading.loading == "strain ramp" ? std::min(t / loading.ramp_time, 1.) :
+                                                std::sin(loading.omega * t);
+    }
+
+
+    double
+    strain_factor_rate(const Loading &loading, const double t)
+    {
+      return loading.loading == "strain ramp" ? (t < loading.ramp_time ? 1. / loading.ramp_time : 0.) :
+                                                loading.omega * std::cos(loading.omega * t);
     }
 
 

@@ -93,7 +93,6 @@ namespace impact_fem
     const SymmetricTensor<2, 3>   strain_hat = tensor_from(input.strain_hat);
     const SymmetricTensor<2, 3>   stress_hat = tensor_from(input.stress_hat);
     const double                  ramp_time  = input.ramp_time;
-    const double                  omega      = input.omega;
     const double                  duration   = input.duration;
     const double                  dt         = input.dt;
 
@@ -135,8 +134,7 @@ namespace impact_fem
           const auto         start = i == 0 ? SymmetricTensor<2, 3>() : path[i - 1];
           return start + w * (path[i] - start);
         }
-      return loading == "strain ramp" ? std::min(t / ramp_time, 1.) * strain_hat :
-                                        std::sin(omega * t) * strain_hat;
+      return strain_factor(input, t) * strain_hat;
     };
     auto prescribed_strain_rate = [&](const double t) {
       if (loading == "strain path")
@@ -148,9 +146,7 @@ namespace impact_fem
           const auto         start = i == 0 ? SymmetricTensor<2, 3>() : path[i - 1];
           return (path[i] - start) / ramp_time;
         }
-      return loading == "strain ramp" ?
-               (t < ramp_time ? 1. / ramp_time : 0.) * strain_hat :
-               omega * std::cos(omega * t) * strain_hat;
+      return strain_factor_rate(input, t) * strain_hat;
     };
     // A nonlinear (elastic-plastic) material goes through the general
     // constitutive update; the linear ones keep their closed algebra.

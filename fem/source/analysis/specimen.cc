@@ -111,6 +111,37 @@ namespace impact_fem
     };
 
 
+    // Boundary ids of hyper_rectangle: 0 axis, 1 side, 2 bottom, 3 top.
+    // Rollers: u_r = 0 on the axis, u_z = 0 at the bottom (uniaxial stress,
+    // the side free).
+    void
+    constrain_rollers(const DoFHandler<2>       &dof_handler,
+                      const FESystem<2>         &fe,
+                      AffineConstraints<double> &constraints)
+    {
+      VectorTools::interpolate_boundary_values(
+        dof_handler, 0, Functions::ZeroFunction<2>(2), constraints,
+        fe.component_mask(FEValuesExtractors::Scalar(0)));
+      VectorTools::interpolate_boundary_values(
+        dof_handler, 2, Functions::ZeroFunction<2>(2), constraints,
+        fe.component_mask(FEValuesExtractors::Scalar(1)));
+    }
+
+
+    // The homogeneous strain eps_rr = eps_tt = a, eps_zz = b on the whole
+    // boundary.
+    void
+    constrain_homogeneous_strain(const DoFHandler<2>       &dof_handler,
+                                 const double               a,
+                                 const double               b,
+                                 AffineConstraints<double> &constraints)
+    {
+      const HomogeneousDisplacement boundary(a, b);
+      for (const types::boundary_id id : {0, 1, 2, 3})
+        VectorTools::interpolate_boundary_values(dof_handler, id, boundary, constraints);
+    }
+
+
     // Axial strain of the 'axial strain path' at time t: piecewise linear
     // from 0 through the points, one ramp time per segment, then held.
     double
@@ -196,27 +227,16 @@ namespace impact_fem
           {
             const double top =
               homogeneous ? 0. : axial_strain(input.axial_path, input.ramp_time, t) * size;
-            VectorTools::interpolate_boundary_values(
-              dof_handler, 0, Functions::ZeroFunction<2>(2), constraints,
-              fe.component_mask(FEValuesExtractors::Scalar(0)));
-            VectorTools::interpolate_boundary_values(
-              dof_handler, 2, Functions::ZeroFunction<2>(2), constraints,
-              fe.component_mask(FEValuesExtractors::Scalar(1)));
+            constrain_rollers(dof_handler, fe, constraints);
             VectorTools::interpolate_boundary_values(
               dof_handler, 3, Functions::ConstantFunction<2>(top, 2), constraints,
               fe.component_mask(FEValuesExtractors::Scalar(1)));
           }
         else
           {
-            const double factor =
-              homogeneous ? 0. :
-              loading == "strain ramp" ? std::min(t / input.ramp_time, 1.) :
-                                         std::sin(input.omega * t);
-            const HomogeneousDisplacement boundary(factor * strain_hat[0],
-                                                   factor * strain_hat[1]);
-            for (const types::boundary_id id : {0, 1, 2, 3})
-              VectorTools::interpolate_boundary_values(dof_handler, id, boundary,
-                                                       constraints);
+            const double factor = homogeneous ? 0. : strain_factor(input, t);
+            constrain_homogeneous_strain(dof_handler, factor * strain_hat[0],
+                                         factor * strain_hat[1], constraints);
           }
         constraints.close();
         return constraints;
@@ -333,7 +353,7 @@ namespace impact_fem
           }
         else
           {
-            const double rate = loading == "strain ramp" ? 1. / input.ramp_time : input.omega;
+            const double rate = strain_factor_rate(input, 0);
             VectorTools::interpolate(dof_handler,
                                      HomogeneousDisplacement(rate * strain_hat[0],
                                                              rate * strain_hat[1]),
@@ -417,8 +437,6 @@ namespace impact_fem
     const std::string  &loading    = input.loading;
     const auto         &strain_hat = input.strain_hat;
     const auto         &stress_hat = input.stress_hat;
-    const double        ramp_time  = input.ramp_time;
-    const double        omega      = input.omega;
     const double        duration   = input.duration;
     const double        dt         = input.dt;
     prm.enter_subsection("Mesh");
@@ -451,11 +469,6 @@ namespace impact_fem
     AssertThrow(!stress_controlled || material->damping_tangent().norm() > 0,
                 ExcMessage("Specimen: the 'stress step' (creep) loading needs "
                            "a viscous material (Kelvin-Voigt)."));
-    auto strain_factor = [&](const double t) {
-      return loading == "strain ramp" ? std::min(t / ramp_time, 1.) :
-                                        std::sin(omega * t);
-    };
-
     // Cylinder 0 <= r <= 1 mm, 0 <= z <= 1 mm; boundary ids of
     // hyper_rectangle: 0 axis, 1 side, 2 bottom, 3 top.
     const double     size = 1e-3;
@@ -505,22 +518,12 @@ namespace impact_fem
     auto make_constraints = [&](const double t, const bool homogeneous) {
       AffineConstraints<double> constraints;
       if (stress_controlled)
-        {
-          VectorTools::interpolate_boundary_values(
-            dof_handler, 0, Functions::ZeroFunction<2>(2), constraints,
-            fe.component_mask(FEValuesExtractors::Scalar(0)));
-          VectorTools::interpolate_boundary_values(
-            dof_handler, 2, Functions::ZeroFunction<2>(2), constraints,
-            fe.component_mask(FEValuesExtractors::Scalar(1)));
-        }
+        constrain_rollers(dof_handler, fe, constraints);
       else
         {
-          const double factor = homogeneous ? 0 : strain_factor(t);
-          const HomogeneousDisplacement boundary(factor * strain_hat[0],
-                                                 factor * strain_hat[1]);
-          for (const types::boundary_id id : {0, 1, 2, 3})
-            VectorTools::interpolate_boundary_values(dof_handler, id, boundary,
-                                                     constraints);
+          const double factor = homogeneous ? 0 : strain_factor(input, t);
+          constrain_homogeneous_strain(dof_handler, factor * strain_hat[0],
+                                       factor * strain_hat[1], constraints);
         }
       constraints.close();
       return constraints;
@@ -654,7 +657,7 @@ namespace impact_fem
       }
     else
       {
-        const double rate = loading == "strain ramp" ? 1. / ramp_time : omega;
+        const double rate = strain_factor_rate(input, 0);
         VectorTools::interpolate(dof_handler,
                                  HomogeneousDisplacement(rate * strain_hat[0],
                                                          rate * strain_hat[1]),

@@ -54,6 +54,21 @@ namespace impact_fem
     read_loading(ParameterHandler &prm);
 
     /**
+     * The factor f(t) of Strain in the strain histories (dimensionless):
+     * min(t / Ramp time, 1) for "strain ramp", sin(Angular frequency t) for
+     * "strain oscillation"; t >= 0 in s.
+     */
+    double
+    strain_factor(const Loading &loading, double t);
+
+    /**
+     * Its time derivative df/dt [1/s]: 1 / Ramp time before the end of the
+     * ramp and 0 from then on; omega cos(omega t) for the oscillation.
+     */
+    double
+    strain_factor_rate(const Loading &loading, double t);
+
+    /**
      * Declares the history's time, strain_* and stress_* columns (rr, zz,
      * theta-theta, rz); the descriptions are "<before>strain rr<after>".
      */
