@@ -41,6 +41,30 @@ double jackson_green_fit(double ratio, const SphereFlatContact& contact, double 
          4 * hardness_ratio / c * (1 - std::exp(-std::pow(ratio, 5.0 / 9.0) / 25)) * ratio;
 }
 
+// d(P / P_c) / d omega* of the fit (omega* > 1.9), differentiated term by term:
+//   d/dw [exp(-w^(5/12) / 4) w^(3/2)] = exp(-w^(5/12) / 4) w^(1/2) (3/2 - (5/48) w^(5/12)),
+//   d/dw [(4 H / C) G w] = (4 / C) (H' G w + H G' w + H G),  G = 1 - exp(-w^(5/9) / 25),
+//   G' w = exp(-w^(5/9) / 25) w^(5/9) / 45,  a/R = rho ~ w^((1 + B) / 2),
+//   H' w = -2.84 (0.82 * 0.7) rho^(-0.7) exp(-0.82 rho^(-0.7)) (1 + B) / 2.
+double jackson_green_fit_slope(double ratio, const SphereFlatContact& contact, double c) {
+  const double yield_strain = contact.yield_strength / contact.contact_modulus;
+  const double b = 0.14 * std::exp(23 * yield_strain);
+  const double relative_radius = std::sqrt(ratio) * pi * c * yield_strain / 2 *
+                                 std::pow(ratio / jackson_green_transition, b / 2);
+  const double decay = std::exp(-0.82 * std::pow(relative_radius, -0.7));
+  const double hardness_ratio = 2.84 * (1 - decay);
+  const double hardness_slope_times_ratio =
+      -2.84 * 0.82 * 0.7 * std::pow(relative_radius, -0.7) * decay * (1 + b) / 2;
+  const double shape_decay = std::exp(-std::pow(ratio, 5.0 / 9.0) / 25);
+  const double shape = 1 - shape_decay;
+  const double shape_slope_times_ratio = shape_decay * std::pow(ratio, 5.0 / 9.0) / 45;
+  const double hertz_like = std::exp(-0.25 * std::pow(ratio, 5.0 / 12.0)) * std::sqrt(ratio) *
+                            (1.5 - 5.0 / 48.0 * std::pow(ratio, 5.0 / 12.0));
+  return hertz_like + 4 / c *
+                          (hardness_slope_times_ratio * shape +
+                           hardness_ratio * shape_slope_times_ratio + hardness_ratio * shape);
+}
+
 } // namespace
 
 double jackson_green_critical_interference(const SphereFlatContact& contact) {
@@ -125,6 +149,14 @@ double JacksonGreenContact::loading_force(double approach) const {
   return jackson_green_critical_load(contact_) *
          jackson_green_fit(approach / critical_interference_, contact_,
                            jackson_green_c(contact_.poisson_ratio));
+}
+
+double JacksonGreenContact::loading_stiffness(double approach) const {
+  if (approach < transition_)
+    return 2 * contact_.contact_modulus * std::sqrt(contact_.radius * approach);
+  return jackson_green_critical_load(contact_) / critical_interference_ *
+         jackson_green_fit_slope(approach / critical_interference_, contact_,
+                                 jackson_green_c(contact_.poisson_ratio));
 }
 
 double JacksonGreenContact::loading_work(double approach) const {

@@ -52,6 +52,11 @@ double ThorntonContact::loading_work(double approach) const {
          plastic * (yield_force_ + 0.5 * plastic_stiffness_ * plastic);
 }
 
+double ThorntonContact::loading_stiffness(double approach) const {
+  if (approach < yield_approach_) return 1.5 * hertz_stiffness_ * std::sqrt(approach);
+  return plastic_stiffness_;
+}
+
 double ThorntonContact::unloading_radius(double approach_max) const {
   require_positive("approach_max", approach_max);
   if (approach_max <= yield_approach_) return radius_;

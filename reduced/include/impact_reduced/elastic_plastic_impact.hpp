@@ -44,6 +44,9 @@ public:
   virtual double loading_force(double approach) const = 0;
   /// Loading work W_L(x) = integral_0^x F_L [J].
   virtual double loading_work(double approach) const = 0;
+  /// Loading stiffness dF_L/dx [N/m] for x > 0 (the right derivative at a breakpoint): the
+  /// slope that locates the force peak of a damped impact and scales Kuwabara-Kono damping.
+  virtual double loading_stiffness(double approach) const = 0;
   /// Approaches where F_L or its slope jumps (the quadratures split there). Default: none.
   virtual std::vector<double> loading_breakpoints() const { return {}; }
   /// The unloading branch from the maximum approach x_max > 0.

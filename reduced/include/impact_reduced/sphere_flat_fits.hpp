@@ -117,6 +117,7 @@ public:
                                JacksonGreenUnloading rule = JacksonGreenUnloading::contact_radius);
   double loading_force(double approach) const override;
   double loading_work(double approach) const override;
+  double loading_stiffness(double approach) const override;
   std::vector<double> loading_breakpoints() const override { return {transition_}; }
   HertzianUnloading unloading(double approach_max) const override;
   double critical_interference() const { return critical_interference_; }

@@ -51,6 +51,7 @@ public:
   ThorntonContact(double radius, double contact_modulus, double yield_pressure);
   double loading_force(double approach) const override;
   double loading_work(double approach) const override;
+  double loading_stiffness(double approach) const override;
   std::vector<double> loading_breakpoints() const override { return {yield_approach_}; }
   HertzianUnloading unloading(double approach_max) const override;
 
