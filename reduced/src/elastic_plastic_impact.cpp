@@ -45,6 +45,23 @@ double hertz_phase_factor() {
 
 } // namespace
 
+double ElasticPlasticContact::loading_approach(double work) const {
+  if (!(work > 0)) return 0.0;
+  // Bracket by doubling from a small start, then TOMS 748 on the work.
+  double lower = 0, upper = 1e-9;
+  for (int doublings = 0; loading_work(upper) < work; ++doublings) {
+    lower = upper;
+    upper *= 2;
+    if (doublings > 2000)
+      throw std::runtime_error("the loading curve never absorbs the impact energy");
+  }
+  boost::uintmax_t iterations = 200;
+  const auto [low, high] = boost::math::tools::toms748_solve(
+      [&](double x) { return loading_work(x) - work; }, lower, upper,
+      boost::math::tools::eps_tolerance<double>(), iterations);
+  return 0.5 * (low + high);
+}
+
 double loading_work_below(const ElasticPlasticContact& contact, double approach_max,
                           double distance) {
   if (distance <= 0) return 0.0;

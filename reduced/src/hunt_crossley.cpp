@@ -38,8 +38,16 @@ double integrate_density(const std::function<double(double)>& density, double lo
   return quadrature.integrate([&](double u) { return density(u); }, lower, upper, 1e-14);
 }
 
-double integrate_from_zero(const std::function<double(double)>& density, double upper) {
-  return integrate_density(density, 0.0, upper);
+// The integral over [0, upper], split at the ascending `breaks` inside.
+double integrate_from_zero(const std::function<double(double)>& density, double upper,
+                           const std::vector<double>& breaks) {
+  double integral = 0, lower = 0;
+  for (const double end : breaks) {
+    if (end >= upper) break;
+    integral += integrate_density(density, lower, end);
+    lower = end;
+  }
+  return integral + integrate_density(density, lower, upper);
 }
 
 // (t - log(1 + t)) / t^2 in quadruple precision (series near t = 0).
@@ -217,6 +225,19 @@ HuntCrossleyImpact::HuntCrossleyImpact(double mass,
     log_rate_span_ = 1.0 + s0 + w_out;
     separation_force_factor_ = -w_out;
   }
+  if (!power_law_) {
+    for (const double breakpoint : elastic_force().breakpoints()) {
+      if (!(breakpoint > 0 && breakpoint < approach_max_)) continue;
+      compression_breaks_.push_back(
+          velocity_ - approach_rate(breakpoint, ImpactPhase::compression));
+      const double rate = approach_rate(breakpoint, ImpactPhase::restitution);
+      restitution_breaks_.push_back(restitution_in_log_rate_
+                                        ? log_rate_span_ + std::log1p(damping_ * rate)
+                                        : rate - rebound_velocity());
+    }
+    std::sort(compression_breaks_.begin(), compression_breaks_.end());
+    std::sort(restitution_breaks_.begin(), restitution_breaks_.end());
+  }
 }
 
 double HuntCrossleyImpact::energy_loss() const {
@@ -322,18 +343,37 @@ double HuntCrossleyImpact::singular_rule_time(ImpactPhase phase, double distance
 
 double HuntCrossleyImpact::compression_time_until(double distance) const {
   if (uses_singular_rule()) return singular_rule_time(ImpactPhase::compression, distance);
-  return integrate_from_zero([this](double u) { return compression_time_density(u); }, distance);
+  return integrate_from_zero([this](double u) { return compression_time_density(u); }, distance,
+                             compression_breaks_);
 }
 
 double HuntCrossleyImpact::restitution_time_from(double distance) const {
   if (uses_singular_rule()) return singular_rule_time(ImpactPhase::restitution, distance);
-  return integrate_from_zero([this](double u) { return restitution_time_density(u); }, distance);
+  return integrate_from_zero([this](double u) { return restitution_time_density(u); }, distance,
+                             restitution_breaks_);
 }
 
 double HuntCrossleyImpact::compression_time() const { return compression_time_until(velocity_); }
 
 double HuntCrossleyImpact::contact_time() const {
   return compression_time() + restitution_time_from(restitution_span());
+}
+
+double HuntCrossleyImpact::restitution_time() const {
+  return restitution_time_from(restitution_span());
+}
+
+double HuntCrossleyImpact::time_at_approach(double approach, ImpactPhase phase) const {
+  const double rate = approach_rate(approach, phase);  // validates the approach
+  if (phase == ImpactPhase::compression) return compression_time_until(velocity_ - rate);
+  // The restitution distance from separation: u = v - v_out, or psi_out - psi with
+  // psi = -log(1 + b v) where the phase is parametrised by the log rate.
+  const double distance = restitution_in_log_rate_
+                              ? log_rate_span_ + std::log1p(damping_ * rate)
+                              : rate - rebound_velocity();
+  const double span = restitution_span();
+  return compression_time() + restitution_time_from(span) -
+         restitution_time_from(std::clamp(distance, 0.0, span));
 }
 
 ImpactState HuntCrossleyImpact::force_peak() const {

@@ -57,6 +57,17 @@ double ThorntonContact::loading_stiffness(double approach) const {
   return plastic_stiffness_;
 }
 
+double ThorntonContact::loading_approach(double work) const {
+  if (!(work > 0)) return 0.0;
+  const double yield_work = 0.4 * yield_force_ * yield_approach_;
+  if (work <= yield_work) return std::pow(2.5 * work / hertz_stiffness_, 0.4);
+  // F_y d + k d^2 / 2 = W - W_y, the positive root written without cancellation.
+  const double excess = work - yield_work;
+  return yield_approach_ +
+         2 * excess /
+             (yield_force_ + std::sqrt(yield_force_ * yield_force_ + 2 * plastic_stiffness_ * excess));
+}
+
 double ThorntonContact::unloading_radius(double approach_max) const {
   require_positive("approach_max", approach_max);
   if (approach_max <= yield_approach_) return radius_;

@@ -3,6 +3,7 @@
 /// The elastic part f(x) of a Hunt-Crossley contact law F = f(x) (1 + b dx/dt).
 
 #include <functional>
+#include <vector>
 
 namespace impact::reduced {
 
@@ -21,6 +22,8 @@ public:
   /// The approach x >= 0 with P(x) = potential (potential >= 0). The default solves
   /// P(x) = potential by bracketing and TOMS 748 to full double precision.
   virtual double approach_at_potential(double potential) const;
+  /// Approaches where f or its slope jumps: the time integrals split there. Default: none.
+  virtual std::vector<double> breakpoints() const { return {}; }
 };
 
 /// The power law f(x) = c x^n (Hertz: n = 3/2), the fast path: P and its inverse are

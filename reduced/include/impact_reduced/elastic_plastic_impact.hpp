@@ -47,6 +47,10 @@ public:
   /// Loading stiffness dF_L/dx [N/m] for x > 0 (the right derivative at a breakpoint): the
   /// slope that locates the force peak of a damped impact and scales Kuwabara-Kono damping.
   virtual double loading_stiffness(double approach) const = 0;
+  /// The approach x >= 0 with W_L(x) = work (work >= 0). The default brackets the root from
+  /// the Hertz-like guess and solves by TOMS 748 to full double precision; laws with an
+  /// inverse in closed form override it.
+  virtual double loading_approach(double work) const;
   /// Approaches where F_L or its slope jumps (the quadratures split there). Default: none.
   virtual std::vector<double> loading_breakpoints() const { return {}; }
   /// The unloading branch from the maximum approach x_max > 0.

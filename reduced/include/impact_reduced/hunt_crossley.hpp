@@ -108,6 +108,13 @@ public:
   double compression_time() const;
   /// Time from first contact to separation [s].
   double contact_time() const;
+  /// Time from x_max to separation [s] (contact_time() - compression_time(), integrated on
+  /// its own).
+  double restitution_time() const;
+  /// Time from first contact [s] at which the approach is x in [0, x_max] in the given
+  /// phase: the inverse of the history's approach, integrated from the nearer singular end
+  /// of the phase (same accuracy as compression_time). Throws InvalidInput for x outside.
+  double time_at_approach(double approach, ImpactPhase phase) const;
   /// Everything at once (one peak search, two integrals).
   ImpactResponse response() const;
 
@@ -191,6 +198,10 @@ private:
   double separation_force_factor_ = 0;   // 1 + b v_out = exp(-psi_out)
   double approach_max_;
   double restitution_;
+  // A custom law's breakpoints (ElasticForce::breakpoints) below x_max as phase distances:
+  // the time integrals split there, where the density jumps or kinks.
+  std::vector<double> compression_breaks_;
+  std::vector<double> restitution_breaks_;
 };
 
 } // namespace impact::reduced

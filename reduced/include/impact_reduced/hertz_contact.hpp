@@ -1,0 +1,27 @@
+#pragma once
+/// @file
+/// Hertz's elastic contact as an elastic-plastic contact law that never yields: loading and
+/// unloading along F = c x^(3/2), no permanent approach. It is the spring of the elastic
+/// limit of every damped elastic-plastic law (hunt_crossley_elastic_plastic.hpp), where
+/// Hunt-Crossley on this spring is exactly HuntCrossleyImpact with n = 3/2.
+
+#include "impact_reduced/elastic_plastic_impact.hpp"
+
+namespace impact::reduced {
+
+class HertzContact final : public ElasticPlasticContact {
+public:
+  /// c > 0 [N/m^1.5] (hertz_stiffness.hpp). Throws InvalidInput("stiffness") otherwise.
+  explicit HertzContact(double stiffness);
+  double stiffness() const { return stiffness_; }
+  double loading_force(double approach) const override;
+  double loading_work(double approach) const override;
+  double loading_stiffness(double approach) const override;
+  /// The loading branch itself: stiffness c, residual approach 0.
+  HertzianUnloading unloading(double approach_max) const override;
+
+private:
+  double stiffness_;
+};
+
+} // namespace impact::reduced
