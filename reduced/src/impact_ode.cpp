@@ -166,7 +166,20 @@ private:
           h = locate(start, event_start, length, [](const State& s) { return s[0]; });
         if (end_ == ContactEnd::zero_force) {
           const auto force = [this](const State& s) { return force_at(s); };
-          if (force(advance(start, h)) <= 0) {
+          const double force_at_end = force(advance(start, h));
+          if (at_zero_approach && force_at_end == 0) {
+            // The law vanishes at x = 0 (a factor x^(1/2)): a window of tension just before
+            // x = 0 may lie inside this step with the force 0, not negative, at its end.
+            // Bracket against -1 beyond x = 0, so that such a crossing is found; a root at
+            // the jump itself is x = 0, kept exact.
+            const double released_at = locate(start, event_start, h, [&](const State& s) {
+              return s[0] <= 0 ? -1.0 : force(s);
+            });
+            if (advance(start, released_at)[0] > 0) {
+              at_zero_approach = false;
+              h = released_at;
+            }
+          } else if (force_at_end <= 0) {
             const double released_at = locate(start, event_start, h, force);
             at_zero_approach = at_zero_approach && released_at == h;
             h = released_at;

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace impact::reduced {
 
@@ -171,6 +172,25 @@ double JacksonGreenContact::loading_work(double approach) const {
         [&](double x) { return loading_force(x); }, lower, upper);
   }
   return work;
+}
+
+double JacksonGreenContact::loading_approach(double work) const {
+  if (!(work > 0)) return 0.0;
+  if (work <= transition_work_) {
+    const double stiffness = 4.0 / 3.0 * contact_.contact_modulus * std::sqrt(contact_.radius);
+    return std::pow(2.5 * work / stiffness, 0.4);
+  }
+  // W is convex above the transition (F increases), so Newton from the right stays on the
+  // right of the root and converges monotonically. The fit just above the transition lies
+  // above the Hertz branch's end (the force jumps up there), F_t is the fit's value.
+  const double force_at_transition = loading_force(transition_ * (1 + 1e-15));
+  double approach = transition_ + (work - transition_work_) / force_at_transition;
+  for (int iteration = 0; iteration < 100; ++iteration) {
+    const double step = (loading_work(approach) - work) / loading_force(approach);
+    approach -= step;
+    if (!(std::abs(step) > 4 * std::numeric_limits<double>::epsilon() * approach)) break;
+  }
+  return std::max(approach, transition_);
 }
 
 HertzianUnloading JacksonGreenContact::unloading(double approach_max) const {

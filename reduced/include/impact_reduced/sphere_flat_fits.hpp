@@ -118,6 +118,11 @@ public:
   double loading_force(double approach) const override;
   double loading_work(double approach) const override;
   double loading_stiffness(double approach) const override;
+  /// Hertz's inverse below the transition; above it Newton's method on the work (its slope
+  /// is the force), started at the upper bound x_t + (W - W_t) / F_t that an increasing force
+  /// gives, from where the convex work converges monotonically: a few work evaluations
+  /// instead of a bracketing search.
+  double loading_approach(double work) const override;
   std::vector<double> loading_breakpoints() const override { return {transition_}; }
   HertzianUnloading unloading(double approach_max) const override;
   double critical_interference() const { return critical_interference_; }
