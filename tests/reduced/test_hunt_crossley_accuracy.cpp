@@ -1,7 +1,7 @@
 // Accuracy of the closed-form Hunt-Crossley impact (reduced library) against references
 // computed here in 50/100 digits from the spec's formulas (tests/reduced/
 // high_precision_reference.hpp), over the ranges of the spec's accuracy table
-// (shared/spec/reduced-models.md, section 1):
+// (doc/theory/reduced-models.md, section 1):
 //
 //   k(beta), V_out                      beta in [1e-12, 1e4]      <= 4e-15
 //   beta from k                         k in [1e-6, 1 - 1e-12]    <= 1e-13
