@@ -128,7 +128,7 @@ for ratio, v, h, s, q, t, wall in rows:
     print(f"| {ratio:g} | {gci(q, 'contact_time')} | {gci(q, 'force_max')} | {gci(q, 'approach_max')} "
           f"| {gci(q, 'restitution', True)} | {s['energy_error_final'] * 100:.4f} % | {s['force_after_release']:.3g} |")
 
-# The targets, as for the elastic model: GCI <= 0.5 % for t_c, F_max, x_max, <= 0.002
+# The targets, as for the elastic model: GCI <= 0.5 % for t_c, F_max, x_max, <= 0.002
 # absolute for e. The bench fails (exit 2) where a point misses one, so that a table is not
 # quoted as verified when it is not.
 missed = []

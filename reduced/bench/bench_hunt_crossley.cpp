@@ -1,5 +1,5 @@
 // Cost of the closed-form Hunt-Crossley impact against a direct ODE integration of the
-// same impact. Targets (issue 2): restitution <= 100 ns, full response <= 5 us, closed form
+// same impact. Targets: restitution <= 100 ns, full response <= 5 us, closed form
 // >= 1000 times faster than the ODE at equal accuracy.
 
 #include "impact_reduced/hunt_crossley.hpp"
@@ -63,7 +63,7 @@ void ode_integration(benchmark::State& state) {
   for (auto _ : state)
     benchmark::DoNotOptimize(integrate_impact(mass, 1.0, law, relative_tolerance));
 }
-// rtol 1e-10 (the issue's setting) and 1e-13, which is what it takes the ODE to come within
+// rtol 1e-10 and 1e-13, the latter what it takes the ODE to come within
 // about 1e-12 of the closed form (see test_impact_ode): the "equal accuracy" comparison.
 BENCHMARK(ode_integration)->Arg(10)->Arg(13)->Unit(benchmark::kMicrosecond);
 

@@ -1,4 +1,4 @@
-"""Calibration of elastic FEM runs against Hertz (issue 5's acceptance item).
+"""Calibration of elastic FEM runs against Hertz: the calibrated law must be Hertz's.
 
 The default scenario (elastic steel, default mesh) is run at 0.5, 1, 2 m/s on 2 ranks,
 calibrated with `impact-calibrate --laws none` and reported with `impact-report`.

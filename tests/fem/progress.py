@@ -1,4 +1,4 @@
-"""The progress line under mpirun (issue 8, small defects).
+"""The progress line under mpirun: printed as lines, never redrawn in place.
 
 Open MPI runs the ranks behind a pseudo-terminal, so isatty() is true even
 when mpirun's own output goes to a file, and the progress line used to be

@@ -1,4 +1,4 @@
-"""Smooth contact-force histories (spec verification 6, issue 8 item 2).
+"""Smooth contact-force histories (spec verification 6).
 
 A small Kelvin-Voigt case (the study's material, tau_r = 1.147 us in both
 bodies, 35 um contact elements as in the study, a small plate to keep it

@@ -1,4 +1,4 @@
-"""Campaign over a parameter sweep (issue 11) on 2 ranks: names, index,
+"""Campaign over a parameter sweep on 2 ranks: names, index,
 the runs' parameters, restart with damaged runs, moved and copied campaigns,
 bad sweep options.
 
@@ -8,7 +8,7 @@ on a coarse mesh (100 um contact elements, 300 steps per contact time).
 Checks:
 - bad --sweep / Campaign/Sweep options: exit status 1, the message names
   the option and the entry, no directory created;
-- the run directories are exactly those of sweep_format.md, index.json has
+- the run directories are exactly those of fem/README.md, index.json has
   the axes (values as numbers or text), the paths in order, each run's
   point; each parameters.prm and the history.h5 text attributes carry the
   point; `sha256sum -c checksums.sha256` (coreutils, not our code) accepts
@@ -17,7 +17,7 @@ Checks:
 - history.h5 truncated to a third: exactly that run "damaged, redone", its
   file whole again, the index unchanged;
 - summary.json edited in one run, removed in another: both redone;
-- a run as written before issue 11 (no checksums.sha256, no Campaign/Sweep
+- an older run (no checksums.sha256, no Campaign/Sweep
   line, Output/Directory of another place): its parameters recognised, and
   redone once (no checksums);
 - the campaign moved (mv) and copied (cp -r): every run skipped in the new
@@ -199,7 +199,7 @@ checks.check(summary(f"{a}/{edited}")["restitution"] == restitution[(0.35, 0.5)]
              os.path.exists(f"{a}/{removed}/summary.json"), "their summaries written anew")
 checks.check(load_index(a) == index, "index fine")
 
-# --- restart: a run as written before issue 11: no checksums, no
+# --- restart: a run as written before checksums and sweeps: no checksums, no
 # Campaign/Sweep line, Output/Directory of another place ---
 old_style = f"{a}/{PATHS[0]}"
 os.remove(f"{old_style}/checksums.sha256")
@@ -210,7 +210,7 @@ text = re.sub(r"set Directory( *)= .*", r"set Directory\1= /elsewhere/old-campai
 with open(f"{old_style}/parameters.prm", "w") as f:
     f.write(text)
 code, output = campaign(a)
-print("--- restart, a run in the form written before issue 11 ---\n" + output)
+print("--- restart, a run in the form written before checksums and sweeps ---\n" + output)
 checks.check(code == 0 and status_of(output, PATHS[0]) == "no checksums (run before they were kept), redone" and
              os.path.exists(f"{a}/{PATHS[0]}/checksums.sha256") and
              all(status_of(output, p) == "complete, skipped" for p in PATHS[1:]),

@@ -1,4 +1,4 @@
-"""The verification mode (issue 8 item 4) on a small case.
+"""The verification mode (spec verification 7) on a small case.
 
 impact-fem --verify runs the scenario (the fine level) and two coarser ones
 (element sizes and time step times 1.5 and 2.25) and writes
@@ -98,7 +98,7 @@ again = subprocess.run([binary, "--set", f"Output/Directory={campaign}", "--veri
                        capture_output=True, text=True)
 checks.check(again.returncode == 0 and again.stdout.count("complete, skipped") == 2,
              "a restart skips the verified runs")
-# Issue 11: verification.json is covered by the run's checksums, and a run
+# verification.json is covered by the run's checksums, and a run
 # redone because it is damaged is verified anew (its old verification.json
 # is not trusted).
 with open(f"{campaign}/v2/checksums.sha256") as f:

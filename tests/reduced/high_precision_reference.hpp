@@ -2,7 +2,7 @@
 // High-precision references for the accuracy tests of the reduced library (Lambert W and
 // Hunt-Crossley impact). Everything here is computed in 50- or 100-digit arithmetic
 // (Boost.Multiprecision cpp_bin_float) from the formulas of the spec
-// (shared/spec/reduced-models.md, section 1) evaluated literally, with Boost.Math's own
+// (doc/theory/reduced-models.md, section 1) evaluated literally, with Boost.Math's own
 // Lambert W, tanh-sinh quadrature and TOMS 748 -- never with the library's formulation
 // (which works in double/quad precision with the branch-point equation -y - log(1 - y) = s
 // and integrates over the approach rate).

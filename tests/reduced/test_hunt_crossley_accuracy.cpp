@@ -1,7 +1,7 @@
 // Accuracy of the closed-form Hunt-Crossley impact (reduced library) against references
 // computed here in 50/100 digits from the spec's formulas (tests/reduced/
 // high_precision_reference.hpp), over the ranges of the spec's accuracy table
-// (shared/spec/reduced-models.md, section 1):
+// (doc/theory/reduced-models.md, section 1):
 //
 //   k(beta), V_out                      beta in [1e-12, 1e4]      <= 4e-15
 //   beta from k                         k in [1e-6, 1 - 1e-12]    <= 1e-13
@@ -50,8 +50,7 @@ constexpr double target_peak = 1e-13; // x_max, F_max, time of F_max
 constexpr double target_time = 1e-12; // contact and compression times
 constexpr double target_rate = 1e-12; // v(x)
 
-/// `count` log-spaced values from `first` to `last`, both included, merged with the decade
-/// points of the brief that lie in range.
+/// `count` log-spaced values from `first` to `last`, both included.
 std::vector<double> log_grid(double first, double last, int count) {
   std::vector<double> grid;
   const double decades = std::log10(last / first);

@@ -30,7 +30,7 @@ namespace reduced = impact::reduced;
 
 constexpr double pi = boost::math::constants::pi<double>();
 
-// One published case of shared/data/olshanskiy_tables.csv.
+// One published case of tests/reduced/data/olshanskiy_tables.csv.
 struct PublishedCase {
   PowerLawOscillator oscillator{};
   std::vector<double> time;      // t_i [s], 5 decimals
@@ -39,7 +39,7 @@ struct PublishedCase {
 };
 
 std::map<std::string, PublishedCase> read_published_cases() {
-  const std::string path = std::string(IMPACT_SHARED_DATA_DIR) + "/olshanskiy_tables.csv";
+  const std::string path = std::string(IMPACT_TEST_DATA_DIR) + "/olshanskiy_tables.csv";
   std::ifstream file(path);
   if (!file) throw std::runtime_error("cannot open " + path);
   std::map<std::string, PublishedCase> cases;

@@ -39,7 +39,7 @@ ForceSmoothness force_smoothness(const std::vector<double>& force) {
       last = i;
     }
   // The steps [first + 5, last - 5) are inside; each measured step has both neighbours there
-  // (as impact-fem's own measure and the project's before-stop check count them).
+  // (as impact-fem's own measure and tests/fem/smoothness.py count them).
   if (last < first + 2 * excluded_steps + 3) return smoothness;
   const std::size_t begin = first + excluded_steps, end = last - excluded_steps; // [begin, end)
   double worst = 0;

@@ -8,7 +8,7 @@
 /// methods: a tight-tolerance numerical integration (the reference), the implicit
 /// recurrence of the averaged half-cycle frequency, and the explicit Lambert-W recurrence
 /// with the exact W0 or with the source's elementary approximation of W. The mathematics is
-/// in shared/spec/reduced-models.md, section 2. Units are SI throughout.
+/// in doc/theory/reduced-models.md, section 2. Units are SI throughout.
 ///
 /// Every function validates its input and throws InvalidInput (see invalid_input.hpp) whose
 /// `parameter()` is one of "mass", "viscous", "c1", "c2", "power", "a0", "count" (the names
