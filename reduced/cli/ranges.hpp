@@ -24,7 +24,7 @@ inline Range poisson() { return Range::open(-1.0, 0.5); }             // Poisson
 inline Range radius() { return Range::closed(1e-9, 1e3); }            // m
 inline Range density() { return Range::closed(0.1, 1e5); }            // kg/m^3
 inline Range yield_strength() { return Range::closed(1e3, 1e11); }    // Pa
-inline Range thickness() { return Range::closed(1e-6, 10.0); }        // m
+inline Range thickness() { return Range::closed(1e-6, 1e3); }         // m
 inline Range restitution() { return Range::closed(1e-6, 1.0); }       // e
 inline Range stiffness_c1() { return Range::closed(1e-6, 1e15); }     // oscillator c1, N/m
 inline Range stiffness_c2() { return Range::closed(-1e15, 1e15); }    // c2, N/m^(v+1)
