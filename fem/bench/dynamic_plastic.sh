@@ -52,7 +52,7 @@ per_radius = float(per_radius)
 # The scenario's constants (fem/scenarios/plastic_on_rigid.prm).
 R, E, NU, RHO, Y = 0.01452, 2e11, 0.3, 7810, 2.03e9
 law = [reduced, "plastic", "--model", "thornton", "--radius", str(R), "--density", str(RHO),
-       "--modulus", str(E), "--poisson", str(NU), "--flat-modulus", "1e40", "--flat-poisson", "0",
+       "--modulus", str(E), "--poisson", str(NU), "--flat", "rigid",
        "--yield-strength", str(Y), "--format", "csv"]
 def thornton(velocities):
     text = subprocess.run(law + ["--velocity", ",".join(repr(v) for v in velocities)],

@@ -8,6 +8,8 @@
 
 #include "impact_postprocess/calibration/calibrate_run_set.hpp"
 
+#include <impact_fem/as_written.h>
+
 #include <algorithm>
 #include <filesystem>
 #include <iostream>
@@ -22,33 +24,52 @@ using namespace impact::postprocess;
 
 const std::string program = "impact-calibrate";
 
-const char* usage = R"(usage: impact-calibrate RUN... --output FILE [options]
+// The names of the comparison laws, comma-separated.
+std::string law_names() {
+  std::string names;
+  for (const auto& name : impact::postprocess::comparison_model_names())
+    names += (names.empty() ? "" : ", ") + name;
+  return names;
+}
+
+tool::Usage usage() {
+  using namespace impact::cli;
+  const CalibrationOptions defaults;
+  std::vector<Option> options = tool::run_options("FILE", "the calibration JSON to write");
+  options.push_back(text_option("laws", "LIST",
+                                "comparison laws fitted over the campaign: comma-separated "
+                                "names (" + law_names() + "), 'all' or 'none'")
+                        .with_default("all"));
+  options.push_back(integer_option("max-iterations", "N", 1, 100000,
+                                   "iteration limit of each least-squares fit")
+                        .with_default(std::to_string(defaults.max_iterations)));
+  options.push_back(real_option("confidence", "LEVEL", Range::open(0, 1),
+                                "level of the confidence intervals")
+                        .with_default(impact_fem::as_written(defaults.confidence_level)));
+  options.push_back(real_option("energy-weight", "W", Range::closed(0, 1e6),
+                                "weight of the energy-loss residuals of the combined fits (1: a "
+                                "1 % error in 1 - e^2 costs as much as a 1 % RMS force "
+                                "residual; 0 fits the force histories only)")
+                        .with_default(impact_fem::as_written(defaults.energy_weight)));
+  options.push_back(real_option("published-damping", "B", Range::closed(0, 1e3),
+                                "b [s/m] of the published Hunt-Crossley reference model (c "
+                                "from Hertz, n = 3/2; 0.1 is the published steel example)")
+                        .with_default(impact_fem::as_written(defaults.published_damping)));
+  return {R"(usage: impact-calibrate RUN... --output FILE [options]
        impact-calibrate --campaign DIR --output FILE [options]
 
 Calibrates the Hunt-Crossley contact law F = c x^n (1 + b dx/dt) (and the comparison laws
 of the reduced library) from impact-fem runs and writes the result as JSON.
 
-  RUN                  a run directory of impact-fem (holding history.h5 and summary.json)
-                       or its HDF5 file
-  --campaign DIR       all runs of a campaign: those listed in DIR/index.json, else
-                       every subdirectory holding history.h5
-  --output FILE        the calibration JSON to write (required)
-  --laws LIST          comparison laws fitted over the campaign: comma-separated names,
-                       'all' (default) or 'none'
-  --max-iterations N   iteration limit of each least-squares fit (default 100)
-  --confidence LEVEL   level of the confidence intervals, in (0, 1) (default 0.95)
-  --energy-weight W    weight of the energy-loss residuals of the combined fits, >= 0
-                       (default 1: a 1 % error in 1 - e^2 costs as much as a 1 % RMS force
-                       residual; 0 fits the force histories only)
-  --published-damping B  b [s/m] of the published Hunt-Crossley reference model (c from
-                       Hertz, n = 3/2), >= 0 (default 0.1, the published steel example)
-  --quiet              no progress messages on stderr
-  --help               this text
-
-Exit codes: 0 success, 2 bad input (message names the problem; the JSON says what is
+  RUN                   a run directory of impact-fem (holding history.h5 and summary.json)
+                        or its HDF5 file
+)",
+          options,
+          R"(Exit codes: 0 success, 2 bad input (message names the problem; the JSON says what is
 missing; with no usable run nothing is written), 3 a fit did not converge (see "problems"
 in the JSON), 1 internal error.
-)";
+)"};
+}
 
 // The comparison laws of --laws: 'all', 'none' or comma-separated names of the library's.
 std::vector<std::string> laws(tool::CommandLine& line) {
@@ -63,9 +84,8 @@ std::vector<std::string> laws(tool::CommandLine& line) {
     if (!law.empty()) chosen.push_back(law);
   for (const auto& law : chosen)
     if (std::find(known.begin(), known.end(), law) == known.end()) {
-      std::string names;
-      for (const auto& name : known) names += (names.empty() ? "" : ", ") + name;
-      throw tool::UsageError("--laws: unknown law '" + law + "' (known: " + names + ", or all, none)");
+      throw tool::UsageError("--laws: unknown law '" + law + "' (known: " + law_names() +
+                             ", or all, none)");
     }
   return chosen;
 }
@@ -75,12 +95,10 @@ CalibrationRequest parse(tool::CommandLine& line) {
   CalibrationRequest request{common.runs, common.campaign, common.output, {}};
   CalibrationOptions& options = request.options;
   options.laws = laws(line);
-  options.max_iterations = int(line.integer("max-iterations", 1, 100000, options.max_iterations));
-  options.confidence_level =
-      line.real("confidence", tool::Range::open(0, 1), options.confidence_level);
-  options.energy_weight = line.real("energy-weight", tool::Range::closed(0, 1e6), options.energy_weight);
-  options.published_damping =
-      line.real("published-damping", tool::Range::closed(0, 1e3), options.published_damping);
+  options.max_iterations = int(line.integer("max-iterations"));
+  options.confidence_level = line.real("confidence");
+  options.energy_weight = line.real("energy-weight");
+  options.published_damping = line.real("published-damping");
   if (!common.quiet)
     options.progress = [](const std::string& text) {
       std::cerr << program << ": " << text << std::endl;
@@ -105,4 +123,6 @@ int execute(const CalibrationRequest& request) {
 
 } // namespace
 
-int main(int argc, char** argv) { return tool::run(program, usage, argc, argv, parse, execute); }
+int main(int argc, char** argv) {
+  return tool::run(program, usage(), argc, argv, parse, execute);
+}

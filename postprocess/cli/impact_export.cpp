@@ -1,5 +1,5 @@
-// impact-export: the calibrated contact of a campaign in the terms of Simbody, MuJoCo and
-// LAMMPS. The options are parsed here; the export is made by export_run_set
+// impact-export: the calibrated contact of a campaign in the terms of Simbody, MuJoCo,
+// LAMMPS and (for an elastic-plastic campaign) LIGGGHTS. The options are parsed here; the export is made by export_run_set
 // (impact_postprocess/export/export_run_set.hpp).
 // Exit codes: 0 success; 2 bad input (the message names it; nothing is written);
 // 1 internal error.
@@ -19,30 +19,38 @@ using namespace impact::postprocess;
 
 const std::string program = "impact-export";
 
-const char* usage = R"(usage: impact-export --campaign DIR --calibration FILE --output DIR [options]
+tool::Usage usage() {
+  using namespace impact::cli;
+  std::vector<Option> options = tool::run_options(
+      "DIR", "the export directory (replaced as a whole)");
+  options.insert(options.begin(),
+                 text_option("calibration", "FILE",
+                             "the JSON of impact-calibrate for these runs (required)"));
+  options.push_back(real_option("reference-velocity", "V", Range::positive(),
+                                "MuJoCo's reference velocity [m/s], one of the campaign's")
+                        .with_default_note("the median run, the lower middle one for an even "
+                                           "number of runs"));
+  return {R"(usage: impact-export --campaign DIR --calibration FILE --output DIR [options]
        impact-export RUN... --calibration FILE --output DIR [options]
 
-Writes the calibrated contact of a campaign for three simulators, each file with a header
+Writes the calibrated contact of a campaign for four simulators, each file with a header
 saying which model it carries and that model's errors against the FEM:
   simbody/impact_contact.hpp   Simbody 3.7 HuntCrossleyForce parameters (C++ header)
   mujoco/impact_contact.xml    MuJoCo 2.2.2 MJCF drop model (solref, solimp, timestep)
   lammps/kuwabara_kono.in      LAMMPS fix wall/gran granular input decks
   lammps/tsuji.in
+  liggghts/thornton_ning.in    LIGGGHTS 3.8.0 normal model thornton_ning on a wall
+                               (elastic-plastic campaigns only: Thornton's law)
   export.json                  the manifest: parameters, mappings, model predictions
 
-  --campaign DIR / RUN...      the FEM runs of the calibration (for the sphere radius,
-                               impact-fem's parameter 'Scenario/Sphere radius')
-  --calibration FILE           the JSON of impact-calibrate for these runs (required)
-  --output DIR                 the export directory (replaced as a whole; required)
-  --reference-velocity V       MuJoCo's reference velocity, one of the campaign's [m/s]
-                               (default: the median run, the lower middle one for an even
-                               number of runs)
-  --quiet                      no progress messages on stderr
-  --help                       this text
-
-Exit codes: 0 success, 2 bad input (message names the problem; nothing is written),
+  RUN                   the FEM runs of the calibration, instead of --campaign (for the
+                        sphere radius, impact-fem's parameter 'Scenario/Sphere radius')
+)",
+          options,
+          R"(Exit codes: 0 success, 2 bad input (message names the problem; nothing is written),
 1 internal error.
-)";
+)"};
+}
 
 struct Arguments {
   ExportRequest request;
@@ -58,8 +66,7 @@ Arguments parse(tool::CommandLine& line) {
   request.campaign = common.campaign;
   request.output = common.output;
   const auto calibration = line.text("calibration");
-  if (line.has("reference-velocity"))
-    request.reference_velocity = line.real("reference-velocity", tool::Range::positive());
+  if (line.has("reference-velocity")) request.reference_velocity = line.real("reference-velocity");
   if (!calibration) throw tool::UsageError("--calibration FILE is required");
   request.calibration = *calibration;
   tool::require_output_directory(request.output);
@@ -84,4 +91,6 @@ int execute(const Arguments& arguments) {
 
 } // namespace
 
-int main(int argc, char** argv) { return tool::run(program, usage, argc, argv, parse, execute); }
+int main(int argc, char** argv) {
+  return tool::run(program, usage(), argc, argv, parse, execute);
+}

@@ -10,6 +10,8 @@
 
 #include "impact_postprocess/report/pipeline.hpp"
 
+#include <impact_fem/as_written.h>
+
 #include <filesystem>
 #include <iostream>
 #include <string>
@@ -21,7 +23,31 @@ using namespace impact::postprocess;
 
 const std::string program = "impact-report";
 
-const char* usage = R"(usage: impact-report --campaign DIR --output DIR [--calibration FILE] [options]
+tool::Usage usage() {
+  using namespace impact::cli;
+  std::vector<Option> options = tool::run_options(
+      "DIR", "where report.html, report.md, figures/ and report_data.json go (created if "
+             "needed)");
+  std::string tolerances;
+  for (const double tolerance : default_tolerances)
+    tolerances += (tolerances.empty() ? "" : ",") + impact_fem::as_written(100 * tolerance);
+  options.push_back(text_option("calibration", "FILE",
+                                "the JSON of impact-calibrate for these runs; without it the "
+                                "runs are calibrated here (all laws) and DIR/calibration.json "
+                                "is written"));
+  options.push_back(reals_option("tolerances", "LIST", Range::open(0, 100),
+                                 "the tolerance bands of the verdict in per cent")
+                        .with_default(tolerances));
+  options.push_back(real_option("published-damping", "B", Range::closed(0, 1e3),
+                                "b [s/m] of the published Hunt-Crossley model when the runs are "
+                                "calibrated here (with --calibration the calibration's)")
+                        .with_default(impact_fem::as_written(ReportRequest{}.published_damping)));
+  options.push_back(text_option("simulators", "DIR",
+                                "the result files of tests/consumers/run_in_simulators.sh "
+                                "(every DIR/*.json, format impact-simulator-run): the section "
+                                "\"In your simulator\" (without it the section gives the "
+                                "commands)"));
+  return {R"(usage: impact-report --campaign DIR --output DIR [--calibration FILE] [options]
        impact-report RUN... --output DIR [--calibration FILE] [options]
 
 Writes the model-validity report of a campaign of impact-fem runs: where the calibrated
@@ -32,29 +58,17 @@ A sweep campaign of the velocity and one other parameter (impact-fem --sweep) ge
 validity map first (every row calibrated here); the sections after it detail one row,
 that of the thickest plate (--calibration FILE, if given, is that row's calibration).
 
-  --campaign DIR       the runs of a campaign (as impact-calibrate reads them)
-  RUN                  a run directory or HDF5 file of impact-fem (instead of --campaign)
-  --output DIR         where report.html, report.md, figures/ and report_data.json go
-                       (created if needed)
-  --calibration FILE   the JSON of impact-calibrate for these runs; without it the runs
-                       are calibrated here (all laws) and DIR/calibration.json is written
-  --tolerances LIST    the tolerance bands of the verdict in per cent, comma-separated,
-                       each in (0, 100) (default 2,5)
-  --published-damping B  b [s/m] of the published Hunt-Crossley model when the runs are
-                       calibrated here (default 0.1; with --calibration the calibration's)
-  --simulators DIR     the result files of tests/consumers/run_in_simulators.sh (every
-                       DIR/*.json, format impact-simulator-run): the section "In your
-                       simulator" (without it the section gives the commands)
-  --quiet              no progress messages on stderr
-  --help               this text
-
-Environment: IMPACT_REPORT_PYTHON, the Python 3 with matplotlib that draws the figures
+  RUN                   a run directory or HDF5 file of impact-fem (instead of --campaign)
+)",
+          options,
+          R"(Environment: IMPACT_REPORT_PYTHON, the Python 3 with matplotlib that draws the figures
 (default: the one found when the project was configured).
 
 Exit codes: 0 complete report, 2 bad input (a run, the calibration, the simulators
 directory or one of its result files; the report says what is missing), 3 a fit did not
 converge, 4 the figures could not be drawn, 1 internal error.
-)";
+)"};
+}
 
 ReportRequest parse(tool::CommandLine& line) {
   const tool::RunArguments common = tool::run_arguments(line, "DIR");
@@ -65,17 +79,16 @@ ReportRequest parse(tool::CommandLine& line) {
   if (const auto calibration = line.text("calibration")) request.calibration = *calibration;
   if (const auto simulators = line.text("simulators")) request.simulators = *simulators;
   if (line.has("tolerances")) {
-    const std::string list = line.text("tolerances").value_or("");
+    const std::string list = line.given_text("tolerances");
     try {
-      request.tolerances = line.reals("tolerances", tool::Range::open(0, 100));
+      request.tolerances = line.reals("tolerances");
     } catch (const tool::UsageError&) {
       throw tool::UsageError("--tolerances must be per cents in (0, 100), comma-separated (got '" +
-                       list + "')");
+                             list + "')");
     }
     for (double& tolerance : request.tolerances) tolerance /= 100;
   }
-  request.published_damping =
-      line.real("published-damping", tool::Range::closed(0, 1e3), request.published_damping);
+  request.published_damping = line.real("published-damping");
   if (!common.quiet)
     request.progress = [](const std::string& text) {
       std::cerr << program << ": " << text << std::endl;
@@ -100,4 +113,6 @@ int execute(const ReportRequest& request) {
 
 } // namespace
 
-int main(int argc, char** argv) { return tool::run(program, usage, argc, argv, parse, execute); }
+int main(int argc, char** argv) {
+  return tool::run(program, usage(), argc, argv, parse, execute);
+}

@@ -21,6 +21,7 @@
 namespace impact::postprocess::tool {
 
 using impact::cli::CommandLine;
+using impact::cli::Option;
 using impact::cli::Range;
 using impact::cli::UsageError;
 
@@ -32,10 +33,35 @@ struct RunArguments {
   bool quiet = false;
 };
 
-/// The command line of a tool: the flag --quiet, run operands, options.
-inline CommandLine command_line(const std::string& program, int argc, char** argv) {
-  return CommandLine(program, std::vector<std::string>(argv + 1, argv + argc),
-                     CommandLine::Syntax{{"quiet"}, true});
+/// What a tool's --help prints: `synopsis` (the usage lines and what the tool does), then the
+/// options from their declarations (those that parse the command line), then `epilogue`.
+struct Usage {
+  std::string synopsis;
+  std::vector<Option> options;
+  std::string epilogue;
+};
+
+inline std::string usage_text(const Usage& usage) {
+  return usage.synopsis + "\n" + impact::cli::usage_of_options(usage.options) +
+         "  --help, -h            this text\n\n" + usage.epilogue;
+}
+
+/// The declarations of the options of run_arguments: --campaign, --output (`output_help`,
+/// its value named `output_name`, "FILE" or "DIR") and --quiet.
+inline std::vector<Option> run_options(const std::string& output_name,
+                                       const std::string& output_help) {
+  return {impact::cli::text_option("campaign", "DIR",
+                                   "all runs of a campaign: those listed in DIR/index.json, "
+                                   "else every subdirectory holding history.h5 (instead of "
+                                   "RUN...)"),
+          impact::cli::text_option("output", output_name, output_help + "; required"),
+          impact::cli::flag_option("quiet", "no progress messages on stderr")};
+}
+
+/// The command line of a tool: the flag --quiet, run operands, the declared options.
+inline CommandLine command_line(const std::string& program, int argc, char** argv,
+                                const std::vector<Option>& options) {
+  return CommandLine(program, std::vector<std::string>(argv + 1, argv + argc), options, true);
 }
 
 /// Takes --quiet, --output, --campaign and the run operands; requires an output (named
@@ -68,20 +94,19 @@ inline void print_problem(const std::string& program, const Problem& problem) {
             << '\n';
 }
 
-/// The frame of a tool's main: `usage` for --help or -h; else `parse` reads the command line
-/// (then every option must have been used) and `execute` returns the exit code. Exit code 2
-/// for a usage error or invalid input, 1 for any other failure.
+/// The frame of a tool's main: its usage for --help or -h (wherever they stand); else `parse`
+/// reads the command line (then every option must have been used) and `execute` returns the
+/// exit code. Exit code 2 for a usage error or invalid input, 1 for any other failure.
 template <class Arguments>
-int run(const std::string& program, const char* usage, int argc, char** argv,
+int run(const std::string& program, const Usage& usage, int argc, char** argv,
         Arguments (*parse)(CommandLine&), int (*execute)(const Arguments&)) {
-  for (int i = 1; i < argc; ++i)
-    if (std::string(argv[i]) == "--help" || std::string(argv[i]) == "-h") {
-      std::cout << usage;
-      return 0;
-    }
+  if (impact::cli::asks_for_help(std::vector<std::string>(argv + 1, argv + argc))) {
+    std::cout << usage_text(usage);
+    return 0;
+  }
   Arguments arguments;
   try {
-    CommandLine line = command_line(program, argc, argv);
+    CommandLine line = command_line(program, argc, argv, usage.options);
     arguments = parse(line);
     line.finish();
   } catch (const UsageError& error) {

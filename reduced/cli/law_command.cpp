@@ -3,21 +3,23 @@
 
 #include "commands.hpp"
 #include "output.hpp"
+#include "ranges.hpp"
+#include "sphere_flat_options.hpp"
 
 #include "impact_reduced/comparison_laws.hpp"
 
 namespace impact::cli {
 
-int run_law_command(CommandLine& options, std::ostream& out) {
+namespace {
+
+int run_law(CommandLine& options, std::ostream& out) {
   using namespace impact::reduced;
-  const std::string model = options.choice("model", comparison_law_names());
+  const std::string model = options.choice("model");
   const ComparisonLaw& law = comparison_law(model);
-  const double restitution = options.real("restitution", Range{0.0, 1.0, false, true});
-  const double velocity = options.real("velocity", Range::positive());
-  const double mass = options.real("mass", Range::positive());
-  const double stiffness = options.real("stiffness", Range::positive());
-  const double exponent =
-      options.real("exponent", Range::positive(), law.required_exponent.value_or(1.5));
+  const double restitution = options.real("restitution");
+  const double velocity = options.real("velocity");
+  const SphereFlat body = read_sphere_flat(options, "--model " + model, law.required_exponent);
+  const double mass = body.mass, stiffness = body.stiffness, exponent = body.exponent;
   options.finish();
 
   const ContactSetup setup{mass, stiffness, exponent};
@@ -32,6 +34,8 @@ int run_law_command(CommandLine& options, std::ostream& out) {
   result["mass"] = mass;
   result["stiffness"] = stiffness;
   result["exponent"] = exponent;
+  result["contact"] = body.contact_basis;
+  result["mass_from"] = body.mass_basis;
   result["damping"] = evaluation.damping;
   result["damping_name"] = law.damping_name;
   result["damping_unit"] = law.damping_unit;
@@ -46,6 +50,32 @@ int run_law_command(CommandLine& options, std::ostream& out) {
   result["approach_max"] = impact.approach_max;
   print_json(out, result);
   return 0;
+}
+
+} // namespace
+
+Command law_command() {
+  std::vector<Option> options = {
+      choice_option("model", reduced::comparison_law_names(), "the contact law"),
+      real_option("restitution", "E", ranges::restitution(),
+                  "target coefficient of restitution e [-], mapped to the law's damping by the "
+                  "law's own formula"),
+      real_option("velocity", "V", ranges::velocity(), "impact velocity [m/s]")};
+  for (const auto& option : sphere_flat_options(
+           "exponent n of the elastic force c x^n [-]; a law defined for one n only "
+           "(kelvin-voigt: 1; tsuji, kuwabara-kono: 3/2) takes that n by default and refuses "
+           "another"))
+    options.push_back(option);
+  return {"law",
+          "a comparison contact law: the damping its own formula assigns and the restitution it "
+          "really produces",
+          "A comparison contact law of the literature: the damping its own formula assigns to a "
+          "target restitution at the impact velocity, and the impact it then really produces "
+          "(reference ODE integration): restitution, its error against the target, contact "
+          "time, peak force, maximum approach.",
+          std::move(options),
+          sphere_flat_notes(),
+          run_law};
 }
 
 } // namespace impact::cli

@@ -4,75 +4,86 @@
 #include "commands.hpp"
 #include "impact_reduced/invalid_input.hpp"
 
-#include <functional>
+#include <algorithm>
 #include <iostream>
-#include <map>
 #include <string>
 #include <vector>
 
+namespace impact::cli {
+
 namespace {
 
-const char* usage = R"(usage: impact-reduced COMMAND [--option value ...]
+const char* units_and_exit_codes =
+    "Units are SI. Output is JSON, or CSV where it is a table (--format csv).\n"
+    "Exit codes: 0 success, 2 bad input (the message names the option and its allowed "
+    "values), 1 internal error.\n";
 
-commands:
-  hc          Hunt-Crossley impact in closed form (x_max, peak force, contact time, restitution, ...)
-              --mass M --stiffness C --exponent N --damping B --velocity V [--history P]
-  damping     damping constant b of Hunt-Crossley from a restitution
-              --restitution E --velocity V
-  law         a comparison contact law: the damping its own formula assigns and the
-              restitution it really produces
-              --model NAME --restitution E --velocity V --mass M --stiffness C [...]
-  oscillator  free decay of a damped oscillator with power-law stiffness (Olshanskiy)
-              --mass M --viscous K --c1 C1 --c2 C2 --power NU --a0 A0 --count N
-              --method numeric|implicit|lambert|lambert-approx
-  thin-plate  a sphere on an infinite thin (Kirchhoff) plate, Zener's model: restitution,
-              contact time, peaks, energy into the plate, Zener's lambda
-              --plate-modulus E --plate-poisson NU --plate-density RHO --thickness H
-              (--stiffness C [--exponent N] | --sphere-modulus E --sphere-poisson NU --radius R)
-              (--mass M | --sphere-density RHO --radius R) [--damping B] --velocity V[,V...]
-  plastic     elastic-plastic impact of a sphere on a flat (or two spheres: effective radius
-              and mass): restitution, contact time, peak force, maximum and permanent
-              approach, V/V_y, for a list of velocities
-              --model thornton|jackson-green --radius R (--mass M | --density RHO)
-              --modulus E --poisson NU [--flat-modulus E --flat-poisson NU]
-              --yield-strength Y [--criterion johnson|jackson-green] --velocity V[,V...]
-              [--unloading contact-radius|brake] (jackson-green)
-              [--loop N]: CSV time,approach,approach_rate,force of one impact's loop
+std::vector<Command> all_commands() {
+  return {hc_command(),         damping_command(),    law_command(),
+          oscillator_command(), thin_plate_command(), plastic_command()};
+}
 
-Units are SI. Output is JSON, or CSV where it is a table (--format csv).
-Exit codes: 0 success, 2 bad input (the message names the parameter), 1 internal error.
-)";
+std::string usage_of_tool(const std::vector<Command>& commands) {
+  std::string usage = "usage: impact-reduced COMMAND [--option value ...]\n"
+                      "       impact-reduced COMMAND --help   (the options of COMMAND)\n\n"
+                      "commands:\n";
+  for (const auto& command : commands) {
+    const std::string name = "  " + command.name;
+    usage += name + wrapped_text(command.summary, 14).substr(name.size());
+  }
+  return usage + '\n' + units_and_exit_codes;
+}
 
 } // namespace
 
+std::string usage_of(const Command& command) {
+  std::string usage = "usage: impact-reduced " + command.name + " [--option value ...]\n\n";
+  usage += wrapped_text(command.description) + "\noptions:\n" + usage_of_options(command.options);
+  if (!command.notes.empty()) usage += '\n' + wrapped_text(command.notes);
+  return usage + '\n' + units_and_exit_codes;
+}
+
+} // namespace impact::cli
+
 int main(int argc, char** argv) {
   using namespace impact::cli;
-  const std::map<std::string, std::function<int(CommandLine&, std::ostream&)>> commands = {
-      {"hc", run_hc_command},
-      {"damping", run_damping_command},
-      {"law", run_law_command},
-      {"oscillator", run_oscillator_command},
-      {"thin-plate", run_thin_plate_command},
-      {"plastic", run_plastic_command},
-  };
-  if (argc < 2 || std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h") {
-    (argc < 2 ? std::cerr : std::cout) << usage;
-    return argc < 2 ? 2 : 0;
+  const std::vector<Command> commands = all_commands();
+  const std::vector<std::string> arguments(argv + 1, argv + argc);
+  if (arguments.empty() || arguments[0] == "--help" || arguments[0] == "-h") {
+    (arguments.empty() ? std::cerr : std::cout) << usage_of_tool(commands);
+    return arguments.empty() ? 2 : 0;
   }
-  const std::string name = argv[1];
-  const auto command = commands.find(name);
-  if (command == commands.end()) {
-    std::cerr << "impact-reduced: unknown command '" << name << "'\n\n" << usage;
+  const std::string& name = arguments[0];
+  const Command* command = nullptr;
+  for (const auto& candidate : commands)
+    if (candidate.name == name) command = &candidate;
+  if (!command) {
+    std::cerr << "impact-reduced: unknown command '" << name << "'\n\n" << usage_of_tool(commands);
     return 2;
   }
+  const std::vector<std::string> options(arguments.begin() + 1, arguments.end());
+  if (asks_for_help(options)) {
+    std::cout << usage_of(*command);
+    return 0;
+  }
   try {
-    CommandLine options(name, std::vector<std::string>(argv + 2, argv + argc));
-    return command->second(options, std::cout);
+    CommandLine line(name, options, command->options);
+    return command->run(line, std::cout);
   } catch (const UsageError& error) {
     std::cerr << "impact-reduced " << name << ": error: " << error.what() << '\n';
     return 2;
   } catch (const impact::reduced::InvalidInput& error) {
-    std::cerr << "impact-reduced " << name << ": error: " << error.what() << '\n';
+    // The library names its parameter as the options do (mass, velocity, a0, ...).
+    const std::string option = "--" + error.parameter();
+    const bool named = command->options.end() !=
+                           std::find_if(command->options.begin(), command->options.end(),
+                                        [&](const Option& declared) {
+                                          return declared.kind != Option::Kind::heading &&
+                                                 declared.name == error.parameter();
+                                        }) &&
+                       std::string(error.what()).find(option) == std::string::npos;
+    std::cerr << "impact-reduced " << name << ": error: " << (named ? option + ": " : "")
+              << error.what() << '\n';
     return 2;
   } catch (const std::exception& error) {
     std::cerr << "impact-reduced " << name << ": internal error: " << error.what() << '\n';

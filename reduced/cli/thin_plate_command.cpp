@@ -6,34 +6,29 @@
 
 #include "commands.hpp"
 #include "output.hpp"
+#include "ranges.hpp"
+#include "sphere_flat_options.hpp"
 
 #include "impact_reduced/hertz_stiffness.hpp"
 #include "impact_reduced/thin_plate.hpp"
+
+#include <sstream>
 
 namespace impact::cli {
 
 namespace {
 
-constexpr double pi = 3.14159265358979323846;
-
-// Exactly one of two ways of giving a quantity.
-void require_one_of(const CommandLine& options, const std::string& direct,
-                    const std::string& derived, const std::string& what) {
-  if (options.has(direct) && options.has(derived))
-    throw UsageError("--" + direct + " and --" + derived + " exclude each other: give " + what);
-  if (!options.has(direct) && !options.has(derived))
-    throw UsageError("--" + direct + " or --" + derived + " is required: give " + what);
+std::string text_of(double value) {
+  std::ostringstream text;
+  text.precision(10);
+  text << value;
+  return text.str();
 }
 
-} // namespace
-
-int run_thin_plate_command(CommandLine& options, std::ostream& out) {
+int run_thin_plate(CommandLine& options, std::ostream& out) {
   using namespace impact::reduced;
-  const Range poisson = Range::open(-1.0, 0.5);
-  const KirchhoffPlate plate{options.real("plate-modulus", Range::positive()),
-                             options.real("plate-poisson", poisson),
-                             options.real("plate-density", Range::positive()),
-                             options.real("thickness", Range::positive())};
+  const KirchhoffPlate plate{options.real("plate-modulus"), options.real("plate-poisson"),
+                             options.real("plate-density"), options.real("thickness")};
 
   require_one_of(options, "stiffness", "sphere-modulus",
                  "the contact either by --stiffness [--exponent] or by --sphere-modulus, "
@@ -41,29 +36,44 @@ int run_thin_plate_command(CommandLine& options, std::ostream& out) {
   require_one_of(options, "mass", "sphere-density",
                  "the sphere's mass either by --mass or by --sphere-density and --radius");
   const bool needs_radius = options.has("sphere-modulus") || options.has("sphere-density");
-  const double radius = needs_radius ? options.real("radius", Range::positive()) : 0.0;
+  const double radius = needs_radius ? options.real("radius") : 0.0;
   double stiffness = 0;
   double exponent = 1.5;
   if (options.has("stiffness")) {
-    stiffness = options.real("stiffness", Range::positive());
-    exponent = options.real("exponent", Range::positive(), 1.5);
+    stiffness = options.real("stiffness");
+    exponent = options.real("exponent");
   } else {
-    const ElasticBody sphere{options.real("sphere-modulus", Range::positive()),
-                             options.real("sphere-poisson", poisson), radius};
+    options.require_absent("exponent", "applies to --stiffness only (the Hertz contact of "
+                                       "--sphere-modulus and the plate has n = 3/2)");
+    const ElasticBody sphere{options.real("sphere-modulus"), options.real("sphere-poisson"),
+                             radius};
     stiffness = hertz_stiffness(sphere, {plate.youngs_modulus, plate.poisson_ratio});
+    options.require_within("stiffness", stiffness,
+                           "the Hertz contact of --sphere-modulus, --sphere-poisson, --radius "
+                           "and the plate has a stiffness c of");
   }
   const double mass = options.has("mass")
-                          ? options.real("mass", Range::positive())
-                          : 4.0 / 3.0 * pi * radius * radius * radius *
-                                options.real("sphere-density", Range::positive());
-  const double damping = options.real("damping", Range::non_negative(), 0.0);
-  const std::vector<double> velocities = options.reals("velocity", Range::positive());
-  const double tolerance = options.real("tolerance", Range::closed(1e-14, 1e-3), 1e-11);
-  const std::string format = options.choice("format", {"json", "csv"}, "json");
+                          ? options.real("mass")
+                          : solid_sphere_mass(radius, options.real("sphere-density"));
+  if (!options.has("mass"))
+    options.require_within("mass", mass,
+                           "the solid sphere of --radius and --sphere-density has a mass of");
+  const double damping = options.real("damping");
+  const std::vector<double> velocities = options.reals("velocity");
+  const double tolerance = options.real("tolerance");
+  const std::string format = options.choice("format");
   options.finish();
 
   const double impedance = plate_point_impedance(plate);
   const ThinPlateImpact model(stiffness, exponent, damping, mass, impedance);
+  for (const double velocity : velocities)
+    if (model.zener_lambda(velocity) > ranges::largest_zener_lambda)
+      throw UsageError("--velocity " + text_of(velocity) + " gives Zener's lambda = " +
+                       text_of(model.zener_lambda(velocity)) + ", above " +
+                       text_of(ranges::largest_zener_lambda) +
+                       ", the largest accepted: the plate is too compliant for this sphere "
+                       "(lambda grows with --mass, --stiffness and the velocity, falls with "
+                       "--thickness and --plate-modulus)");
   std::vector<ThinPlateImpactResult> results;
   for (const double velocity : velocities) results.push_back(model.impact(velocity, tolerance));
 
@@ -117,6 +127,50 @@ int run_thin_plate_command(CommandLine& options, std::ostream& out) {
   result["impacts"] = impacts;
   print_json(out, result);
   return 0;
+}
+
+} // namespace
+
+Command thin_plate_command() {
+  return {
+      "thin-plate",
+      "a sphere on an infinite thin (Kirchhoff) plate, Zener's model: restitution, contact "
+      "time, peaks, energy into the plate, Zener's lambda",
+      "A sphere hitting an infinite thin (Kirchhoff) plate, Zener's model: a Hunt-Crossley "
+      "contact F = c x^n (1 + b dx/dt) in series with the plate's point impedance. For each "
+      "velocity: restitution, contact time, peak force and approach, the energy fractions into "
+      "the plate and the damping, the plate's deflection, Zener's lambda.",
+      {heading("The plate:"),
+       real_option("plate-modulus", "E", ranges::modulus(), "Young's modulus of the plate [Pa]"),
+       real_option("plate-poisson", "NU", ranges::poisson(), "Poisson's ratio of the plate [-]"),
+       real_option("plate-density", "RHO", ranges::density(), "density of the plate [kg/m^3]"),
+       real_option("thickness", "H", ranges::thickness(), "thickness of the plate [m]"),
+       heading("The contact, given directly:"),
+       real_option("stiffness", "C", ranges::stiffness(), "stiffness c of F = c x^n [N/m^n]"),
+       real_option("exponent", "N", ranges::plate_exponent(), "exponent n [-]").with_default("1.5"),
+       heading("or by Hertz from the sphere's material on the plate's (n = 3/2):"),
+       real_option("sphere-modulus", "E", ranges::modulus(), "Young's modulus of the sphere [Pa]"),
+       real_option("sphere-poisson", "NU", ranges::poisson(), "Poisson's ratio of the sphere [-]"),
+       real_option("radius", "R", ranges::radius(),
+                   "radius of the sphere [m] (also for --sphere-density)"),
+       heading("The mass of the sphere, given directly:"),
+       real_option("mass", "M", ranges::mass(), "mass of the sphere [kg]"),
+       heading("or that of a solid sphere, (4/3) pi R^3 rho:"),
+       real_option("sphere-density", "RHO", ranges::density(),
+                   "density of the sphere [kg/m^3], with --radius"),
+       heading("The impacts:"),
+       real_option("damping", "B", ranges::damping(), "damping constant b [s/m]")
+           .with_default("0"),
+       reals_option("velocity", "V[,V...]", ranges::velocity(), "impact velocities [m/s]"),
+       real_option("tolerance", "TOL", Range::closed(1e-14, 1e-3),
+                   "relative tolerance of the integration [-]")
+           .with_default("1e-11"),
+       choice_option("format", {"json", "csv"}, "output format").with_default("json")},
+      "Give the contact either by --stiffness [--exponent] or by --sphere-modulus, "
+      "--sphere-poisson and --radius; and the mass either by --mass or by --sphere-density and "
+      "--radius. Zener's lambda, m / (Z t0), must be at most 200 at every velocity (the range "
+      "over which the model's integration is verified).\n",
+      run_thin_plate};
 }
 
 } // namespace impact::cli

@@ -23,12 +23,19 @@ void require_positive_or_infinite(const char* name, double value) {
 
 double contact_modulus(double youngs_modulus_1, double poisson_ratio_1, double youngs_modulus_2,
                        double poisson_ratio_2) {
-  require_positive("youngs_modulus_1", youngs_modulus_1);
+  require_positive_or_infinite("youngs_modulus_1", youngs_modulus_1);
   require_poisson("poisson_ratio_1", poisson_ratio_1);
-  require_positive("youngs_modulus_2", youngs_modulus_2);
+  require_positive_or_infinite("youngs_modulus_2", youngs_modulus_2);
   require_poisson("poisson_ratio_2", poisson_ratio_2);
-  return 1.0 / ((1 - poisson_ratio_1 * poisson_ratio_1) / youngs_modulus_1 +
-                (1 - poisson_ratio_2 * poisson_ratio_2) / youngs_modulus_2);
+  if (std::isinf(youngs_modulus_1) && std::isinf(youngs_modulus_2))
+    throw InvalidInput("youngs_modulus_2", "youngs_modulus_2: two rigid bodies have no contact "
+                                           "modulus (both moduli are infinite)");
+  const double e_star = 1.0 / ((1 - poisson_ratio_1 * poisson_ratio_1) / youngs_modulus_1 +
+                               (1 - poisson_ratio_2 * poisson_ratio_2) / youngs_modulus_2);
+  if (!std::isfinite(e_star))
+    throw InvalidInput("youngs_modulus_1", "youngs_modulus_1: the contact modulus of these "
+                                           "bodies overflows (is not a finite number)");
+  return e_star;
 }
 
 double effective_radius(double radius_1, double radius_2) {

@@ -49,7 +49,7 @@ x, force, pressure = history(directory, "approach", "contact_force", "max_pressu
 
 text = subprocess.run([reduced, "plastic", "--model", "thornton", "--radius", str(R),
                        "--density", str(RHO), "--modulus", str(E), "--poisson", str(NU),
-                       "--flat-modulus", "1e40", "--flat-poisson", "0", "--yield-strength", str(Y),
+                       "--flat", "rigid", "--yield-strength", str(Y),
                        "--velocity", str(V), "--format", "csv"],
                       check=True, capture_output=True, text=True).stdout
 t = {k: float(v) for k, v in next(csv.DictReader(io.StringIO(text))).items()}

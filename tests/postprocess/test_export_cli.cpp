@@ -189,3 +189,22 @@ TEST_F(ExportCli, MissingRadiusOrCalibrationIsAnError) {
 }
 
 } // namespace
+
+namespace {
+
+// --help names the four simulators the exporters write (the issue: it said "three", without
+// LIGGGHTS), and exits 0 wherever it stands, required options missing.
+TEST(ExportCliUsage, NamesTheFourSimulators) {
+  const fs::path scratch = impact::testing::scratch_directory("export_usage");
+  for (const std::vector<std::string>& arguments :
+       std::vector<std::vector<std::string>>{{"--help"}, {"--campaign", "x", "-h"}}) {
+    const CliRun run = run_export(arguments, scratch);
+    EXPECT_EQ(run.exit_code, 0) << run.err;
+    for (const char* text : {"four simulators", "simbody/", "mujoco/", "lammps/", "liggghts/",
+                             "--reference-velocity V", "--calibration FILE"})
+      EXPECT_TRUE(contains(run.out, text)) << text << " not in " << run.out;
+  }
+  fs::remove_all(scratch);
+}
+
+} // namespace

@@ -74,6 +74,22 @@ TEST(HuntCrossley, HertzStiffnessOfTheSteelBallOnASteelPlate) {
               1e-15);
 }
 
+// A rigid flat, named: c = (4/3) E/(1 - nu^2) sqrt(R) (the flat's compliance 0), twice the c
+// of two equal bodies; two rigid bodies have no Hertz contact. The solid sphere's mass.
+TEST(HuntCrossley, HertzStiffnessOnARigidFlatAndTheSphereMass) {
+  const double c = hertz_stiffness({2e11, 0.25, 14.52e-3}, rigid_body());
+  EXPECT_NEAR(c, 4.0 / 3.0 * 2e11 / (1 - 0.0625) * std::sqrt(14.52e-3), 1e-15 * c);
+  EXPECT_NEAR(c / hertz_stiffness({2e11, 0.25, 14.52e-3}, {2e11, 0.25}), 2.0, 1e-15);
+  EXPECT_EQ(hertz_stiffness(rigid_body(), {2e11, 0.25, 14.52e-3}), c);
+  EXPECT_THROW(hertz_stiffness(rigid_body(0.01), rigid_body()), InvalidInput);
+  EXPECT_THROW(hertz_stiffness({-2e11, 0.25, 0.01}, rigid_body()), InvalidInput);
+  const double pi = boost::math::constants::pi<double>();
+  EXPECT_NEAR(solid_sphere_mass(14.52e-3, 7800), 4.0 / 3.0 * pi * std::pow(14.52e-3, 3) * 7800,
+              1e-15);
+  EXPECT_THROW(solid_sphere_mass(0, 7800), InvalidInput);
+  EXPECT_THROW(solid_sphere_mass(1e300, 7800), InvalidInput); // overflows
+}
+
 // Every quantity of the closed form against a direct integration of m x'' = -F at rtol 1e-13,
 // at the other velocities of the published example.
 TEST(HuntCrossley, OtherVelocitiesAgreeWithOdeIntegration) {

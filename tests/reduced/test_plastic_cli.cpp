@@ -4,6 +4,7 @@
 
 #include "cli_runner.hpp"
 
+#include "impact_reduced/hertz_stiffness.hpp"
 #include "impact_reduced/jackson_green_marghitu.hpp"
 #include "impact_reduced/sphere_flat_fits.hpp"
 #include "impact_reduced/thornton.hpp"
@@ -137,6 +138,53 @@ TEST(PlasticCli, BadInputExitsWithTwoAndNamesTheOption) {
   options = thornton;
   options["colour"] = "red";
   expect_rejected(options, "colour", "unknown --colour");
+}
+
+TEST(PlasticCli, RigidFlatByName) {
+  auto options = thornton;
+  options["flat"] = "rigid";
+  const auto run = run_cli("plastic", arguments_of(options));
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const auto json = nlohmann::json::parse(run.out);
+  EXPECT_EQ(json["flat"], "rigid");
+  // E* of the sphere alone, E / (1 - nu^2).
+  EXPECT_DOUBLE_EQ(json["contact_modulus"].get<double>(), 2.1e11 / 0.91);
+  EXPECT_EQ(json["contact_modulus"].get<double>(),
+            contact_modulus(2.1e11, 0.3, rigid_body().youngs_modulus, 0));
+  options["flat-modulus"] = "7e10";
+  expect_rejected(options, "flat-modulus", "--flat rigid with --flat-modulus");
+}
+
+// The case: --yield-strength 0.3 ended in "internal error" (the fit's restitution not
+// finite); it is outside the documented range. Within the ranges, a yield strain Y/E* above
+// 0.05 or an impact beyond an approach of R/2 are refused naming the options.
+TEST(PlasticCli, ExtremeValuesAreRefusedWithTheirRange) {
+  auto options = thornton;
+  options["yield-strength"] = "0.3";
+  expect_rejected(options, "yield-strength", "--yield-strength 0.3");
+  options["yield-strength"] = "1e10";
+  expect_rejected(options, "yield-strength", "Y/E* = 0.08");
+  options = thornton;
+  options["velocity"] = "1e4";
+  options["radius"] = "1e-3";
+  expect_rejected(options, "velocity", "x_max > R/2");
+}
+
+// Far above the fit's range its restitution is no number: null in JSON, an empty CSV field.
+TEST(PlasticCli, FitOutsideItsRangeHasNoValue) {
+  auto options = thornton;
+  options["yield-strength"] = "1e7"; // V / V_y = 7e5 at 1 m/s
+  options["velocity"] = "1";
+  auto run = run_cli("plastic", arguments_of(options));
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const auto json = nlohmann::json::parse(run.out);
+  EXPECT_TRUE(json["impacts"][0]["restitution_jackson_green_marghitu"].is_null()) << run.out;
+  EXPECT_GT(json["impacts"][0]["restitution"].get<double>(), 0);
+  options["format"] = "csv";
+  run = run_cli("plastic", arguments_of(options));
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_EQ(run.out.back(), '\n');
+  EXPECT_EQ(run.out[run.out.size() - 2], ',') << run.out; // the last field, empty
 }
 
 TEST(PlasticCli, JacksonGreenWithBrakesUnloading) {

@@ -25,6 +25,10 @@ TEST(YieldVelocity, ContactModulusAndEffectiveQuantities) {
   EXPECT_DOUBLE_EQ(effective_radius(0.01, std::numeric_limits<double>::infinity()), 0.01);
   EXPECT_DOUBLE_EQ(effective_mass(2.0, 2.0), 1.0);
   EXPECT_DOUBLE_EQ(effective_mass(2.0, std::numeric_limits<double>::infinity()), 2.0);
+  // A rigid flat (infinite modulus): E* is the sphere's own, E / (1 - nu^2).
+  const double rigid = std::numeric_limits<double>::infinity();
+  EXPECT_DOUBLE_EQ(contact_modulus(youngs, poisson, rigid, 0.0), youngs / 0.91);
+  EXPECT_DOUBLE_EQ(contact_modulus(rigid, 0.0, youngs, poisson), youngs / 0.91);
 }
 
 TEST(YieldVelocity, JohnsonCriterionByHand) {
@@ -94,6 +98,11 @@ TEST(YieldVelocity, InvalidInputNamesTheParameter) {
   EXPECT_EQ(parameter_of([] { johnson_yield_pressure(0); }), "yield_strength");
   EXPECT_EQ(parameter_of([] { half_space_yield_velocity(1e9, 1e11, 0); }), "density");
   EXPECT_EQ(parameter_of([] { contact_modulus(1e11, 0.3, 1e11, -1); }), "poisson_ratio_2");
+  EXPECT_EQ(parameter_of([] {
+              contact_modulus(std::numeric_limits<double>::infinity(), 0.3,
+                              std::numeric_limits<double>::infinity(), 0.3);
+            }),
+            "youngs_modulus_2");
   EXPECT_EQ(parameter_of([] {
               effective_radius(std::numeric_limits<double>::infinity(),
                                std::numeric_limits<double>::infinity());

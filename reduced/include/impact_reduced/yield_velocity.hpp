@@ -37,7 +37,9 @@ enum class YieldCriterion {
   jackson_green  ///< p_y = C(nu) Y, C = 1.295 exp(0.736 nu)
 };
 
-/// Contact modulus E* [Pa]: 1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2. E > 0, -1 < nu < 0.5.
+/// Contact modulus E* [Pa]: 1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2. E > 0, -1 < nu < 0.5;
+/// one of the two moduli may be +infinity, a rigid body (rigid_body() of hertz_stiffness.hpp),
+/// whose term vanishes.
 double contact_modulus(double youngs_modulus_1, double poisson_ratio_1, double youngs_modulus_2,
                        double poisson_ratio_2);
 
