@@ -73,11 +73,21 @@ public:
     const reduced::HertzianUnloading branch = impact_.unloading();
     if (!(branch.stiffness > 0))  // elastic: the whole impact on the loading branch
       return reduced::integrate_impact_history(mass, velocity, loading, points, tolerance);
-    const double compression =
-        reduced::integrate_impact(mass, velocity, loading, tolerance).compression_time;
-    for (const auto& sample :
-         reduced::integrate_impact_history(mass, velocity, loading, points, tolerance))
-      if (sample.time < compression) samples.push_back(sample);
+    // The compression's samples (rate > 0) and its end, where the rate crosses 0 between two
+    // samples: linear in the rate there (error ~ h^2 b F / (8 m) in time, 1e-7 of t_c for the
+    // FEM's sampling), one integration instead of a second one for the event.
+    const auto loaded = reduced::integrate_impact_history(mass, velocity, loading, points, tolerance);
+    double compression = loaded.back().time;
+    for (std::size_t k = 0; k < loaded.size(); ++k) {
+      if (loaded[k].approach_rate > 0) {
+        samples.push_back(loaded[k]);
+        continue;
+      }
+      const auto& before = loaded[k - 1];  // k > 0: the first sample is at the impact velocity
+      compression = before.time + (loaded[k].time - before.time) * before.approach_rate /
+                                      (before.approach_rate - loaded[k].approach_rate);
+      break;
+    }
     const double top = impact_.approach_max();
     samples.push_back({compression, top, 0.0, spring.loading_force(top)});
     // The unloading branch's impact: its V_U stores (2/5) k_u (x_max - x_r)^(5/2) at x_max.
