@@ -31,14 +31,27 @@ json line(const std::string& label, json x, json y, const std::string& color,
 
 std::string color_of(const PlasticLawCurve& law) {
   if (law.key == model_keys::jackson_green_marghitu_material) return "tab:purple";
-  // The damped laws: Hunt–Crossley on Thornton's spring, on Jackson–Green's.
-  if (law.damped)
-    return law.key.find("thornton") != std::string::npos ? "tab:pink" : "tab:olive";
+  // The damped laws: Hunt–Crossley on Thornton's spring (pink; b(V) from A fitted: dark
+  // magenta), on Jackson–Green's (olive; b(V) from A fitted: teal), as in the errors figure.
+  if (law.damped) {
+    const bool thornton = law.key.find("thornton") != std::string::npos;
+    if (law.key == model_keys::hunt_crossley_thornton_from_a ||
+        law.key == model_keys::hunt_crossley_jackson_green_from_a)
+      return thornton ? "darkmagenta" : "teal";
+    return thornton ? "tab:pink" : "tab:olive";
+  }
   const bool thornton = law.key == model_keys::thornton || law.key == model_keys::thornton_material;
   return thornton ? "tab:blue" : "tab:green";
 }
 
-std::string style_of(const PlasticLawCurve& law) { return law.fitted ? "--" : "-"; }
+// Fitted dashed, from the material solid; a damped law fitted with a constant b dash-dotted.
+std::string style_of(const PlasticLawCurve& law) {
+  if (law.damped && law.fitted &&
+      (law.key == model_keys::hunt_crossley_thornton ||
+       law.key == model_keys::hunt_crossley_jackson_green))
+    return "-.";
+  return law.fitted ? "--" : "-";
+}
 
 json restitution_figure(const Report& report, const PlasticLaws& laws) {
   const double v_y = laws.yield_velocity;
@@ -166,8 +179,9 @@ std::vector<ReportFigure> plastic_figures(const Report& report) {
        "its verification, where the run was verified), Thornton (1997) and Jackson–Green (2005) "
        "from the material (solid) and fitted (dashed), Jackson–Green–Marghitu's (2010) "
        "restitution fit from the material (constants unconfirmed), Hunt–Crossley damping on the "
-       "elastic-plastic springs where the calibration holds it (pink: Thornton's spring, olive: "
-       "Jackson–Green's), the calibrated Hunt–Crossley law (red) and the plastic family's slope "
+       "elastic-plastic springs where the calibration holds it (Thornton's spring: pink, dark "
+       "magenta with b(V) from A fitted; Jackson–Green's: olive, teal with b(V) from A fitted; "
+       "a constant b fitted dash-dotted), the calibrated Hunt–Crossley law (red) and the plastic family's slope "
        "-1/4.",
        restitution_figure(report, laws)},
       {FigureId::permanent_approach, "", "permanent_approach.png",
