@@ -6,6 +6,7 @@
 // as read in one implementation, unconfirmed: README, "Elastic-plastic impact laws").
 
 #include "report/report_parts.hpp"
+#include "impact_postprocess/models/damped_plastic_models.hpp"
 #include "impact_postprocess/models/jackson_green_model.hpp"
 #include "impact_postprocess/models/model_keys.hpp"
 #include "impact_postprocess/models/plastic_models.hpp"
@@ -16,6 +17,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 
 namespace impact::postprocess::detail {
@@ -33,50 +35,143 @@ double median_mass(const std::vector<ReportRun>& runs) {
   return masses[masses.size() / 2];
 }
 
-// One law (its contact for c, p) over the grid and at the runs.
-PlasticLawCurve curve_of(std::string key, std::string label, bool fitted, std::string parameters,
-                         const ContactModel& model, double stiffness, double parameter,
-                         const std::vector<double>& grid, double mass,
-                         const std::vector<ReportRun>& runs) {
-  PlasticLawCurve curve{std::move(key), std::move(label), fitted, std::move(parameters),
-                        {}, {}, {}, {}, {}, {}};
-  const auto contact_for = [&](double m) {
-    return model.plastic_contact(parameter, reduced::ContactSetup{m, stiffness, 1.5});
+// A law at one impact: e, its permanent approach and, when asked, its loop.
+struct LawAt {
+  double restitution = nan;
+  double permanent_approach = nan;
+  ImpactHistory loop;
+};
+using LawEvaluator = std::function<LawAt(double mass, double velocity, bool with_loop)>;
+
+void add_loop(LawAt& at, const std::vector<reduced::ImpactSample>& samples) {
+  for (const auto& sample : samples) {
+    at.loop.time.push_back(sample.time);
+    at.loop.approach.push_back(sample.approach);
+    at.loop.force.push_back(sample.force);
+  }
+}
+
+// A rate-independent law: its contact for c and the yield parameter p.
+LawEvaluator rate_independent(const ContactModel& model, double stiffness, double parameter) {
+  return [model, stiffness, parameter](double mass, double velocity, bool with_loop) {
+    const auto contact =
+        model.plastic_contact(parameter, reduced::ContactSetup{mass, stiffness, 1.5});
+    const auto response = reduced::elastic_plastic_impact(mass, velocity, *contact);
+    LawAt at{response.restitution, response.residual_approach, {}};
+    if (with_loop)
+      add_loop(at, reduced::elastic_plastic_impact_loop(mass, velocity, *contact, loop_points));
+    return at;
   };
-  const auto contact = contact_for(mass);
+}
+
+// A damped elastic-plastic law (damped_plastic_models.hpp) for c and its dissipation
+// parameters; its loop has as many samples as a rate-independent law's two branches.
+LawEvaluator damped(const ContactModel& model, double stiffness, std::vector<double> dissipation) {
+  return [model, stiffness, dissipation](double mass, double velocity, bool with_loop) {
+    const auto impact = damped_plastic_impact(model, mass, velocity, stiffness, dissipation);
+    LawAt at{impact->restitution(), impact->separation_approach(), {}};
+    if (with_loop) add_loop(at, impact->history(2 * loop_points));
+    return at;
+  };
+}
+
+// One law over the grid and at the runs.
+PlasticLawCurve curve_of(std::string key, std::string label, bool fitted, std::string parameters,
+                         const LawEvaluator& law, const std::vector<double>& grid, double mass,
+                         const std::vector<ReportRun>& runs) {
+  PlasticLawCurve curve{std::move(key), std::move(label), fitted, std::move(parameters), 0,
+                        {}, {}, {}, {}, {}, {}};
   for (double v : grid) {
     curve.velocity.push_back(v);
+    LawAt at;
     try {
-      const auto response = reduced::elastic_plastic_impact(mass, v, *contact);
-      curve.restitution.push_back(response.restitution);
-      curve.permanent_approach.push_back(response.residual_approach);
+      at = law(mass, v, false);
     } catch (const std::exception&) {
-      curve.restitution.push_back(nan);
-      curve.permanent_approach.push_back(nan);
+      at = {};
     }
+    curve.restitution.push_back(at.restitution);
+    curve.permanent_approach.push_back(at.permanent_approach);
   }
   for (const auto& run : runs) {
-    ImpactHistory loop;
-    double e = nan, x_p = nan;
+    LawAt at;
     try {
-      const auto run_contact = contact_for(run.mass);
-      const auto response = reduced::elastic_plastic_impact(run.mass, run.velocity, *run_contact);
-      e = response.restitution;
-      x_p = response.residual_approach;
-      for (const auto& sample :
-           reduced::elastic_plastic_impact_loop(run.mass, run.velocity, *run_contact, loop_points)) {
-        loop.time.push_back(sample.time);
-        loop.approach.push_back(sample.approach);
-        loop.force.push_back(sample.force);
-      }
+      at = law(run.mass, run.velocity, true);
     } catch (const std::exception&) {
-      loop = {};
+      at = {};
     }
-    curve.run_restitution.push_back(e);
-    curve.run_permanent_approach.push_back(x_p);
-    curve.loops.push_back(std::move(loop));
+    curve.run_restitution.push_back(at.restitution);
+    curve.run_permanent_approach.push_back(at.permanent_approach);
+    curve.loops.push_back(std::move(at.loop));
   }
   return curve;
+}
+
+// "c = ... N/m^1.5, x_y = ... m, b = ... s/m" of a model's parameters.
+std::string parameter_text(double stiffness, const std::vector<std::string>& names,
+                           const std::vector<std::string>& units,
+                           const std::vector<double>& values) {
+  std::string text = "c = " + cell(stiffness) + " N/m^1.5";
+  for (std::size_t i = 0; i < names.size() && i < values.size(); ++i)
+    text += ", " + names[i] + " = " + cell(values[i]) + (i < units.size() ? " " + units[i] : "");
+  return text;
+}
+
+// The damped elastic-plastic laws of the calibration: from the material (its reference
+// models) and fitted (its campaign fits that converged), with the calibration's numbers.
+void add_damped_laws(PlasticLaws& laws, const Calibration& calibration,
+                     const std::vector<FemRun>& fem_runs, const std::vector<double>& grid,
+                     double mass, const std::vector<ReportRun>& runs) {
+  const CampaignCalibration& campaign = calibration.campaign;
+  for (const auto& [key, label] :
+       {std::pair{model_keys::hunt_crossley_thornton_material,
+                  "Hunt–Crossley on Thornton (from the material, no fit)"},
+        std::pair{model_keys::hunt_crossley_jackson_green_material,
+                  "Hunt–Crossley on Jackson–Green (from the material, no fit)"}})
+    for (const auto& reference : campaign.reference_models)
+      if (reference.key == key) try {
+          std::vector<std::string> names{reference.parameter_name}, units{reference.parameter_unit};
+          names.insert(names.end(), reference.extra_names.begin(), reference.extra_names.end());
+          units.insert(units.end(), reference.extra_units.begin(), reference.extra_units.end());
+          PlasticLawCurve curve = curve_of(
+              reference.key, label, false,
+              parameter_text(reference.stiffness, names, units, reference.dissipation),
+              damped(comparison_model(reference.model, fem_runs), reference.stiffness,
+                     reference.dissipation),
+              grid, mass, runs);
+          curve.damped = true;
+          laws.laws.push_back(std::move(curve));
+        } catch (const std::exception&) {
+          // the model cannot be built for these runs: left out of the curves
+        }
+  for (const auto& [key, label] :
+       {std::pair{model_keys::hunt_crossley_thornton, "Hunt–Crossley on Thornton (fitted)"},
+        std::pair{model_keys::hunt_crossley_jackson_green,
+                  "Hunt–Crossley on Jackson–Green (fitted)"},
+        std::pair{model_keys::hunt_crossley_thornton_from_a,
+                  "Hunt–Crossley on Thornton, b ∝ V^-4/5 (fitted)"},
+        std::pair{model_keys::hunt_crossley_jackson_green_from_a,
+                  "Hunt–Crossley on Jackson–Green, b ∝ V^-4/5 (fitted)"}})
+    if (const CampaignModelFit* fit = campaign.find(std::string(key)))
+      if (fit->fit.converged) try {
+          const ModelFit& parameters = fit->fit;
+          std::vector<std::string> names{parameters.parameter_name},
+              units{parameters.parameter_unit};
+          for (const auto& extra : parameters.extra) {
+            names.push_back(extra.name);
+            units.push_back(extra.unit);
+          }
+          PlasticLawCurve curve = curve_of(
+              std::string(key), label, true,
+              parameter_text(parameters.stiffness.value, names, units, parameters.dissipation()),
+              damped(comparison_model(std::string(key), fem_runs), parameters.stiffness.value,
+                     parameters.dissipation()),
+              grid, mass, runs);
+          curve.free_parameters = parameters.free_parameters();
+          curve.damped = true;
+          laws.laws.push_back(std::move(curve));
+        } catch (const std::exception&) {
+          // the model cannot be built for these runs: left out of the curves
+        }
 }
 
 // Jackson, Green & Marghitu's restitution fit for the scenario's contact, over the grid and
@@ -99,7 +194,7 @@ PlasticLawCurve jackson_green_marghitu_curve(const reduced::SphereFlatContact& c
                             " m/s, eps_y = C(nu) Y / E* = " +
                             short_number(reduced::jackson_green_marghitu_yield_strain(contact)) +
                             "; constants as read in one implementation, unconfirmed",
-                        {}, {}, {}, {}, {}, {}};
+                        0, {}, {}, {}, {}, {}, {}};
   for (double v : grid) {
     curve.velocity.push_back(v);
     curve.restitution.push_back(restitution(v, mass));
@@ -168,14 +263,16 @@ std::optional<PlasticLaws> plastic_laws(const std::vector<FemRun>& fem_runs,
                                "Thornton (p_y = 1.6 Y, no fit)", false,
                                "c = " + cell(thornton->stiffness) + " N/m^1.5, x_y = " +
                                    cell(thornton->yield_approach) + " m (Y = " + y + ")",
-                               plastic_model(std::string(model_keys::thornton)),
-                               thornton->stiffness, thornton->yield_approach, grid, mass, runs));
+                               rate_independent(plastic_model(std::string(model_keys::thornton)),
+                                                thornton->stiffness, thornton->yield_approach),
+                               grid, mass, runs));
   if (jackson_green)
     laws.laws.push_back(curve_of(std::string(model_keys::jackson_green_material),
                                  "Jackson–Green (Y of the material, no fit)", false,
                                  "c = " + cell(jackson_green->stiffness) + " N/m^1.5, Y = " + y,
-                                 jackson_green->model, jackson_green->stiffness,
-                                 jackson_green->yield_strength, grid, mass, runs));
+                                 rate_independent(jackson_green->model, jackson_green->stiffness,
+                                                  jackson_green->yield_strength),
+                                 grid, mass, runs));
   laws.laws.push_back(jackson_green_marghitu_curve(
       {scenario->radius, *scenario->contact_modulus, *scenario->yield_strength,
        scenario->poisson_ratio},
@@ -187,16 +284,20 @@ std::optional<PlasticLaws> plastic_laws(const std::vector<FemRun>& fem_runs,
       if (const CampaignModelFit* fit = calibration->campaign.find(std::string(key)))
         if (fit->fit.converged) try {
             const ModelFit& parameters = fit->fit;
-            laws.laws.push_back(curve_of(
+            PlasticLawCurve curve = curve_of(
                 std::string(key), label, true,
                 "c = " + cell(parameters.stiffness.value) + " N/m^1.5, " +
                     parameters.parameter_name + " = " + cell(parameters.parameter.value) + " " +
                     parameters.parameter_unit,
-                comparison_model(std::string(key), fem_runs), parameters.stiffness.value,
-                parameters.parameter.value, grid, mass, runs));
+                rate_independent(comparison_model(std::string(key), fem_runs),
+                                 parameters.stiffness.value, parameters.parameter.value),
+                grid, mass, runs);
+            curve.free_parameters = parameters.free_parameters();
+            laws.laws.push_back(std::move(curve));
           } catch (const std::exception&) {
             // the model cannot be built for these runs: left out of the curves
           }
+  if (calibration) add_damped_laws(laws, *calibration, fem_runs, grid, mass, runs);
   for (const auto& run : runs)
     laws.fem_permanent_approach.push_back(run.record.permanent_approach.value_or(nan));
   laws.text = comparison_text(laws, runs);

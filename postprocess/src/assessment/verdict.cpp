@@ -479,7 +479,7 @@ void add_verdict(Report& report) {
   std::vector<PlasticReference> plastic_references;
   if (report.plastic_laws)
     for (const auto& law : report.plastic_laws->laws)
-      if (!law.fitted) plastic_references.push_back({law.label, law.run_restitution});
+      if (!law.fitted && !law.damped) plastic_references.push_back({law.label, law.run_restitution});
   report.family_ranges = family_ranges(velocities, restitutions, yield_velocity,
                                        report.calibration ? report.calibration->confidence_level
                                                           : 0.95,

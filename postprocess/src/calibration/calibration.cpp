@@ -8,7 +8,9 @@
 // (c, n, p, ...) by the Jacobian of that change of variables.
 
 #include "impact_postprocess/calibration/calibration.hpp"
+#include "impact_postprocess/models/damped_plastic_models.hpp"
 #include "impact_postprocess/models/jackson_green_model.hpp"
+#include "impact_postprocess/run/scenario_materials.hpp"
 #include "impact_postprocess/models/model_keys.hpp"
 #include "calibration/fit_model.hpp"
 #include "calibration/ranking.hpp"
@@ -59,7 +61,8 @@ std::vector<std::string> ModelFit::parameter_names() const {
 }
 
 std::size_t ModelFit::free_parameters() const {
-  return 1 + (exponent_fixed ? 0 : 1) + (parameter_fixed ? 0 : 1) + extra.size();
+  return (stiffness_fixed ? 0 : 1) + (exponent_fixed ? 0 : 1) + (parameter_fixed ? 0 : 1) +
+         extra.size();
 }
 
 std::vector<const CampaignModelFit*> CampaignCalibration::models() const {
@@ -127,6 +130,47 @@ CampaignStart campaign_start(const std::vector<FemRun>& runs,
   return start;
 }
 
+// The campaign fit of a damped elastic-plastic model (damped_plastic_models.hpp): c held at
+// the Hertz value of the runs' materials when they record them (else free); the force
+// histories and the energy loss (the damping term is about 1 % of the force at low V, so the
+// histories alone leave the viscous loss there to the fast runs); started from the fitted
+// rate-independent twin's yield parameter (else the material's, else the restitution map),
+// and from the b that the material's A gives at the campaign's typical velocity (else
+// 0.01 s/m).
+CampaignFitRequest damped_plastic_request(const ContactModel& law, const std::vector<FemRun>& runs,
+                                          const CampaignCalibration& campaign,
+                                          const CampaignStart& start,
+                                          const CalibrationOptions& options) {
+  const ScenarioMaterials materials = scenario_materials(runs);
+  CampaignFitRequest request{law.name, law.name, std::nullopt, options.energy_weight, nan, {}, std::nullopt};
+  request.label += options.energy_weight > 0 ? ", force histories and energy loss"
+                                             : ", force histories";
+  if (materials.hertz_from_runs) {
+    request.stiffness = materials.hertz_stiffness;
+    request.label += ", c at Hertz";
+  }
+  const bool thornton_spring = !damped_plastic_needs_scenario(law.name);
+  const std::string twin(thornton_spring ? model_keys::thornton : model_keys::jackson_green);
+  if (const CampaignModelFit* fitted = campaign.find(twin); fitted && fitted->fit.converged) {
+    request.initial_damping = fitted->fit.parameter.value;
+  } else if (thornton_spring) {
+    if (const auto material = material_thornton(runs)) request.initial_damping = material->yield_approach;
+  } else if (const auto material = material_jackson_green(runs)) {
+    request.initial_damping = material->yield_strength;
+  }
+  const double a = materials.dissipative_constant.value_or(0.0);
+  const bool matched = law.extra_parameters.front().name == "A";
+  if (matched)
+    request.initial_extra = {a > 0 ? a : law.extra_parameters.front().initial};
+  else
+    request.initial_extra = {
+        a > 0 ? matched_hunt_crossley_damping(
+                    a, start.velocity,
+                    {start.mass, request.stiffness.value_or(materials.hertz_stiffness), 1.5})
+              : 0.01};
+  return request;
+}
+
 } // namespace
 
 Calibration calibrate(const std::vector<FemRun>& runs, const CalibrationOptions& options) {
@@ -189,7 +233,7 @@ Calibration calibrate(const std::vector<FemRun>& runs, const CalibrationOptions&
   };
   const ContactModel hunt_crossley = hunt_crossley_model();
   campaign.hunt_crossley = fit(hunt_crossley, {std::string(model_keys::hunt_crossley), "Hunt–Crossley, force histories",
-                                               std::nullopt, 0, damping, {}});
+                                               std::nullopt, 0, damping, {}, std::nullopt});
   // The other fits start from the Hunt–Crossley elastic part and damping.
   const ModelFit& hc = campaign.hunt_crossley->fit;
   const double hc_damping = hc.parameter.value;
@@ -202,23 +246,24 @@ Calibration calibrate(const std::vector<FemRun>& runs, const CalibrationOptions&
     campaign.hunt_crossley_energy =
         fit(hunt_crossley, {std::string(model_keys::hunt_crossley_energy),
                             "Hunt–Crossley, force histories and energy loss", std::nullopt,
-                            options.energy_weight, hc_damping, {}});
+                            options.energy_weight, hc_damping, {}, std::nullopt});
   // Hunt–Crossley with n at the Hertz value: its c (N/m^1.5) is the one to compare with the
   // Hertz stiffness.
   campaign.hunt_crossley_hertz_exponent =
       fit(hunt_crossley, {std::string(model_keys::hunt_crossley_hertz_exponent),
                           "Hunt–Crossley with n = 3/2, force histories", hertz_exponent, 0,
-                          hc_damping, {}});
+                          hc_damping, {}, std::nullopt});
   campaign.hunt_crossley_velocity_damping =
       fit(velocity_damped_hunt_crossley_model(),
           {std::string(model_keys::hunt_crossley_velocity_damping),
            options.energy_weight > 0 ? "Hunt–Crossley with b(V), force histories and energy loss"
                                      : "Hunt–Crossley with b(V), force histories",
-           std::nullopt, options.energy_weight, hc_damping, {0.0}});
+           std::nullopt, options.energy_weight, hc_damping, {0.0}, std::nullopt});
   for (const auto& law : laws) {
     try {
-      campaign.comparison_laws.push_back(
-          fit(law, {law.name, law.name + ", force histories", std::nullopt, 0, nan, {}}));
+      CampaignFitRequest request{law.name, law.name + ", force histories", std::nullopt, 0, nan, {}, std::nullopt};
+      if (law.damped_plastic()) request = damped_plastic_request(law, runs, campaign, start, options);
+      campaign.comparison_laws.push_back(fit(law, request));
     } catch (const std::exception& error) {
       calibration.problems.push_back(
           {law.name, ProblemKind::convergence, "the campaign fit of " + law.name + " failed: " + error.what()});

@@ -59,7 +59,7 @@ std::vector<std::string> units_of(const ModelFit& fit) {
 json fit_json(const ModelFit& fit) {
   const std::vector<std::string> names = fit.parameter_names();
   const std::size_t k = names.size();
-  json parameters = {{"c", estimate_json(fit.stiffness, "N/m^n", false)},
+  json parameters = {{"c", estimate_json(fit.stiffness, "N/m^n", fit.stiffness_fixed)},
                      {"n", estimate_json(fit.exponent, "1", fit.exponent_fixed)},
                      {fit.parameter_name,
                       estimate_json(fit.parameter, fit.parameter_unit, fit.parameter_fixed)}};
@@ -145,6 +145,13 @@ json reference_json(const ReferenceModel& reference) {
   json parameters = {{"c", number(reference.stiffness)}, {"n", number(reference.exponent)}};
   if (!reference.dissipation.empty())
     parameters[reference.parameter_name] = number(reference.dissipation[0]);
+  json extra = json::array();
+  for (std::size_t i = 0; i < reference.extra_names.size() && i + 1 < reference.dissipation.size();
+       ++i) {
+    parameters[reference.extra_names[i]] = number(reference.dissipation[i + 1]);
+    extra.push_back({{"name", reference.extra_names[i]},
+                     {"unit", i < reference.extra_units.size() ? reference.extra_units[i] : ""}});
+  }
   json runs = json::array();
   for (const auto& run : reference.runs) {
     json entry = {{"source", run.source}, {"impact_velocity", number(run.velocity)}};
@@ -158,6 +165,7 @@ json reference_json(const ReferenceModel& reference) {
           {"basis", reference.basis},
           {"parameters", parameters},
           {"parameter", {{"name", reference.parameter_name}, {"unit", reference.parameter_unit}}},
+          {"extra_parameters", extra},
           {"runs", runs}};
 }
 

@@ -120,6 +120,7 @@ ModelFit read_fit(const Reader& node) {
     node.at("parameter_order").fail("", "does not start with c, n and a dissipation parameter");
   const Reader parameters = node.at("parameters");
   fit.stiffness = read_estimate(parameters.at("c"));
+  fit.stiffness_fixed = parameters.at("c").flag("fixed");
   fit.exponent = read_estimate(parameters.at("n"));
   fit.exponent_fixed = parameters.at("n").flag("fixed");
   fit.parameter_name = names[2];
@@ -198,6 +199,16 @@ ReferenceModel read_reference(const Reader& node) {
   reference.parameter_unit = node.at("parameter").text("unit");
   if (parameters.has(reference.parameter_name))
     reference.dissipation = {parameters.number(reference.parameter_name)};
+  // Further dissipation parameters (a damped elastic-plastic model's A); absent before them.
+  if (node.has("extra_parameters")) {
+    const Reader extra = node.at("extra_parameters");
+    for (std::size_t i = 0; i < extra.size(); ++i) {
+      const std::string name = extra.at(i).text("name");
+      reference.extra_names.push_back(name);
+      reference.extra_units.push_back(extra.at(i).text("unit"));
+      reference.dissipation.push_back(parameters.number(name));
+    }
+  }
   const Reader runs = node.at("runs");
   for (std::size_t i = 0; i < runs.size(); ++i) {
     const Reader run = runs.at(i);

@@ -75,6 +75,11 @@ FitSetup campaign_fit_setup(const ContactModel& model, const CampaignFitRequest&
   FitSetup setup{&model, {start.reference_approach, {scale}}, {}};
   setup.parameters = {{start.log_reference_force}, exponent_parameter(n0, fixed_exponent),
                       {p0 / scale}};
+  if (request.stiffness) {
+    setup.parameters[0].initial =
+        setup.parametrisation.log_reference_force(*request.stiffness, n0);
+    setup.parameters[0].fixed = true;
+  }
   if (model.parameter == DissipationParameter::damping) {
     setup.parameters[2].lower = 0;
   } else {
@@ -84,11 +89,12 @@ FitSetup campaign_fit_setup(const ContactModel& model, const CampaignFitRequest&
   }
   for (std::size_t i = 0; i < model.extra_parameters.size(); ++i) {
     const auto& spec = model.extra_parameters[i];
-    setup.parametrisation.scales.push_back(1.0);
-    FitParameter parameter{i < request.initial_extra.size() ? request.initial_extra[i]
-                                                                    : spec.initial};
-    parameter.lower = spec.lower;
-    parameter.upper = spec.upper;
+    setup.parametrisation.scales.push_back(spec.scale);
+    FitParameter parameter{(i < request.initial_extra.size() ? request.initial_extra[i]
+                                                             : spec.initial) /
+                           spec.scale};
+    parameter.lower = spec.lower / spec.scale;
+    parameter.upper = spec.upper / spec.scale;
     setup.parameters.push_back(parameter);
   }
   return setup;

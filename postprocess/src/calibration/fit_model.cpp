@@ -60,6 +60,7 @@ ModelFit to_model_fit(const FitSetup& setup, const LeastSquaresResult& result,
   fit.model = setup.model->name;
   fit.parameter_name = setup.model->parameter_name();
   fit.parameter_unit = setup.model->parameter_unit();
+  fit.stiffness_fixed = setup.parameters[0].fixed;
   fit.exponent_fixed = setup.parameters[1].fixed;
   fit.parameter_fixed = setup.parameters[2].fixed;
   fit.converged = result.converged;

@@ -89,6 +89,14 @@ struct HistoryEvaluator {
     for (double p : dissipation)
       if (!std::isfinite(p)) return false;
     const reduced::ContactSetup setup{run->run->mass, c, n};
+    if (model->damped_plastic()) try {
+        return simulate_damped_plastic_force(
+            *damped_plastic_impact(*model, run->run->mass, run->run->impact_velocity, c,
+                                   dissipation),
+            run->run->mass, run->times, run->points, force);
+      } catch (const std::exception&) {
+        return false;
+      }
     double damping;
     try {
       damping = model->damping(dissipation, run->run->impact_velocity, setup);
@@ -183,6 +191,7 @@ struct CampaignFitRequest {
   double energy_weight = 0;
   double initial_damping = nan;    // else from the median restitution
   std::vector<double> initial_extra;
+  std::optional<double> stiffness; // c held here [N/m^n] (else free)
 };
 
 /// The per-run fits of one run (run_fits.cpp).

@@ -94,16 +94,24 @@ RankingScore ranking_score(const std::vector<ImpactFigures>& predicted,
 void rank(std::vector<RankedModel>& models, double tie) {
   std::vector<std::pair<std::size_t, RankedModel>> indexed;
   for (std::size_t i = 0; i < models.size(); ++i) indexed.emplace_back(i, models[i]);
-  std::stable_sort(indexed.begin(), indexed.end(), [](const auto& a, const auto& b) {
+  // A fitted model scored in sample (fewer than three velocities, or a held-out fit missing)
+  // is judged on the runs it was fitted to: it ranks after every model scored out of sample
+  // (the models that fit nothing always are), whatever its score.
+  const auto in_sample_fit = [](const RankedModel& model) {
+    return !model.out_of_sample && model.free_parameters > 0;
+  };
+  std::stable_sort(indexed.begin(), indexed.end(), [&](const auto& a, const auto& b) {
+    if (in_sample_fit(a.second) != in_sample_fit(b.second)) return in_sample_fit(b.second);
     if (std::isnan(a.second.score)) return false;
     if (std::isnan(b.second.score)) return true;
     return a.second.score < b.second.score;
   });
-  // Groups of scores within `tie` of the group's best: fewer free parameters first, then the
-  // given order.
+  // Groups of scores within `tie` of the group's best (and scored alike): fewer free
+  // parameters first, then the given order.
   for (std::size_t begin = 0; begin < indexed.size();) {
     std::size_t end = begin + 1;
     while (end < indexed.size() && std::isfinite(indexed[begin].second.score) &&
+           in_sample_fit(indexed[end].second) == in_sample_fit(indexed[begin].second) &&
            indexed[end].second.score - indexed[begin].second.score <= tie)
       ++end;
     std::sort(indexed.begin() + std::ptrdiff_t(begin), indexed.begin() + std::ptrdiff_t(end),

@@ -1,8 +1,10 @@
-// The models that fit nothing: Hertz, the published Hunt-Crossley b, Kuwabara-Kono and the
-// elastic-plastic laws from the material, evaluated on every run.
+// The models that fit nothing: Hertz, the published Hunt-Crossley b, Kuwabara-Kono, the
+// elastic-plastic laws and the damped elastic-plastic laws from the material, evaluated on
+// every run.
 
 #include "calibration/fit_model.hpp"
 
+#include "impact_postprocess/models/damped_plastic_models.hpp"
 #include "impact_postprocess/models/jackson_green_model.hpp"
 #include "impact_postprocess/models/model_keys.hpp"
 #include "impact_postprocess/run/scenario_materials.hpp"
@@ -23,7 +25,11 @@ ReferenceModel reference_model(std::string key, std::string label, const Contact
   ReferenceModel reference{std::move(key),    std::move(label), model.name,
                            std::move(basis),  stiffness,        exponent,
                            dissipation,       model.parameter_name(), model.parameter_unit(),
-                           {}};
+                           {},                {},               {}};
+  for (std::size_t i = 0; i + 1 < dissipation.size() && i < model.extra_parameters.size(); ++i) {
+    reference.extra_names.push_back(model.extra_parameters[i].name);
+    reference.extra_units.push_back(model.extra_parameters[i].unit);
+  }
   Parametrisation map{1.0, std::vector<double>(dissipation.size(), 1.0)};
   std::vector<double> theta{map.log_reference_force(stiffness, exponent), exponent};
   theta.insert(theta.end(), dissipation.begin(), dissipation.end());
@@ -84,6 +90,17 @@ void add_reference_models(CampaignCalibration& campaign, const std::vector<FemRu
         "Jackson–Green, E*, Y, nu from the material (no fit)", jackson_green->model,
         jackson_green->basis, jackson_green->stiffness, hertz_exponent,
         {jackson_green->yield_strength}, runs, options));
+
+  // Damping on the elastic-plastic springs from the material: both losses with nothing
+  // fitted (none without a yield strength or with A = 0, where they are the rate-independent
+  // laws above).
+  for (const auto& damped :
+       {material_hunt_crossley_thornton(fem_runs), material_hunt_crossley_jackson_green(fem_runs)})
+    if (damped)
+      campaign.reference_models.push_back(reference_model(damped->key, damped->label,
+                                                          damped->model, damped->basis,
+                                                          damped->stiffness, hertz_exponent,
+                                                          damped->dissipation, runs, options));
 
   // The restitution maps as users apply them: the FEM's e at each run, c from Hertz.
   for (const auto& name : restitution_parametrised_laws()) {

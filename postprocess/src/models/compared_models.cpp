@@ -4,7 +4,10 @@
 //   - Hunt–Crossley fitted to the force histories and the energy loss;
 //   - Hunt–Crossley with b(V) = b_1 V^-q (histories and energy loss);
 //   - best-law: the best-ranked comparison law of the library;
+//   - Hunt–Crossley damping on the elastic-plastic springs, fitted (damped_plastic_models.hpp;
+//     not again when it is the best law);
 //   - Kuwabara–Kono without tension, A from the material (no fit);
+//   - Hunt–Crossley on the elastic-plastic springs from the material (no fit);
 //   - the published Hunt–Crossley (b of the published example, c from Hertz, n = 3/2);
 //   - Hertz (b = 0).
 // Predicted values are the calibration's (so the tables hold the JSON's numbers); the
@@ -229,8 +232,11 @@ ReportModel reference_model(const std::vector<ReportRun>& runs, const std::vecto
   model.label = std::move(label);
   std::vector<double> values{reference.stiffness, reference.exponent};
   values.insert(values.end(), reference.dissipation.begin(), reference.dissipation.end());
-  model.parameters = parameters_text({"c", "n", reference.parameter_name},
-                                     {"N/m^n", "1", reference.parameter_unit}, values);
+  std::vector<std::string> names{"c", "n", reference.parameter_name},
+      units{"N/m^n", "1", reference.parameter_unit};
+  names.insert(names.end(), reference.extra_names.begin(), reference.extra_names.end());
+  units.insert(units.end(), reference.extra_units.begin(), reference.extra_units.end());
+  model.parameters = parameters_text(names, units, values);
   model.basis = reference.basis;
   model.calibration_key = reference.key;
   model.out_of_sample = true; // nothing fitted
@@ -379,8 +385,36 @@ std::vector<ReportModel> report_models(const std::vector<ReportRun>& runs,
       if (model.key == key) return &model;
     return nullptr;
   };
+  // The damped elastic-plastic laws (damped_plastic_models.hpp), fitted, unless one of them is
+  // the best law shown above.
+  std::string best_key;
+  for (const auto& model : models)
+    if (model.key == model_keys::best_law) best_key = model.calibration_key;
+  if (campaign.fitted)
+    for (const auto& [key, label] :
+         {std::pair{model_keys::hunt_crossley_thornton, "Hunt–Crossley on Thornton (fitted)"},
+          std::pair{model_keys::hunt_crossley_jackson_green,
+                    "Hunt–Crossley on Jackson–Green (fitted)"},
+          std::pair{model_keys::hunt_crossley_thornton_from_a,
+                    "Hunt–Crossley on Thornton, b ∝ V^-4/5 (fitted)"},
+          std::pair{model_keys::hunt_crossley_jackson_green_from_a,
+                    "Hunt–Crossley on Jackson–Green, b ∝ V^-4/5 (fitted)"}}) {
+      const CampaignModelFit* fit = campaign.find(std::string(key));
+      if (fit && best_key != key)
+        models.push_back(fitted_model(runs, fem_runs, *fit, fit->key, label,
+                                      fit->label + ": the spring's yield parameter and b fitted "
+                                                   "to all runs",
+                                      level));
+    }
   if (const auto* material = reference(std::string(model_keys::kuwabara_kono_material)))
     models.push_back(reference_model(runs, fem_runs, *material, "Kuwabara–Kono (A from the material)"));
+  if (const auto* damped = reference(std::string(model_keys::hunt_crossley_thornton_material)))
+    models.push_back(
+        reference_model(runs, fem_runs, *damped, "Hunt–Crossley on Thornton (from the material)"));
+  if (const auto* damped =
+          reference(std::string(model_keys::hunt_crossley_jackson_green_material)))
+    models.push_back(reference_model(runs, fem_runs, *damped,
+                                     "Hunt–Crossley on Jackson–Green (from the material)"));
   if (const auto* published = reference(std::string(model_keys::hunt_crossley_published)))
     models.push_back(reference_model(runs, fem_runs, *published, published->label));
   if (const auto* hertz = reference(std::string(model_keys::hertz))) models.push_back(reference_model(runs, fem_runs, *hertz, hertz->label));

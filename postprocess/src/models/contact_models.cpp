@@ -1,4 +1,5 @@
 #include "impact_postprocess/models/contact_models.hpp"
+#include "impact_postprocess/models/damped_plastic_models.hpp"
 #include "impact_postprocess/models/model_keys.hpp"
 #include "impact_postprocess/models/plastic_models.hpp"
 
@@ -86,6 +87,7 @@ ContactModel velocity_damped_hunt_crossley_model() {
 
 ContactModel comparison_model(const std::string& name) {
   if (is_plastic_model(name)) return plastic_model(name);
+  if (is_damped_plastic_model(name)) return damped_plastic_model(name);
   const reduced::ComparisonLaw& law = reduced::comparison_law(name);
   ContactModel model;
   model.name = law.name;
@@ -126,6 +128,14 @@ ImpactPrediction predict_impact(const ContactModel& model, double mass, double v
                                 const std::vector<double>& dissipation, double tolerance) {
   ImpactPrediction prediction{{nan, nan, nan, nan, nan}, nan};
   try {
+    if (model.damped_plastic()) {
+      // The damping constant of a damped elastic-plastic model is its rate term's (b at V).
+      prediction.damping =
+          model.spring_damping_constant(dissipation, velocity, {mass, stiffness, exponent});
+      static_cast<ImpactFigures&>(prediction) =
+          damped_plastic_impact(model, mass, velocity, stiffness, dissipation)->figures();
+      return prediction;
+    }
     prediction.damping = damping_at(model, mass, velocity, stiffness, exponent, dissipation);
     if (model.plastic_contact) {
       const auto response = reduced::elastic_plastic_impact(
@@ -151,6 +161,8 @@ double predict_restitution(const ContactModel& model, double mass, double veloci
                            double stiffness, double exponent,
                            const std::vector<double>& dissipation, double tolerance) {
   try {
+    if (model.damped_plastic())
+      return damped_plastic_impact(model, mass, velocity, stiffness, dissipation)->restitution();
     const double damping = damping_at(model, mass, velocity, stiffness, exponent, dissipation);
     if (model.plastic_contact)
       return reduced::elastic_plastic_impact(
@@ -174,6 +186,8 @@ std::vector<reduced::ImpactSample> predict_history(const ContactModel& model, do
                                                    double exponent,
                                                    const std::vector<double>& dissipation,
                                                    std::size_t points) {
+  if (model.damped_plastic())
+    return damped_plastic_impact(model, mass, velocity, stiffness, dissipation)->history(points);
   const double damping = damping_at(model, mass, velocity, stiffness, exponent, dissipation);
   if (model.plastic_contact)
     return reduced::elastic_plastic_impact_loop(

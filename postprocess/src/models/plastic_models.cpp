@@ -1,6 +1,7 @@
 // The elastic-plastic comparison models (plastic_models.hpp).
 
 #include "impact_postprocess/models/plastic_models.hpp"
+#include "impact_postprocess/models/damped_plastic_models.hpp"
 #include "impact_postprocess/models/jackson_green_model.hpp"
 #include "impact_postprocess/models/model_keys.hpp"
 #include "impact_postprocess/run/scenario_materials.hpp"
@@ -101,10 +102,19 @@ ContactModel plastic_model(const std::string& name) {
 }
 
 std::string model_formula(const std::string& name) {
-  return name == model_keys::jackson_green ? jackson_green_formula() : contact_model(name).formula;
+  if (name == model_keys::jackson_green) return jackson_green_formula();
+  if (damped_plastic_needs_scenario(name)) {
+    // Any scenario builds the model; the formula names R and nu of none.
+    ContactModel spring = jackson_green_model(1.0, 0.3);
+    spring.formula = jackson_green_formula();
+    return damped_plastic_model(name, spring).formula;
+  }
+  return contact_model(name).formula;
 }
 
-bool needs_scenario(const std::string& name) { return name == model_keys::jackson_green; }
+bool needs_scenario(const std::string& name) {
+  return name == model_keys::jackson_green || damped_plastic_needs_scenario(name);
+}
 
 ContactModel comparison_model(const std::string& name, const std::vector<FemRun>& runs) {
   if (!needs_scenario(name)) return comparison_model(name);
@@ -113,7 +123,8 @@ ContactModel comparison_model(const std::string& name, const std::vector<FemRun>
     throw reduced::InvalidInput("model", "the model " + name + " needs the sphere radius "
                                 "('Scenario/Sphere radius') and the Poisson ratio of the "
                                 "yielding body, which the runs do not record");
-  return jackson_green_model(scenario->radius, scenario->poisson_ratio);
+  const ContactModel spring = jackson_green_model(scenario->radius, scenario->poisson_ratio);
+  return damped_plastic_needs_scenario(name) ? damped_plastic_model(name, spring) : spring;
 }
 
 std::vector<ContactModel> comparison_models(const std::vector<std::string>& names,
@@ -134,6 +145,7 @@ std::vector<ContactModel> comparison_models(const std::vector<std::string>& name
 std::vector<std::string> comparison_model_names() {
   std::vector<std::string> names = reduced::comparison_law_names();
   for (const auto& name : plastic_model_names()) names.push_back(name);
+  for (const auto& name : damped_plastic_model_names()) names.push_back(name);
   return names;
 }
 

@@ -108,4 +108,19 @@ bool simulate_plastic_force(const reduced::ElasticPlasticContact& contact, doubl
   return force_from_samples(samples, law, mass, times, force);
 }
 
+bool simulate_damped_plastic_force(const DampedPlasticImpact& impact, double mass,
+                                   const std::vector<double>& times, std::size_t points,
+                                   double* force) {
+  std::vector<reduced::ImpactSample> samples;
+  try {
+    samples = impact.history(points);
+  } catch (const std::exception&) {
+    return false;
+  }
+  const reduced::ContactForceLaw law = [&impact](double x, double rate) {
+    return impact.force(x, rate);
+  };
+  return force_from_samples(samples, law, mass, times, force);
+}
+
 } // namespace impact::postprocess::detail

@@ -6,6 +6,8 @@
 // more samples than measured points the interpolation error is far below the integration
 // tolerance.
 
+#include "impact_postprocess/models/damped_plastic_models.hpp"
+
 #include <impact_reduced/comparison_laws.hpp>
 #include <impact_reduced/elastic_plastic_impact.hpp>
 #include <impact_reduced/impact_ode.hpp>
@@ -38,5 +40,12 @@ bool simulate_hunt_crossley_force(const reduced::ContactForceLaw& law,
 bool simulate_plastic_force(const reduced::ElasticPlasticContact& contact, double mass,
                             double velocity, const std::vector<double>& times, std::size_t points,
                             double tolerance, double* force);
+
+/// The same for a damped elastic-plastic impact (damped_plastic_models.hpp): its closed-form
+/// history (HuntCrossleyElasticPlasticImpact::history), the force of the branch of the
+/// interpolated rate (loading while x' > 0).
+bool simulate_damped_plastic_force(const DampedPlasticImpact& impact, double mass,
+                                   const std::vector<double>& times, std::size_t points,
+                                   double* force);
 
 } // namespace impact::postprocess::detail

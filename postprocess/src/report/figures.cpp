@@ -41,7 +41,15 @@ const std::map<std::string, std::string>& model_colors() {
       {std::string(model_keys::best_law), "tab:purple"},
       {std::string(model_keys::kuwabara_kono_material), "tab:green"},
       {std::string(model_keys::hunt_crossley_published), "tab:blue"},
-      {std::string(model_keys::hertz), "tab:gray"}};
+      {std::string(model_keys::hertz), "tab:gray"},
+      // The damped elastic-plastic laws: pink on Thornton's spring, olive on Jackson–Green's,
+      // dark magenta and teal with b(V) from A (as in the section Elastic-plastic laws).
+      {std::string(model_keys::hunt_crossley_thornton), "tab:pink"},
+      {std::string(model_keys::hunt_crossley_thornton_material), "tab:pink"},
+      {std::string(model_keys::hunt_crossley_thornton_from_a), "darkmagenta"},
+      {std::string(model_keys::hunt_crossley_jackson_green), "tab:olive"},
+      {std::string(model_keys::hunt_crossley_jackson_green_material), "tab:olive"},
+      {std::string(model_keys::hunt_crossley_jackson_green_from_a), "teal"}};
   return colors;
 }
 

@@ -189,6 +189,10 @@ std::string recommended_block(const Report& report, const RankedModel& best) {
       if (!reference.dissipation.empty())
         list.push_back({reference.parameter_name, reference.dissipation.front(),
                         reference.parameter_unit});
+      for (std::size_t i = 0; i < reference.extra_names.size() && i + 1 < reference.dissipation.size();
+           ++i)
+        list.push_back({reference.extra_names[i], reference.dissipation[i + 1],
+                        i < reference.extra_units.size() ? reference.extra_units[i] : ""});
       return parameter_block(heading + reference.label + " (nothing fitted: " + reference.basis + ")",
                              force_law(model_formula(reference.model)), list);
     }

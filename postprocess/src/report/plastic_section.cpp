@@ -31,11 +31,27 @@ json line(const std::string& label, json x, json y, const std::string& color,
 
 std::string color_of(const PlasticLawCurve& law) {
   if (law.key == model_keys::jackson_green_marghitu_material) return "tab:purple";
+  // The damped laws: Hunt–Crossley on Thornton's spring (pink; b(V) from A fitted: dark
+  // magenta), on Jackson–Green's (olive; b(V) from A fitted: teal), as in the errors figure.
+  if (law.damped) {
+    const bool thornton = law.key.find("thornton") != std::string::npos;
+    if (law.key == model_keys::hunt_crossley_thornton_from_a ||
+        law.key == model_keys::hunt_crossley_jackson_green_from_a)
+      return thornton ? "darkmagenta" : "teal";
+    return thornton ? "tab:pink" : "tab:olive";
+  }
   const bool thornton = law.key == model_keys::thornton || law.key == model_keys::thornton_material;
   return thornton ? "tab:blue" : "tab:green";
 }
 
-std::string style_of(const PlasticLawCurve& law) { return law.fitted ? "--" : "-"; }
+// Fitted dashed, from the material solid; a damped law fitted with a constant b dash-dotted.
+std::string style_of(const PlasticLawCurve& law) {
+  if (law.damped && law.fitted &&
+      (law.key == model_keys::hunt_crossley_thornton ||
+       law.key == model_keys::hunt_crossley_jackson_green))
+    return "-.";
+  return law.fitted ? "--" : "-";
+}
 
 json restitution_figure(const Report& report, const PlasticLaws& laws) {
   const double v_y = laws.yield_velocity;
@@ -162,8 +178,11 @@ std::vector<ReportFigure> plastic_figures(const Report& report) {
        "Restitution against V/V_y in log-log: the FEM (error bars: the grid convergence index of "
        "its verification, where the run was verified), Thornton (1997) and Jackson–Green (2005) "
        "from the material (solid) and fitted (dashed), Jackson–Green–Marghitu's (2010) "
-       "restitution fit from the material (constants unconfirmed), the calibrated Hunt–Crossley "
-       "law (red) and the plastic family's slope -1/4.",
+       "restitution fit from the material (constants unconfirmed), Hunt–Crossley damping on the "
+       "elastic-plastic springs where the calibration holds it (Thornton's spring: pink, dark "
+       "magenta with b(V) from A fitted; Jackson–Green's: olive, teal with b(V) from A fitted; "
+       "a constant b fitted dash-dotted), the calibrated Hunt–Crossley law (red) and the plastic family's slope "
+       "-1/4.",
        restitution_figure(report, laws)},
       {FigureId::permanent_approach, "", "permanent_approach.png",
        "Permanent approach against V: the FEM's approach at separation (dent plus the sphere's "
@@ -199,9 +218,19 @@ void plastic_section(Document& doc, const Report& report,
   std::vector<std::string> items;
   for (const auto& law : laws.laws)
     items.push_back(law.label + ": " + law.parameters +
-                    (law.fitted ? " (campaign fit of the calibration, 2 free parameters)"
+                    (law.fitted ? " (campaign fit of the calibration, " +
+                                      std::to_string(law.free_parameters) + " free parameters)"
                                 : " (nothing fitted)"));
   doc.list(items);
+  if (std::any_of(laws.laws.begin(), laws.laws.end(),
+                  [](const PlasticLawCurve& law) { return law.damped; }))
+    doc.paragraph("Hunt–Crossley on an elastic-plastic spring, F = F_s(x) (1 + b x'), carries "
+                  "both losses: the viscous one through b (below the yield velocity the law is "
+                  "Hunt–Crossley's), the plastic one through the spring's unloading branch. From "
+                  "the material: the spring from E*, R and Y, and b(V) = (3/2) gamma_1 A "
+                  "(c/m)^(2/5) V^(-4/5) with A of the retardation times, the b whose small-loss "
+                  "restitution is Kuwabara–Kono's. Fitted: the yield parameter and b, with c at "
+                  "the Hertz value of the materials.");
   doc.paragraph(laws.text);
   if (!report.family_text.empty()) doc.paragraph(report.family_text);
   Table table{{"V [m/s]", "V/V_y", "FEM e", "FEM x_p [µm]"}, {}};

@@ -132,8 +132,9 @@ void ranking_section(Document& doc, const Report& report) {
   doc.paragraph("All models of the calibration (calibration JSON, campaign.ranking), ranked by "
                 "the RMS of their relative errors in 1 - e^2, t_c, F_max and x_max over all "
                 "runs, out of sample where the campaign allows it (models that fit nothing are "
-                "out of sample by construction). Scores within 0.01 % count as equal, and among "
-                "equals fewer free parameters rank first. The RMS residual of the force "
+                "out of sample by construction); a fitted model scored in sample (fewer than "
+                "three velocities) ranks after every model scored out of sample. Scores within "
+                "0.01 % count as equal, and among equals fewer free parameters rank first. The RMS residual of the force "
                 "histories (in sample) is shown for comparison: it is what the fits minimise, "
                 "not what the verdict judges.");
   Table table{{"rank", "model", "free parameters", "RMS error [%]", "errors", "worst error [%]",
@@ -143,23 +144,38 @@ void ranking_section(Document& doc, const Report& report) {
   int rank = 1;
   std::vector<std::string> families;
   for (const auto& entry : campaign.ranking) {
-    std::string name = "", unit = "";
-    double value = nan;
+    // Every dissipation parameter (a damped elastic-plastic law has two), ", "-separated.
+    std::vector<std::string> names, units;
+    std::vector<double> values;
     if (const CampaignModelFit* fit = campaign.find(entry.key)) {
-      name = fit->fit.parameter_name;
-      unit = fit->fit.parameter_unit;
-      value = fit->fit.parameter.value;
+      names = {fit->fit.parameter_name};
+      units = {fit->fit.parameter_unit};
+      for (const auto& extra : fit->fit.extra) {
+        names.push_back(extra.name);
+        units.push_back(extra.unit);
+      }
+      values = fit->fit.dissipation();
     }
     for (const auto& reference : campaign.reference_models)
       if (reference.key == entry.key) {
-        name = reference.parameter_name;
-        unit = reference.parameter_unit;
-        value = reference.dissipation.empty() ? nan : reference.dissipation[0];
+        names = {reference.parameter_name};
+        units = {reference.parameter_unit};
+        names.insert(names.end(), reference.extra_names.begin(), reference.extra_names.end());
+        units.insert(units.end(), reference.extra_units.begin(), reference.extra_units.end());
+        values = reference.dissipation;
+        if (values.empty()) values = {nan};
       }
+    std::string name, value, unit;
+    for (std::size_t i = 0; i < names.size(); ++i) {
+      name += (i ? ", " : "") + names[i];
+      value += (i ? ", " : "") + cell(i < values.size() ? values[i] : nan);
+      unit += (i ? ", " : "") + (i < units.size() ? units[i] : std::string());
+    }
+    if (names.empty()) value = cell(nan);
     table.rows.push_back({std::to_string(rank++), entry.key, std::to_string(entry.free_parameters),
                           cell(entry.score * 100), entry.out_of_sample ? "out of sample" : "in sample",
                           cell(entry.worst_error * 100), cell(entry.in_sample_score * 100),
-                          cell(entry.rms_residual * 100), name, cell(value), unit,
+                          cell(entry.rms_residual * 100), name, value, unit,
                           entry.converged ? "yes" : "no"});
     if (entry.family.size() > 1) {
       std::string members, fitted;

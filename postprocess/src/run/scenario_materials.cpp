@@ -34,6 +34,12 @@ std::optional<Body> body_of(const FemRun& run, const std::string& body) {
   Body result{model->second, *young, *poisson, std::nullopt, std::nullopt};
   if (model->second == fem_format::elastic_model) {
     result.deviatoric_retardation_time = result.volumetric_retardation_time = 0.0;
+  } else if (model->second == fem_format::elastic_plastic_model) {
+    // impact-fem's elastic-plastic body: a Kelvin–Voigt stress C : tau_r d eps/dt in parallel
+    // (fem/README), deviatoric and volumetric alike, so tau_d = tau_v = tau_r.
+    const auto retardation = material_constant(run, body, fem_format::retardation_time);
+    if (retardation)
+      result.deviatoric_retardation_time = result.volumetric_retardation_time = *retardation;
   } else if (model->second == fem_format::kelvin_voigt_model) {
     result.deviatoric_retardation_time = material_constant(run, body, fem_format::retardation_time);
     const auto volumetric = material_constant(run, body, fem_format::volumetric_retardation_time);
@@ -47,7 +53,10 @@ std::optional<Body> body_of(const FemRun& run, const std::string& body) {
 std::string describe(const std::string& name, const Body& body) {
   std::string text = name + " " + body.model + " E = " + format(body.youngs_modulus) +
                      " Pa, nu = " + format(body.poisson_ratio);
-  if (body.model == fem_format::kelvin_voigt_model && body.deviatoric_retardation_time &&
+  if (body.model == fem_format::elastic_plastic_model && body.deviatoric_retardation_time)
+    text += ", tau_r = " + format(*body.deviatoric_retardation_time) + " s (Kelvin–Voigt in "
+            "parallel: tau_d = tau_v = tau_r)";
+  else if (body.model == fem_format::kelvin_voigt_model && body.deviatoric_retardation_time &&
       body.volumetric_retardation_time)
     text += ", tau_d = " + format(*body.deviatoric_retardation_time) +
             " s, tau_v = " + format(*body.volumetric_retardation_time) + " s";
@@ -123,7 +132,8 @@ ScenarioMaterials scenario_materials(const std::vector<FemRun>& runs) {
     if (!viscoelastic) {
       materials.dissipative_basis =
           "no A from the material: the bodies are " + sphere->model + " and " + plate->model +
-          " (the formula needs Kelvin–Voigt or elastic bodies with their retardation times)";
+          " (the formula needs Kelvin–Voigt, elastic-plastic or elastic bodies with their "
+          "retardation times)";
       return materials;
     }
     try {
@@ -138,6 +148,11 @@ ScenarioMaterials scenario_materials(const std::vector<FemRun>& runs) {
           "compliance-weighted over the two bodies, from " +
           describe("sphere", *sphere) +
           (rigid_plate ? std::string("; rigid plate") : "; " + describe("plate", *plate));
+      if (!(*materials.dissipative_constant > 0)) {
+        materials.dissipative_constant.reset();
+        materials.dissipative_basis = "the bodies' retardation times are 0: A = 0, no viscous "
+                                      "loss (" + describe("sphere", *sphere) + ")";
+      }
     } catch (const std::exception& error) {
       materials.dissipative_basis = std::string("no A from the material: ") + error.what();
     }

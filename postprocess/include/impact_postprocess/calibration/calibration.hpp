@@ -71,6 +71,7 @@ struct ModelFit {
   Estimate exponent;                ///< n
   Estimate parameter;               ///< p (see ContactModel)
   std::vector<NamedEstimate> extra; ///< further dissipation parameters (b(V): q)
+  bool stiffness_fixed = false;     ///< c held (a damped elastic-plastic model at Hertz's c)
   bool exponent_fixed = false;
   bool parameter_fixed = false;
   /// Correlations and covariance of (c, n, p, extra...) in their units, row-major k x k
@@ -132,16 +133,19 @@ struct CampaignModelFit {
 /// A model whose parameters come from the material or the literature: nothing is fitted, so
 /// its predictions are out of sample by construction.
 struct ReferenceModel {
-  std::string key;       ///< "hertz", "hunt-crossley-published", "kuwabara-kono-material"
+  std::string key;       ///< "hertz", "hunt-crossley-published", "kuwabara-kono-material", ...
   std::string label;
   std::string model;     ///< ContactModel name
   std::string basis;     ///< where its parameters come from
   double stiffness;      ///< c [N/m^n]
   double exponent;       ///< n
   std::vector<double> dissipation; ///< ContactModel::damping's parameters
-  std::string parameter_name;
+  std::string parameter_name;      ///< of dissipation[0]
   std::string parameter_unit;
   std::vector<RunResidual> runs;   ///< predictions and force-history agreement
+  /// Names and units of dissipation[1], ... (a damped elastic-plastic model: its A).
+  std::vector<std::string> extra_names;
+  std::vector<std::string> extra_units;
 };
 
 /// A restitution-parametrised law as its users apply it: c from Hertz, n = 3/2, and the
@@ -259,9 +263,10 @@ struct RankingScore {
 RankingScore ranking_score(const std::vector<ImpactFigures>& predicted,
                            const std::vector<ImpactFigures>& measured);
 
-/// Orders models best first: by score; scores within `tie` (absolute, in relative error) of
-/// the best of a group count as equal, and among equals fewer free parameters come first
-/// (then the given order).
+/// Orders models best first: the fitted models scored in sample (out_of_sample false, free
+/// parameters > 0) after all others, each part by score; scores within `tie` (absolute, in
+/// relative error) of the best of a group count as equal, and among equals fewer free
+/// parameters come first (then the given order).
 void rank(std::vector<RankedModel>& models, double tie = 1e-4);
 
 } // namespace impact::postprocess

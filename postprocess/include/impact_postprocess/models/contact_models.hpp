@@ -32,13 +32,28 @@ namespace impact::postprocess {
 /// What the model's first dissipation parameter is (see the file comment).
 enum class DissipationParameter { damping, restitution };
 
-/// A further dissipation parameter of a model (the q of b(V)).
+/// A further dissipation parameter of a model (the q of b(V), the damping b of a damped
+/// elastic-plastic model).
 struct ExtraParameter {
   std::string name;
   std::string unit;
   double initial;
   double lower;
   double upper;
+  /// Its typical size in `unit`: the fits work on value / scale, so that their
+  /// central-difference step (1e-6) is small against it (> 0).
+  double scale = 1.0;
+};
+
+/// The rate-dependent term of a damped elastic-plastic model (damped_plastic_models.hpp):
+/// none for every other model.
+enum class SpringDamping {
+  none,
+  /// F = F_s(x) (1 + b x'), reduced::HuntCrossleyElasticPlasticImpact.
+  hunt_crossley,
+  /// F = F_s(x) + A k_t(x) x', k_t = dF_s/dx: reserved for the reduced library's
+  /// Kuwabara–Kono law on an elastic-plastic spring (not implemented yet).
+  kuwabara_kono,
 };
 
 struct ContactModel {
@@ -67,11 +82,20 @@ struct ContactModel {
   std::function<std::shared_ptr<const reduced::ElasticPlasticContact>(
       double damping, const reduced::ContactSetup&)>
       plastic_contact;
+  /// A damped elastic-plastic model: plastic_contact is its spring (for `damping`, the
+  /// spring's yield parameter), and this rate term acts on it, with the constant
+  /// spring_damping_constant(dissipation, V, setup) (Hunt–Crossley: b [s/m]).
+  SpringDamping spring_damping = SpringDamping::none;
+  std::function<double(const std::vector<double>& dissipation, double velocity,
+                       const reduced::ContactSetup&)>
+      spring_damping_constant;
 
   std::string parameter_name() const;  ///< "e" or damping_name
   std::string parameter_unit() const;  ///< "1" or damping_unit
   /// Hunt–Crossley's force (closed forms of the reduced library apply).
   bool hunt_crossley_force() const;
+  /// A damped elastic-plastic model (spring_damping is not none).
+  bool damped_plastic() const { return spring_damping != SpringDamping::none; }
 };
 
 /// Hunt–Crossley, F = c x^n (1 + b x'), b constant.
@@ -94,7 +118,8 @@ const std::vector<std::string>& restitution_parametrised_laws();
 
 /// What `model` with stiffness c, exponent n and `dissipation` predicts for a body of `mass`
 /// [kg] at `velocity` [m/s]: closed form for Hunt–Crossley's force
-/// (HuntCrossleyImpact::response), elastic_plastic_impact for a plastic model,
+/// (HuntCrossleyImpact::response), elastic_plastic_impact for a plastic model, the closed
+/// form of a damped elastic-plastic model (HuntCrossleyElasticPlasticImpact::response),
 /// integrate_impact (at `tolerance`, with the model's end of contact) otherwise. NaN where it cannot be evaluated (the law holds the body, invalid
 /// parameters).
 ImpactPrediction predict_impact(const ContactModel& model, double mass, double velocity,

@@ -32,6 +32,12 @@ inline constexpr std::string_view kuwabara_kono_material = "kuwabara-kono-materi
 inline constexpr std::string_view thornton_material = "thornton-material";
 /// Jackson–Green's elastic-plastic law with E*, Y, nu from the material (jackson_green_model.hpp).
 inline constexpr std::string_view jackson_green_material = "jackson-green-material";
+/// Hunt–Crossley damping on Thornton's spring, x_y from p_y = 1.6 Y and b(V) from the
+/// materials' dissipative constant A (damped_plastic_models.hpp).
+inline constexpr std::string_view hunt_crossley_thornton_material = "hunt-crossley-thornton-material";
+/// The same on Jackson–Green's spring (E*, Y, nu from the material).
+inline constexpr std::string_view hunt_crossley_jackson_green_material =
+    "hunt-crossley-jackson-green-material";
 /// Jackson, Green & Marghitu's (2010) restitution fit from the material: e only, no force
 /// history (impact_reduced/jackson_green_marghitu.hpp); drawn in the report's elastic-plastic
 /// section, not ranked (the ranking judges t_c, F_max and x_max as well).
@@ -42,6 +48,16 @@ inline constexpr std::string_view jackson_green_marghitu_material = "jackson-gre
 inline constexpr std::string_view thornton = "thornton";
 /// Jackson–Green (2005), c and the yield strength Y free.
 inline constexpr std::string_view jackson_green = "jackson-green";
+
+// ---- Damped elastic-plastic comparison models (damped_plastic_models.hpp) ----------------
+/// Hunt–Crossley damping on Thornton's spring, x_y and b free (c held at Hertz when known).
+inline constexpr std::string_view hunt_crossley_thornton = "hunt-crossley-thornton";
+/// Hunt–Crossley damping on Jackson–Green's spring, Y and b free.
+inline constexpr std::string_view hunt_crossley_jackson_green = "hunt-crossley-jackson-green";
+/// The same springs with b(V) = (3/2) gamma_1 A (c/m)^(2/5) V^(-4/5), A free.
+inline constexpr std::string_view hunt_crossley_thornton_from_a = "hunt-crossley-thornton-from-a";
+inline constexpr std::string_view hunt_crossley_jackson_green_from_a =
+    "hunt-crossley-jackson-green-from-a";
 
 // ---- Roles on the page ---------------------------------------------------------------------
 /// The calibrated Hunt–Crossley law: the campaign's hunt_crossley fit.

@@ -42,8 +42,9 @@ bool is_plastic_model(const std::string& name);
 /// a model that needs the scenario (needs_scenario).
 ContactModel plastic_model(const std::string& name);
 
-/// Whether the model needs constants of the scenario beyond c (jackson-green: the sphere
-/// radius and the Poisson ratio of the yielding body).
+/// Whether the model needs constants of the scenario beyond c (jackson-green and the damped
+/// models on its spring, damped_plastic_models.hpp: the sphere radius and the Poisson ratio of
+/// the yielding body).
 bool needs_scenario(const std::string& name);
 
 /// The comparison model `name` (contact_models.hpp, comparison_model) with the constants of
@@ -63,7 +64,7 @@ std::vector<ContactModel> comparison_models(const std::vector<std::string>& name
                                             std::vector<std::string>& left_out);
 
 /// The comparison models impact-calibrate fits: the reduced library's comparison laws, then
-/// the plastic models.
+/// the plastic models, then the damped elastic-plastic models (damped_plastic_models.hpp).
 std::vector<std::string> comparison_model_names();
 
 /// Thornton's limiting contact pressure p_y = 3 c sqrt(x_y) / (2 pi R) [Pa] from c

@@ -7,6 +7,8 @@
 /// as text attributes of each run file: "<Body>/Material model" = elastic | kelvin-voigt | ...,
 /// "<Body>/<Model>/Young's modulus", ".../Poisson's ratio", ".../Retardation time",
 /// ".../Volumetric retardation time" (< 0: the deviatoric one), "Scenario/Sphere radius".
+/// An elastic-plastic body's "Retardation time" tau_r is a Kelvin–Voigt stress on the whole
+/// strain rate: tau_d = tau_v = tau_r. Retardation times all 0 give no A (no viscous loss).
 
 #include "impact_postprocess/run/fem_run.hpp"
 #include "impact_postprocess/run/fem_run_format.hpp"
@@ -25,7 +27,7 @@ struct ScenarioMaterials {
   double hertz_stiffness;        ///< c_Hertz [N/m^1.5]
   std::string hertz_basis;       ///< where it comes from, in words
   bool hertz_from_runs = false;  ///< false: the published fallback
-  std::optional<double> dissipative_constant; ///< A [s], when both bodies are Kelvin–Voigt or elastic
+  std::optional<double> dissipative_constant; ///< A [s] > 0, when both bodies are Kelvin–Voigt, elastic-plastic with a retardation time, or elastic
   std::string dissipative_basis; ///< the formula's inputs, or why there is no A
 };
 
