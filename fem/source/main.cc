@@ -1,5 +1,8 @@
 // impact-fem: a sphere hitting a plate, axisymmetric elastodynamics with
 // frictionless contact. Usage: see print_usage() or fem/README.md.
+// Exit codes: 0 success; 2 bad input, found before the run starts (an option, a
+// parameter file, an entry or its value: the message names it, nothing is
+// written); 1 a failure of the run (or of a campaign's run).
 
 #include <impact_fem/analysis/material_point.h>
 #include <impact_fem/analysis/specimen.h>
@@ -39,7 +42,10 @@ namespace
            "Output/Directory/plate-thickness-0.01_v1.\n"
            "With --verify (or Verification/Verify) every run is also run on two "
            "coarser discretisations and its numerical uncertainty (observed "
-           "order, Richardson extrapolation, GCI) written to verification.json.\n";
+           "order, Richardson extrapolation, GCI) written to verification.json.\n"
+           "Exit codes: 0 success; 2 bad input (an option, the parameter file, an "
+           "entry or its value, named in the message; nothing is written); 1 a "
+           "failure of the run.\n";
   }
 
 
@@ -78,6 +84,9 @@ main(int argc, char *argv[])
   // the problem's MPI-collective destructors run.
   std::unique_ptr<impact_fem::ImpactProblem> problem;
   ParameterHandler                           prm;
+  // Until the run starts, an error is one of the input: the command line, the
+  // parameter file and entries, their values as the problem reads them.
+  bool reading_input = true;
   try
     {
       impact_fem::ImpactProblem::declare_parameters(prm);
@@ -165,12 +174,20 @@ main(int argc, char *argv[])
       if (analysis == "material point")
         {
           if (is_root)
-            impact_fem::MaterialPointTest(prm).run();
+            {
+              impact_fem::MaterialPointTest test(prm);
+              reading_input = false;
+              test.run();
+            }
         }
       else if (analysis == "specimen")
         {
           if (is_root)
-            impact_fem::SpecimenTest(prm).run();
+            {
+              impact_fem::SpecimenTest test(prm);
+              reading_input = false;
+              test.run();
+            }
         }
       else if (analysis == "indentation")
         {
@@ -187,20 +204,26 @@ main(int argc, char *argv[])
                                  "mesh convergence)."));
           problem =
             std::make_unique<impact_fem::ImpactProblem>(prm, MPI_COMM_WORLD);
+          reading_input = false;
           problem->run();
         }
       else if (impact_fem::Campaign::requested(prm, velocity_list, sweep_items))
         {
           impact_fem::Campaign campaign(prm, velocity_list, sweep_items);
+          reading_input = false;
           if (campaign.run(MPI_COMM_WORLD) > 0)
             return 1;
         }
       else if (impact_fem::verification::enabled(prm))
-        impact_fem::verification::verify(prm, MPI_COMM_WORLD, std::cout);
+        {
+          reading_input = false;
+          impact_fem::verification::verify(prm, MPI_COMM_WORLD, std::cout);
+        }
       else
         {
           problem =
             std::make_unique<impact_fem::ImpactProblem>(prm, MPI_COMM_WORLD);
+          reading_input = false;
           problem->run();
         }
     }
@@ -214,13 +237,13 @@ main(int argc, char *argv[])
           exc.print_info(std::cerr);
           std::cerr << std::flush;
         }
-      return 1;
+      return reading_input ? 2 : 1;
     }
   catch (std::exception &exc)
     {
       if (is_root)
         std::cerr << "\nimpact-fem: error: " << exc.what() << std::endl;
-      return 1;
+      return reading_input ? 2 : 1;
     }
   catch (...)
     {

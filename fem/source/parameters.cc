@@ -68,12 +68,12 @@ namespace impact_fem
                       "1",
                       Patterns::Double(),
                       "Speed of the sphere towards the plate at t = 0" +
-                        unit(contract::impact_velocity) + ", in (0, 100].");
+                        unit(contract::impact_velocity) + ", in [1e-6, 100].");
     prm.declare_entry(contract::initial_gap.entry,
                       "0",
                       Patterns::Double(),
                       "Distance between sphere and plate at t = 0" +
-                        unit(contract::initial_gap) + ", >= 0.");
+                        unit(contract::initial_gap) + ", in [0, 10 R].");
     prm.declare_entry(contract::sphere_radius.entry,
                       "0.01452",
                       Patterns::Double(),
@@ -83,12 +83,12 @@ namespace impact_fem
                       "0.35",
                       Patterns::Double(),
                       "Radius Rp of the plate" + unit(contract::plate_radius) +
-                        ", > 2 R (not used with a rigid plate).");
+                        ", in (2 R, 1000 R] (not used with a rigid plate).");
     prm.declare_entry(contract::plate_thickness.entry,
                       "0.35",
                       Patterns::Double(),
                       "Thickness H of the plate" + unit(contract::plate_thickness) +
-                        ", > 0 (not used with a rigid plate).");
+                        ", in (0, 1000 R] (not used with a rigid plate).");
     prm.declare_entry("Plate side",
                       "absorbing",
                       Patterns::Selection("free|clamped|absorbing"),
@@ -146,11 +146,12 @@ namespace impact_fem
                       "300",
                       Patterns::Double(),
                       "Time step = Hertz contact time / this number [-], "
-                      ">= 10.");
+                      "in [10, 1e6].");
     prm.declare_entry("Time step",
                       "0",
                       Patterns::Double(),
-                      "Fixed time step [s], >= 0; 0 takes it from "
+                      "Fixed time step [s], 0 or in [t_c / 1e6, t_c / 10], "
+                      "t_c the Hertz contact time; 0 takes it from "
                       "'Steps per contact time'.");
     prm.declare_entry("Time after separation",
                       "0.1",
@@ -220,8 +221,12 @@ namespace impact_fem
     gravity                  = prm.get_double("Gravity");
     prm.leave_subsection();
 
-    AssertThrow(impact_velocity > 0 && impact_velocity <= 100,
-                ExcMessage("Scenario/Impact velocity must lie in (0, 100] "
+    // The upper bounds keep a run finite: below 1e-6 m/s the Hertz contact
+    // time, and with it the time step, grows without bound (the solver fails
+    // at 1e-300 m/s); a gap, plate or step count far beyond the sphere's scale
+    // means a mesh or a number of steps no run can finish.
+    AssertThrow(impact_velocity >= 1e-6 && impact_velocity <= 100,
+                ExcMessage("Scenario/Impact velocity must lie in [1e-6, 100] "
                            "m/s, got " + text(impact_velocity) + "."));
     AssertThrow(geometry.initial_gap >= 0,
                 ExcMessage("Scenario/Initial gap must not be negative, got " +
@@ -236,6 +241,17 @@ namespace impact_fem
                 ExcMessage("Scenario/Plate radius must exceed twice the "
                            "sphere radius, got " +
                            text(geometry.plate_radius) + " m."));
+    AssertThrow(geometry.plate_radius <= 1000 * geometry.sphere_radius &&
+                  geometry.plate_thickness <= 1000 * geometry.sphere_radius,
+                ExcMessage("Scenario/Plate radius and Scenario/Plate thickness "
+                           "must be at most 1000 sphere radii (" +
+                           text(1000 * geometry.sphere_radius) + " m), got " +
+                           text(geometry.plate_radius) + " m and " +
+                           text(geometry.plate_thickness) + " m."));
+    AssertThrow(geometry.initial_gap <= 10 * geometry.sphere_radius,
+                ExcMessage("Scenario/Initial gap must be at most 10 sphere "
+                           "radii (" + text(10 * geometry.sphere_radius) +
+                           " m), got " + text(geometry.initial_gap) + " m."));
     AssertThrow(gravity >= 0,
                 ExcMessage("Scenario/Gravity must not be negative, got " +
                            text(gravity) + " m/s^2."));
@@ -318,9 +334,9 @@ namespace impact_fem
     time_after_separation  = prm.get_double("Time after separation");
     maximum_time           = prm.get_double("Maximum time");
     prm.leave_subsection();
-    AssertThrow(steps_per_contact_time >= 10,
-                ExcMessage("Time integration/Steps per contact time must be "
-                           "at least 10, got " +
+    AssertThrow(steps_per_contact_time >= 10 && steps_per_contact_time <= 1e6,
+                ExcMessage("Time integration/Steps per contact time must lie "
+                           "in [10, 1e6], got " +
                            text(steps_per_contact_time) + "."));
     AssertThrow(prescribed_time_step >= 0,
                 ExcMessage("Time integration/Time step must not be negative, "
@@ -354,6 +370,16 @@ namespace impact_fem
                         R,
                         sphere_mass,
                         impact_velocity};
+    // The same bounds as for 'Steps per contact time'.
+    const double contact_time = hertz.contact_time();
+    AssertThrow(prescribed_time_step == 0 ||
+                  (prescribed_time_step >= contact_time / 1e6 &&
+                   prescribed_time_step <= contact_time / 10),
+                ExcMessage("Time integration/Time step must be 0 or lie in "
+                           "[t_c / 1e6, t_c / 10] = [" + text(contact_time / 1e6) +
+                           ", " + text(contact_time / 10) + "] s (t_c the Hertz "
+                           "contact time), got " + text(prescribed_time_step) +
+                           " s."));
   }
 
 

@@ -19,7 +19,10 @@ void write_json(const fs::path& path, const Calibration& calibration) {
   const fs::path temporary = path.string() + ".tmp";
   {
     std::ofstream out(temporary);
-    out << to_json(calibration).dump(2) << '\n';
+    // A problem may quote bytes of a damaged input (a JSON parser's "last read"): written
+    // as U+FFFD where they are not UTF-8, never a failure to write.
+    out << to_json(calibration).dump(2, ' ', false, nlohmann::json::error_handler_t::replace)
+        << '\n';
     if (!out) throw std::runtime_error("cannot write '" + temporary.string() + "'");
   }
   fs::rename(temporary, path);

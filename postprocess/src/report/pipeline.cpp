@@ -67,7 +67,8 @@ ObtainedCalibration calibrate_here(const ReportRequest& request, const Campaign&
   const fs::path file = request.output / "calibration.json";
   {
     std::ofstream out(file);
-    out << to_json(calibration).dump(2) << '\n';
+    out << to_json(calibration).dump(2, ' ', false, nlohmann::json::error_handler_t::replace)
+        << '\n';
     if (!out) throw std::runtime_error("cannot write '" + file.string() + "'");
   }
   obtained.source = file.string() + " (calibrated by impact-report)";

@@ -8,6 +8,7 @@
 #include "run/run_files.hpp"
 #include "impact_postprocess/run/fem_run_format.hpp"
 
+#include <impact_fem/as_written.h>
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -249,6 +250,11 @@ void read_contact(const Results& results, const fs::path& file_path, FemRun& run
                     "'): no restitution to calibrate or judge; lengthen the run to see one");
   if (!(std::isfinite(*restitution) && *restitution > 0))
     fail(file_path, "the restitution must be positive (got " + std::to_string(*restitution) + ")");
+  // Below 1e-6 the sphere is all but held: no rebound to calibrate on, and the closed-form
+  // inversion e -> b V (hunt_crossley.hpp, accurate from 1e-6) overflows soon after.
+  if (*restitution < 1e-6)
+    fail(file_path, "the restitution " + impact_fem::as_written(*restitution) +
+                        " is below 1e-6: the sphere all but stuck, no rebound to calibrate on");
   run.restitution = *restitution;
 
   run.first_contact_time =
@@ -264,6 +270,26 @@ void read_contact(const Results& results, const fs::path& file_path, FemRun& run
   run.time_force_max = results.number(format::time_force_max_key).value_or(run.time[peak]);
   run.approach_max = results.number(format::approach_max_key)
                          .value_or(*std::max_element(run.approach.begin(), run.approach.end()));
+}
+
+// The sphere's momentum balance over the run: the impulse of the contact force is
+// m V (1 + e) (gravity's share over a contact is far below 1 %). A mass, impact velocity or
+// restitution that misses it by more than a factor of two is not the run's: a damaged or
+// foreign summary.json (an absurd value would also stall the fits).
+void check_momentum_balance(const FemRun& run, const fs::path& file_path) {
+  double impulse = 0;
+  for (std::size_t i = 0; i + 1 < run.time.size(); ++i)
+    impulse += 0.5 * (run.contact_force[i] + run.contact_force[i + 1]) *
+               (run.time[i + 1] - run.time[i]);
+  const double momentum = run.mass * run.impact_velocity * (1 + run.restitution);
+  if (!(momentum > 0.5 * impulse && momentum < 2 * impulse))
+    fail(file_path, "the sphere mass " + impact_fem::as_written(run.mass) +
+                        " kg, impact velocity " + impact_fem::as_written(run.impact_velocity) +
+                        " m/s and restitution " + impact_fem::as_written(run.restitution) +
+                        " (" + format::summary_file + ", else the file) give a momentum change "
+                        "m V (1 + e) = " + impact_fem::as_written(momentum) +
+                        " N s, but the contact force's impulse is " +
+                        impact_fem::as_written(impulse) + " N s: they are not this run's");
 }
 
 } // namespace
@@ -289,6 +315,7 @@ FemRun read_fem_run(const fs::path& path) {
   run.impact_velocity = impact_velocity_of(run, results, file_path);
   run.mass = sphere_mass_of(run, results, file_path);
   read_contact(results, file_path, run);
+  check_momentum_balance(run, file_path);
   return run;
 }
 
