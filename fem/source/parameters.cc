@@ -221,9 +221,9 @@ namespace impact_fem
     gravity                  = prm.get_double("Gravity");
     prm.leave_subsection();
 
-    // The upper bounds keep a run finite: below 1e-6 m/s the Hertz contact
-    // time, and with it the time step, grows without bound (the solver fails
-    // at 1e-300 m/s); a gap, plate or step count far beyond the sphere's scale
+    // The bounds keep a run finite: below 1e-6 m/s the Hertz contact time,
+    // and with it the time step, grows without bound (the solver fails at
+    // 1e-300 m/s); a gap, plate or step count far beyond the sphere's scale
     // means a mesh or a number of steps no run can finish.
     AssertThrow(impact_velocity >= 1e-6 && impact_velocity <= 100,
                 ExcMessage("Scenario/Impact velocity must lie in [1e-6, 100] "
@@ -241,13 +241,6 @@ namespace impact_fem
                 ExcMessage("Scenario/Plate radius must exceed twice the "
                            "sphere radius, got " +
                            text(geometry.plate_radius) + " m."));
-    AssertThrow(geometry.plate_radius <= 1000 * geometry.sphere_radius &&
-                  geometry.plate_thickness <= 1000 * geometry.sphere_radius,
-                ExcMessage("Scenario/Plate radius and Scenario/Plate thickness "
-                           "must be at most 1000 sphere radii (" +
-                           text(1000 * geometry.sphere_radius) + " m), got " +
-                           text(geometry.plate_radius) + " m and " +
-                           text(geometry.plate_thickness) + " m."));
     AssertThrow(geometry.initial_gap <= 10 * geometry.sphere_radius,
                 ExcMessage("Scenario/Initial gap must be at most 10 sphere "
                            "radii (" + text(10 * geometry.sphere_radius) +
@@ -280,6 +273,15 @@ namespace impact_fem
         rigid_plate = rigid;
       }
     geometry.plate_meshed = !rigid_plate;
+    // A meshed plate far larger than the sphere is a mesh no run can finish.
+    AssertThrow(!geometry.plate_meshed ||
+                  (geometry.plate_radius <= 1000 * geometry.sphere_radius &&
+                   geometry.plate_thickness <= 1000 * geometry.sphere_radius),
+                ExcMessage("Scenario/Plate radius and Scenario/Plate thickness "
+                           "must be at most 1000 sphere radii (" +
+                           text(1000 * geometry.sphere_radius) + " m), got " +
+                           text(geometry.plate_radius) + " m and " +
+                           text(geometry.plate_thickness) + " m."));
     geometry.hemisphere   = indentation;
     if (rigid_plate)
       {

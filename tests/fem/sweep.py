@@ -6,7 +6,7 @@ Sweep: Scenario/Plate bottom = absorbing (one value: a text axis),
 Scenario/Plate thickness = 0.1, 0.35 (m), velocities 0.5, 1 m/s -> 4 runs
 on a coarse mesh (100 um contact elements, 300 steps per contact time).
 Checks:
-- bad --sweep / Campaign/Sweep options: exit status 1, the message names
+- bad --sweep / Campaign/Sweep options: exit status 2, the message names
   the option and the entry, no directory created;
 - the run directories are exactly those of fem/README.md, index.json has
   the axes (values as numbers or text), the paths in order, each run's
@@ -100,7 +100,7 @@ for arguments, words in cases:
     code, output = campaign(bad, ranks=1, extra=arguments + VELOCITIES)
     message = output.strip().splitlines()[-1] if output.strip() else ""
     print(f"{' '.join(arguments)}\n  -> exit {code}: {message}")
-    checks.check(code == 1 and all(w in output for w in words) and not os.path.exists(bad),
+    checks.check(code == 2 and all(w in output for w in words) and not os.path.exists(bad),
                  f"refused, naming {words}, nothing written: {' '.join(arguments)}")
 
 # --- the campaign ---
