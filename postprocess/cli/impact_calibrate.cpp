@@ -42,6 +42,10 @@ of the reduced library) from impact-fem runs and writes the result as JSON.
                        residual; 0 fits the force histories only)
   --published-damping B  b [s/m] of the published Hunt-Crossley reference model (c from
                        Hertz, n = 3/2), >= 0 (default 0.1, the published steel example)
+  --damped-stiffness hertz|fitted
+                       c of the damped elastic-plastic laws (hunt-crossley-thornton, ...):
+                       held at the Hertz value of the runs' materials (default; fitted when
+                       the runs do not record them) or fitted
   --quiet              no progress messages on stderr
   --help               this text
 
@@ -81,6 +85,10 @@ CalibrationRequest parse(tool::CommandLine& line) {
   options.energy_weight = line.real("energy-weight", tool::Range::closed(0, 1e6), options.energy_weight);
   options.published_damping =
       line.real("published-damping", tool::Range::closed(0, 1e3), options.published_damping);
+  const std::string stiffness = line.text("damped-stiffness").value_or("hertz");
+  if (stiffness != "hertz" && stiffness != "fitted")
+    throw tool::UsageError("--damped-stiffness: must be hertz or fitted, got '" + stiffness + "'");
+  options.damped_plastic_hertz_stiffness = stiffness == "hertz";
   if (!common.quiet)
     options.progress = [](const std::string& text) {
       std::cerr << program << ": " << text << std::endl;
