@@ -55,6 +55,11 @@ tool::Usage usage() {
                                 "b [s/m] of the published Hunt-Crossley reference model (c "
                                 "from Hertz, n = 3/2; 0.1 is the published steel example)")
                         .with_default(impact_fem::as_written(defaults.published_damping)));
+  options.push_back(choice_option("damped-stiffness", {"hertz", "fitted"},
+                                  "c of the damped elastic-plastic laws (hunt-crossley-thornton, "
+                                  "...): held at the Hertz value of the runs' materials (hertz; "
+                                  "fitted when the runs do not record them) or fitted")
+                        .with_default("hertz"));
   return {R"(usage: impact-calibrate RUN... --output FILE [options]
        impact-calibrate --campaign DIR --output FILE [options]
 
@@ -99,6 +104,7 @@ CalibrationRequest parse(tool::CommandLine& line) {
   options.confidence_level = line.real("confidence");
   options.energy_weight = line.real("energy-weight");
   options.published_damping = line.real("published-damping");
+  options.damped_plastic_hertz_stiffness = line.choice("damped-stiffness") == "hertz";
   if (!common.quiet)
     options.progress = [](const std::string& text) {
       std::cerr << program << ": " << text << std::endl;

@@ -279,6 +279,8 @@ TEST_F(CalibrateCli, UsageErrorsNameTheProblem) {
       {{file.string(), "--output", output.string(), "--energy-weight", "-1"}, "--energy-weight"},
       {{file.string(), "--output", output.string(), "--published-damping", "fast"},
        "--published-damping"},
+      {{file.string(), "--output", output.string(), "--damped-stiffness", "free"},
+       "(got 'free')"},
       {{file.string(), "--output", (directory / "no" / "c.json").string()}, "does not exist"},
       {{file.string(), "--output"}, "needs a value"}};
   for (const auto& [arguments, message] : cases) {

@@ -14,6 +14,7 @@
 #include "impact_postprocess/models/damped_plastic_models.hpp"
 #include "impact_postprocess/models/model_keys.hpp"
 #include "impact_postprocess/models/plastic_models.hpp"
+#include "impact_postprocess/run/scenario_materials.hpp"
 
 #include <impact_reduced/comparison_laws.hpp>
 #include <impact_reduced/hertz_contact.hpp>
@@ -129,6 +130,44 @@ TEST(DampedPlasticModels, MatchedDampingGivesKuwabaraKonosSmallLossRestitution) 
               damped_plastic_model("hunt-crossley-thornton", hunt_crossley_model());
             }),
             "spring");
+}
+
+TEST(DampedPlasticModels, FromTheMaterialOnlyWithAViscousLoss) {
+  // An elastic-plastic sphere on a rigid flat: A = its retardation time tau_r; tau_r = 0 (or
+  // none recorded) gives no A and no damped law from the material (it would be the
+  // rate-independent one).
+  const Truth truth;
+  const auto runs_with = [&](std::optional<double> tau) {
+    FemRun run;
+    run.mass = truth.mass;
+    impact::testing::record_elastic_plastic_sphere(run, truth.contact_modulus * (1 - 0.09), 0.3,
+                                                   truth.yield_pressure / 1.6, truth.radius);
+    if (tau)
+      run.text_attributes["Sphere/Elastic-plastic/Retardation time"] =
+          impact::testing::exact_text(*tau);
+    return std::vector<FemRun>{run};
+  };
+  for (const auto& tau : {std::optional<double>(), std::optional<double>(0.0)}) {
+    const auto runs = runs_with(tau);
+    EXPECT_FALSE(scenario_materials(runs).dissipative_constant);
+    EXPECT_FALSE(material_hunt_crossley_thornton(runs));
+    EXPECT_FALSE(material_hunt_crossley_jackson_green(runs));
+  }
+  EXPECT_NE(scenario_materials(runs_with(0.0)).dissipative_basis.find("A = 0"), std::string::npos);
+  const auto runs = runs_with(1e-6);
+  ASSERT_TRUE(scenario_materials(runs).dissipative_constant);
+  EXPECT_NEAR(*scenario_materials(runs).dissipative_constant, 1e-6, 1e-18);
+  const auto thornton = material_hunt_crossley_thornton(runs);
+  ASSERT_TRUE(thornton);
+  EXPECT_EQ(thornton->key, "hunt-crossley-thornton-material");
+  EXPECT_NEAR(thornton->stiffness / truth.stiffness(), 1, 1e-12);
+  EXPECT_NEAR(thornton->dissipation.at(0) / truth.yield_approach(), 1, 1e-12);
+  EXPECT_NEAR(thornton->dissipation.at(1), 1e-6, 1e-18);
+  const auto jackson_green = material_hunt_crossley_jackson_green(runs);
+  ASSERT_TRUE(jackson_green);
+  EXPECT_EQ(jackson_green->model.name, "hunt-crossley-jackson-green-from-a");
+  EXPECT_NEAR(jackson_green->dissipation.at(0), truth.yield_pressure / 1.6, 1e-3);
+  EXPECT_NE(jackson_green->basis.find("b(V) = (3/2) gamma_1 A"), std::string::npos);
 }
 
 // A run of Hunt–Crossley on Thornton's spring of `truth`, b(V) = `damping(V)`, from the

@@ -131,7 +131,8 @@ CampaignStart campaign_start(const std::vector<FemRun>& runs,
 }
 
 // The campaign fit of a damped elastic-plastic model (damped_plastic_models.hpp): c held at
-// the Hertz value of the runs' materials when they record them (else free); the force
+// the Hertz value of the runs' materials when they record them (else, or when the options say
+// so, free); the force
 // histories and the energy loss (the damping term is about 1 % of the force at low V, so the
 // histories alone leave the viscous loss there to the fast runs); started from the fitted
 // rate-independent twin's yield parameter (else the material's, else the restitution map),
@@ -145,7 +146,7 @@ CampaignFitRequest damped_plastic_request(const ContactModel& law, const std::ve
   CampaignFitRequest request{law.name, law.name, std::nullopt, options.energy_weight, nan, {}, std::nullopt};
   request.label += options.energy_weight > 0 ? ", force histories and energy loss"
                                              : ", force histories";
-  if (materials.hertz_from_runs) {
+  if (materials.hertz_from_runs && options.damped_plastic_hertz_stiffness) {
     request.stiffness = materials.hertz_stiffness;
     request.label += ", c at Hertz";
   }

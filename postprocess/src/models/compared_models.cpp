@@ -19,6 +19,7 @@
 #include "impact_postprocess/same_value.hpp"
 
 #include "impact_postprocess/models/contact_models.hpp"
+#include "impact_postprocess/models/damped_plastic_models.hpp"
 #include "impact_postprocess/models/plastic_models.hpp"
 
 #include <boost/math/distributions/students_t.hpp>
@@ -300,6 +301,18 @@ ReportModel per_run_model(const std::vector<ReportRun>& runs, const Calibration&
   return model;
 }
 
+// The page's name of a damped elastic-plastic law (damped_plastic_models.hpp), none for
+// another key.
+std::optional<std::string> damped_label(const std::string& key) {
+  if (key == model_keys::hunt_crossley_thornton) return "Hunt–Crossley on Thornton";
+  if (key == model_keys::hunt_crossley_jackson_green) return "Hunt–Crossley on Jackson–Green";
+  if (key == model_keys::hunt_crossley_thornton_from_a)
+    return "Hunt–Crossley on Thornton, b ∝ V^-4/5";
+  if (key == model_keys::hunt_crossley_jackson_green_from_a)
+    return "Hunt–Crossley on Jackson–Green, b ∝ V^-4/5";
+  return std::nullopt;
+}
+
 ReportModel missing_model(const std::vector<ReportRun>& runs, std::string key, std::string label,
                           const std::string& why) {
   ReportModel model;
@@ -372,7 +385,8 @@ std::vector<ReportModel> report_models(const std::vector<ReportRun>& runs,
       if (best) break;
     }
     if (best)
-      models.push_back(fitted_model(runs, fem_runs, *best, std::string(model_keys::best_law), best->key + " (best law)",
+      models.push_back(fitted_model(runs, fem_runs, *best, std::string(model_keys::best_law),
+                                    damped_label(best->key).value_or(best->key) + " (best law)",
                                     "the comparison law ranked first by out-of-sample error, "
                                     "fitted to the force histories of all runs",
                                     level));
@@ -391,17 +405,10 @@ std::vector<ReportModel> report_models(const std::vector<ReportRun>& runs,
   for (const auto& model : models)
     if (model.key == model_keys::best_law) best_key = model.calibration_key;
   if (campaign.fitted)
-    for (const auto& [key, label] :
-         {std::pair{model_keys::hunt_crossley_thornton, "Hunt–Crossley on Thornton (fitted)"},
-          std::pair{model_keys::hunt_crossley_jackson_green,
-                    "Hunt–Crossley on Jackson–Green (fitted)"},
-          std::pair{model_keys::hunt_crossley_thornton_from_a,
-                    "Hunt–Crossley on Thornton, b ∝ V^-4/5 (fitted)"},
-          std::pair{model_keys::hunt_crossley_jackson_green_from_a,
-                    "Hunt–Crossley on Jackson–Green, b ∝ V^-4/5 (fitted)"}}) {
-      const CampaignModelFit* fit = campaign.find(std::string(key));
+    for (const auto& key : damped_plastic_model_names()) {
+      const CampaignModelFit* fit = campaign.find(key);
       if (fit && best_key != key)
-        models.push_back(fitted_model(runs, fem_runs, *fit, fit->key, label,
+        models.push_back(fitted_model(runs, fem_runs, *fit, fit->key, *damped_label(key) + " (fitted)",
                                       fit->label + ": the spring's yield parameter and b fitted "
                                                    "to all runs",
                                       level));

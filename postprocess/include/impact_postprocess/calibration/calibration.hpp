@@ -244,6 +244,9 @@ struct CalibrationOptions {
   /// b [s/m] of the published Hunt–Crossley example (the reference model
   /// "hunt-crossley-published", with c from Hertz and n = 3/2), >= 0.
   double published_damping = 0.1;
+  /// The damped elastic-plastic models (damped_plastic_models.hpp) hold c at the Hertz value
+  /// of the runs' materials when they record them; false fits c as well.
+  bool damped_plastic_hertz_stiffness = true;
   int threads = 2;                   ///< for the campaign fits
   std::function<void(const std::string&)> progress; ///< called with one line per step
 };
