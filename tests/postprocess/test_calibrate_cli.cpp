@@ -280,7 +280,7 @@ TEST_F(CalibrateCli, UsageErrorsNameTheProblem) {
       {{file.string(), "--output", output.string(), "--published-damping", "fast"},
        "--published-damping"},
       {{file.string(), "--output", output.string(), "--damped-stiffness", "free"},
-       "(got 'free')"},
+       "--damped-stiffness must be one of hertz|fitted (got 'free')"},
       {{file.string(), "--output", (directory / "no" / "c.json").string()}, "does not exist"},
       {{file.string(), "--output"}, "needs a value"}};
   for (const auto& [arguments, message] : cases) {
