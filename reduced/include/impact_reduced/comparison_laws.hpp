@@ -97,7 +97,7 @@ double tsuji_alpha(double restitution);
 
 /// First coefficient of the viscoelastic-sphere restitution series
 /// e = 1 - gamma1 q + gamma2 q^2 - ..., with q = A (c/m)^(2/5) V^(1/5):
-/// gamma1 = (6/5) (5/4)^(3/5) B(3/5, 3/2) = 1.730155... (= (3/2) x 1.15344 of Schwager and
+/// gamma1 = (6/5) (5/4)^(3/5) B(3/5, 3/2) = 1.7301733 (= (3/2) x 1.15344 of Schwager and
 /// Pöschel 1998, whose dissipative constant carries the factor 3/2), gamma2 = (3/5) gamma1^2
 /// (Ramírez et al. 1999).
 double brilliantov_gamma1();
