@@ -39,8 +39,7 @@ namespace impact_fem
     void
     write_file_atomically(const std::string &name, const std::string &text)
     {
-      const std::string temporary =
-        name + ".tmp" + std::to_string(::getpid());
+      const std::string temporary = name + ".tmp" + std::to_string(::getpid());
       {
         std::ofstream out(temporary);
         out << text;
@@ -65,7 +64,8 @@ namespace impact_fem
       while (std::getline(in, line))
         {
           const std::string trimmed = Utilities::trim(line);
-          const bool in_campaign = !sections.empty() && sections[0] == "Campaign";
+          const bool        in_campaign =
+            !sections.empty() && sections[0] == "Campaign";
           if (trimmed.rfind("subsection ", 0) == 0)
             sections.push_back(Utilities::trim(trimmed.substr(11)));
           else if (trimmed == "end" && !sections.empty())
@@ -101,7 +101,8 @@ namespace impact_fem
                       ExcMessage(option + ": <" + entry +
                                  "> is not a velocity in (0, 100] m/s."));
           for (const double w : result)
-            AssertThrow(velocity_name_component(w) != velocity_name_component(v),
+            AssertThrow(velocity_name_component(w) !=
+                          velocity_name_component(v),
                         ExcMessage(option + ": " + entry +
                                    " m/s is given twice (to 6 digits)."));
           result.push_back(v);
@@ -169,7 +170,8 @@ namespace impact_fem
                       const std::vector<std::string> &sweep_items)
   {
     prm.enter_subsection("Campaign");
-    const bool file_velocities = !Utilities::trim(prm.get("Impact velocities")).empty();
+    const bool file_velocities =
+      !Utilities::trim(prm.get("Impact velocities")).empty();
     prm.leave_subsection();
     return !velocity_list.empty() || !sweep_items.empty() || file_velocities ||
            !sweep_items_of_file(prm).empty();
@@ -185,14 +187,17 @@ namespace impact_fem
     const std::string file_velocities = prm.get("Impact velocities");
     ranks_per_run                     = prm.get_integer("Ranks per run");
     prm.leave_subsection();
-    velocities = velocity_list.empty() ?
-                   parse_velocities(file_velocities, "Campaign/Impact velocities") :
-                   parse_velocities(velocity_list, "--velocities");
+    velocities =
+      velocity_list.empty() ?
+        parse_velocities(file_velocities, "Campaign/Impact velocities") :
+        parse_velocities(velocity_list, "--velocities");
     axes = sweep_items.empty() ?
              parse_sweep(prm, sweep_items_of_file(prm), "Campaign/Sweep") :
              parse_sweep(prm, sweep_items, "--sweep");
-    const ParameterPath velocity_entry = *find_parameter(prm, velocity_parameter);
-    const ParameterPath directory_entry = *find_parameter(prm, "Output/Directory");
+    const ParameterPath velocity_entry =
+      *find_parameter(prm, velocity_parameter);
+    const ParameterPath directory_entry =
+      *find_parameter(prm, "Output/Directory");
     if (velocities.empty())
       velocities.push_back(std::stod(velocity_entry.get(prm)));
     directory = directory_entry.get(prm);
@@ -202,7 +207,7 @@ namespace impact_fem
     std::vector<std::string> original;
     for (const auto &axis : axes)
       original.push_back(axis.parameter.get(prm));
-    const std::string original_velocity = velocity_entry.get(prm);
+    const std::string         original_velocity = velocity_entry.get(prm);
     std::vector<unsigned int> indices(axes.size(), 0);
     std::set<std::string>     paths;
     while (true)
@@ -215,7 +220,8 @@ namespace impact_fem
             point.path += velocity_name_component(v);
             AssertThrow(paths.insert(point.path).second,
                         ExcMessage("Campaign: two points share the run "
-                                   "directory " + point.path + "."));
+                                   "directory " +
+                                   point.path + "."));
             points.push_back(point);
           }
         unsigned int a = axes.size();
@@ -233,7 +239,7 @@ namespace impact_fem
       {"Campaign", "Sweep"},
       {"Campaign", "Ranks per run"},
       {"Verification", "Verify"}};
-    const char *const normal_value[] = {"", "", "1", "false"};
+    const char *const        normal_value[] = {"", "", "1", "false"};
     std::vector<std::string> campaign_entries;
     for (unsigned int i = 0; i < 4; ++i)
       {
@@ -312,14 +318,16 @@ namespace impact_fem
     if (comparable_parameters(read_file(run_directory + "/parameters.prm")) !=
         comparable_parameters(point.parameters))
       return "parameters changed, running";
-    if (!std::filesystem::exists(run_directory + "/" + checksums::manifest_name))
+    if (!std::filesystem::exists(run_directory + "/" +
+                                 checksums::manifest_name))
       return std::filesystem::exists(run_directory + "/summary.json") ?
                "no checksums (run before they were kept), redone" :
                "incomplete, running";
     std::vector<std::string> listed;
     std::string problem = checksums::check_manifest(run_directory, listed);
     for (const char *name : {"history.h5", "summary.json"})
-      if (problem.empty() && std::count(listed.begin(), listed.end(), name) == 0)
+      if (problem.empty() &&
+          std::count(listed.begin(), listed.end(), name) == 0)
         problem = std::string(name) + ": not in " + checksums::manifest_name;
     if (problem.empty())
       try
@@ -334,7 +342,8 @@ namespace impact_fem
         }
     if (!problem.empty())
       return "damaged, redone (" + problem + ")";
-    verified = std::count(listed.begin(), listed.end(), "verification.json") > 0;
+    verified =
+      std::count(listed.begin(), listed.end(), "verification.json") > 0;
     return std::string();
   }
 
@@ -345,10 +354,12 @@ namespace impact_fem
   Campaign::listed_in_index(const Point &point) const
   {
     const std::string run_directory = directory + "/" + point.path;
-    return std::filesystem::exists(run_directory + "/" + checksums::manifest_name) &&
+    return std::filesystem::exists(run_directory + "/" +
+                                   checksums::manifest_name) &&
            std::filesystem::exists(run_directory + "/summary.json") &&
            std::filesystem::exists(run_directory + "/history.h5") &&
-           comparable_parameters(read_file(run_directory + "/parameters.prm")) ==
+           comparable_parameters(
+             read_file(run_directory + "/parameters.prm")) ==
              comparable_parameters(point.parameters);
   }
 
@@ -362,9 +373,11 @@ namespace impact_fem
         nlohmann::ordered_json values = nlohmann::ordered_json::array();
         for (const auto &value : axis.values)
           values.push_back(json_value(value));
-        axes_json.push_back({{"parameter", axis.parameter.name()}, {"values", values}});
+        axes_json.push_back(
+          {{"parameter", axis.parameter.name()}, {"values", values}});
       }
-    axes_json.push_back({{"parameter", velocity_parameter}, {"values", velocities}});
+    axes_json.push_back(
+      {{"parameter", velocity_parameter}, {"values", velocities}});
 
     nlohmann::ordered_json runs = nlohmann::ordered_json::array();
     for (const auto &point : points)
@@ -384,7 +397,8 @@ namespace impact_fem
           runs.push_back(run);
         }
     std::ostringstream text;
-    text << std::setw(2) << nlohmann::ordered_json{{"axes", axes_json}, {"runs", runs}}
+    text << std::setw(2)
+         << nlohmann::ordered_json{{"axes", axes_json}, {"runs", runs}}
          << std::endl;
     write_file_atomically(directory + "/index.json", text.str());
   }
@@ -414,30 +428,34 @@ namespace impact_fem
           {
             std::cout << points.size() << " runs (";
             for (const auto &axis : axes)
-              std::cout << axis.parameter.entry << " x " << axis.values.size() << ", ";
+              std::cout << axis.parameter.entry << " x " << axis.values.size()
+                        << ", ";
             std::cout << "velocities x " << velocities.size() << ")";
           }
-        std::cout << " into " << directory << ", " << n_groups << " group(s) of "
-                  << group_size << " rank(s)" << std::endl;
+        std::cout << " into " << directory << ", " << n_groups
+                  << " group(s) of " << group_size << " rank(s)" << std::endl;
       }
     MPI_Barrier(comm);
 
     unsigned int failed = 0;
-    for (unsigned int i = group; i < points.size() && group < n_groups; i += n_groups)
+    for (unsigned int i = group; i < points.size() && group < n_groups;
+         i += n_groups)
       {
         const Point      &point         = points[i];
         const std::string run_directory = directory + "/" + point.path;
-        const std::string line          = "  run " + std::to_string(i + 1) + "/" +
-                                 std::to_string(points.size()) + "  " + label(point);
+        const std::string line = "  run " + std::to_string(i + 1) + "/" +
+                                 std::to_string(points.size()) + "  " +
+                                 label(point);
         // A signal received during an earlier run stops the campaign here
         // (a restart does the remaining runs).
-        if (Utilities::MPI::max(ImpactProblem::interrupt_received(), group_comm) != 0)
+        if (Utilities::MPI::max(ImpactProblem::interrupt_received(),
+                                group_comm) != 0)
           break;
         bool        verified = false;
-        std::string status   = group_root ? restart_status(point, verified) : "";
-        status               = Utilities::MPI::broadcast(group_comm, status, 0);
-        verified             = Utilities::MPI::broadcast(group_comm, verified, 0);
-        const bool complete  = status.empty();
+        std::string status = group_root ? restart_status(point, verified) : "";
+        status             = Utilities::MPI::broadcast(group_comm, status, 0);
+        verified           = Utilities::MPI::broadcast(group_comm, verified, 0);
+        const bool complete = status.empty();
         if (complete && (!verify || verified))
           {
             if (group_root)
@@ -446,14 +464,16 @@ namespace impact_fem
           }
         if (group_root)
           {
-            std::cout << line << ": " << (complete ? "complete, verifying" : status)
+            std::cout << line << ": "
+                      << (complete ? "complete, verifying" : status)
                       << std::endl;
             std::filesystem::create_directories(run_directory);
             if (!complete)
               {
                 // The checksums first: whatever stays behind is not
                 // certified.
-                std::filesystem::remove(run_directory + "/" + checksums::manifest_name);
+                std::filesystem::remove(run_directory + "/" +
+                                        checksums::manifest_name);
                 for (const char *name : {"summary.json", "history.h5"})
                   std::filesystem::remove(run_directory + "/" + name);
                 write_file_atomically(run_directory + "/parameters.prm",
@@ -466,19 +486,24 @@ namespace impact_fem
         const auto    start = std::chrono::steady_clock::now();
         std::ofstream log;
         if (group_root)
-          log.open(run_directory + "/run.log", complete ? std::ios::app : std::ios::out);
+          log.open(run_directory + "/run.log",
+                   complete ? std::ios::app : std::ios::out);
         // The problem outlives the try block: its destructor (collective
         // over the group) must not run while an exception unwinds.
         std::unique_ptr<ImpactProblem> problem;
         try
           {
             if (verify)
-              verification::verify(prm, group_comm, group_root ? log : std::cout, complete);
+              verification::verify(prm,
+                                   group_comm,
+                                   group_root ? log : std::cout,
+                                   complete);
             else
               {
-                problem = std::make_unique<ImpactProblem>(prm,
-                                                          group_comm,
-                                                          group_root ? log : std::cout);
+                problem =
+                  std::make_unique<ImpactProblem>(prm,
+                                                  group_comm,
+                                                  group_root ? log : std::cout);
                 problem->run();
                 problem.reset();
               }
@@ -489,8 +514,8 @@ namespace impact_fem
             if (group_root)
               {
                 log << "\nimpact-fem: error: " << error.what() << std::endl;
-                std::cout << line << ": FAILED (" << run_directory << "/run.log)"
-                          << std::endl;
+                std::cout << line << ": FAILED (" << run_directory
+                          << "/run.log)" << std::endl;
               }
             ++failed;
             if (ImpactProblem::interrupt_received() != 0)
@@ -507,8 +532,8 @@ namespace impact_fem
               if (verify)
                 files.push_back("verification.json");
               checksums::write_manifest(run_directory, files);
-              const auto summary =
-                nlohmann::json::parse(read_file(run_directory + "/summary.json"));
+              const auto summary = nlohmann::json::parse(
+                read_file(run_directory + "/summary.json"));
               std::cout << line << ": done in " << std::setprecision(3)
                         << std::chrono::duration<double>(
                              std::chrono::steady_clock::now() - start)
@@ -519,7 +544,8 @@ namespace impact_fem
             }
           catch (const std::exception &error)
             {
-              std::cout << line << ": FAILED (" << error.what() << ")" << std::endl;
+              std::cout << line << ": FAILED (" << error.what() << ")"
+                        << std::endl;
               ++failed;
             }
       }
@@ -529,8 +555,7 @@ namespace impact_fem
     if (rank == 0)
       {
         write_index();
-        std::cout << "impact-fem campaign: index " << directory
-                  << "/index.json"
+        std::cout << "impact-fem campaign: index " << directory << "/index.json"
                   << (failed > 0 ? ", " + std::to_string(failed) +
                                      " run(s) failed or interrupted" :
                                    std::string())

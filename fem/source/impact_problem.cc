@@ -132,11 +132,10 @@ namespace impact_fem
       indentation_control.parse_parameters(prm);
     nonlinear_step.parse_parameters(prm);
     const HertzImpact &hertz = parameters.hertz;
-    const double      expected_contact_radius =
-      parameters.indentation ?
-        std::sqrt(parameters.geometry.sphere_radius *
-                  indentation_control.maximum_approach) :
-        hertz.contact_radius_max();
+    const double       expected_contact_radius =
+      parameters.indentation ? std::sqrt(parameters.geometry.sphere_radius *
+                                         indentation_control.maximum_approach) :
+                                     hertz.contact_radius_max();
     AssertThrow(parameters.static_press ||
                   expected_contact_radius < mesh.contact_surface_radius,
                 ExcMessage("Mesh/Contact surface radius (" +
@@ -154,21 +153,22 @@ namespace impact_fem
               << " steps" << (parameters.rigid_plate ? " (rigid flat)" : "")
               << "\n  Hertz at the maximum approach: force "
               << hertz.stiffness() * std::pow(omega, 1.5)
-              << " N, contact radius " << expected_contact_radius * 1e3
-              << " mm" << std::endl;
+              << " N, contact radius " << expected_contact_radius * 1e3 << " mm"
+              << std::endl;
         return;
       }
-    pcout << "impact-fem: sphere R = " << parameters.geometry.sphere_radius * 1e3
+    pcout << "impact-fem: sphere R = "
+          << parameters.geometry.sphere_radius * 1e3
           << " mm, m = " << parameters.sphere_mass
           << " kg, V = " << parameters.impact_velocity << " m/s\n"
-          << "  Hertz: approach " << hertz.approach_max() * 1e6
-          << " um, force " << hertz.force_max() / 1e3 << " kN, contact radius "
+          << "  Hertz: approach " << hertz.approach_max() * 1e6 << " um, force "
+          << hertz.force_max() / 1e3 << " kN, contact radius "
           << hertz.contact_radius_max() * 1e3 << " mm, contact time "
           << hertz.contact_time() * 1e6 << " us\n"
           << "  time step "
           << parameters.time_step(time_stepper->mass_weight()) * 1e9 << " ns ("
-          << parameters.scheme << ") on " << Utilities::MPI::n_mpi_processes(comm)
-          << " rank(s)" << std::endl;
+          << parameters.scheme << ") on "
+          << Utilities::MPI::n_mpi_processes(comm) << " rank(s)" << std::endl;
   }
 
 
@@ -184,7 +184,8 @@ namespace impact_fem
   {
     if (separation_time >= 0)
       return end_time;
-    const double flight = parameters.geometry.initial_gap / parameters.impact_velocity;
+    const double flight =
+      parameters.geometry.initial_gap / parameters.impact_velocity;
     return std::min(end_time,
                     flight + parameters.hertz.contact_time() *
                                (1 + parameters.time_after_separation));
@@ -196,8 +197,8 @@ namespace impact_fem
   {
     TimerOutput::Scope t(*computing_timer, "make mesh");
     mesh.create(triangulation, parameters.output_directory);
-    fe = std::make_unique<FESystem<2>>(FE_Q<2>(mesh.polynomial_degree), 2);
-    mapping    = std::make_unique<MappingQ<2>>(mesh.polynomial_degree);
+    fe      = std::make_unique<FESystem<2>>(FE_Q<2>(mesh.polynomial_degree), 2);
+    mapping = std::make_unique<MappingQ<2>>(mesh.polynomial_degree);
     quadrature = std::make_unique<QGauss<2>>(impact_fem::cell_quadrature(*fe));
   }
 
@@ -256,10 +257,12 @@ namespace impact_fem
                          &internal_force_predictor})
       vector->reinit(locally_owned_dofs, mpi_communicator);
     for (auto *vector : {&ghosted_u, &ghosted_v, &ghosted_trial})
-      vector->reinit(locally_owned_dofs, locally_relevant_dofs, mpi_communicator);
+      vector->reinit(locally_owned_dofs,
+                     locally_relevant_dofs,
+                     mpi_communicator);
 
-    pcout << "  mesh: " << triangulation.n_global_active_cells()
-          << " cells, " << dof_handler.n_dofs() << " degrees of freedom (Q"
+    pcout << "  mesh: " << triangulation.n_global_active_cells() << " cells, "
+          << dof_handler.n_dofs() << " degrees of freedom (Q"
           << mesh.polynomial_degree << ")" << std::endl;
   }
 
@@ -269,13 +272,13 @@ namespace impact_fem
   {
     TimerOutput::Scope t(*computing_timer, "assemble system");
 
-    const QGauss<1> face_rule = face_quadrature(*fe);
-    FEValues<2>     fe_values(*mapping,
+    const QGauss<1>    face_rule = face_quadrature(*fe);
+    FEValues<2>        fe_values(*mapping,
                           *fe,
                           *quadrature,
                           update_values | update_gradients |
                             update_quadrature_points | update_JxW_values);
-    FEFaceValues<2> fe_face_values(*mapping,
+    FEFaceValues<2>    fe_face_values(*mapping,
                                    *fe,
                                    face_rule,
                                    update_values | update_quadrature_points |
@@ -317,22 +320,22 @@ namespace impact_fem
           fe_values.reinit(cell);
           for (unsigned int q = 0; q < quadrature->size(); ++q)
             {
-              const double r  = fe_values.quadrature_point(q)[0];
+              const double r = fe_values.quadrature_point(q)[0];
               // The r-weighted measure of the axisymmetric body (2 pi r).
               const double dV = 2 * M_PI * r * fe_values.JxW(q);
               for (unsigned int i = 0; i < dofs_per_cell; ++i)
                 {
-                  phi[i]    = fe_values[u].value(i, q);
-                  strain[i] = axisymmetric_strain(phi[i],
-                                                  fe_values[u].gradient(i, q),
-                                                  r);
+                  phi[i] = fe_values[u].value(i, q);
+                  strain[i] =
+                    axisymmetric_strain(phi[i], fe_values[u].gradient(i, q), r);
                 }
               for (unsigned int i = 0; i < dofs_per_cell; ++i)
                 {
                   // Stiffness, material damping, Maxwell tangent: eps_i : T : eps_j.
-                  const SymmetricTensor<2, 3> stress_i[3] = {tangent[0] * strain[i],
-                                                             tangent[1] * strain[i],
-                                                             tangent[2] * strain[i]};
+                  const SymmetricTensor<2, 3> stress_i[3] = {
+                    tangent[0] * strain[i],
+                    tangent[1] * strain[i],
+                    tangent[2] * strain[i]};
                   for (unsigned int j = 0; j < dofs_per_cell; ++j)
                     {
                       cell_matrix[0](i, j) += rho * (phi[i] * phi[j]) * dV;
@@ -350,8 +353,8 @@ namespace impact_fem
                  cell->face(face)->boundary_id() == boundary_ids::plate_bottom))
               {
                 fe_face_values.reinit(cell, face);
-                const bool bottom = cell->face(face)->boundary_id() ==
-                                    boundary_ids::plate_bottom;
+                const bool bottom =
+                  cell->face(face)->boundary_id() == boundary_ids::plate_bottom;
                 const FaceCondition condition =
                   parameters.plate_faces.of(cell->face(face)->boundary_id());
                 // Normal and tangential coefficients of the face term:
@@ -374,7 +377,8 @@ namespace impact_fem
                     const Tensor<1, 2> n = fe_face_values.normal_vector(q);
                     for (unsigned int i = 0; i < dofs_per_cell; ++i)
                       {
-                        const Tensor<1, 2> phi_i = fe_face_values[u].value(i, q);
+                        const Tensor<1, 2> phi_i =
+                          fe_face_values[u].value(i, q);
                         if (bottom)
                           cell_bottom(i) += phi_i[1] * dA / bottom_area;
                         if (!absorbing && !support)
@@ -383,8 +387,10 @@ namespace impact_fem
                         // Winkler t = -k u_n n.
                         for (unsigned int j = 0; j < dofs_per_cell; ++j)
                           {
-                            const Tensor<1, 2> phi_j = fe_face_values[u].value(j, q);
-                            const double normal_i = phi_i * n, normal_j = phi_j * n;
+                            const Tensor<1, 2> phi_j =
+                              fe_face_values[u].value(j, q);
+                            const double normal_i = phi_i * n,
+                                         normal_j = phi_j * n;
                             face_matrix(i, j) +=
                               (normal_coefficient * normal_i * normal_j +
                                tangential_coefficient *
@@ -432,9 +438,10 @@ namespace impact_fem
   ImpactProblem::factorize_effective_stiffness()
   {
     TimerOutput::Scope t(*computing_timer, "factorize");
-    const double dt = parameters.time_step(time_stepper->mass_weight());
+    const double       dt = parameters.time_step(time_stepper->mass_weight());
     effective_stiffness.copy_from(system.stiffness);
-    effective_stiffness.add(time_stepper->mass_weight() / (dt * dt), system.mass);
+    effective_stiffness.add(time_stepper->mass_weight() / (dt * dt),
+                            system.mass);
     effective_stiffness.add(time_stepper->damping_weight() / dt,
                             system.boundary_damping);
     effective_stiffness.add(time_stepper->damping_weight() / dt,
@@ -455,7 +462,9 @@ namespace impact_fem
     TimerOutput::Scope t(*computing_timer, "setup contact");
     contact.setup(dof_handler, *mapping, constraints, parameters.rigid_plate);
     contact.compute_influence(
-      [this](VectorType &x, const VectorType &b) { direct_solver->solve(x, b); },
+      [this](VectorType &x, const VectorType &b) {
+        direct_solver->solve(x, b);
+      },
       locally_owned_dofs,
       mpi_communicator);
     pressures.reinit(contact.n_contact_nodes());
@@ -488,9 +497,10 @@ namespace impact_fem
     // The flight across the initial gap is a rigid motion known exactly:
     // start at the first contact, so that every time step serves the
     // contact phase.
-    const double t0 = impact && g0 > 0 ? (g > 0 ? (std::sqrt(V * V + 2 * g * g0) - V) / g :
-                                                  g0 / V) :
-                                         0.;
+    const double t0 =
+      impact && g0 > 0 ?
+        (g > 0 ? (std::sqrt(V * V + 2 * g * g0) - V) / g : g0 / V) :
+        0.;
     VectorType u0(locally_owned_dofs, mpi_communicator), v0(u0), a0(u0);
     u0.equ(impact ? -g0 : 0., sphere_vertical);
     first_contact_speed = impact ? V + g * t0 : 0.;
@@ -501,12 +511,14 @@ namespace impact_fem
     end_time = parameters.end_time(dt);
 
     // The bodies start unstrained (the flight is rigid) with relaxed arms.
-    arms.initialize(dof_handler,
-                    *mapping,
-                    *quadrature,
-                    [this](const types::material_id id)
-                      -> const materials::Interface & { return material_of(id); },
-                    ghosted_u);
+    arms.initialize(
+      dof_handler,
+      *mapping,
+      *quadrature,
+      [this](const types::material_id id) -> const materials::Interface & {
+        return material_of(id);
+      },
+      ghosted_u);
     internal_force_predictor = 0;
     refresh_ghosted_state();
   }
@@ -517,7 +529,7 @@ namespace impact_fem
   {
     VectorType distributed(time_stepper->displacement());
     constraints.distribute(distributed);
-    ghosted_u = distributed;
+    ghosted_u   = distributed;
     distributed = time_stepper->velocity();
     constraints.distribute(distributed);
     ghosted_v = distributed;
@@ -563,25 +575,29 @@ namespace impact_fem
 
 
   void
-  ImpactProblem::solve_linear_step(const VectorType &rhs, VectorType &displacement)
+  ImpactProblem::solve_linear_step(const VectorType &rhs,
+                                   VectorType       &displacement)
   {
     {
       TimerOutput::Scope t(*computing_timer, "solve free step");
       direct_solver->solve(displacement, rhs);
     }
     TimerOutput::Scope t(*computing_timer, "solve contact");
-    pressures = contact.solve_complementarity(contact.weighted_gaps(displacement));
+    pressures =
+      contact.solve_complementarity(contact.weighted_gaps(displacement));
     contact.add_contact_response(pressures, displacement);
   }
 
 
   void
-  ImpactProblem::solve_nonlinear_step(const VectorType &rhs, VectorType &displacement)
+  ImpactProblem::solve_nonlinear_step(const VectorType &rhs,
+                                      VectorType       &displacement)
   {
     // The linear step with contact for a given plastic force f: K_eff u =
     // rhs + f + B^T lambda; returns the norm of the step's external forces.
     VectorType load(rhs), contact_force(rhs), distributed(rhs);
-    const auto linear_solve = [&](const VectorType &plastic_force, VectorType &u) {
+    const auto linear_solve = [&](const VectorType &plastic_force,
+                                  VectorType       &u) {
       load = rhs;
       load += plastic_force;
       solve_linear_step(load, u);
@@ -589,8 +605,8 @@ namespace impact_fem
       contact.add_contact_forces(pressures, contact_force);
       return contact_force.l2_norm() + weights.body_force.l2_norm();
     };
-    const double dt = time_stepper->time_step();
-    const auto plastic_force = [&](const VectorType &u, VectorType &force) {
+    const double dt            = time_stepper->time_step();
+    const auto   plastic_force = [&](const VectorType &u, VectorType &force) {
       TimerOutput::Scope t(*computing_timer, "plastic force");
       distributed = u;
       constraints.distribute(distributed);
@@ -599,13 +615,13 @@ namespace impact_fem
     };
     // Solved on the cells near yielding; again with the cells that the
     // states at the converged displacement add, if a point elsewhere yielded.
-    auto result = nonlinear_step.solve(arms.predicted_plastic_force(),
+    auto         result = nonlinear_step.solve(arms.predicted_plastic_force(),
                                        time_stepper->displacement(),
                                        displacement,
                                        linear_solve,
                                        plastic_force);
-    unsigned int iterations = result.iterations;
-    const auto prepare_commit = [&]() {
+    unsigned int iterations     = result.iterations;
+    const auto   prepare_commit = [&]() {
       TimerOutput::Scope t(*computing_timer, "plastic state");
       return arms.prepare_commit(constraints, ghosted_trial, dt);
     };
@@ -619,8 +635,8 @@ namespace impact_fem
         iterations += result.iterations;
       }
     result.iterations = iterations;
-    step_iterations = result.iterations;
-    step_residual   = result.residual;
+    step_iterations   = result.iterations;
+    step_residual     = result.residual;
     if (!result.converged)
       {
         std::ostringstream message;
@@ -642,7 +658,8 @@ namespace impact_fem
   {
     if (arms.nonlinear())
       {
-        history.append(result_files::newton_iterations_dataset, step_iterations);
+        history.append(result_files::newton_iterations_dataset,
+                       step_iterations);
         history.append(result_files::newton_residual_dataset, step_residual);
       }
     history.append(result_files::time_dataset, time_stepper->time());
@@ -681,9 +698,9 @@ namespace impact_fem
   void
   ImpactProblem::write_results(const bool complete)
   {
-    const double wall_time =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start)
-        .count();
+    const double wall_time = std::chrono::duration<double>(
+                               std::chrono::steady_clock::now() - wall_start)
+                               .count();
     const summary::ImpactSummary s =
       summary::summarize_impact(history[result_files::time_dataset],
                                 history[result_files::contact_force_dataset],
@@ -691,37 +708,40 @@ namespace impact_fem
                                 history[result_files::sphere_velocity_dataset],
                                 first_contact_speed,
                                 parameters.gravity,
-                                parameters.static_press ? summary::nan :
-                                                          history[result_files::time_dataset].front());
+                                parameters.static_press ?
+                                  summary::nan :
+                                  history[result_files::time_dataset].front());
 
     nlohmann::json     result;
     std::ostringstream report;
-    result[result_files::complete_key]            = complete;
-    result[result_files::impact_velocity_key]     = parameters.impact_velocity;
-    result[result_files::contact_velocity_key]    = first_contact_speed;
-    result[result_files::first_contact_time_key]  = number(s.first_contact_time);
-    result["separation_time"]     = number(s.separation_time);
-    result[result_files::contact_time_key]        = number(s.contact_time);
-    result[result_files::force_max_key]           = number(s.force_max);
-    result[result_files::time_force_max_key]      = number(s.time_force_max);
-    result[result_files::approach_max_key]        = number(s.approach_max);
-    result["time_approach_max"]   = number(s.time_approach_max);
-    result[result_files::rebound_velocity_key]    = number(s.rebound_velocity);
-    result[result_files::restitution_key]         = number(s.restitution);
-    result[result_files::lost_energy_fraction_key] = number(1 - s.restitution * s.restitution);
-    result[result_files::force_oscillation_key]   = number(s.force_oscillation);
-    result[result_files::force_after_release_key] = number(s.force_after_release);
+    result[result_files::complete_key]           = complete;
+    result[result_files::impact_velocity_key]    = parameters.impact_velocity;
+    result[result_files::contact_velocity_key]   = first_contact_speed;
+    result[result_files::first_contact_time_key] = number(s.first_contact_time);
+    result["separation_time"]                    = number(s.separation_time);
+    result[result_files::contact_time_key]       = number(s.contact_time);
+    result[result_files::force_max_key]          = number(s.force_max);
+    result[result_files::time_force_max_key]     = number(s.time_force_max);
+    result[result_files::approach_max_key]       = number(s.approach_max);
+    result["time_approach_max"]                  = number(s.time_approach_max);
+    result[result_files::rebound_velocity_key]   = number(s.rebound_velocity);
+    result[result_files::restitution_key]        = number(s.restitution);
+    result[result_files::lost_energy_fraction_key] =
+      number(1 - s.restitution * s.restitution);
+    result[result_files::force_oscillation_key] = number(s.force_oscillation);
+    result[result_files::force_after_release_key] =
+      number(s.force_after_release);
     for (auto &[name, postprocessor] : postprocessors)
       postprocessor->finalize(*this, history, result, report);
     result[result_files::sphere_mass_key] = parameters.sphere_mass;
-    result["scheme"]      = parameters.scheme;
+    result["scheme"]                      = parameters.scheme;
     result[result_files::time_step_key]   = time_stepper->time_step();
-    result["cells"]       = triangulation.n_global_active_cells();
-    result["dofs"]        = dof_handler.n_dofs();
+    result["cells"]         = triangulation.n_global_active_cells();
+    result["dofs"]          = dof_handler.n_dofs();
     result["contact_nodes"] = contact.n_contact_nodes();
-    result["steps"]       = time_stepper->step_number();
-    result["ranks"]       = Utilities::MPI::n_mpi_processes(mpi_communicator);
-    result["wall_time"]   = wall_time;
+    result["steps"]         = time_stepper->step_number();
+    result["ranks"]         = Utilities::MPI::n_mpi_processes(mpi_communicator);
+    result["wall_time"]     = wall_time;
 
     if (Utilities::MPI::this_mpi_process(mpi_communicator) != 0)
       return;
@@ -744,10 +764,14 @@ namespace impact_fem
     std::map<std::string, double> numeric_attributes;
     for (const auto &[key, value] : result.items())
       if (value.is_number())
-        numeric_attributes[result_files::result_attribute_prefix + key] = value.get<double>();
-    numeric_attributes[result_files::sphere_mass_attribute]       = parameters.sphere_mass;
-    numeric_attributes["hertz_contact_time [s]"] = parameters.hertz.contact_time();
-    history.write_hdf5(parameters.output_directory + "/" + result_files::history_file,
+        numeric_attributes[result_files::result_attribute_prefix + key] =
+          value.get<double>();
+    numeric_attributes[result_files::sphere_mass_attribute] =
+      parameters.sphere_mass;
+    numeric_attributes["hertz_contact_time [s]"] =
+      parameters.hertz.contact_time();
+    history.write_hdf5(parameters.output_directory + "/" +
+                         result_files::history_file,
                        text_attributes,
                        numeric_attributes,
                        complete);
@@ -763,14 +787,17 @@ namespace impact_fem
     std::filesystem::rename(summary_file + ".tmp", summary_file);
 
     const std::size_t n = history.n_steps();
-    pcout << "\nResult (" << parameters.output_directory << "):\n" << std::setprecision(5);
+    pcout << "\nResult (" << parameters.output_directory << "):\n"
+          << std::setprecision(5);
     if (parameters.static_press)
-      pcout << "  contact force     " << history[result_files::contact_force_dataset][n - 1] << " N\n"
+      pcout << "  contact force     "
+            << history[result_files::contact_force_dataset][n - 1] << " N\n"
             << "  contact radius    " << history["contact_radius"][n - 1] * 1e3
             << " mm\n"
             << "  max pressure      " << history["max_pressure"][n - 1] / 1e9
             << " GPa\n"
-            << "  approach          " << history[result_files::approach_dataset][n - 1] * 1e6 << " um\n";
+            << "  approach          "
+            << history[result_files::approach_dataset][n - 1] * 1e6 << " um\n";
     else
       pcout << "  first contact     " << s.first_contact_time * 1e6
             << " us, separation " << s.separation_time * 1e6 << " us\n"
@@ -779,7 +806,8 @@ namespace impact_fem
             << s.time_force_max * 1e6 << " us\n"
             << "  peak approach     " << s.approach_max * 1e6 << " um\n"
             << "  rebound velocity  " << s.rebound_velocity << " m/s\n"
-            << "  restitution       " << s.restitution << " (lost energy fraction "
+            << "  restitution       " << s.restitution
+            << " (lost energy fraction "
             << (1 - s.restitution * s.restitution) * 100 << " %)\n"
             << "  force oscillation " << s.force_oscillation * 100
             << " % of the peak step to step, " << s.force_after_release * 100
@@ -809,8 +837,9 @@ namespace impact_fem
         std::filesystem::create_directories(directory);
         // Results of an earlier run in the same place would be mistaken for
         // this run's.
-        for (const auto *name :
-             {result_files::history_file, result_files::incomplete_history_file, result_files::summary_file})
+        for (const auto *name : {result_files::history_file,
+                                 result_files::incomplete_history_file,
+                                 result_files::summary_file})
           std::filesystem::remove(directory + "/" + name);
       }
     MPI_Barrier(mpi_communicator);
@@ -827,10 +856,18 @@ namespace impact_fem
     factorize_effective_stiffness();
     setup_contact();
     set_initial_conditions();
-    history.declare(result_files::time_dataset, result_files::time_unit, "simulated time");
+    history.declare(result_files::time_dataset,
+                    result_files::time_unit,
+                    "simulated time");
     if (arms.nonlinear())
-      history.declare({{result_files::newton_iterations_dataset, "1", "iterations of the step's nonlinear solve (Nonlinear solver)"},
-                       {result_files::newton_residual_dataset, "1", "out-of-balance force of the accepted iterate / (||B^T lambda|| + ||f_body||)"}});
+      history.declare(
+        {{result_files::newton_iterations_dataset,
+          "1",
+          "iterations of the step's nonlinear solve (Nonlinear solver)"},
+         {result_files::newton_residual_dataset,
+          "1",
+          "out-of-balance force of the accepted iterate / (||B^T lambda|| + "
+          "||f_body||)"}});
     for (auto &[name, postprocessor] : postprocessors)
       postprocessor->initialize(*this, history);
     postprocess_step();
@@ -844,8 +881,8 @@ namespace impact_fem
     // Checked before every step and once more after the last one, so that a
     // signal received at any time of the loop leaves the run incomplete.
     const auto stop_if_interrupted = [&]() {
-      const int signal =
-        Utilities::MPI::max(static_cast<int>(interrupt_signal), mpi_communicator);
+      const int signal = Utilities::MPI::max(static_cast<int>(interrupt_signal),
+                                             mpi_communicator);
       AssertThrow(signal == 0,
                   ExcMessage("Interrupted by signal " + std::to_string(signal) +
                              " at t = " + as_written(time_stepper->time()) +
@@ -855,7 +892,8 @@ namespace impact_fem
     auto last_checkpoint = std::chrono::steady_clock::now();
     try
       {
-        while (time_stepper->time() < end_time - 0.5 * time_stepper->time_step())
+        while (time_stepper->time() <
+               end_time - 0.5 * time_stepper->time_step())
           {
             stop_if_interrupted();
             solve_time_step();
@@ -883,7 +921,8 @@ namespace impact_fem
       }
     if (separation_time < 0 && !parameters.static_press)
       pcout << "Warning: the bodies did not separate before the end of the "
-               "run (Time integration/Maximum time)." << std::endl;
+               "run (Time integration/Maximum time)."
+            << std::endl;
     write_results(true);
     if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
       std::filesystem::remove(directory + "/history.incomplete.h5");

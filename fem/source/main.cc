@@ -26,26 +26,30 @@ namespace
   void
   print_usage(std::ostream &out)
   {
-    out << "Usage: impact-fem [parameters.prm] [--set \"Section/Entry=value\"]...\n"
-           "                  [--velocities V1,V2,...] [--sweep \"Section/Entry=v1,v2,...\"]...\n"
-           "                  [--verify]\n"
-           "       impact-fem --print-parameters\n"
-           "Runs one impact; results go to Output/Directory (history.h5, "
-           "summary.json).\n"
-           "With --velocities (or Campaign/Impact velocities) a campaign: one "
-           "run per velocity in Output/Directory/v<V>, plus index.json; "
-           "started again, it skips the complete runs whose files are intact "
-           "(checksums.sha256).\n"
-           "With --sweep (repeatable; or Campaign/Sweep, items separated by ';') "
-           "a campaign over the cartesian product of the swept entries and the "
-           "velocities, one run per point in e.g. "
-           "Output/Directory/plate-thickness-0.01_v1.\n"
-           "With --verify (or Verification/Verify) every run is also run on two "
-           "coarser discretisations and its numerical uncertainty (observed "
-           "order, Richardson extrapolation, GCI) written to verification.json.\n"
-           "Exit codes: 0 success; 2 bad input (an option, the parameter file, an "
-           "entry or its value, named in the message; nothing is written); 1 a "
-           "failure of the run.\n";
+    out
+      << "Usage: impact-fem [parameters.prm] [--set "
+         "\"Section/Entry=value\"]...\n"
+         "                  [--velocities V1,V2,...] [--sweep "
+         "\"Section/Entry=v1,v2,...\"]...\n"
+         "                  [--verify]\n"
+         "       impact-fem --print-parameters\n"
+         "Runs one impact; results go to Output/Directory (history.h5, "
+         "summary.json).\n"
+         "With --velocities (or Campaign/Impact velocities) a campaign: one "
+         "run per velocity in Output/Directory/v<V>, plus index.json; "
+         "started again, it skips the complete runs whose files are intact "
+         "(checksums.sha256).\n"
+         "With --sweep (repeatable; or Campaign/Sweep, items separated by ';') "
+         "a campaign over the cartesian product of the swept entries and the "
+         "velocities, one run per point in e.g. "
+         "Output/Directory/plate-thickness-0.01_v1.\n"
+         "With --verify (or Verification/Verify) every run is also run on two "
+         "coarser discretisations and its numerical uncertainty (observed "
+         "order, Richardson extrapolation, GCI) written to verification.json.\n"
+         "Exit codes: 0 success; 2 bad input (an option, the parameter file, "
+         "an "
+         "entry or its value, named in the message; nothing is written); 1 a "
+         "failure of the run.\n";
   }
 
 
@@ -55,16 +59,20 @@ namespace
   {
     const auto equal = assignment.find('=');
     AssertThrow(equal != std::string::npos,
-                dealii::ExcMessage("--set expects \"Section/Entry=value\", got <" +
-                                   assignment + ">."));
-    const std::string path  = dealii::Utilities::trim(assignment.substr(0, equal));
-    const std::string value = dealii::Utilities::trim(assignment.substr(equal + 1));
-    const auto        entry = impact_fem::find_parameter(prm, path);
-    std::string       problem;
+                dealii::ExcMessage(
+                  "--set expects \"Section/Entry=value\", got <" + assignment +
+                  ">."));
+    const std::string path =
+      dealii::Utilities::trim(assignment.substr(0, equal));
+    const std::string value =
+      dealii::Utilities::trim(assignment.substr(equal + 1));
+    const auto  entry = impact_fem::find_parameter(prm, path);
+    std::string problem;
     if (!entry)
       problem = "there is no entry <" + path + ">";
     else if (!entry->set(prm, value))
-      problem = "the value <" + value + "> does not fit the entry <" + path + ">";
+      problem =
+        "the value <" + value + "> does not fit the entry <" + path + ">";
     AssertThrow(problem.empty(),
                 dealii::ExcMessage("--set \"" + assignment + "\": " + problem +
                                    " (see impact-fem --print-parameters for "
@@ -133,8 +141,9 @@ main(int argc, char *argv[])
           else if (arg == "--sweep")
             {
               AssertThrow(i + 1 < argc,
-                          ExcMessage("--sweep needs an axis, e.g. --sweep "
-                                     "\"Scenario/Plate thickness=0.01,0.02\"."));
+                          ExcMessage(
+                            "--sweep needs an axis, e.g. --sweep "
+                            "\"Scenario/Plate thickness=0.01,0.02\"."));
               sweep_items.push_back(argv[++i]);
             }
           else if (arg.rfind("--sweep=", 0) == 0)
@@ -193,8 +202,9 @@ main(int argc, char *argv[])
         {
           // One load program per run: campaigns and the verification's
           // grid-convergence study are built on impact results.
-          AssertThrow(!impact_fem::Campaign::requested(prm, velocity_list,
-                                                        sweep_items) &&
+          AssertThrow(!impact_fem::Campaign::requested(prm,
+                                                       velocity_list,
+                                                       sweep_items) &&
                         !impact_fem::verification::enabled(prm),
                       ExcMessage("Scenario/Analysis = indentation runs alone: "
                                  "campaigns (--velocities, --sweep, Campaign/"

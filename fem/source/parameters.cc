@@ -35,30 +35,31 @@ namespace impact_fem
   {
     // The entries the result files' reader interprets carry the contract's names and units.
     namespace contract = result_files;
-    const auto unit = [](const contract::Parameter &parameter) {
+    const auto unit    = [](const contract::Parameter &parameter) {
       return std::string(" [") + parameter.unit + "]";
     };
     prm.enter_subsection(contract::scenario_subsection);
-    prm.declare_entry("Analysis",
-                      "impact",
-                      Patterns::Selection(
-                        "impact|static press|indentation|material point|specimen"),
-                      "'material point': the sphere's material at one point "
-                      "under the history of the subsection 'Material point' "
-                      "(no mesh, no contact). 'specimen': the same history "
-                      "on a homogeneous cylinder of the sphere's material, "
-                      "finite elements, quasi-static. "
-                      "'impact': the sphere hits the plate at the impact "
-                      "velocity. 'static press': the sphere, at rest, is "
-                      "pressed into the plate by a uniform body force of "
-                      "resultant 'Static force' (use with a clamped far "
-                      "boundary); one quasi-static solve, the Hertz check. "
-                      "'indentation': quasi-static, displacement-controlled: "
-                      "the base (equatorial plane) of a hemisphere is pushed "
-                      "towards the plate by the approach of the subsection "
-                      "'Indentation' in steps and back until the force "
-                      "vanishes (use with a rigid plate or a plate bottom "
-                      "that is clamped or supported).");
+    prm.declare_entry(
+      "Analysis",
+      "impact",
+      Patterns::Selection(
+        "impact|static press|indentation|material point|specimen"),
+      "'material point': the sphere's material at one point "
+      "under the history of the subsection 'Material point' "
+      "(no mesh, no contact). 'specimen': the same history "
+      "on a homogeneous cylinder of the sphere's material, "
+      "finite elements, quasi-static. "
+      "'impact': the sphere hits the plate at the impact "
+      "velocity. 'static press': the sphere, at rest, is "
+      "pressed into the plate by a uniform body force of "
+      "resultant 'Static force' (use with a clamped far "
+      "boundary); one quasi-static solve, the Hertz check. "
+      "'indentation': quasi-static, displacement-controlled: "
+      "the base (equatorial plane) of a hemisphere is pushed "
+      "towards the plate by the approach of the subsection "
+      "'Indentation' in steps and back until the force "
+      "vanishes (use with a rigid plate or a plate bottom "
+      "that is clamped or supported).");
     prm.declare_entry("Static force",
                       "1000",
                       Patterns::Double(),
@@ -87,7 +88,8 @@ namespace impact_fem
     prm.declare_entry(contract::plate_thickness.entry,
                       "0.35",
                       Patterns::Double(),
-                      "Thickness H of the plate" + unit(contract::plate_thickness) +
+                      "Thickness H of the plate" +
+                        unit(contract::plate_thickness) +
                         ", in (0, 1000 R] (not used with a rigid plate).");
     prm.declare_entry("Plate side",
                       "absorbing",
@@ -105,13 +107,14 @@ namespace impact_fem
                       "stands in for a half-space) or 'support' (an elastic "
                       "foundation pushing back on the normal displacement "
                       "with Support stiffness per area).");
-    prm.declare_entry("Support stiffness",
-                      "0",
-                      Patterns::Double(0),
-                      "Normal stiffness per area k of a Plate bottom = "
-                      "support [N/m^3 = Pa/m], > 0 (read only then): traction -k u_z on "
-                      "the bottom (Winkler foundation; e.g. E/t of a soft "
-                      "layer of modulus E and thickness t on a rigid floor).");
+    prm.declare_entry(
+      "Support stiffness",
+      "0",
+      Patterns::Double(0),
+      "Normal stiffness per area k of a Plate bottom = "
+      "support [N/m^3 = Pa/m], > 0 (read only then): traction -k u_z on "
+      "the bottom (Winkler foundation; e.g. E/t of a soft "
+      "layer of modulus E and thickness t on a rigid floor).");
     // Replaced by Plate side and Plate bottom: declared only to
     // refuse it with a message saying what to write instead.
     prm.declare_entry("Far boundary",
@@ -207,18 +210,21 @@ namespace impact_fem
     AssertThrow(far_boundary.empty(),
                 ExcMessage("Scenario/Far boundary was replaced by Scenario/"
                            "Plate side and Scenario/Plate bottom: write 'set "
-                           "Plate side = " + far_boundary + "' and 'set Plate "
-                           "bottom = " + far_boundary + "' instead."));
+                           "Plate side = " +
+                           far_boundary +
+                           "' and 'set Plate "
+                           "bottom = " +
+                           far_boundary + "' instead."));
     const auto condition = [](const std::string &name) {
-      return name == "free"     ? FaceCondition::free :
-             name == "clamped"  ? FaceCondition::clamped :
+      return name == "free"      ? FaceCondition::free :
+             name == "clamped"   ? FaceCondition::clamped :
              name == "absorbing" ? FaceCondition::absorbing :
-                                  FaceCondition::support;
+                                   FaceCondition::support;
     };
     plate_faces.side              = condition(prm.get("Plate side"));
     plate_faces.bottom            = condition(prm.get("Plate bottom"));
     plate_faces.support_stiffness = prm.get_double("Support stiffness");
-    gravity                  = prm.get_double("Gravity");
+    gravity                       = prm.get_double("Gravity");
     prm.leave_subsection();
 
     // The bounds keep a run finite: below 1e-6 m/s the Hertz contact time,
@@ -227,7 +233,8 @@ namespace impact_fem
     // means a mesh or a number of steps no run can finish.
     AssertThrow(impact_velocity >= 1e-6 && impact_velocity <= 100,
                 ExcMessage("Scenario/Impact velocity must lie in [1e-6, 100] "
-                           "m/s, got " + text(impact_velocity) + "."));
+                           "m/s, got " +
+                           text(impact_velocity) + "."));
     AssertThrow(geometry.initial_gap >= 0,
                 ExcMessage("Scenario/Initial gap must not be negative, got " +
                            text(geometry.initial_gap) + " m."));
@@ -243,8 +250,9 @@ namespace impact_fem
                            text(geometry.plate_radius) + " m."));
     AssertThrow(geometry.initial_gap <= 10 * geometry.sphere_radius,
                 ExcMessage("Scenario/Initial gap must be at most 10 sphere "
-                           "radii (" + text(10 * geometry.sphere_radius) +
-                           " m), got " + text(geometry.initial_gap) + " m."));
+                           "radii (" +
+                           text(10 * geometry.sphere_radius) + " m), got " +
+                           text(geometry.initial_gap) + " m."));
     AssertThrow(gravity >= 0,
                 ExcMessage("Scenario/Gravity must not be negative, got " +
                            text(gravity) + " m/s^2."));
@@ -258,9 +266,10 @@ namespace impact_fem
                            text(plate_faces.support_stiffness) + " N/m^3."));
     for (const unsigned int body : {sphere, plate})
       {
-        prm.enter_subsection(body == sphere ? contract::sphere_body : contract::plate_body);
-        const bool rigid =
-          prm.get(contract::material_model_entry) == materials::rigid_model_name;
+        prm.enter_subsection(body == sphere ? contract::sphere_body :
+                                              contract::plate_body);
+        const bool rigid = prm.get(contract::material_model_entry) ==
+                           materials::rigid_model_name;
         yield_strength[body] = prm.get_double(contract::yield_strength.entry);
         if (!rigid)
           material[body] = materials::create_material(prm);
@@ -282,28 +291,34 @@ namespace impact_fem
                            text(1000 * geometry.sphere_radius) + " m), got " +
                            text(geometry.plate_radius) + " m and " +
                            text(geometry.plate_thickness) + " m."));
-    geometry.hemisphere   = indentation;
+    geometry.hemisphere = indentation;
     if (rigid_plate)
       {
         // A rigid plate has no faces and no stresses: entries that describe
         // them would silently mean nothing, so anything but their defaults
         // is refused.
-        const auto refuse = [](const bool set, const std::string &entry,
+        const auto refuse = [](const bool         set,
+                               const std::string &entry,
                                const std::string &value) {
           AssertThrow(!set,
-                      ExcMessage(entry + " = " + value + " has no meaning "
+                      ExcMessage(entry + " = " + value +
+                                 " has no meaning "
                                  "with Plate/Material model = rigid (the "
                                  "plate is a fixed rigid plane, not meshed); "
                                  "leave it at its default."));
         };
         refuse(plate_faces.side != FaceCondition::absorbing,
-               "Scenario/Plate side", face_name(plate_faces.side));
+               "Scenario/Plate side",
+               face_name(plate_faces.side));
         refuse(plate_faces.bottom != FaceCondition::absorbing,
-               "Scenario/Plate bottom", face_name(plate_faces.bottom));
+               "Scenario/Plate bottom",
+               face_name(plate_faces.bottom));
         refuse(plate_faces.support_stiffness != 0,
-               "Scenario/Support stiffness", text(plate_faces.support_stiffness));
+               "Scenario/Support stiffness",
+               text(plate_faces.support_stiffness));
         refuse(yield_strength[plate] != 0,
-               "Plate/Yield strength", text(yield_strength[plate]));
+               "Plate/Yield strength",
+               text(yield_strength[plate]));
       }
     AssertThrow(!(static_press || indentation) || rigid_plate ||
                   plate_faces.side == FaceCondition::clamped ||
@@ -320,8 +335,8 @@ namespace impact_fem
     // factor is 1); their Kelvin-Voigt retardation time is not.
     bool linear_memory = false;
     for (const auto &m : material)
-      linear_memory = linear_memory ||
-                      (m && m->is_linear() && m->n_internal_variables() > 0);
+      linear_memory =
+        linear_memory || (m && m->is_linear() && m->n_internal_variables() > 0);
     AssertThrow(!indentation || (!has_material_damping() && !linear_memory),
                 ExcMessage("The 'indentation' analysis is quasi-static and "
                            "rate-independent: Sphere and Plate must be "
@@ -342,14 +357,16 @@ namespace impact_fem
                            text(steps_per_contact_time) + "."));
     AssertThrow(prescribed_time_step >= 0,
                 ExcMessage("Time integration/Time step must not be negative, "
-                           "got " + text(prescribed_time_step) + " s."));
+                           "got " +
+                           text(prescribed_time_step) + " s."));
     AssertThrow(time_after_separation >= 0 && time_after_separation <= 10,
                 ExcMessage("Time integration/Time after separation must lie "
                            "in [0, 10], got " +
                            text(time_after_separation) + "."));
     AssertThrow(maximum_time >= 0,
                 ExcMessage("Time integration/Maximum time must not be "
-                           "negative, got " + text(maximum_time) + " s."));
+                           "negative, got " +
+                           text(maximum_time) + " s."));
 
     prm.enter_subsection("Solver");
     direct_solver = prm.get("Direct solver");
@@ -364,7 +381,8 @@ namespace impact_fem
     sphere_mass    = material[sphere]->density() * 4. / 3. * M_PI * R * R * R;
     // A rigid plate has no compliance: E* is the sphere's E/(1 - nu^2).
     auto compliance = [](const materials::Interface *m) {
-      return m ? (1 - m->poissons_ratio() * m->poissons_ratio()) / m->youngs_modulus() :
+      return m ? (1 - m->poissons_ratio() * m->poissons_ratio()) /
+                   m->youngs_modulus() :
                  0.;
     };
     hertz = HertzImpact{1 / (compliance(material[sphere].get()) +
@@ -378,10 +396,12 @@ namespace impact_fem
                   (prescribed_time_step >= contact_time / 1e6 &&
                    prescribed_time_step <= contact_time / 10),
                 ExcMessage("Time integration/Time step must be 0 or lie in "
-                           "[t_c / 1e6, t_c / 10] = [" + text(contact_time / 1e6) +
-                           ", " + text(contact_time / 10) + "] s (t_c the Hertz "
-                           "contact time), got " + text(prescribed_time_step) +
-                           " s."));
+                           "[t_c / 1e6, t_c / 10] = [" +
+                           text(contact_time / 1e6) + ", " +
+                           text(contact_time / 10) +
+                           "] s (t_c the Hertz "
+                           "contact time), got " +
+                           text(prescribed_time_step) + " s."));
   }
 
 
@@ -397,11 +417,13 @@ namespace impact_fem
         // sphere's rigid motion, and the contact force is measured anyway.
         const double contact_compliance =
           std::pow(hertz.stiffness() * hertz.stiffness() * static_force,
-                   -1. / 3.) / 1.5;
+                   -1. / 3.) /
+          1.5;
         return std::sqrt(1e3 * contact_compliance * sphere_mass * mass_weight);
       }
-    return prescribed_time_step > 0 ? prescribed_time_step :
-                                      hertz.contact_time() / steps_per_contact_time;
+    return prescribed_time_step > 0 ?
+             prescribed_time_step :
+             hertz.contact_time() / steps_per_contact_time;
   }
 
 
@@ -410,9 +432,9 @@ namespace impact_fem
   {
     if (static_press)
       return time_step;
-    return maximum_time > 0 ? maximum_time :
-                              geometry.initial_gap / impact_velocity +
-                                3 * hertz.contact_time();
+    return maximum_time > 0 ?
+             maximum_time :
+             geometry.initial_gap / impact_velocity + 3 * hertz.contact_time();
   }
 
 

@@ -38,14 +38,15 @@ tool::Usage usage() {
   std::vector<Option> options = tool::run_options("FILE", "the calibration JSON to write");
   options.push_back(text_option("laws", "LIST",
                                 "comparison laws fitted over the campaign: comma-separated "
-                                "names (" + law_names() + "), 'all' or 'none'")
+                                "names (" +
+                                    law_names() + "), 'all' or 'none'")
                         .with_default("all"));
-  options.push_back(integer_option("max-iterations", "N", 1, 100000,
-                                   "iteration limit of each least-squares fit")
-                        .with_default(std::to_string(defaults.max_iterations)));
-  options.push_back(real_option("confidence", "LEVEL", Range::open(0, 1),
-                                "level of the confidence intervals")
-                        .with_default(impact_fem::as_written(defaults.confidence_level)));
+  options.push_back(
+      integer_option("max-iterations", "N", 1, 100000, "iteration limit of each least-squares fit")
+          .with_default(std::to_string(defaults.max_iterations)));
+  options.push_back(
+      real_option("confidence", "LEVEL", Range::open(0, 1), "level of the confidence intervals")
+          .with_default(impact_fem::as_written(defaults.confidence_level)));
   options.push_back(real_option("energy-weight", "W", Range::closed(0, 1e6),
                                 "weight of the energy-loss residuals of the combined fits (1: a "
                                 "1 % error in 1 - e^2 costs as much as a 1 % RMS force "

@@ -21,8 +21,8 @@ const std::string program = "impact-export";
 
 tool::Usage usage() {
   using namespace impact::cli;
-  std::vector<Option> options = tool::run_options(
-      "DIR", "the export directory (replaced as a whole)");
+  std::vector<Option> options =
+      tool::run_options("DIR", "the export directory (replaced as a whole)");
   options.insert(options.begin(),
                  text_option("calibration", "FILE",
                              "the JSON of impact-calibrate for these runs (required)"));

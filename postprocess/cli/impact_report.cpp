@@ -26,8 +26,9 @@ const std::string program = "impact-report";
 tool::Usage usage() {
   using namespace impact::cli;
   std::vector<Option> options = tool::run_options(
-      "DIR", "where report.html, report.md, figures/ and report_data.json go (created if "
-             "needed)");
+      "DIR",
+      "where report.html, report.md, figures/ and report_data.json go (created if "
+      "needed)");
   std::string tolerances;
   for (const double tolerance : default_tolerances)
     tolerances += (tolerances.empty() ? "" : ",") + impact_fem::as_written(100 * tolerance);
@@ -94,7 +95,8 @@ ReportRequest parse(tool::CommandLine& line) {
       std::cerr << program << ": " << text << std::endl;
     };
   if (fs::exists(request.output) && !fs::is_directory(request.output))
-    throw tool::UsageError("--output '" + request.output.string() + "' exists and is not a directory");
+    throw tool::UsageError("--output '" + request.output.string() +
+                           "' exists and is not a directory");
   return request;
 }
 

@@ -89,9 +89,8 @@ inline void require_output_directory(const std::filesystem::path& output) {
 
 /// Prints a problem as "program: error|warning: source: message".
 inline void print_problem(const std::string& program, const Problem& problem) {
-  std::cerr << program << ": " << (problem.kind == ProblemKind::input ? "error" : "warning")
-            << ": " << (problem.source.empty() ? "" : problem.source + ": ") << problem.message
-            << '\n';
+  std::cerr << program << ": " << (problem.kind == ProblemKind::input ? "error" : "warning") << ": "
+            << (problem.source.empty() ? "" : problem.source + ": ") << problem.message << '\n';
 }
 
 /// The frame of a tool's main: its usage for --help or -h (wherever they stand); else `parse`

@@ -38,7 +38,9 @@ bool is_warning(ProblemKind kind) {
   return kind == ProblemKind::no_rebound || kind == ProblemKind::quality;
 }
 
-std::ostream& operator<<(std::ostream& out, ProblemKind kind) { return out << kind_name(kind); }
+std::ostream& operator<<(std::ostream& out, ProblemKind kind) {
+  return out << kind_name(kind);
+}
 
 bool complete(const std::vector<Problem>& problems) {
   return std::all_of(problems.begin(), problems.end(),

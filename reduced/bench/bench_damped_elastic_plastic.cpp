@@ -26,14 +26,19 @@ const double mass = 4.0 / 3.0 * 3.14159265358979323846 * 1e-6 * 7800;
 const SphereFlatContact steel{0.01, 2.1e11 / 1.82, 1e9, 0.3};
 constexpr double velocity = 1.4;
 constexpr double damping = 0.05 / velocity;
-constexpr double dissipative_constant = 1e-7;  // A [s]
+constexpr double dissipative_constant = 1e-7; // A [s]
 
 std::shared_ptr<const ElasticPlasticContact> spring(int kind) {
   switch (kind) {
-  case 0: return std::make_shared<HertzContact>(4.0 / 3.0 * steel.contact_modulus * std::sqrt(steel.radius));
-  case 1: return std::make_shared<ThorntonContact>(steel.radius, steel.contact_modulus, 1.6e9);
-  case 2: return std::make_shared<JacksonGreenContact>(steel);
-  default: return std::make_shared<GhaedniaContact>(steel, 2.1e11, 0.02 * 2.1e11);
+    case 0:
+      return std::make_shared<HertzContact>(4.0 / 3.0 * steel.contact_modulus *
+                                            std::sqrt(steel.radius));
+    case 1:
+      return std::make_shared<ThorntonContact>(steel.radius, steel.contact_modulus, 1.6e9);
+    case 2:
+      return std::make_shared<JacksonGreenContact>(steel);
+    default:
+      return std::make_shared<GhaedniaContact>(steel, 2.1e11, 0.02 * 2.1e11);
   }
 }
 
@@ -50,7 +55,9 @@ void hunt_crossley_elastic_plastic_restitution(benchmark::State& state) {
     benchmark::DoNotOptimize(
         HuntCrossleyElasticPlasticImpact(mass, contact, damping, velocity).restitution());
 }
-BENCHMARK(hunt_crossley_elastic_plastic_restitution)->DenseRange(0, 3)->Unit(benchmark::kMicrosecond);
+BENCHMARK(hunt_crossley_elastic_plastic_restitution)
+    ->DenseRange(0, 3)
+    ->Unit(benchmark::kMicrosecond);
 
 void hunt_crossley_elastic_plastic_response(benchmark::State& state) {
   const auto contact = spring(static_cast<int>(state.range(0)));

@@ -21,7 +21,8 @@ constexpr double velocity = 1.4;
 void thornton_closed_form(benchmark::State& state) {
   double v = velocity;
   for (auto _ : state) {
-    benchmark::DoNotOptimize(ThorntonImpact({mass, 0.01, steel.contact_modulus, 1.6e9}, v).response());
+    benchmark::DoNotOptimize(
+        ThorntonImpact({mass, 0.01, steel.contact_modulus, 1.6e9}, v).response());
     v = v < 2 * velocity ? v * 1.001 : velocity;
   }
 }

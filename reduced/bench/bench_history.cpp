@@ -39,7 +39,12 @@ void closed_form_history(benchmark::State& state) {
   state.SetComplexityN(state.range(0));
 }
 // 2 points: the fixed cost (the impact and the two phases' series, nothing located).
-BENCHMARK(closed_form_history)->Arg(2)->Arg(100)->Arg(1000)->Arg(10000)->Unit(benchmark::kMicrosecond);
+BENCHMARK(closed_form_history)
+    ->Arg(2)
+    ->Arg(100)
+    ->Arg(1000)
+    ->Arg(10000)
+    ->Unit(benchmark::kMicrosecond);
 
 // The equation on the impact's own scales: x = x_max X, v = V Y, t = (x_max / V) T, so that
 // the tolerances are relative to x_max and V: X' = Y, Y' = -F x_max / (m V^2).
@@ -82,9 +87,10 @@ std::vector<ImpactState> ode_history(DenseStepper stepper, std::size_t points) {
   };
   boost::uintmax_t iterations = 100;
   const double previous = stepper.previous_time(), current = stepper.current_time();
-  const auto [low, high] = boost::math::tools::toms748_solve(
-      approach, previous, current, approach(previous), approach(current),
-      boost::math::tools::eps_tolerance<double>(), iterations);
+  const auto [low, high] =
+      boost::math::tools::toms748_solve(approach, previous, current, approach(previous),
+                                        approach(current),
+                                        boost::math::tools::eps_tolerance<double>(), iterations);
   const double end = 0.5 * (low + high);
 
   std::vector<ImpactState> states;
@@ -96,8 +102,8 @@ std::vector<ImpactState> ode_history(DenseStepper stepper, std::size_t points) {
     steps[step].calc_state(t, y);
     const double x = std::max(y[0], 0.0) * approach_max;
     const double v = y[1] * velocity;
-    states.push_back({t * system.time_scale, x, v,
-                      stiffness * std::pow(x, exponent) * (1 + damping * v)});
+    states.push_back(
+        {t * system.time_scale, x, v, stiffness * std::pow(x, exponent) * (1 + damping * v)});
   }
   return states;
 }

@@ -51,13 +51,20 @@ Option make(Option::Kind kind, std::string name, std::string value_name, std::st
 
 const char* kind_name(Option::Kind kind) {
   switch (kind) {
-  case Option::Kind::real: return "real";
-  case Option::Kind::reals: return "list of reals";
-  case Option::Kind::integer: return "integer";
-  case Option::Kind::choice: return "choice";
-  case Option::Kind::text: return "text";
-  case Option::Kind::flag: return "flag";
-  case Option::Kind::heading: return "heading";
+    case Option::Kind::real:
+      return "real";
+    case Option::Kind::reals:
+      return "list of reals";
+    case Option::Kind::integer:
+      return "integer";
+    case Option::Kind::choice:
+      return "choice";
+    case Option::Kind::text:
+      return "text";
+    case Option::Kind::flag:
+      return "flag";
+    case Option::Kind::heading:
+      return "heading";
   }
   return "?";
 }
@@ -77,13 +84,27 @@ std::string wrapped_text(const std::string& text, std::size_t indent, std::size_
   return result;
 }
 
-Range Range::positive() { return {0.0, infinity, false, false}; }
-Range Range::non_negative() { return {0.0, infinity, true, false}; }
-Range Range::finite() { return {-infinity, infinity, false, false}; }
-Range Range::open(double lower, double upper) { return {lower, upper, false, false}; }
-Range Range::closed(double lower, double upper) { return {lower, upper, true, true}; }
-Range Range::left_open(double lower, double upper) { return {lower, upper, false, true}; }
-Range Range::right_open(double lower, double upper) { return {lower, upper, true, false}; }
+Range Range::positive() {
+  return {0.0, infinity, false, false};
+}
+Range Range::non_negative() {
+  return {0.0, infinity, true, false};
+}
+Range Range::finite() {
+  return {-infinity, infinity, false, false};
+}
+Range Range::open(double lower, double upper) {
+  return {lower, upper, false, false};
+}
+Range Range::closed(double lower, double upper) {
+  return {lower, upper, true, true};
+}
+Range Range::left_open(double lower, double upper) {
+  return {lower, upper, false, true};
+}
+Range Range::right_open(double lower, double upper) {
+  return {lower, upper, true, false};
+}
 
 bool Range::contains(double value) const {
   const bool above = lower_included ? value >= lower : value > lower;
@@ -115,13 +136,18 @@ Option Option::with_default_note(std::string note) const {
 
 std::string Option::allowed() const {
   switch (kind) {
-  case Kind::real: return range.describe();
-  case Kind::reals: return "a comma-separated list, each " + range.describe();
-  case Kind::integer: return integer_allowed(lower, upper);
-  case Kind::choice: return "one of " + choice_listing(choices);
-  case Kind::text:
-  case Kind::flag:
-  case Kind::heading: return "";
+    case Kind::real:
+      return range.describe();
+    case Kind::reals:
+      return "a comma-separated list, each " + range.describe();
+    case Kind::integer:
+      return integer_allowed(lower, upper);
+    case Kind::choice:
+      return "one of " + choice_listing(choices);
+    case Kind::text:
+    case Kind::flag:
+    case Kind::heading:
+      return "";
   }
   return "";
 }
@@ -149,8 +175,8 @@ Option integer_option(std::string name, std::string value_name, long lower, long
 }
 
 Option choice_option(std::string name, std::vector<std::string> choices, std::string help) {
-  Option option = make(Option::Kind::choice, std::move(name), choice_listing(choices),
-                       std::move(help));
+  Option option =
+      make(Option::Kind::choice, std::move(name), choice_listing(choices), std::move(help));
   option.choices = std::move(choices);
   return option;
 }
@@ -163,7 +189,9 @@ Option flag_option(std::string name, std::string help) {
   return make(Option::Kind::flag, std::move(name), "", std::move(help));
 }
 
-Option heading(std::string text) { return make(Option::Kind::heading, "", "", std::move(text)); }
+Option heading(std::string text) {
+  return make(Option::Kind::heading, "", "", std::move(text));
+}
 
 std::string usage_of_options(const std::vector<Option>& options) {
   constexpr std::size_t column = 24, width = 92;
@@ -198,7 +226,7 @@ bool asks_for_help(const std::vector<std::string>& arguments) {
 
 CommandLine::CommandLine(std::string command, const std::vector<std::string>& arguments,
                          std::vector<Option> options, bool operands)
-  : command_(std::move(command)), options_(std::move(options)) {
+    : command_(std::move(command)), options_(std::move(options)) {
   const auto find = [this](const std::string& name) {
     return std::find_if(options_.begin(), options_.end(), [&](const Option& option) {
       return option.kind != Option::Kind::heading && option.name == name;
@@ -250,7 +278,9 @@ const Option& CommandLine::declared(const std::string& name, Option::Kind kind) 
   throw std::logic_error("option --" + name + " of '" + command_ + "' is read but not declared");
 }
 
-bool CommandLine::has(const std::string& name) const { return values_.count(name) > 0; }
+bool CommandLine::has(const std::string& name) const {
+  return values_.count(name) > 0;
+}
 
 std::string CommandLine::given_text(const std::string& name) const {
   const auto found = values_.find(name);

@@ -27,9 +27,9 @@ struct Range {
   bool lower_included;
   bool upper_included;
 
-  static Range positive();      // (0, inf)
-  static Range non_negative();  // [0, inf)
-  static Range finite();        // (-inf, inf)
+  static Range positive();     // (0, inf)
+  static Range non_negative(); // [0, inf)
+  static Range finite();       // (-inf, inf)
   static Range open(double lower, double upper);
   static Range closed(double lower, double upper);
   /// (lower, upper]
@@ -46,12 +46,12 @@ struct Range {
 struct Option {
   enum class Kind { real, reals, integer, choice, text, flag, heading };
   Kind kind = Kind::heading;
-  std::string name;        ///< without the leading "--"; for a heading, empty
-  std::string value_name;  ///< in the usage: --mass M
-  std::string help;        ///< what it is, with its unit; for a heading, the heading
-  Range range = Range::finite();     ///< real, reals
-  long lower = 0, upper = 0;         ///< integer
-  std::vector<std::string> choices;  ///< choice
+  std::string name;                 ///< without the leading "--"; for a heading, empty
+  std::string value_name;           ///< in the usage: --mass M
+  std::string help;                 ///< what it is, with its unit; for a heading, the heading
+  Range range = Range::finite();    ///< real, reals
+  long lower = 0, upper = 0;        ///< integer
+  std::vector<std::string> choices; ///< choice
   /// The value used when the option is not given, as it would be written on the command
   /// line ("1.5", "json"); shown in the usage. None: required, or a default that the command
   /// computes (then `default_note` says which).
@@ -85,8 +85,7 @@ std::string usage_of_options(const std::vector<Option>& options);
 
 /// `text` broken into lines of at most `width` characters (`indent` spaces included), for the
 /// paragraphs of a usage.
-std::string wrapped_text(const std::string& text, std::size_t indent = 0,
-                         std::size_t width = 92);
+std::string wrapped_text(const std::string& text, std::size_t indent = 0, std::size_t width = 92);
 
 /// Whether `arguments` ask for the usage: --help or -h among them.
 bool asks_for_help(const std::vector<std::string>& arguments);

@@ -13,10 +13,10 @@ namespace impact::cli {
 
 struct Command {
   std::string name;
-  std::string summary;      ///< one line in the list of commands
-  std::string description;  ///< the paragraph at the top of its usage
+  std::string summary;     ///< one line in the list of commands
+  std::string description; ///< the paragraph at the top of its usage
   std::vector<Option> options;
-  std::string notes;        ///< after the options: which options go together, the output
+  std::string notes; ///< after the options: which options go together, the output
   int (*run)(CommandLine& options, std::ostream& out);
 };
 

@@ -24,9 +24,10 @@ std::vector<Command> all_commands() {
 }
 
 std::string usage_of_tool(const std::vector<Command>& commands) {
-  std::string usage = "usage: impact-reduced COMMAND [--option value ...]\n"
-                      "       impact-reduced COMMAND --help   (the options of COMMAND)\n\n"
-                      "commands:\n";
+  std::string usage =
+      "usage: impact-reduced COMMAND [--option value ...]\n"
+      "       impact-reduced COMMAND --help   (the options of COMMAND)\n\n"
+      "commands:\n";
   for (const auto& command : commands) {
     const std::string name = "  " + command.name;
     usage += name + wrapped_text(command.summary, 14).substr(name.size());
@@ -75,13 +76,13 @@ int main(int argc, char** argv) {
   } catch (const impact::reduced::InvalidInput& error) {
     // The library names its parameter as the options do (mass, velocity, a0, ...).
     const std::string option = "--" + error.parameter();
-    const bool named = command->options.end() !=
-                           std::find_if(command->options.begin(), command->options.end(),
-                                        [&](const Option& declared) {
-                                          return declared.kind != Option::Kind::heading &&
-                                                 declared.name == error.parameter();
-                                        }) &&
-                       std::string(error.what()).find(option) == std::string::npos;
+    const bool named =
+        command->options.end() != std::find_if(command->options.begin(), command->options.end(),
+                                               [&](const Option& declared) {
+                                                 return declared.kind != Option::Kind::heading &&
+                                                        declared.name == error.parameter();
+                                               }) &&
+        std::string(error.what()).find(option) == std::string::npos;
     std::cerr << "impact-reduced " << name << ": error: " << (named ? option + ": " : "")
               << error.what() << '\n';
     return 2;

@@ -32,8 +32,9 @@ int run_oscillator(CommandLine& options, std::ostream& out) {
       rows.push_back({static_cast<double>(extreme.index), extreme.time, extreme.amplitude});
     print_csv(out, {"i", "time", "amplitude"}, rows);
   } else {
-    const auto amplitudes = reduced::free_decay_amplitudes(
-        oscillator, count, reduced::amplitude_method_from_name(method));
+    const auto amplitudes =
+        reduced::free_decay_amplitudes(oscillator, count,
+                                       reduced::amplitude_method_from_name(method));
     for (std::size_t i = 0; i < amplitudes.size(); ++i)
       rows.push_back({static_cast<double>(i + 1), amplitudes[i]});
     print_csv(out, {"i", "amplitude"}, rows);
@@ -62,8 +63,9 @@ Command oscillator_command() {
                           "number of amplitudes (extremes) to print"),
            choice_option("method", {"numeric", "implicit", "lambert", "lambert-approx"},
                          "how the amplitudes are computed"),
-           choice_option("format", {"csv"}, "output format (a CSV table: i,time,amplitude for "
-                                            "numeric, i,amplitude otherwise)")
+           choice_option("format", {"csv"},
+                         "output format (a CSV table: i,time,amplitude for "
+                         "numeric, i,amplitude otherwise)")
                .with_default("csv")},
           "",
           run_oscillator};

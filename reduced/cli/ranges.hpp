@@ -11,26 +11,62 @@
 
 namespace impact::cli::ranges {
 
-inline Range mass() { return Range::closed(1e-15, 1e6); }             // kg
-inline Range velocity() { return Range::closed(1e-6, 1e4); }          // m/s
-inline Range stiffness() { return Range::closed(1e-3, 1e20); }        // c, N/m^n
-inline Range exponent() { return Range::closed(0.5, 4.0); }           // n
+inline Range mass() {
+  return Range::closed(1e-15, 1e6);
+} // kg
+inline Range velocity() {
+  return Range::closed(1e-6, 1e4);
+} // m/s
+inline Range stiffness() {
+  return Range::closed(1e-3, 1e20);
+} // c, N/m^n
+inline Range exponent() {
+  return Range::closed(0.5, 4.0);
+} // n
 /// n of a thin-plate impact: the exponents of its verification (thin_plate.hpp, rigid limit
 /// for n in {1, 1.5, 2.5}); below about 0.8 the sphere may not leave the plate.
-inline Range plate_exponent() { return Range::closed(1.0, 2.5); }
-inline Range damping() { return Range::closed(0.0, 1e6); }            // b, s/m
-inline Range modulus() { return Range::closed(1e3, 1e13); }           // Young's modulus, Pa
-inline Range poisson() { return Range::open(-1.0, 0.5); }             // Poisson's ratio
-inline Range radius() { return Range::closed(1e-9, 1e3); }            // m
-inline Range density() { return Range::closed(0.1, 1e5); }            // kg/m^3
-inline Range yield_strength() { return Range::closed(1e3, 1e11); }    // Pa
-inline Range thickness() { return Range::closed(1e-6, 1e3); }         // m
-inline Range restitution() { return Range::closed(1e-6, 1.0); }       // e
-inline Range stiffness_c1() { return Range::closed(1e-6, 1e15); }     // oscillator c1, N/m
-inline Range stiffness_c2() { return Range::closed(-1e15, 1e15); }    // c2, N/m^(v+1)
-inline Range viscous() { return Range::closed(0.0, 1e12); }           // k, N s/m
-inline Range power() { return Range::closed(0.0, 10.0); }             // v
-inline Range amplitude() { return Range::closed(1e-12, 1e3); }        // a0, m
+inline Range plate_exponent() {
+  return Range::closed(1.0, 2.5);
+}
+inline Range damping() {
+  return Range::closed(0.0, 1e6);
+} // b, s/m
+inline Range modulus() {
+  return Range::closed(1e3, 1e13);
+} // Young's modulus, Pa
+inline Range poisson() {
+  return Range::open(-1.0, 0.5);
+} // Poisson's ratio
+inline Range radius() {
+  return Range::closed(1e-9, 1e3);
+} // m
+inline Range density() {
+  return Range::closed(0.1, 1e5);
+} // kg/m^3
+inline Range yield_strength() {
+  return Range::closed(1e3, 1e11);
+} // Pa
+inline Range thickness() {
+  return Range::closed(1e-6, 1e3);
+} // m
+inline Range restitution() {
+  return Range::closed(1e-6, 1.0);
+} // e
+inline Range stiffness_c1() {
+  return Range::closed(1e-6, 1e15);
+} // oscillator c1, N/m
+inline Range stiffness_c2() {
+  return Range::closed(-1e15, 1e15);
+} // c2, N/m^(v+1)
+inline Range viscous() {
+  return Range::closed(0.0, 1e12);
+} // k, N s/m
+inline Range power() {
+  return Range::closed(0.0, 10.0);
+} // v
+inline Range amplitude() {
+  return Range::closed(1e-12, 1e3);
+} // a0, m
 
 /// Largest impact parameter beta = b V of an impact (hc): the times are accurate to 1e-12 up
 /// to it (hunt_crossley.hpp); the restitution is then about 1e-3.

@@ -70,12 +70,13 @@ SphereFlat read_sphere_flat(CommandLine& options, const std::string& law_name,
         throw UsageError(std::string("--stiffness and --") + material +
                          " exclude each other: give " + contact_ways);
     result.stiffness = options.real("stiffness");
-    result.exponent = required_exponent ? options.real("exponent", *required_exponent)
-                                        : options.real("exponent");
+    result.exponent =
+        required_exponent ? options.real("exponent", *required_exponent) : options.real("exponent");
     result.contact_basis = "given: c and n";
   } else {
-    options.require_absent("exponent", "applies to --stiffness only (the Hertz contact of "
-                                       "--sphere-modulus and the flat has n = 3/2)");
+    options.require_absent("exponent",
+                           "applies to --stiffness only (the Hertz contact of "
+                           "--sphere-modulus and the flat has n = 3/2)");
     if (required_exponent && *required_exponent != 1.5)
       throw UsageError("--sphere-modulus gives a Hertz contact (n = 3/2), but " + law_name +
                        " is defined for n = " + text_of(*required_exponent) +
@@ -86,25 +87,27 @@ SphereFlat read_sphere_flat(CommandLine& options, const std::string& law_name,
                        " exclude each other: the flat is either rigid or has a modulus and a "
                        "Poisson's ratio");
     if (!options.has("flat") && !options.has("flat-modulus") && !options.has("flat-poisson"))
-      throw UsageError("--flat-modulus and --flat-poisson, or --flat rigid, are required with "
-                       "--sphere-modulus: the flat's material");
+      throw UsageError(
+          "--flat-modulus and --flat-poisson, or --flat rigid, are required with "
+          "--sphere-modulus: the flat's material");
     const ElasticBody sphere{options.real("sphere-modulus"), options.real("sphere-poisson"),
                              options.real("radius")};
     const bool rigid = options.has("flat");
     if (rigid) options.choice("flat");
     const ElasticBody flat =
-        rigid ? rigid_body() : ElasticBody{options.real("flat-modulus"), options.real("flat-poisson")};
+        rigid ? rigid_body()
+              : ElasticBody{options.real("flat-modulus"), options.real("flat-poisson")};
     result.stiffness = hertz_stiffness(sphere, flat);
     options.require_within("stiffness", result.stiffness,
                            "the Hertz contact of --sphere-modulus, --sphere-poisson, --radius "
                            "and the flat has a stiffness c of");
     result.exponent = 1.5;
-    result.contact_basis =
-        "Hertz: sphere E = " + text_of(sphere.youngs_modulus) + " Pa, nu = " +
-        text_of(sphere.poisson_ratio) + ", R = " + text_of(sphere.radius) + " m on " +
-        (rigid ? std::string("a rigid flat")
-               : "a flat of E = " + text_of(flat.youngs_modulus) + " Pa, nu = " +
-                     text_of(flat.poisson_ratio));
+    result.contact_basis = "Hertz: sphere E = " + text_of(sphere.youngs_modulus) +
+                           " Pa, nu = " + text_of(sphere.poisson_ratio) +
+                           ", R = " + text_of(sphere.radius) + " m on " +
+                           (rigid ? std::string("a rigid flat")
+                                  : "a flat of E = " + text_of(flat.youngs_modulus) +
+                                        " Pa, nu = " + text_of(flat.poisson_ratio));
   }
   if (options.has("mass")) {
     result.mass = options.real("mass");
@@ -115,8 +118,8 @@ SphereFlat read_sphere_flat(CommandLine& options, const std::string& law_name,
     result.mass = solid_sphere_mass(radius, density);
     options.require_within("mass", result.mass,
                            "the solid sphere of --radius and --sphere-density has a mass of");
-    result.mass_basis = "solid sphere: R = " + text_of(radius) + " m, rho = " + text_of(density) +
-                        " kg/m^3";
+    result.mass_basis =
+        "solid sphere: R = " + text_of(radius) + " m, rho = " + text_of(density) + " kg/m^3";
   }
   return result;
 }

@@ -24,9 +24,9 @@ std::vector<Option> sphere_flat_options(const std::string& exponent_help);
 std::string sphere_flat_notes();
 
 struct SphereFlat {
-  double stiffness;         ///< c [N/m^n]
-  double exponent;          ///< n [-]
-  double mass;              ///< m [kg]
+  double stiffness;          ///< c [N/m^n]
+  double exponent;           ///< n [-]
+  double mass;               ///< m [kg]
   std::string contact_basis; ///< where c and n come from, in words
   std::string mass_basis;    ///< where m comes from, in words
 };

@@ -43,8 +43,9 @@ int run_thin_plate(CommandLine& options, std::ostream& out) {
     stiffness = options.real("stiffness");
     exponent = options.real("exponent");
   } else {
-    options.require_absent("exponent", "applies to --stiffness only (the Hertz contact of "
-                                       "--sphere-modulus and the plate has n = 3/2)");
+    options.require_absent("exponent",
+                           "applies to --stiffness only (the Hertz contact of "
+                           "--sphere-modulus and the plate has n = 3/2)");
     const ElasticBody sphere{options.real("sphere-modulus"), options.real("sphere-poisson"),
                              radius};
     stiffness = hertz_stiffness(sphere, {plate.youngs_modulus, plate.poisson_ratio});
@@ -68,20 +69,27 @@ int run_thin_plate(CommandLine& options, std::ostream& out) {
   const ThinPlateImpact model(stiffness, exponent, damping, mass, impedance);
   for (const double velocity : velocities)
     if (model.zener_lambda(velocity) > ranges::largest_zener_lambda)
-      throw UsageError("--velocity " + text_of(velocity) + " gives Zener's lambda = " +
-                       text_of(model.zener_lambda(velocity)) + ", above " +
-                       text_of(ranges::largest_zener_lambda) +
+      throw UsageError("--velocity " + text_of(velocity) +
+                       " gives Zener's lambda = " + text_of(model.zener_lambda(velocity)) +
+                       ", above " + text_of(ranges::largest_zener_lambda) +
                        ", the largest accepted: the plate is too compliant for this sphere "
                        "(lambda grows with --mass, --stiffness and the velocity, falls with "
                        "--thickness and --plate-modulus)");
   std::vector<ThinPlateImpactResult> results;
   for (const double velocity : velocities) results.push_back(model.impact(velocity, tolerance));
 
-  const std::vector<std::string> keys = {
-      "velocity",         "zener_lambda",      "restitution",
-      "contact_time",     "force_max",         "time_force_max",
-      "approach_max",     "time_approach_max", "plate_energy_fraction",
-      "damping_energy_fraction", "plate_deflection", "number_of_contacts"};
+  const std::vector<std::string> keys = {"velocity",
+                                         "zener_lambda",
+                                         "restitution",
+                                         "contact_time",
+                                         "force_max",
+                                         "time_force_max",
+                                         "approach_max",
+                                         "time_approach_max",
+                                         "plate_energy_fraction",
+                                         "damping_energy_fraction",
+                                         "plate_deflection",
+                                         "number_of_contacts"};
   const auto values = [](double velocity, const ThinPlateImpactResult& r) {
     return std::vector<double>{velocity,
                                r.zener_lambda,
@@ -159,8 +167,7 @@ Command thin_plate_command() {
        real_option("sphere-density", "RHO", ranges::density(),
                    "density of the sphere [kg/m^3], with --radius"),
        heading("The impacts:"),
-       real_option("damping", "B", ranges::damping(), "damping constant b [s/m]")
-           .with_default("0"),
+       real_option("damping", "B", ranges::damping(), "damping constant b [s/m]").with_default("0"),
        reals_option("velocity", "V[,V...]", ranges::velocity(), "impact velocities [m/s]"),
        real_option("tolerance", "TOL", Range::closed(1e-14, 1e-3),
                    "relative tolerance of the integration [-]")

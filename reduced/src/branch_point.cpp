@@ -7,7 +7,6 @@
 
 namespace impact::reduced::detail {
 
-
 // Below |y| = 1/2 the literal -y - log1p(-y) cancels (the terms are up to 9 times the
 // result), so the series serves there: 11 terms reach double precision for |y| < 1/4
 // (|u| <= 1/7), 20 terms for |y| < 1/2 (|u| <= 1/3).
@@ -23,7 +22,9 @@ double branch_excess(double y) {
   return -y - std::log1p(-y);
 }
 
-double log1p_excess_ratio(double t) { return branch_excess_ratio(-t); }
+double log1p_excess_ratio(double t) {
+  return branch_excess_ratio(-t);
+}
 
 namespace {
 
@@ -31,18 +32,26 @@ namespace {
 // obtained by reverting p = y sqrt(2 S(y)) / y in exact rational arithmetic. With 11
 // terms the truncation error is below 1e-7 |p|^11 relative: 4e-22 at |p| = 0.05.
 double series_ratio(double p) {
-  constexpr double coefficients[] = {
-      1.0,                        -1.0 / 3.0,           1.0 / 36.0,
-      1.0 / 270.0,                1.0 / 4320.0,         -1.0 / 17010.0,
-      -139.0 / 5443200.0,         -1.0 / 204120.0,      -571.0 / 2351462400.0,
-      281.0 / 1515591000.0,       163879.0 / 2172751257600.0};
+  constexpr double coefficients[] = {1.0,
+                                     -1.0 / 3.0,
+                                     1.0 / 36.0,
+                                     1.0 / 270.0,
+                                     1.0 / 4320.0,
+                                     -1.0 / 17010.0,
+                                     -139.0 / 5443200.0,
+                                     -1.0 / 204120.0,
+                                     -571.0 / 2351462400.0,
+                                     281.0 / 1515591000.0,
+                                     163879.0 / 2172751257600.0};
   double ratio = 0.0;
   for (int k = 10; k >= 0; --k) ratio = ratio * p + coefficients[k];
   return ratio;
 }
 
 // One Newton step on S(y) = s; S'(y) = y / (1 - y).
-double newton_step(double y, double s) { return y - (branch_excess(y) - s) * (1.0 - y) / y; }
+double newton_step(double y, double s) {
+  return y - (branch_excess(y) - s) * (1.0 - y) / y;
+}
 
 constexpr double series_only_limit = 0.05; // |p| below: the series alone is exact
 constexpr double series_start_limit = 0.5; // |p| below: series + one Newton step

@@ -18,7 +18,9 @@ double branch_excess(double y);
 double branch_excess_ratio(double y);
 
 /// t - log(1 + t) for t > -1 (= S(-t)), to about 1 ulp relative.
-inline double log1p_excess(double t) { return branch_excess(-t); }
+inline double log1p_excess(double t) {
+  return branch_excess(-t);
+}
 
 /// The root y of S(y) = s on the principal (y >= 0) or lower (y <= 0) branch, s >= 0.
 double branch_offset(double s, bool principal);

@@ -11,10 +11,11 @@ namespace impact::reduced {
 
 const std::vector<ComparisonLaw>& comparison_laws() {
   static const std::vector<ComparisonLaw> registry = {
-      laws::kelvin_voigt(), laws::lankarani_nikravesh(), laws::flores(),
-      laws::gonthier(),     laws::hu_guo(),              laws::zhiying_qishao(),
-      laws::tsuji(),        laws::tsuji_clamped(),       laws::kuwabara_kono(),
-      laws::kuwabara_kono_no_tension(),
+      laws::kelvin_voigt(),  laws::lankarani_nikravesh(),
+      laws::flores(),        laws::gonthier(),
+      laws::hu_guo(),        laws::zhiying_qishao(),
+      laws::tsuji(),         laws::tsuji_clamped(),
+      laws::kuwabara_kono(), laws::kuwabara_kono_no_tension(),
   };
   return registry;
 }

@@ -20,14 +20,15 @@ double ElasticForce::approach_at_potential(double target) const {
       throw std::runtime_error("the elastic potential never reaches the impact energy");
   }
   boost::uintmax_t iterations = 200;
-  const auto [lower_end, upper_end] = boost::math::tools::toms748_solve(
-      [&](double x) { return potential(x) - target; }, 0.0, upper, -target,
-      potential(upper) - target, boost::math::tools::eps_tolerance<double>(), iterations);
+  const auto [lower_end, upper_end] =
+      boost::math::tools::toms748_solve([&](double x) { return potential(x) - target; }, 0.0, upper,
+                                        -target, potential(upper) - target,
+                                        boost::math::tools::eps_tolerance<double>(), iterations);
   return 0.5 * (lower_end + upper_end);
 }
 
 PowerLawForce::PowerLawForce(double stiffness, double exponent)
-  : stiffness_(stiffness), exponent_(exponent) {
+    : stiffness_(stiffness), exponent_(exponent) {
   require_positive("stiffness", stiffness);
   require_positive("exponent", exponent);
 }
@@ -49,7 +50,7 @@ double PowerLawForce::approach_at_potential(double potential) const {
 }
 
 CustomElasticForce::CustomElasticForce(Function force, Function potential, Function slope)
-  : force_(std::move(force)), potential_(std::move(potential)), slope_(std::move(slope)) {
+    : force_(std::move(force)), potential_(std::move(potential)), slope_(std::move(slope)) {
   if (!force_) throw InvalidInput("force", "force must be a callable f(x)");
   if (!potential_) throw InvalidInput("potential", "potential must be a callable P(x)");
   if (!slope_) throw InvalidInput("slope", "slope must be a callable f'(x)");

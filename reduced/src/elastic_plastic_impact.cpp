@@ -56,9 +56,10 @@ double ElasticPlasticContact::loading_approach(double work) const {
       throw std::runtime_error("the loading curve never absorbs the impact energy");
   }
   boost::uintmax_t iterations = 200;
-  const auto [low, high] = boost::math::tools::toms748_solve(
-      [&](double x) { return loading_work(x) - work; }, lower, upper,
-      boost::math::tools::eps_tolerance<double>(), iterations);
+  const auto [low, high] =
+      boost::math::tools::toms748_solve([&](double x) { return loading_work(x) - work; }, lower,
+                                        upper, boost::math::tools::eps_tolerance<double>(),
+                                        iterations);
   return 0.5 * (low + high);
 }
 
@@ -76,7 +77,7 @@ namespace {
 class ImpactSolution {
 public:
   ImpactSolution(double mass, double velocity, const ElasticPlasticContact& contact)
-    : mass_(mass), velocity_(velocity), contact_(contact) {
+      : mass_(mass), velocity_(velocity), contact_(contact) {
     require_positive("mass", mass);
     require_positive("velocity", velocity);
     const double energy = 0.5 * mass * velocity * velocity;
@@ -164,8 +165,7 @@ public:
     // A branch may not return more energy than the loading absorbed. Fitted loading curves
     // can make it do so (the Jackson-Green fit jumps 0.5 % above Hertz at 1.9 omega_c): the
     // impact is then elastic, e = 1, not e > 1.
-    const double rebound_speed =
-        std::min(velocity_, -restitution_rate(separation_approach_));
+    const double rebound_speed = std::min(velocity_, -restitution_rate(separation_approach_));
     const double compression = compression_time();
     ElasticPlasticImpactResponse response{};
     response.approach_max = approach_max_;
@@ -201,7 +201,7 @@ private:
   double approach_max_ = 0;
   double force_max_ = 0;
   double work_max_ = 0;
-  std::vector<double> ends_;  // breakpoints in s
+  std::vector<double> ends_; // breakpoints in s
   HertzianUnloading unloading_{};
   double separation_approach_ = 0;
   double branch_length_ = 0;
@@ -219,9 +219,10 @@ std::vector<ImpactSample> elastic_plastic_impact_loop(double mass, double veloci
                                                       const ElasticPlasticContact& contact,
                                                       std::size_t points_per_phase) {
   if (points_per_phase < 2)
-    throw InvalidInput("points_per_phase", "points_per_phase: at least 2 points per phase are "
-                                           "needed (received " +
-                                               std::to_string(points_per_phase) + ")");
+    throw InvalidInput("points_per_phase",
+                       "points_per_phase: at least 2 points per phase are "
+                       "needed (received " +
+                           std::to_string(points_per_phase) + ")");
   const ImpactSolution solution(mass, velocity, contact);
   const double x_max = solution.approach_max();
   const double compression_time = solution.compression_time();

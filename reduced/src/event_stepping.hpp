@@ -60,8 +60,9 @@ public:
   /// `tolerance`: local error tolerance, absolute = relative, on the scaled state.
   /// `time_unit` [s]: one scaled time unit, for the messages only.
   EventStepper(System system, double tolerance, double time_unit)
-    : system_(std::move(system)), time_unit_(time_unit),
-      controlled_(ErrorChecker(tolerance, tolerance, 1.0, 0.0)) {}
+      : system_(std::move(system)),
+        time_unit_(time_unit),
+        controlled_(ErrorChecker(tolerance, tolerance, 1.0, 0.0)) {}
 
   /// One accepted step from (y, tau) with trial length dtau, all three updated (dtau to
   /// the controller's proposal for the next step). The step is recorded and returned.
@@ -78,8 +79,8 @@ public:
     }
     for (const double component : y)
       if (!std::isfinite(component) || !std::isfinite(tau))
-        throw std::runtime_error("impact integration diverged at t = " +
-                                 describe(time_unit_ * start_time) + " s");
+        throw std::runtime_error(
+            "impact integration diverged at t = " + describe(time_unit_ * start_time) + " s");
     steps_.push_back({start_time, start, tau - start_time});
     return steps_.back();
   }
@@ -96,8 +97,8 @@ public:
     system_(start, rate);
     State end;
     ErrorStepper stepper;
-    stepper.do_step([this](const State& s, State& d, double) { system_(s, d); }, start, rate,
-                    0.0, end, h);
+    stepper.do_step([this](const State& s, State& d, double) { system_(s, d); }, start, rate, 0.0,
+                    end, h);
     return end;
   }
 
@@ -112,8 +113,7 @@ public:
     std::uintmax_t iterations = 200;
     const auto root = boost::math::tools::toms748_solve(
         [&](double s) { return event(advance(start, s)); }, lower, h, at_lower, at_upper,
-        boost::math::tools::eps_tolerance<double>(std::numeric_limits<double>::digits),
-        iterations);
+        boost::math::tools::eps_tolerance<double>(std::numeric_limits<double>::digits), iterations);
     return 0.5 * (root.first + root.second);
   }
 

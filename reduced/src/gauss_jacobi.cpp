@@ -29,7 +29,8 @@ QuadratureRule make_rule(int points, double exponent) {
                                     (sum * sum * (sum + 1.0) * (sum - 1.0)));
   }
   Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver;
-  solver.computeFromTridiagonal(diagonal, off_diagonal.head(points - 1), Eigen::ComputeEigenvectors);
+  solver.computeFromTridiagonal(diagonal, off_diagonal.head(points - 1),
+                                Eigen::ComputeEigenvectors);
   // Total mass of the weight on (-1, 1): 2^(a+b+1) Gamma(a+1) Gamma(b+1) / Gamma(a+b+2).
   const double mass = std::pow(2.0, a + b + 1.0) * std::tgamma(a + 1.0) * std::tgamma(b + 1.0) /
                       std::tgamma(a + b + 2.0);

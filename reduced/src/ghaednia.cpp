@@ -35,21 +35,21 @@ const SphereFlatContact& validated(const SphereFlatContact& contact) {
 
 // The pieces of the fit at one approach x > 1.9 delta_c.
 struct GhaedniaContact::FitPoint {
-  double ratio;           // omega* = x / delta_c
-  double hertz_radius;    // a_e = sqrt(R x)
-  double plastic_radius;  // a_p = a_e (omega* / 1.9)^(B/2)
-  double upsilon;         // Upsilon(x)
-  double decay;           // exp(Upsilon)
-  double radius;          // a = a_e + (a_p - a_e) exp(Upsilon)
-  double hardness;        // H_G / Y
-  double shape;           // 1 - exp(-omega*^(5/9) / 25)
-  double plastic_force;   // F_p
-  double hertz_force;     // F_e
+  double ratio;          // omega* = x / delta_c
+  double hertz_radius;   // a_e = sqrt(R x)
+  double plastic_radius; // a_p = a_e (omega* / 1.9)^(B/2)
+  double upsilon;        // Upsilon(x)
+  double decay;          // exp(Upsilon)
+  double radius;         // a = a_e + (a_p - a_e) exp(Upsilon)
+  double hardness;       // H_G / Y
+  double shape;          // 1 - exp(-omega*^(5/9) / 25)
+  double plastic_force;  // F_p
+  double hertz_force;    // F_e
 };
 
 GhaedniaContact::GhaedniaContact(const SphereFlatContact& contact, double youngs_modulus,
                                  double tangent_modulus)
-  : contact_(validated(contact)) {
+    : contact_(validated(contact)) {
   require_positive("youngs_modulus", youngs_modulus);
   // 1/E* = (1 - nu^2)/E_s + (1 - nu_f^2)/E_f with a non-negative flat compliance.
   const double rigid_flat_modulus =
@@ -83,9 +83,9 @@ GhaedniaContact::GhaedniaContact(const SphereFlatContact& contact, double youngs
   modulus_ratio_ = tangent_modulus / youngs_modulus;
   log_modulus_ratio_ = modulus_ratio_ > 0 ? std::log(modulus_ratio_) : 0.0;
   const double stiffness_ratio = std::sqrt(youngs_modulus / yield_strength);
-  upsilon_scale_ = 2 * stiffness_ratio /
-                   ((4 - 3 * std::exp(-2 * stiffness_ratio * modulus_ratio_)) *
-                    (1 - modulus_ratio_));
+  upsilon_scale_ =
+      2 * stiffness_ratio /
+      ((4 - 3 * std::exp(-2 * stiffness_ratio * modulus_ratio_)) * (1 - modulus_ratio_));
   elastic_weight_ = -std::expm1(-3.3 * modulus_ratio_);
   transition_ = transition_ratio * critical_interference_;
   transition_work_ = 0.4 * hertz_coefficient_ * std::pow(transition_, 2.5);
@@ -111,9 +111,9 @@ GhaedniaContact::FitPoint GhaedniaContact::fit(double approach) const {
   const double half_angle = std::sin(pi * p.radius / (2 * contact_.radius));
   p.hardness = 2.84 - 0.92 * 2 * half_angle * half_angle;
   p.shape = -std::expm1(-std::pow(p.ratio, 5.0 / 9.0) / 25);
-  p.plastic_force = critical_load_ * (std::exp(-0.25 * std::pow(p.ratio, 5.0 / 12.0)) *
-                                          std::pow(p.ratio, 1.5) +
-                                      4 * p.hardness / c_ * p.shape * p.ratio);
+  p.plastic_force =
+      critical_load_ * (std::exp(-0.25 * std::pow(p.ratio, 5.0 / 12.0)) * std::pow(p.ratio, 1.5) +
+                        4 * p.hardness / c_ * p.shape * p.ratio);
   p.hertz_force = hertz_coefficient_ * approach * std::sqrt(approach);
   return p;
 }
@@ -149,16 +149,15 @@ double GhaedniaContact::loading_stiffness(double approach) const {
   const double plastic_radius_slope = p.plastic_radius * (1 + b_) / (2 * approach);
   const double upsilon_slope =
       modulus_ratio_ == 0 ? 0.0 : -p.upsilon * log_modulus_ratio_ / contact_.radius;
-  const double radius_slope =
-      hertz_radius_slope + (plastic_radius_slope - hertz_radius_slope) * p.decay +
-      (p.plastic_radius - p.hertz_radius) * p.decay * upsilon_slope;
+  const double radius_slope = hertz_radius_slope +
+                              (plastic_radius_slope - hertz_radius_slope) * p.decay +
+                              (p.plastic_radius - p.hertz_radius) * p.decay * upsilon_slope;
   const double hardness_slope =
       -0.92 * pi / contact_.radius * std::sin(pi * p.radius / contact_.radius) * radius_slope;
   const double power = std::pow(w, 5.0 / 9.0);
   const double shape_slope_times_ratio = std::exp(-power / 25) * power / 45;
   const double twelfth = std::pow(w, 5.0 / 12.0);
-  const double hertz_like =
-      std::exp(-0.25 * twelfth) * std::sqrt(w) * (1.5 - 5.0 / 48.0 * twelfth);
+  const double hertz_like = std::exp(-0.25 * twelfth) * std::sqrt(w) * (1.5 - 5.0 / 48.0 * twelfth);
   const double plastic_slope =
       critical_load_ / critical_interference_ *
           (hertz_like + 4 / c_ * p.hardness * (p.shape + shape_slope_times_ratio)) +
@@ -185,7 +184,7 @@ double GhaedniaContact::loading_work(double approach) const {
 HertzianUnloading GhaedniaContact::unloading(double approach_max) const {
   require_positive("approach_max", approach_max);
   const double e_star = contact_.contact_modulus;
-  if (approach_max <= transition_)  // Hertz: R_u = R, no residual.
+  if (approach_max <= transition_) // Hertz: R_u = R, no residual.
     return {hertz_coefficient_, 0.0};
   const double force = loading_force(approach_max);
   const double radius = contact_radius(approach_max);

@@ -30,12 +30,14 @@ double hertz_stiffness(const ElasticBody& first, const ElasticBody& second) {
       (1.0 - first.poisson_ratio * first.poisson_ratio) / first.youngs_modulus +
       (1.0 - second.poisson_ratio * second.poisson_ratio) / second.youngs_modulus;
   if (!(compliance > 0))
-    throw InvalidInput("youngs_modulus", "two rigid bodies have no Hertz contact (both moduli "
-                                         "are infinite)");
+    throw InvalidInput("youngs_modulus",
+                       "two rigid bodies have no Hertz contact (both moduli "
+                       "are infinite)");
   const double stiffness = 1.0 / (0.75 * compliance * std::sqrt(curvature));
   if (!std::isfinite(stiffness))
-    throw InvalidInput("youngs_modulus", "the Hertz stiffness of these bodies overflows (is not "
-                                         "a finite number)");
+    throw InvalidInput("youngs_modulus",
+                       "the Hertz stiffness of these bodies overflows (is not "
+                       "a finite number)");
   return stiffness;
 }
 

@@ -30,8 +30,7 @@ constexpr double epsilon = std::numeric_limits<double>::epsilon();
 // Both phase integrals have an integrable power singularity at u = 0 (the ends of the
 // contact, where f(x) -> 0) and none elsewhere: double-exponential quadrature, which also
 // keeps the abscissas next to a lower limit of 0 exact.
-double integrate_density(const std::function<double(double)>& density, double lower,
-                         double upper) {
+double integrate_density(const std::function<double(double)>& density, double lower, double upper) {
   if (upper <= lower) return 0.0;
   // (Not const: Boost 1.74 declares integrate const but defines the one-argument form without.)
   thread_local boost::math::quadrature::tanh_sinh<double> quadrature;
@@ -104,9 +103,10 @@ std::vector<double> invert_cumulative_integral(const std::function<double(double
       if (step > 0.0 && previous_root + step < upper) guess = previous_root + step;
     }
     boost::uintmax_t iterations = 100;
-    const double root = boost::math::tools::newton_raphson_iterate(
-        equation, guess, previous_root, upper, std::numeric_limits<double>::digits - 6,
-        iterations);
+    const double root =
+        boost::math::tools::newton_raphson_iterate(equation, guess, previous_root, upper,
+                                                   std::numeric_limits<double>::digits - 6,
+                                                   iterations);
     previous_target = target;
     previous_root = root;
     roots.push_back(root);
@@ -164,8 +164,8 @@ double impact_parameter_from_restitution(double restitution) {
       return sum;
     };
     const double guess = 1.5 * shortfall;
-    const auto [low, high] = boost::math::tools::toms748_solve(
-        residual, 0.5 * guess, 2.0 * guess, tolerance, iterations);
+    const auto [low, high] = boost::math::tools::toms748_solve(residual, 0.5 * guess, 2.0 * guess,
+                                                               tolerance, iterations);
     return 0.5 * (low + high);
   }
   // Elsewhere k(beta) is steep enough: solve k(beta) = e on log(beta), with k ~ 1/beta
@@ -187,19 +187,22 @@ double damping_from_restitution(double restitution, double velocity) {
 
 HuntCrossleyImpact::HuntCrossleyImpact(double mass, double stiffness, double exponent,
                                        double damping, double velocity)
-  : HuntCrossleyImpact(mass, nullptr, damping, velocity, PowerLawForce(stiffness, exponent)) {}
+    : HuntCrossleyImpact(mass, nullptr, damping, velocity, PowerLawForce(stiffness, exponent)) {}
 
 HuntCrossleyImpact::HuntCrossleyImpact(double mass,
                                        std::shared_ptr<const ElasticForce> elastic_force,
                                        double damping, double velocity)
-  : HuntCrossleyImpact(mass, std::move(elastic_force), damping, velocity, std::nullopt) {}
+    : HuntCrossleyImpact(mass, std::move(elastic_force), damping, velocity, std::nullopt) {}
 
 HuntCrossleyImpact::HuntCrossleyImpact(double mass,
                                        std::shared_ptr<const ElasticForce> custom_force,
                                        double damping, double velocity,
                                        std::optional<PowerLawForce> power_law)
-  : mass_(mass), power_law_(std::move(power_law)), custom_force_(std::move(custom_force)),
-    damping_(damping), velocity_(velocity) {
+    : mass_(mass),
+      power_law_(std::move(power_law)),
+      custom_force_(std::move(custom_force)),
+      damping_(damping),
+      velocity_(velocity) {
   require_positive("mass", mass);
   require_non_negative("damping", damping);
   require_positive("velocity", velocity);
@@ -228,8 +231,8 @@ HuntCrossleyImpact::HuntCrossleyImpact(double mass,
   if (!power_law_) {
     for (const double breakpoint : elastic_force().breakpoints()) {
       if (!(breakpoint > 0 && breakpoint < approach_max_)) continue;
-      compression_breaks_.push_back(
-          velocity_ - approach_rate(breakpoint, ImpactPhase::compression));
+      compression_breaks_.push_back(velocity_ -
+                                    approach_rate(breakpoint, ImpactPhase::compression));
       const double rate = approach_rate(breakpoint, ImpactPhase::restitution);
       restitution_breaks_.push_back(restitution_in_log_rate_
                                         ? log_rate_span_ + std::log1p(damping_ * rate)
@@ -267,11 +270,11 @@ double HuntCrossleyImpact::approach_rate(double approach, ImpactPhase phase) con
     const __float128 potential_per_mass = __float128(power_law_->stiffness()) *
                                           powq(__float128(approach), exponent + 1) /
                                           ((exponent + 1) * __float128(mass_));
-    energy_twice =
-        static_cast<double>(2 * (speed * speed * quad_log1p_excess_ratio(beta) - potential_per_mass));
+    energy_twice = static_cast<double>(
+        2 * (speed * speed * quad_log1p_excess_ratio(beta) - potential_per_mass));
   } else {
-    energy_twice = 2.0 * (velocity_ * velocity_ * excess_ratio_ -
-                          elastic_force().potential(approach) / mass_);
+    energy_twice =
+        2.0 * (velocity_ * velocity_ * excess_ratio_ - elastic_force().potential(approach) / mass_);
   }
   const double speed = std::sqrt(std::max(energy_twice, 0.0));
   // v = -y / b with y = p branch_ratio(p), p = -+ b speed (lower branch while compressing).
@@ -286,9 +289,9 @@ double HuntCrossleyImpact::compression_energy(double distance) const {
 double HuntCrossleyImpact::restitution_energy(double distance) const {
   if (!restitution_in_log_rate_) return -velocity_work(damping_, rebound_velocity(), distance);
   // P b^2 / m = u - exp(-psi_out) expm1(u), written without overflow for large u.
-  const double decayed = distance < 1.0 ? separation_force_factor_ * std::expm1(distance)
-                                        : std::exp(distance - log_rate_span_) -
-                                              separation_force_factor_;
+  const double decayed = distance < 1.0
+                             ? separation_force_factor_ * std::expm1(distance)
+                             : std::exp(distance - log_rate_span_) - separation_force_factor_;
   return (distance - decayed) / (damping_ * damping_);
 }
 
@@ -303,12 +306,14 @@ double HuntCrossleyImpact::restitution_span() const {
 
 // dt = -m dv / ((1 + b v) f(x(v))): Newton's law, with x(v) from the energy balance.
 double HuntCrossleyImpact::compression_time_density(double distance) const {
-  const double approach = elastic_force().approach_at_potential(mass_ * compression_energy(distance));
+  const double approach =
+      elastic_force().approach_at_potential(mass_ * compression_energy(distance));
   return mass_ / ((1.0 + damping_ * (velocity_ - distance)) * elastic_force().force(approach));
 }
 
 double HuntCrossleyImpact::restitution_time_density(double distance) const {
-  const double approach = elastic_force().approach_at_potential(mass_ * restitution_energy(distance));
+  const double approach =
+      elastic_force().approach_at_potential(mass_ * restitution_energy(distance));
   // dt = -m dv / ((1 + b v) f) = (m / b) dpsi / f.
   if (restitution_in_log_rate_) return mass_ / (damping_ * elastic_force().force(approach));
   return mass_ / ((1.0 + damping_ * restitution_rate(distance)) * elastic_force().force(approach));
@@ -353,7 +358,9 @@ double HuntCrossleyImpact::restitution_time_from(double distance) const {
                              restitution_breaks_);
 }
 
-double HuntCrossleyImpact::compression_time() const { return compression_time_until(velocity_); }
+double HuntCrossleyImpact::compression_time() const {
+  return compression_time_until(velocity_);
+}
 
 double HuntCrossleyImpact::contact_time() const {
   return compression_time() + restitution_time_from(restitution_span());
@@ -364,13 +371,12 @@ double HuntCrossleyImpact::restitution_time() const {
 }
 
 double HuntCrossleyImpact::time_at_approach(double approach, ImpactPhase phase) const {
-  const double rate = approach_rate(approach, phase);  // validates the approach
+  const double rate = approach_rate(approach, phase); // validates the approach
   if (phase == ImpactPhase::compression) return compression_time_until(velocity_ - rate);
   // The restitution distance from separation: u = v - v_out, or psi_out - psi with
   // psi = -log(1 + b v) where the phase is parametrised by the log rate.
-  const double distance = restitution_in_log_rate_
-                              ? log_rate_span_ + std::log1p(damping_ * rate)
-                              : rate - rebound_velocity();
+  const double distance = restitution_in_log_rate_ ? log_rate_span_ + std::log1p(damping_ * rate)
+                                                   : rate - rebound_velocity();
   const double span = restitution_span();
   return compression_time() + restitution_time_from(span) -
          restitution_time_from(std::clamp(distance, 0.0, span));
@@ -397,9 +403,9 @@ ImpactState HuntCrossleyImpact::force_peak() const {
       return exponent * (velocity_ - distance) -
              damping_ * (exponent + 1) * compression_energy(distance);
     };
-    const auto [low, high] = boost::math::tools::toms748_solve(
-        power_law_condition, 0.0, velocity_, exponent * velocity_,
-        power_law_condition(velocity_), tolerance, iterations);
+    const auto [low, high] =
+        boost::math::tools::toms748_solve(power_law_condition, 0.0, velocity_, exponent * velocity_,
+                                          power_law_condition(velocity_), tolerance, iterations);
     const double distance = 0.5 * (low + high);
     return compression_state(compression_time_until(distance), distance);
   }

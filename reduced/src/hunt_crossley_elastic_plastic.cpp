@@ -20,7 +20,7 @@ constexpr double epsilon = std::numeric_limits<double>::epsilon();
 class LoadingBranch final : public ElasticForce {
 public:
   explicit LoadingBranch(std::shared_ptr<const ElasticPlasticContact> spring)
-    : spring_(std::move(spring)) {}
+      : spring_(std::move(spring)) {}
   double force(double approach) const override { return spring_->loading_force(approach); }
   double potential(double approach) const override { return spring_->loading_work(approach); }
   double slope(double approach) const override { return spring_->loading_stiffness(approach); }
@@ -53,9 +53,9 @@ std::shared_ptr<const ElasticForce> loading_branch(
 HuntCrossleyElasticPlasticImpact::HuntCrossleyElasticPlasticImpact(
     double mass, std::shared_ptr<const ElasticPlasticContact> spring, double damping,
     double velocity)
-  : spring_(validated(spring)), loading_(mass, loading_branch(spring_), damping, velocity) {
+    : spring_(validated(spring)), loading_(mass, loading_branch(spring_), damping, velocity) {
   restitution_ = loading_.restitution();
-  if (dynamic_cast<const HertzContact*>(spring_.get())) return;  // unloads along F_L
+  if (dynamic_cast<const HertzContact*>(spring_.get())) return; // unloads along F_L
 
   const double approach_max = loading_.approach_max();
   const HertzianUnloading branch = spring_->unloading(approach_max);
@@ -92,8 +92,8 @@ double HuntCrossleyElasticPlasticImpact::approach_rate(double approach, ImpactPh
             << "] m while restoring (got " << approach << ")";
     throw InvalidInput("approach", message.str());
   }
-  const double shifted = std::clamp(approach - unloading_.residual_approach, 0.0,
-                                    unloading_impact_->approach_max());
+  const double shifted =
+      std::clamp(approach - unloading_.residual_approach, 0.0, unloading_impact_->approach_max());
   return unloading_impact_->approach_rate(shifted, ImpactPhase::restitution);
 }
 
@@ -107,7 +107,9 @@ double HuntCrossleyElasticPlasticImpact::force(double approach, double approach_
   return spring_force * (1 + damping() * approach_rate);
 }
 
-ImpactState HuntCrossleyElasticPlasticImpact::force_peak() const { return loading_.force_peak(); }
+ImpactState HuntCrossleyElasticPlasticImpact::force_peak() const {
+  return loading_.force_peak();
+}
 
 double HuntCrossleyElasticPlasticImpact::compression_time() const {
   return loading_.compression_time();

@@ -46,9 +46,9 @@ double HuntCrossleyImpact::phase_energy_ratio(ImpactPhase phase, double distance
     return ((1.0 + impact_parameter()) * growth - 1.0) / b2;
   }
   if (distance <= 0) return (1.0 - separation_force_factor_) / b2;
-  const double decayed = distance < 1.0 ? separation_force_factor_ * std::expm1(distance)
-                                        : std::exp(distance - log_rate_span_) -
-                                              separation_force_factor_;
+  const double decayed = distance < 1.0
+                             ? separation_force_factor_ * std::expm1(distance)
+                             : std::exp(distance - log_rate_span_) - separation_force_factor_;
   return (1.0 - decayed / distance) / b2;
 }
 
@@ -81,9 +81,9 @@ std::vector<ImpactState> HuntCrossleyImpact::power_law_history(std::size_t point
   const double exponent = power_law_->exponent();
   const double alpha = exponent / (exponent + 1);
   const double power = exponent + 1;
-  const double time_scale = mass_ / (std::pow(power_law_->stiffness(), 1.0 / power) *
-                                     std::pow(power * mass_, alpha)) /
-                            (restitution_in_log_rate_ ? damping_ : 1.0);
+  const double time_scale =
+      mass_ / (std::pow(power_law_->stiffness(), 1.0 / power) * std::pow(power * mass_, alpha)) /
+      (restitution_in_log_rate_ ? damping_ : 1.0);
   constexpr double tolerance = 1e-14;
   auto make_map = [&](ImpactPhase phase) {
     const double extent = phase_extent(phase);
@@ -92,8 +92,8 @@ std::vector<ImpactState> HuntCrossleyImpact::power_law_history(std::size_t point
     const double approach_scale =
         std::pow(power * mass_ * extent / power_law_->stiffness(), 1.0 / power);
     const double energy_scale = power * mass_ * extent;
-    const auto density = [&, extent, factor, approach_scale, energy_scale](
-                             double, double sigma_power, double* state) {
+    const auto density = [&, extent, factor, approach_scale,
+                          energy_scale](double, double sigma_power, double* state) {
       const double distance = extent * sigma_power;
       const double ratio = phase_energy_ratio(phase, distance);
       const double root = std::pow(ratio, -alpha); // e^(-alpha)
@@ -167,13 +167,14 @@ ImpactState HuntCrossleyImpact::state_at(double time) const {
     throw InvalidInput("time", message.str());
   }
   if (time <= compression) {
-    const auto distance = invert_cumulative_integral(
-        [this](double u) { return compression_time_density(u); }, {time}, velocity_);
+    const auto distance =
+        invert_cumulative_integral([this](double u) { return compression_time_density(u); }, {time},
+                                   velocity_);
     return compression_state(time, distance[0]);
   }
-  const auto distance = invert_cumulative_integral(
-      [this](double u) { return restitution_time_density(u); }, {total - time},
-      restitution_span());
+  const auto distance =
+      invert_cumulative_integral([this](double u) { return restitution_time_density(u); },
+                                 {total - time}, restitution_span());
   return restitution_state(time, distance[0]);
 }
 
@@ -209,7 +210,8 @@ std::vector<ImpactState> HuntCrossleyImpact::quadrature_history(std::size_t poin
   const auto compression_distances =
       invert_cumulative_integral(compression_density, compression_elapsed, velocity_);
   for (std::size_t j = 0; j < compression_index.size(); ++j)
-    states[compression_index[j]] = compression_state(compression_elapsed[j], compression_distances[j]);
+    states[compression_index[j]] =
+        compression_state(compression_elapsed[j], compression_distances[j]);
   const auto restitution_distances =
       invert_cumulative_integral(restitution_density, restitution_remaining, restitution_extent);
   for (std::size_t j = 0; j < restitution_index.size(); ++j)

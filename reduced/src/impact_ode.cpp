@@ -27,8 +27,8 @@ using detail::describe;
 using Stepper = detail::EventStepper<2>;
 using State = Stepper::State; // scaled approach X, scaled approach rate U
 
-constexpr double time_limit = 1e5;            // in characteristic times T
-constexpr std::size_t step_limit = 1000000;   // accepted steps
+constexpr double time_limit = 1e5;          // in characteristic times T
+constexpr std::size_t step_limit = 1000000; // accepted steps
 
 // The approach L with L * F(L, V) = m V^2, by a decade scan and bisection in log L.
 // Fails if the law offers (almost) no resistance to the approach.
@@ -65,7 +65,7 @@ class ImpactIntegration {
 public:
   ImpactIntegration(double mass, double velocity, const ContactForceLaw& force,
                     double relative_tolerance, ContactEnd end)
-    : mass_(mass), velocity_(velocity), force_(force), end_(end) {
+      : mass_(mass), velocity_(velocity), force_(force), end_(end) {
     require_positive("mass", mass);
     require_positive("velocity", velocity);
     if (!(relative_tolerance >= 1e-14 && relative_tolerance <= 1e-3))
@@ -150,8 +150,7 @@ private:
       const double length = step.length;
       double event_start = 0; // where the search for a later event in this step begins
       if (compressing && y[1] <= 0) {
-        const double h =
-            locate(start, 0.0, length, [](const State& s) { return s[1]; });
+        const double h = locate(start, 0.0, length, [](const State& s) { return s[1]; });
         compression_time_ = start_time + h;
         approach_max_ = advance(start, h)[0];
         compressing = false;
@@ -247,12 +246,11 @@ OdeImpactResult integrate_impact(double mass, double velocity, const ContactForc
 }
 
 std::vector<ImpactSample> integrate_impact_history(double mass, double velocity,
-                                                   const ContactForceLaw& force,
-                                                   std::size_t points,
+                                                   const ContactForceLaw& force, std::size_t points,
                                                    double relative_tolerance, ContactEnd end) {
   if (points < 2)
-    throw InvalidInput("points", "points must be a whole number >= 2 (got " +
-                                     std::to_string(points) + ")");
+    throw InvalidInput("points",
+                       "points must be a whole number >= 2 (got " + std::to_string(points) + ")");
   return ImpactIntegration(mass, velocity, force, relative_tolerance, end).history(points);
 }
 

@@ -6,7 +6,7 @@
 namespace impact::reduced {
 
 InvalidInput::InvalidInput(std::string parameter, const std::string& message)
-  : std::invalid_argument(message), parameter_(std::move(parameter)) {}
+    : std::invalid_argument(message), parameter_(std::move(parameter)) {}
 
 namespace {
 [[noreturn]] void reject(const char* parameter, double value, const char* allowed) {

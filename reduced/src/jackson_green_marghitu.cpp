@@ -17,9 +17,9 @@ double jackson_green_marghitu_restitution(double velocity_ratio, double yield_st
   if (!(e > 0))
     throw InvalidInput("velocity_ratio",
                        "velocity_ratio: the Jackson-Green-Marghitu fit gives e = " +
-                           std::to_string(e) + " <= 0 at V/V_c = " +
-                           std::to_string(velocity_ratio) + " (eps_y = " +
-                           std::to_string(yield_strain) +
+                           std::to_string(e) +
+                           " <= 0 at V/V_c = " + std::to_string(velocity_ratio) +
+                           " (eps_y = " + std::to_string(yield_strain) +
                            "): the velocity is beyond the range the fit can describe");
   return e;
 }
@@ -32,8 +32,8 @@ double jackson_green_marghitu_yield_strain(const SphereFlatContact& contact) {
 }
 
 double jackson_green_marghitu_critical_velocity(const SphereFlatContact& contact, double mass) {
-  const double p_c = yield_pressure(YieldCriterion::jackson_green, contact.yield_strength,
-                                    contact.poisson_ratio);
+  const double p_c =
+      yield_pressure(YieldCriterion::jackson_green, contact.yield_strength, contact.poisson_ratio);
   return yield_velocity(p_c, contact.contact_modulus, contact.radius, mass);
 }
 

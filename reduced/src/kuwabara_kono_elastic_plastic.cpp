@@ -67,15 +67,17 @@ OdeImpactResult kuwabara_kono_elastic_plastic_impact(double mass, double velocit
                           relative_tolerance, ContactEnd::zero_force);
 }
 
-std::vector<ImpactSample> kuwabara_kono_elastic_plastic_history(
-    double mass, double velocity, const ElasticPlasticContact& spring,
-    double dissipative_constant, std::size_t points, double relative_tolerance) {
+std::vector<ImpactSample> kuwabara_kono_elastic_plastic_history(double mass, double velocity,
+                                                                const ElasticPlasticContact& spring,
+                                                                double dissipative_constant,
+                                                                std::size_t points,
+                                                                double relative_tolerance) {
   validate(mass, velocity, dissipative_constant);
   const double approach_max =
       approach_max_of(mass, velocity, spring, dissipative_constant, relative_tolerance);
   return integrate_impact_history(mass, velocity,
-                                  switched_law(spring, dissipative_constant, approach_max),
-                                  points, relative_tolerance, ContactEnd::zero_force);
+                                  switched_law(spring, dissipative_constant, approach_max), points,
+                                  relative_tolerance, ContactEnd::zero_force);
 }
 
 } // namespace impact::reduced

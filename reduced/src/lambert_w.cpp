@@ -25,8 +25,7 @@ double refine(double w, double z) {
 double lambert_w0(double z) {
   require_finite("z", z);
   const double branch_point = -boost::math::constants::exp_minus_one<double>();
-  if (z < branch_point)
-    throw InvalidInput("z", "z must be >= -1/e for the principal branch W0");
+  if (z < branch_point) throw InvalidInput("z", "z must be >= -1/e for the principal branch W0");
   return refine(boost::math::lambert_w0(z), z);
 }
 

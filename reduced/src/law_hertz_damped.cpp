@@ -61,9 +61,10 @@ ComparisonLaw flores() {
 }
 
 ComparisonLaw gonthier() {
-  return hertz_damped("gonthier", "b = (1 - e^2) / (e V)",
-                      "Gonthier, McPhee, Lange and Piedboeuf, Multibody Syst. Dyn. 11 (2004) 209-233",
-                      [](double e, double v) { return (1 - e * e) / (e * v); });
+  return hertz_damped(
+      "gonthier", "b = (1 - e^2) / (e V)",
+      "Gonthier, McPhee, Lange and Piedboeuf, Multibody Syst. Dyn. 11 (2004) 209-233",
+      [](double e, double v) { return (1 - e * e) / (e * v); });
 }
 
 ComparisonLaw hu_guo() {

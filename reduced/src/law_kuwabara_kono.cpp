@@ -70,9 +70,9 @@ double scaled_damping_for_restitution(double restitution, ContactEnd end) {
     upper_gap = gap(upper);
   }
   std::uintmax_t iterations = 100;
-  const auto root = boost::math::tools::toms748_solve(
-      gap, lower, upper, lower_gap, upper_gap, boost::math::tools::eps_tolerance<double>(36),
-      iterations);
+  const auto root =
+      boost::math::tools::toms748_solve(gap, lower, upper, lower_gap, upper_gap,
+                                        boost::math::tools::eps_tolerance<double>(36), iterations);
   return 0.5 * (root.first + root.second);
 }
 
@@ -109,8 +109,9 @@ ComparisonLaw viscoelastic_sphere_law(ContactEnd end) {
                 (no_tension ? ", contact ends when F returns to 0 (no tension)" : "") +
                 ", A from the exactly integrated restitution (root finding; e depends on "
                 "A (c/m)^(2/5) V^(1/5) only)";
-  law.reference = "Kuwabara and Kono, Jpn. J. Appl. Phys. 26 (1987) 1230; Brilliantov et al., "
-                  "Phys. Rev. E 53 (1996) 5382; Ramirez et al., Phys. Rev. E 60 (1999) 4465";
+  law.reference =
+      "Kuwabara and Kono, Jpn. J. Appl. Phys. 26 (1987) 1230; Brilliantov et al., "
+      "Phys. Rev. E 53 (1996) 5382; Ramirez et al., Phys. Rev. E 60 (1999) 4465";
   law.damping_name = "A";
   law.damping_unit = "s";
   law.required_exponent = 1.5;
@@ -127,8 +128,12 @@ ComparisonLaw viscoelastic_sphere_law(ContactEnd end) {
 
 } // namespace
 
-ComparisonLaw kuwabara_kono() { return viscoelastic_sphere_law(ContactEnd::zero_approach); }
-ComparisonLaw kuwabara_kono_no_tension() { return viscoelastic_sphere_law(ContactEnd::zero_force); }
+ComparisonLaw kuwabara_kono() {
+  return viscoelastic_sphere_law(ContactEnd::zero_approach);
+}
+ComparisonLaw kuwabara_kono_no_tension() {
+  return viscoelastic_sphere_law(ContactEnd::zero_force);
+}
 
 } // namespace laws
 } // namespace impact::reduced

@@ -60,8 +60,12 @@ ComparisonLaw tsuji_law(bool clamped) {
 
 } // namespace
 
-ComparisonLaw tsuji() { return tsuji_law(false); }
-ComparisonLaw tsuji_clamped() { return tsuji_law(true); }
+ComparisonLaw tsuji() {
+  return tsuji_law(false);
+}
+ComparisonLaw tsuji_clamped() {
+  return tsuji_law(true);
+}
 
 } // namespace laws
 } // namespace impact::reduced

@@ -14,18 +14,20 @@ namespace {
 constexpr double pi = 3.14159265358979323846;
 
 // 1 - (1 - s)^(5/2) for 0 <= s <= 1, without cancellation for small s.
-double five_halves_drop(double s) { return -std::expm1(2.5 * std::log1p(-s)); }
+double five_halves_drop(double s) {
+  return -std::expm1(2.5 * std::log1p(-s));
+}
 
 } // namespace
 
 LiggghtsThorntonImpact::LiggghtsThorntonImpact(const ThorntonParameters& parameters,
                                                double velocity)
     : thornton_(parameters, velocity), response_(thornton_.response()) {
-  if (thornton_.velocity_ratio() <= 1) return;  // Hertz's impact: no plastic loading
+  if (thornton_.velocity_ratio() <= 1) return; // Hertz's impact: no plastic loading
   const double mass = parameters.mass;
   const double k = thornton_.contact().hertz_stiffness();
   const double x_max = response_.approach_max, f_max = response_.force_max;
-  const double peak_hertz = k * std::pow(x_max, 1.5);  // > F* once the contact has yielded
+  const double peak_hertz = k * std::pow(x_max, 1.5); // > F* once the contact has yielded
   const double separation = std::pow(std::max(peak_hertz - f_max, 0.0) / k, 2.0 / 3.0);
   const double u_s = std::sqrt(x_max - separation);
 
@@ -56,8 +58,7 @@ double LiggghtsThorntonImpact::unloading_force(double approach) const {
                                        "] m (the compression of this impact), got " +
                                        std::to_string(approach));
   const double k = thornton_.contact().hertz_stiffness();
-  const double force =
-      response_.force_max - k * (std::pow(x_max, 1.5) - std::pow(approach, 1.5));
+  const double force = response_.force_max - k * (std::pow(x_max, 1.5) - std::pow(approach, 1.5));
   return force > 0 ? force : 0.0;
 }
 

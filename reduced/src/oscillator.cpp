@@ -46,8 +46,7 @@ double linear_half_cycle_ratio(const PowerLawOscillator& o, double stiffness) {
 }
 
 std::vector<double> linear_decay(const PowerLawOscillator& o, int count) {
-  const double stiffness =
-      o.linear_stiffness + (o.power == 0 ? o.nonlinear_stiffness : 0.0);
+  const double stiffness = o.linear_stiffness + (o.power == 0 ? o.nonlinear_stiffness : 0.0);
   const double ratio = linear_half_cycle_ratio(o, stiffness);
   std::vector<double> amplitudes(count);
   double amplitude = o.initial_amplitude;
@@ -79,9 +78,10 @@ std::vector<double> implicit_recurrence(const PowerLawOscillator& o, int count) 
     double ratio = 1.0;
     if (at_one > 0) {
       std::uintmax_t iterations = 200;
-      const auto bracket = boost::math::tools::toms748_solve(
-          residual, 0.0, 1.0, at_zero, at_one, boost::math::tools::eps_tolerance<double>(),
-          iterations);
+      const auto bracket =
+          boost::math::tools::toms748_solve(residual, 0.0, 1.0, at_zero, at_one,
+                                            boost::math::tools::eps_tolerance<double>(),
+                                            iterations);
       ratio = (bracket.first + bracket.second) / 2;
     }
     a = amplitude *= ratio;
@@ -106,13 +106,15 @@ std::vector<double> lambert_recurrence(const PowerLawOscillator& o, int count, b
     if (!std::isfinite(s) || s < -std::exp(-1.0))
       reject("a0", "a0 = " + number(o.initial_amplitude) +
                        " m is too large for the explicit Lambert recurrence with this hardening "
-                       "c2: at extreme " + std::to_string(i + 1) + " the argument of W0, " +
-                       number(s) + ", is below -1/e, where W0 has no real value; use the "
+                       "c2: at extreme " +
+                       std::to_string(i + 1) + " the argument of W0, " + number(s) +
+                       ", is below -1/e, where W0 has no real value; use the "
                        "implicit or numeric method");
     if (elementary && !(s >= -0.2 && s <= 0.3))
       reject("a0", "a0 = " + number(o.initial_amplitude) +
                        " m is too large for the elementary approximation of W with this c2: at "
-                       "extreme " + std::to_string(i + 1) + " its argument, " + number(s) +
+                       "extreme " +
+                       std::to_string(i + 1) + " its argument, " + number(s) +
                        ", is outside [-0.2, 0.3], where it is accurate to 0.22 %; use the "
                        "exact W (method lambert)");
     // W(s)/s: exp(-W0(s)) exactly, or the elementary formula divided by s.
@@ -151,8 +153,8 @@ void validate_oscillator(const PowerLawOscillator& o) {
   } else if (c2 < 0) {
     const double barrier = std::pow(c1 / -c2, 1 / v);
     if (!(o.initial_amplitude < barrier))
-      reject("a0", "with softening (c2 < 0) a0 must be below (c1/|c2|)^(1/v) = " +
-                       number(barrier) + " m, where the restoring force vanishes (got " +
+      reject("a0", "with softening (c2 < 0) a0 must be below (c1/|c2|)^(1/v) = " + number(barrier) +
+                       " m, where the restoring force vanishes (got " +
                        number(o.initial_amplitude) + ")");
   }
 }
@@ -170,8 +172,10 @@ double averaging_coefficient(double power) {
 
 double lambert_w0_elementary(double z) {
   if (!std::isfinite(z) || !(z >= -0.2 && z <= 0.3))
-    reject("z", "the argument of the elementary approximation of W must be in [-0.2, 0.3] "
-                "(got " + number(z) + ")");
+    reject("z",
+           "the argument of the elementary approximation of W must be in [-0.2, 0.3] "
+           "(got " +
+               number(z) + ")");
   return z - z * z + 27 * z * z * z / (2 * (16 * z + 9));
 }
 
@@ -187,10 +191,14 @@ std::vector<double> free_decay_amplitudes(const PowerLawOscillator& o, int count
   }
   if (o.power == 0 || o.nonlinear_stiffness == 0) return linear_decay(o, count);
   switch (method) {
-  case AmplitudeMethod::implicit: return implicit_recurrence(o, count);
-  case AmplitudeMethod::lambert: return lambert_recurrence(o, count, false);
-  case AmplitudeMethod::lambert_approx: return lambert_recurrence(o, count, true);
-  case AmplitudeMethod::numeric: break;
+    case AmplitudeMethod::implicit:
+      return implicit_recurrence(o, count);
+    case AmplitudeMethod::lambert:
+      return lambert_recurrence(o, count, false);
+    case AmplitudeMethod::lambert_approx:
+      return lambert_recurrence(o, count, true);
+    case AmplitudeMethod::numeric:
+      break;
   }
   reject("method", "unknown amplitude method");
 }
@@ -200,8 +208,8 @@ AmplitudeMethod amplitude_method_from_name(const std::string& name) {
   if (name == "implicit") return AmplitudeMethod::implicit;
   if (name == "lambert") return AmplitudeMethod::lambert;
   if (name == "lambert-approx") return AmplitudeMethod::lambert_approx;
-  reject("method", "method must be one of numeric|implicit|lambert|lambert-approx (got '" +
-                       name + "')");
+  reject("method",
+         "method must be one of numeric|implicit|lambert|lambert-approx (got '" + name + "')");
 }
 
 } // namespace impact::reduced

@@ -95,13 +95,15 @@ void advance_to_event(const ScaledEquation& equation, State& state, double& tau,
     double event_step = tried;
     if (sign * next[component] < 0) {
       std::uintmax_t iterations = 100;
-      const auto bracket = boost::math::tools::toms748_solve(
-          component_after, 0.0, tried, sign * state[component], sign * next[component],
-          boost::math::tools::eps_tolerance<double>(), iterations);
-      event_step = std::abs(component_after(bracket.first)) <
-                           std::abs(component_after(bracket.second))
-                       ? bracket.first
-                       : bracket.second;
+      const auto bracket =
+          boost::math::tools::toms748_solve(component_after, 0.0, tried, sign * state[component],
+                                            sign * next[component],
+                                            boost::math::tools::eps_tolerance<double>(),
+                                            iterations);
+      event_step =
+          std::abs(component_after(bracket.first)) < std::abs(component_after(bracket.second))
+              ? bracket.first
+              : bracket.second;
     }
     single_step.do_step(equation, state, tau, next, event_step);
     state = next;
@@ -137,8 +139,7 @@ std::vector<OscillatorExtreme> free_decay_extremes(const PowerLawOscillator& o, 
                                     std::to_string(max_extreme_count) + "] (got " +
                                     std::to_string(count) + ")");
   const double linear_frequency = std::sqrt(o.linear_stiffness / o.mass);
-  ScaledEquation equation{o.viscous_damping / std::sqrt(o.linear_stiffness * o.mass), 0.0,
-                          o.power};
+  ScaledEquation equation{o.viscous_damping / std::sqrt(o.linear_stiffness * o.mass), 0.0, o.power};
   std::vector<OscillatorExtreme> extremes;
   extremes.reserve(count);
   double amplitude = o.initial_amplitude;

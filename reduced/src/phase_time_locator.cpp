@@ -20,8 +20,8 @@ constexpr int m = PhaseTimeMap::nodes;
 
 // sum_{j <= m} t_j T_j(x) and sum_{j < m} d_j T_j(x) at N points by Clenshaw's recurrence.
 template <int N>
-void time_and_density(const double* t, const double* d, const double (&x)[N],
-                      double (&time)[N], double (&density)[N]) {
+void time_and_density(const double* t, const double* d, const double (&x)[N], double (&time)[N],
+                      double (&density)[N]) {
   double t_next[N], t_after[N] = {}, d_next[N] = {}, d_after[N] = {};
   for (int i = 0; i < N; ++i) t_next[i] = t[m];
   for (int j = m - 1; j >= 1; --j)
@@ -67,10 +67,10 @@ void PhaseTimeMap::panel_samples(const Panel& panel, const double (&x)[N],
     double companions[phase_companions];
     for (int c = 0; c < phase_companions; ++c)
       companions[c] = series[c][0] + x[i] * next[i][c] - after[i][c];
-    samples[i] = quantities(
-        panel.lower + panel.half_width * (x[i] + 1.0),
-        series[phase_companions][0] + x[i] * next[i][phase_companions] - after[i][phase_companions],
-        companions);
+    samples[i] = quantities(panel.lower + panel.half_width * (x[i] + 1.0),
+                            series[phase_companions][0] + x[i] * next[i][phase_companions] -
+                                after[i][phase_companions],
+                            companions);
   }
 }
 
@@ -127,7 +127,7 @@ void PhaseTimeMap::solve_in_panel(const Panel& panel, const double (&times)[N],
 
 double PhaseTimeMap::panel_end_time(long panel) const {
   return static_cast<std::size_t>(panel) + 1 < panels_.size() ? panels_[panel + 1].start_time
-                                                             : duration_;
+                                                              : duration_;
 }
 
 bool PhaseTimeMap::fit_series(const double (&values)[series_count][nodes],
@@ -185,8 +185,7 @@ void PhaseTimeMap::evaluate_series(const SampleSeries& series, const double (&y)
 // errors of a few 1e-16 of it, which is the floor of the coefficients; the state then lies
 // within 1e-14 of a half panel from the exact one, a time error below 1e-14 of the panel's
 // duration) or a companion's not to its tolerance (the inverse is then not used).
-bool PhaseTimeMap::build_inverse(const Panel& panel, double end_time,
-                                 SampleSeries& inverse) const {
+bool PhaseTimeMap::build_inverse(const Panel& panel, double end_time, SampleSeries& inverse) const {
   const auto& cosine = cosine_table<m>();
   double times[m], x[m];
   for (int k = 0; k < m; ++k) {
@@ -216,10 +215,10 @@ double PhaseTimeMap::solve_in_first_piece(double time, double guess, double& tau
   // binomial series for |e| = |step / s| < 1e-3 (five terms: error below e^6 < 1e-18).
   const double p = power_;
   auto rescale = [p](double tau_before, double e) {
-    return tau_before *
-           (1 + p * e *
-                    (1 + (p - 1) / 2 * e *
-                             (1 + (p - 2) / 3 * e * (1 + (p - 3) / 4 * e * (1 + (p - 4) / 5 * e)))));
+    return tau_before * (1 + p * e *
+                                 (1 + (p - 1) / 2 * e *
+                                          (1 + (p - 2) / 3 * e *
+                                                   (1 + (p - 3) / 4 * e * (1 + (p - 4) / 5 * e)))));
   };
   const double target = time / first_upper_;
   double low = 0, high = 1;
@@ -264,12 +263,14 @@ bool PhaseTimeMap::build_first_inverse(double first_end, SampleSeries& inverse) 
 }
 
 PhaseTimeMap::Locator::Locator(const PhaseTimeMap& map)
-  : map_(map),
-    first_end_(map.first_upper_ > 0 ? map.first_upper_ * [&] {
-      double sum = 0;
-      for (double c : map.first_time_) sum += c;
-      return sum;
-    }() : 0.0) {}
+    : map_(map),
+      first_end_(map.first_upper_ > 0 ? map.first_upper_ *
+                                            [&] {
+                                              double sum = 0;
+                                              for (double c : map.first_time_) sum += c;
+                                              return sum;
+                                            }()
+                                      : 0.0) {}
 
 // Piece -1 is the first piece, 0, 1, ... the panels.
 long PhaseTimeMap::Locator::piece_of(double time) const {
@@ -310,9 +311,9 @@ void PhaseTimeMap::Locator::enter(long piece, double time, double spacing) {
 PhaseSample PhaseTimeMap::Locator::newton_sample(double time) {
   double guess;
   if (known_ == 0) {
-    guess = piece_ < 0 ? time / first_end_ // t is nearly linear in sigma
-                       : -1 + 2 * (time - piece_start(piece_)) /
-                                  (piece_end(piece_) - piece_start(piece_));
+    guess = piece_ < 0
+                ? time / first_end_ // t is nearly linear in sigma
+                : -1 + 2 * (time - piece_start(piece_)) / (piece_end(piece_) - piece_start(piece_));
   } else if (known_ == 1) {
     guess = known_x_[0];
   } else {

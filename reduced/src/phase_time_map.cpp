@@ -14,8 +14,7 @@ constexpr int m = PhaseTimeMap::nodes;
 
 } // namespace
 
-PhaseTimeMap::PhaseTimeMap(const Density& density, double power, double tolerance)
-  : power_(power) {
+PhaseTimeMap::PhaseTimeMap(const Density& density, double power, double tolerance) : power_(power) {
   double middle[phase_companions], end[phase_companions];
   density_tolerance_ = tolerance * density(0.5, std::pow(0.5, power), middle);
   density(1.0, 1.0, end);
@@ -80,14 +79,14 @@ void monomials(const double* chebyshev, double* monomial) {
 
 void check_density(double value) {
   if (!(std::isfinite(value) && value > 0))
-    throw std::runtime_error("internal error: the time density of an impact phase is not "
-                             "finite and positive");
+    throw std::runtime_error(
+        "internal error: the time density of an impact phase is not "
+        "finite and positive");
 }
 
 } // namespace
 
-PhaseTimeMap::Convergence PhaseTimeMap::build_first_piece(const Density& density,
-                                                          double upper) {
+PhaseTimeMap::Convergence PhaseTimeMap::build_first_piece(const Density& density, double upper) {
   constexpr int K = first_nodes;
   const auto& cosine = cosine_table<K>();
   // G and the companions at the Chebyshev points of tau in [0, 1], then their Chebyshev
@@ -106,8 +105,7 @@ PhaseTimeMap::Convergence PhaseTimeMap::build_first_piece(const Density& density
   Convergence convergence;
   convergence.density = chebyshev_coefficients<K>(values, density_tolerance_, chebyshev);
   for (int c = 0; c < phase_companions; ++c)
-    convergence.companions = chebyshev_coefficients<K>(companion_values[c],
-                                                       companion_tolerance_[c],
+    convergence.companions = chebyshev_coefficients<K>(companion_values[c], companion_tolerance_[c],
                                                        companion_chebyshev[c]) &&
                              convergence.companions;
   if (!convergence.density) return convergence;
@@ -121,7 +119,8 @@ PhaseTimeMap::Convergence PhaseTimeMap::build_first_piece(const Density& density
     first_time_[k] = monomial[k] / (k * power_ + 1.0);
     at_end += first_time_[k];
   }
-  for (int c = 0; c < phase_companions; ++c) monomials<K>(companion_chebyshev[c], first_companions_[c]);
+  for (int c = 0; c < phase_companions; ++c)
+    monomials<K>(companion_chebyshev[c], first_companions_[c]);
   duration_ = upper * at_end;
   return convergence;
 }
@@ -148,11 +147,9 @@ PhaseTimeMap::Convergence PhaseTimeMap::build_panel(const Density& density, doub
   }
   evaluations_ += m;
   Convergence convergence;
-  convergence.density =
-      chebyshev_coefficients<m>(values, density_tolerance_, panel.density);
+  convergence.density = chebyshev_coefficients<m>(values, density_tolerance_, panel.density);
   for (int c = 0; c < phase_companions; ++c)
-    convergence.companions = chebyshev_coefficients<m>(companion_values[c],
-                                                       companion_tolerance_[c],
+    convergence.companions = chebyshev_coefficients<m>(companion_values[c], companion_tolerance_[c],
                                                        panel.companions[c]) &&
                              convergence.companions;
   // Term-by-term integral from x = -1: int T_0 = T_1, int T_1 = T_2 / 4,

@@ -67,9 +67,9 @@ public:
 
 private:
   struct Panel {
-    double lower;      // sigma at the panel's left end
-    double half_width; // of the panel in sigma
-    double start_time; // t(lower)
+    double lower;           // sigma at the panel's left end
+    double half_width;      // of the panel in sigma
+    double start_time;      // t(lower)
     double density[nodes];  // Chebyshev coefficients of dt/dsigma on the panel (x in [-1, 1])
     double time[nodes + 1]; // Chebyshev coefficients of t - start_time on the panel
     double companions[phase_companions][nodes]; // Chebyshev coefficients of each companion

@@ -23,7 +23,9 @@ void validate(const SphereFlatContact& contact) {
   require_open_interval("poisson_ratio", contact.poisson_ratio, -1.0, 0.5);
 }
 
-double jackson_green_c(double poisson_ratio) { return 1.295 * std::exp(0.736 * poisson_ratio); }
+double jackson_green_c(double poisson_ratio) {
+  return 1.295 * std::exp(0.736 * poisson_ratio);
+}
 
 double hertz_load(double interference, const SphereFlatContact& contact) {
   return 4.0 / 3.0 * contact.contact_modulus * std::sqrt(contact.radius) *
@@ -70,9 +72,8 @@ double jackson_green_fit_slope(double ratio, const SphereFlatContact& contact, d
 
 double jackson_green_critical_interference(const SphereFlatContact& contact) {
   validate(contact);
-  const double ratio =
-      pi * jackson_green_c(contact.poisson_ratio) * contact.yield_strength /
-      (2 * contact.contact_modulus);
+  const double ratio = pi * jackson_green_c(contact.poisson_ratio) * contact.yield_strength /
+                       (2 * contact.contact_modulus);
   return ratio * ratio * contact.radius;
 }
 
@@ -141,9 +142,11 @@ double jackson_green_residual_interference(double interference_max,
 
 JacksonGreenContact::JacksonGreenContact(const SphereFlatContact& contact,
                                          JacksonGreenUnloading rule)
-  : contact_(contact), rule_(rule), critical_interference_(jackson_green_critical_interference(contact)),
-    transition_(jackson_green_transition * critical_interference_),
-    transition_work_(0.4 * hertz_load(transition_, contact) * transition_) {}
+    : contact_(contact),
+      rule_(rule),
+      critical_interference_(jackson_green_critical_interference(contact)),
+      transition_(jackson_green_transition * critical_interference_),
+      transition_work_(0.4 * hertz_load(transition_, contact) * transition_) {}
 
 double JacksonGreenContact::loading_force(double approach) const {
   if (approach <= transition_) return hertz_load(approach, contact_);
@@ -196,7 +199,7 @@ double JacksonGreenContact::loading_approach(double work) const {
 HertzianUnloading JacksonGreenContact::unloading(double approach_max) const {
   require_positive("approach_max", approach_max);
   const double force = loading_force(approach_max);
-  if (approach_max <= transition_)  // Hertz: R_u = R, no residual, exactly.
+  if (approach_max <= transition_) // Hertz: R_u = R, no residual, exactly.
     return {4.0 / 3.0 * contact_.contact_modulus * std::sqrt(contact_.radius), 0.0};
   if (rule_ == JacksonGreenUnloading::brake) {
     // Elastic recovery x_max P_m / P_Hertz(x_max); F = P_m at x_max fixes the stiffness.

@@ -51,8 +51,9 @@ void require_tolerance(double relative_tolerance) {
 class ThinPlateIntegration {
 public:
   ThinPlateIntegration(const ThinPlateImpact& system, double velocity, double relative_tolerance)
-    : exponent_(system.exponent()), beta_(system.damping() * velocity),
-      lambda_(system.zener_lambda(velocity)) {
+      : exponent_(system.exponent()),
+        beta_(system.damping() * velocity),
+        lambda_(system.zener_lambda(velocity)) {
     require_tolerance(relative_tolerance);
     time_unit_ = std::pow(system.mass() * std::pow(velocity, 1 - exponent_) / system.stiffness(),
                           1 / (exponent_ + 1));
@@ -77,7 +78,7 @@ public:
     result.plate_energy_fraction = 2 * separation_[3];
     result.damping_energy_fraction = 2 * separation_[4];
     result.plate_deflection = length_unit_ * separation_[2]; // w = z - x, x = 0
-    result.number_of_contacts = 1; // the only one: see thin_plate.hpp
+    result.number_of_contacts = 1;                           // the only one: see thin_plate.hpp
     result.zener_lambda = lambda_;
     return result;
   }
@@ -137,9 +138,8 @@ private:
         std::ostringstream message;
         message.precision(6);
         message << "the sphere does not leave the plate: after " << stepper_->steps().size()
-                << " steps, at t = " << time_unit_ * tau << " s, approach "
-                << length_unit_ * y[0] << " m, sphere velocity " << length_unit_ / time_unit_ * y[1]
-                << " m/s";
+                << " steps, at t = " << time_unit_ * tau << " s, approach " << length_unit_ * y[0]
+                << " m, sphere velocity " << length_unit_ / time_unit_ * y[1] << " m/s";
         throw std::runtime_error(message.str());
       }
       const auto& step = stepper_->step(y, tau, dtau);
@@ -194,15 +194,20 @@ double plate_point_impedance(const KirchhoffPlate& plate) {
 
 ThinPlateImpact::ThinPlateImpact(double stiffness, double exponent, double damping, double mass,
                                  double impedance)
-  : stiffness_(stiffness), exponent_(exponent), damping_(damping), mass_(mass),
-    impedance_(impedance) {
+    : stiffness_(stiffness),
+      exponent_(exponent),
+      damping_(damping),
+      mass_(mass),
+      impedance_(impedance) {
   require_positive("stiffness", stiffness);
   require_positive("exponent", exponent);
   require_non_negative("damping", damping);
   require_positive("mass", mass);
   if (!(impedance > 0)) // NaN fails too; +infinity is the rigid plate
-    throw InvalidInput("impedance", "impedance must be a number > 0, +infinity for a rigid "
-                                    "plate (got " + describe(impedance) + ")");
+    throw InvalidInput("impedance",
+                       "impedance must be a number > 0, +infinity for a rigid "
+                       "plate (got " +
+                           describe(impedance) + ")");
 }
 
 double ThinPlateImpact::zener_lambda(double velocity) const {
@@ -221,8 +226,8 @@ std::vector<ThinPlateSample> ThinPlateImpact::history(double velocity, std::size
                                                       double relative_tolerance) const {
   require_positive("velocity", velocity);
   if (points < 2)
-    throw InvalidInput("points", "points must be a whole number >= 2 (got " +
-                                     std::to_string(points) + ")");
+    throw InvalidInput("points",
+                       "points must be a whole number >= 2 (got " + std::to_string(points) + ")");
   return ThinPlateIntegration(*this, velocity, relative_tolerance).history(points);
 }
 
@@ -234,8 +239,8 @@ double zener_lambda(double sphere_radius, double sphere_density, double sphere_y
   require_open_interval("sphere_poisson_ratio", sphere_poisson_ratio, -1.0, 0.5);
   validate(plate);
   require_positive("velocity", velocity);
-  const double mass = 4.0 / 3.0 * pi * sphere_radius * sphere_radius * sphere_radius *
-                      sphere_density;
+  const double mass =
+      4.0 / 3.0 * pi * sphere_radius * sphere_radius * sphere_radius * sphere_density;
   const double stiffness =
       hertz_stiffness({sphere_youngs_modulus, sphere_poisson_ratio, sphere_radius},
                       {plate.youngs_modulus, plate.poisson_ratio});

@@ -16,7 +16,7 @@ constexpr double pi = 3.14159265358979323846;
 // (1 + d)^(3/2) - 1 - 3 d / 2 without cancellation: its binomial series for small d.
 double plastic_excess(double d) {
   if (d > 0.125) return std::pow(1 + d, 1.5) - 1 - 1.5 * d;
-  double coefficient = 0.375;  // binomial(3/2, 2)
+  double coefficient = 0.375; // binomial(3/2, 2)
   double power = d * d;
   double sum = 0;
   for (int k = 2; k < 60 && std::abs(coefficient * power) > 1e-18 * std::abs(sum); ++k) {
@@ -30,7 +30,7 @@ double plastic_excess(double d) {
 } // namespace
 
 ThorntonContact::ThorntonContact(double radius, double contact_modulus, double yield_pressure)
-  : radius_(radius), contact_modulus_(contact_modulus), yield_pressure_(yield_pressure) {
+    : radius_(radius), contact_modulus_(contact_modulus), yield_pressure_(yield_pressure) {
   require_positive("radius", radius);
   require_positive("contact_modulus", contact_modulus);
   require_positive("yield_pressure", yield_pressure);
@@ -63,9 +63,9 @@ double ThorntonContact::loading_approach(double work) const {
   if (work <= yield_work) return std::pow(2.5 * work / hertz_stiffness_, 0.4);
   // F_y d + k d^2 / 2 = W - W_y, the positive root written without cancellation.
   const double excess = work - yield_work;
-  return yield_approach_ +
-         2 * excess /
-             (yield_force_ + std::sqrt(yield_force_ * yield_force_ + 2 * plastic_stiffness_ * excess));
+  return yield_approach_ + 2 * excess /
+                               (yield_force_ + std::sqrt(yield_force_ * yield_force_ +
+                                                         2 * plastic_stiffness_ * excess));
 }
 
 double ThorntonContact::unloading_radius(double approach_max) const {
@@ -86,15 +86,16 @@ HertzianUnloading ThorntonContact::unloading(double approach_max) const {
 }
 
 ThorntonImpact::ThorntonImpact(const ThorntonParameters& parameters, double velocity)
-  : parameters_(parameters), velocity_(velocity),
-    contact_(parameters.radius, parameters.contact_modulus, parameters.yield_pressure) {
+    : parameters_(parameters),
+      velocity_(velocity),
+      contact_(parameters.radius, parameters.contact_modulus, parameters.yield_pressure) {
   require_positive("mass", parameters.mass);
   require_positive("velocity", velocity);
   const double mass = parameters.mass;
   yield_velocity_ = reduced::yield_velocity(parameters.yield_pressure, parameters.contact_modulus,
                                             parameters.radius, mass);
   const double c = contact_.hertz_stiffness();
-  const double hertz_factor = 0.4 * boost::math::beta(0.4, 0.5);  // (2/5) B(2/5, 1/2)
+  const double hertz_factor = 0.4 * boost::math::beta(0.4, 0.5); // (2/5) B(2/5, 1/2)
   // The Hertz approach x_H that the velocity would reach elastically, and its phase time.
   const double hertz_approach = std::pow(1.25 * mass * velocity * velocity / c, 0.4);
 
@@ -127,8 +128,7 @@ ThorntonImpact::ThorntonImpact(const ThorntonParameters& parameters, double velo
 
   // Hertz phase up to x_y: t = (x_H / V) (2/5) B(r^2; 2/5, 1/2) (incomplete Beta, since
   // (x_y / x_H)^(5/2) = r^2).
-  const double hertz_time =
-      0.4 * hertz_approach / velocity * boost::math::beta(0.4, 0.5, r * r);
+  const double hertz_time = 0.4 * hertz_approach / velocity * boost::math::beta(0.4, 0.5, r * r);
   // Plastic phase: harmonic about x_y - F_y / k, from x_y at speed sqrt(V^2 - V_y^2) to rest.
   const double k = contact_.plastic_stiffness();
   const double omega = std::sqrt(k / mass);

@@ -17,8 +17,8 @@ double body_constant(const std::string& prefix, double poisson_ratio, double dev
   require_non_negative((prefix + "deviatoric_retardation_time").c_str(), deviatoric);
   require_non_negative((prefix + "volumetric_retardation_time").c_str(), volumetric);
   const double nu = poisson_ratio;
-  const double shear = deviatoric * (1 - 2 * nu);  // tau_d (1 - 2 nu)
-  const double bulk = volumetric * (1 + nu);       // tau_v (1 + nu)
+  const double shear = deviatoric * (1 - 2 * nu); // tau_d (1 - 2 nu)
+  const double bulk = volumetric * (1 + nu);      // tau_v (1 + nu)
   const double denominator = 3 * nu * nu * (bulk + 2 * shear);
   if (denominator == 0) return 0.0; // no viscosity at all
   return (1 - nu) * (bulk - shear) * (bulk - shear) / denominator;
@@ -28,8 +28,7 @@ double body_constant(const std::string& prefix, double poisson_ratio, double dev
 
 double kuwabara_kono_dissipative_constant(double poisson_ratio, double deviatoric_retardation_time,
                                           double volumetric_retardation_time) {
-  return body_constant("", poisson_ratio, deviatoric_retardation_time,
-                       volumetric_retardation_time);
+  return body_constant("", poisson_ratio, deviatoric_retardation_time, volumetric_retardation_time);
 }
 
 double kuwabara_kono_dissipative_constant(const KelvinVoigtBody& first,
@@ -38,9 +37,9 @@ double kuwabara_kono_dissipative_constant(const KelvinVoigtBody& first,
   require_positive("second.youngs_modulus", second.youngs_modulus);
   const double a1 = body_constant("first.", first.poisson_ratio, first.deviatoric_retardation_time,
                                   first.volumetric_retardation_time);
-  const double a2 = body_constant("second.", second.poisson_ratio,
-                                  second.deviatoric_retardation_time,
-                                  second.volumetric_retardation_time);
+  const double a2 =
+      body_constant("second.", second.poisson_ratio, second.deviatoric_retardation_time,
+                    second.volumetric_retardation_time);
   const double k1 = (1 - first.poisson_ratio * first.poisson_ratio) / first.youngs_modulus;
   const double k2 = (1 - second.poisson_ratio * second.poisson_ratio) / second.youngs_modulus;
   return (k1 * a1 + k2 * a2) / (k1 + k2);

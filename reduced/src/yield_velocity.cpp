@@ -11,7 +11,9 @@ namespace {
 
 constexpr double pi = 3.14159265358979323846;
 
-void require_poisson(const char* name, double nu) { require_open_interval(name, nu, -1.0, 0.5); }
+void require_poisson(const char* name, double nu) {
+  require_open_interval(name, nu, -1.0, 0.5);
+}
 
 // A positive quantity that may also be +infinity (a flat, a fixed body).
 void require_positive_or_infinite(const char* name, double value) {
@@ -28,13 +30,15 @@ double contact_modulus(double youngs_modulus_1, double poisson_ratio_1, double y
   require_positive_or_infinite("youngs_modulus_2", youngs_modulus_2);
   require_poisson("poisson_ratio_2", poisson_ratio_2);
   if (std::isinf(youngs_modulus_1) && std::isinf(youngs_modulus_2))
-    throw InvalidInput("youngs_modulus_2", "youngs_modulus_2: two rigid bodies have no contact "
-                                           "modulus (both moduli are infinite)");
+    throw InvalidInput("youngs_modulus_2",
+                       "youngs_modulus_2: two rigid bodies have no contact "
+                       "modulus (both moduli are infinite)");
   const double e_star = 1.0 / ((1 - poisson_ratio_1 * poisson_ratio_1) / youngs_modulus_1 +
                                (1 - poisson_ratio_2 * poisson_ratio_2) / youngs_modulus_2);
   if (!std::isfinite(e_star))
-    throw InvalidInput("youngs_modulus_1", "youngs_modulus_1: the contact modulus of these "
-                                           "bodies overflows (is not a finite number)");
+    throw InvalidInput("youngs_modulus_1",
+                       "youngs_modulus_1: the contact modulus of these "
+                       "bodies overflows (is not a finite number)");
   return e_star;
 }
 
@@ -42,8 +46,9 @@ double effective_radius(double radius_1, double radius_2) {
   require_positive_or_infinite("radius_1", radius_1);
   require_positive_or_infinite("radius_2", radius_2);
   if (std::isinf(radius_1) && std::isinf(radius_2))
-    throw InvalidInput("radius_2", "radius_2: two flats have no Hertz contact (both radii "
-                                   "are infinite)");
+    throw InvalidInput("radius_2",
+                       "radius_2: two flats have no Hertz contact (both radii "
+                       "are infinite)");
   return 1.0 / (1.0 / radius_1 + 1.0 / radius_2);
 }
 
@@ -51,8 +56,9 @@ double effective_mass(double mass_1, double mass_2) {
   require_positive_or_infinite("mass_1", mass_1);
   require_positive_or_infinite("mass_2", mass_2);
   if (std::isinf(mass_1) && std::isinf(mass_2))
-    throw InvalidInput("mass_2", "mass_2: two fixed bodies cannot collide (both masses are "
-                                 "infinite)");
+    throw InvalidInput("mass_2",
+                       "mass_2: two fixed bodies cannot collide (both masses are "
+                       "infinite)");
   return 1.0 / (1.0 / mass_1 + 1.0 / mass_2);
 }
 

@@ -28,7 +28,8 @@ int main(int argc, char** argv) {
     namespace reduced = impact::reduced;
     const double mass = 0.1, stiffness = 1.76e10, dissipative_constant = 1.17e-6;
     const reduced::ContactSetup setup{mass, stiffness, 1.5};
-    const auto law = reduced::comparison_law("kuwabara-kono").force_law(dissipative_constant, setup);
+    const auto law =
+        reduced::comparison_law("kuwabara-kono").force_law(dissipative_constant, setup);
     for (double velocity : {0.5, 1.0, 2.0, 5.0}) {
       const auto result = reduced::integrate_impact(mass, velocity, law, 1e-12);
       const std::size_t steps = 300;

@@ -27,7 +27,9 @@ std::string lammps_executable() {
   return chosen ? chosen : IMPACT_LAMMPS;
 }
 
-std::string quoted(const std::string& text) { return "'" + text + "'"; }
+std::string quoted(const std::string& text) {
+  return "'" + text + "'";
+}
 
 std::string lammps_version(const fs::path& scratch) {
   const fs::path log = scratch / "version.txt";
@@ -35,11 +37,13 @@ std::string lammps_version(const fs::path& scratch) {
   std::ifstream in(log);
   std::string line;
   while (std::getline(in, line))
-    if (line.find("Large-scale Atomic/Molecular Massively Parallel Simulator") != std::string::npos) {
+    if (line.find("Large-scale Atomic/Molecular Massively Parallel Simulator") !=
+        std::string::npos) {
       const auto dash = line.find(" - ");
       return dash == std::string::npos ? line : line.substr(dash + 3);
     }
-  throw std::runtime_error("'" + lammps_executable() + " -h' does not name a LAMMPS version (is "
+  throw std::runtime_error("'" + lammps_executable() +
+                           " -h' does not name a LAMMPS version (is "
                            "the Debian package lammps installed? ./setup.sh)");
 }
 
@@ -62,7 +66,8 @@ DropFigures drop(const fs::path& deck, double velocity, double radius, const fs:
     if (line.empty() || line[0] == '#') continue;
     std::istringstream fields(line);
     double time, z, vz, fz;
-    if (!(fields >> time >> z >> vz >> fz)) throw std::runtime_error("bad line in " + trace.string() + ": " + line);
+    if (!(fields >> time >> z >> vz >> fz))
+      throw std::runtime_error("bad line in " + trace.string() + ": " + line);
     samples.push_back({time, radius - z, fz});
     rebound = vz;
   }

@@ -37,7 +37,9 @@ std::string liggghts_executable() {
   return chosen ? chosen : IMPACT_LIGGGHTS;
 }
 
-std::string quoted(const std::string& text) { return "'" + text + "'"; }
+std::string quoted(const std::string& text) {
+  return "'" + text + "'";
+}
 
 // "3.8.0" from the banner "LIGGGHTS (Version LIGGGHTS-PUBLIC 3.8.0, compiled ...)" of a run.
 std::string liggghts_version(const fs::path& log) {
@@ -51,7 +53,8 @@ std::string liggghts_version(const fs::path& log) {
       return line.substr(begin, line.find_first_of(", )", begin) - begin);
     }
   }
-  throw std::runtime_error(log.string() + " does not name a LIGGGHTS version (is the Debian "
+  throw std::runtime_error(log.string() +
+                           " does not name a LIGGGHTS version (is the Debian "
                            "package liggghts installed? ./setup.sh)");
 }
 
@@ -67,7 +70,8 @@ DropFigures drop(const fs::path& deck, double velocity, int steps, const fs::pat
     throw std::runtime_error("LIGGGHTS failed on " + deck.string() + " at V = " +
                              std::to_string(velocity) + " m/s (see " + log.string() + ")");
   std::ifstream in(trace);
-  if (!in) throw std::runtime_error("LIGGGHTS wrote no " + trace.string() + " (see " + log.string() + ")");
+  if (!in)
+    throw std::runtime_error("LIGGGHTS wrote no " + trace.string() + " (see " + log.string() + ")");
   std::vector<DropSample> samples;
   std::string line;
   double rebound = 0;

@@ -44,7 +44,7 @@ DropFigures drop(const mjModel* model, double velocity) {
     for (int c = 0; c < data->ncon; ++c) {
       mjtNum frame_force[6];
       mj_contactForce(model, data.get(), c, frame_force);
-      force += frame_force[0];  // normal component, in the contact frame
+      force += frame_force[0]; // normal component, in the contact frame
     }
     samples.push_back({data->time, radius - data->qpos[q + 2], force});
   };
@@ -53,7 +53,7 @@ DropFigures drop(const mjModel* model, double velocity) {
   bool touched = false;
   for (long step = 0; step < 100000000; ++step) {
     mj_step(model, data.get());
-    mj_forward(model, data.get());  // the contact force of the new state, not of the last
+    mj_forward(model, data.get()); // the contact force of the new state, not of the last
     record();
     touched = touched || samples.back().approach > 0;
     // Done once the sphere is clear of the plane after the contact.
@@ -74,7 +74,8 @@ int main(int argc, char** argv) {
     const auto& entry = entries.front();
     const std::string file = (entry.directory / entry.file).string();
     char error[1000] = "";
-    std::unique_ptr<mjModel, ModelDeleter> model(mj_loadXML(file.c_str(), nullptr, error, sizeof error));
+    std::unique_ptr<mjModel, ModelDeleter> model(
+        mj_loadXML(file.c_str(), nullptr, error, sizeof error));
     if (!model) throw std::runtime_error(file + ": " + error);
     std::vector<DropFigures> measured;
     for (double velocity : entry.velocities) measured.push_back(drop(model.get(), velocity));

@@ -34,7 +34,8 @@ json figures_json(const DropFigures& f) {
 json errors_json(const DropFigures& tool, const DropFigures& reference) {
   return {{"restitution", tool.restitution / reference.restitution - 1},
           {"energy_loss", (1 - tool.restitution * tool.restitution) /
-                                  (1 - reference.restitution * reference.restitution) - 1},
+                                  (1 - reference.restitution * reference.restitution) -
+                              1},
           {"contact_time", tool.contact_time / reference.contact_time - 1},
           {"force_max", tool.force_max / reference.force_max - 1}};
 }
@@ -47,8 +48,8 @@ DropFigures measure_drop(const std::vector<DropSample>& s, double impact_velocit
   while (first < s.size() && !(s[first].approach > 0)) ++first;
   if (first == 0 || first == s.size())
     throw std::runtime_error("the drop has no contact (or starts in contact)");
-  const double start = crossing(s[first - 1].time, s[first - 1].approach, s[first].time,
-                                s[first].approach);
+  const double start =
+      crossing(s[first - 1].time, s[first - 1].approach, s[first].time, s[first].approach);
   std::size_t end = first;
   double force_max = 0;
   while (end < s.size() && s[end].force != 0) force_max = std::max(force_max, s[end++].force);
@@ -91,11 +92,12 @@ std::vector<ExportEntry> read_export(const fs::path& directory, const std::strin
       entry.mass = manifest.at("sphere").at("mass").get<double>();
       entry.radius = manifest.at("sphere").at("radius").get<double>();
       const json& reference = item.at("reference_velocity");
-      entry.reference_velocity =
-          reference.is_number() ? reference.get<double>() : std::numeric_limits<double>::quiet_NaN();
+      entry.reference_velocity = reference.is_number() ? reference.get<double>()
+                                                       : std::numeric_limits<double>::quiet_NaN();
       entry.velocities = velocities;
       entry.fem = fem;
-      for (const auto& prediction : item.at("predictions")) entry.reduced_model.push_back(figures(prediction));
+      for (const auto& prediction : item.at("predictions"))
+        entry.reduced_model.push_back(figures(prediction));
       if (entry.reduced_model.size() != velocities.size())
         throw std::runtime_error("the predictions of " + entry.file + " do not match the runs");
       entries.push_back(entry);
@@ -108,7 +110,8 @@ std::vector<ExportEntry> read_export(const fs::path& directory, const std::strin
 }
 
 void write_simulator_run(const fs::path& output, const ExportEntry& entry,
-                         const std::string& tool_version, const std::vector<DropFigures>& measured) {
+                         const std::string& tool_version,
+                         const std::vector<DropFigures>& measured) {
   json runs = json::array();
   for (std::size_t i = 0; i < measured.size(); ++i)
     runs.push_back({{"impact_velocity", entry.velocities[i]},
@@ -117,18 +120,25 @@ void write_simulator_run(const fs::path& output, const ExportEntry& entry,
                     {"fem", figures_json(entry.fem[i])},
                     {"error_vs_reduced_model", errors_json(measured[i], entry.reduced_model[i])},
                     {"error_vs_fem", errors_json(measured[i], entry.fem[i])}});
-  const json result = {
-      {"format", "impact-simulator-run"},
-      {"format_version", 1},
-      {"tool", entry.tool},
-      {"tool_version", tool_version},
-      {"model", entry.model},
-      {"export", fs::absolute(entry.directory / "export.json").lexically_normal().string()},
-      {"file", entry.file},
-      {"reference_velocity", std::isfinite(entry.reference_velocity) ? json(entry.reference_velocity) : json(nullptr)},
-      {"units", {{"impact_velocity", "m/s"}, {"restitution", "1"}, {"energy_loss", "1 (1 - e^2)"},
-                 {"contact_time", "s"}, {"force_max", "N"}, {"errors", "1 (tool / reference - 1)"}}},
-      {"runs", runs}};
+  const json result = {{"format", "impact-simulator-run"},
+                       {"format_version", 1},
+                       {"tool", entry.tool},
+                       {"tool_version", tool_version},
+                       {"model", entry.model},
+                       {"export",
+                        fs::absolute(entry.directory / "export.json").lexically_normal().string()},
+                       {"file", entry.file},
+                       {"reference_velocity", std::isfinite(entry.reference_velocity)
+                                                  ? json(entry.reference_velocity)
+                                                  : json(nullptr)},
+                       {"units",
+                        {{"impact_velocity", "m/s"},
+                         {"restitution", "1"},
+                         {"energy_loss", "1 (1 - e^2)"},
+                         {"contact_time", "s"},
+                         {"force_max", "N"},
+                         {"errors", "1 (tool / reference - 1)"}}},
+                       {"runs", runs}};
   fs::create_directories(fs::absolute(output).parent_path());
   const fs::path temporary = output.string() + ".tmp";
   {
@@ -142,16 +152,19 @@ void write_simulator_run(const fs::path& output, const ExportEntry& entry,
 void print_simulator_run(const ExportEntry& entry, const std::vector<DropFigures>& measured) {
   std::printf("%s (%s, %s): errors against the reduced model | against the FEM\n",
               entry.tool.c_str(), entry.model.c_str(), entry.file.c_str());
-  std::printf("  V [m/s]   e          t_c [s]      F_max [N]   | de/e     dt/t     dF/F     | de/e    dt/t    dF/F\n");
+  std::printf(
+      "  V [m/s]   e          t_c [s]      F_max [N]   | de/e     dt/t     dF/F     | de/e    dt/t "
+      "   dF/F\n");
   for (std::size_t i = 0; i < measured.size(); ++i) {
     const auto& m = measured[i];
     const auto& r = entry.reduced_model[i];
     const auto& f = entry.fem[i];
-    std::printf("  %-8.4g  %-9.6f  %-11.5g  %-10.5g  | %+.1e %+.1e %+.1e | %+.2f%% %+.2f%% %+.2f%%\n",
-                entry.velocities[i], m.restitution, m.contact_time, m.force_max,
-                m.restitution / r.restitution - 1, m.contact_time / r.contact_time - 1,
-                m.force_max / r.force_max - 1, 100 * (m.restitution / f.restitution - 1),
-                100 * (m.contact_time / f.contact_time - 1), 100 * (m.force_max / f.force_max - 1));
+    std::printf(
+        "  %-8.4g  %-9.6f  %-11.5g  %-10.5g  | %+.1e %+.1e %+.1e | %+.2f%% %+.2f%% %+.2f%%\n",
+        entry.velocities[i], m.restitution, m.contact_time, m.force_max,
+        m.restitution / r.restitution - 1, m.contact_time / r.contact_time - 1,
+        m.force_max / r.force_max - 1, 100 * (m.restitution / f.restitution - 1),
+        100 * (m.contact_time / f.contact_time - 1), 100 * (m.force_max / f.force_max - 1));
   }
 }
 

@@ -20,9 +20,9 @@ struct DropSample {
 };
 
 struct DropFigures {
-  double restitution;   ///< rebound speed / impact speed
-  double contact_time;  ///< s, first touch to the end of the contact force
-  double force_max;     ///< N, largest sampled force
+  double restitution;  ///< rebound speed / impact speed
+  double contact_time; ///< s, first touch to the end of the contact force
+  double force_max;    ///< N, largest sampled force
 };
 
 /// The figures of one drop. The contact starts where x crosses 0 (linear interpolation: the
@@ -37,10 +37,10 @@ DropFigures measure_drop(const std::vector<DropSample>& samples, double impact_v
 /// An export of the manifest: the file to run, the sphere, the velocities and the figures
 /// that the export's reduced model and the FEM give at each.
 struct ExportEntry {
-  std::filesystem::path directory;   ///< the export directory
-  std::string tool, model, file;     ///< file relative to the directory
+  std::filesystem::path directory; ///< the export directory
+  std::string tool, model, file;   ///< file relative to the directory
   double mass, radius;
-  double reference_velocity;         ///< NaN when the export has none
+  double reference_velocity; ///< NaN when the export has none
   std::vector<double> velocities;
   std::vector<DropFigures> reduced_model, fem;
 };

@@ -48,7 +48,8 @@ json run_tool(const std::string& tool, const std::string& result) {
                               IMPACT_RUN_IN_SIMULATORS + "' '" + (work / "export").string() +
                               "' '" + output.string() + "' " + tool;
   const int status = std::system(command.c_str());
-  if (status != 0) throw std::runtime_error(command + " failed (status " + std::to_string(status) + ")");
+  if (status != 0)
+    throw std::runtime_error(command + " failed (status " + std::to_string(status) + ")");
   return read_json(output / result);
 }
 
@@ -62,7 +63,8 @@ Figures tool_figures(const json& run) {
 }
 
 const json& campaign_fit(const json& calibration, const std::string& model) {
-  if (model == "hunt-crossley") return calibration.at("campaign").at("hunt_crossley_hertz_exponent");
+  if (model == "hunt-crossley")
+    return calibration.at("campaign").at("hunt_crossley_hertz_exponent");
   for (const auto& law : calibration.at("campaign").at("comparison_laws"))
     if (law.at("model") == model) return law;
   throw std::runtime_error("the calibration has no " + model + " fit");
@@ -81,18 +83,21 @@ const json& calibration_run(const json& calibration, double velocity) {
 
 void print_against_fem(const std::string& label, const json& calibration, const json& result) {
   std::printf("%s against the FEM of the campaign (tool / FEM - 1):\n", label.c_str());
-  std::printf("  V [m/s]  e         1-e^2      t_c [s]      F_max [N]   | de/e     d(1-e^2)  dt/t     dF/F\n");
+  std::printf(
+      "  V [m/s]  e         1-e^2      t_c [s]      F_max [N]   | de/e     d(1-e^2)  dt/t     "
+      "dF/F\n");
   for (const auto& run : result.at("runs")) {
     const double velocity = run.at("impact_velocity");
     const Figures tool = tool_figures(run);
     const json& fem = calibration_run(calibration, velocity).at("measured");
     const double e = fem.at("restitution");
-    std::printf("  %-7.3g  %-8.6f  %-9.5f  %-11.5g  %-10.5g  | %+6.2f%%  %+7.2f%%  %+6.2f%%  %+6.2f%%\n",
-                velocity, tool.restitution, 1 - tool.restitution * tool.restitution,
-                tool.contact_time, tool.force_max, 100 * (tool.restitution / e - 1),
-                100 * ((1 - tool.restitution * tool.restitution) / (1 - e * e) - 1),
-                100 * (tool.contact_time / fem.at("contact_time").get<double>() - 1),
-                100 * (tool.force_max / fem.at("force_max").get<double>() - 1));
+    std::printf(
+        "  %-7.3g  %-8.6f  %-9.5f  %-11.5g  %-10.5g  | %+6.2f%%  %+7.2f%%  %+6.2f%%  %+6.2f%%\n",
+        velocity, tool.restitution, 1 - tool.restitution * tool.restitution, tool.contact_time,
+        tool.force_max, 100 * (tool.restitution / e - 1),
+        100 * ((1 - tool.restitution * tool.restitution) / (1 - e * e) - 1),
+        100 * (tool.contact_time / fem.at("contact_time").get<double>() - 1),
+        100 * (tool.force_max / fem.at("force_max").get<double>() - 1));
   }
 }
 
@@ -115,8 +120,10 @@ void expect_reproduces_law(const json& calibration, const json& result, const st
     } else {
       const reduced::ContactSetup setup{mass, c, 1.5};
       const double damping = parameter(fit, model == "tsuji" ? "eta" : "A");
-      const auto impact = reduced::integrate_impact(
-          mass, velocity, reduced::comparison_law(model).force_law(damping, setup), 1e-12);
+      const auto impact =
+          reduced::integrate_impact(mass, velocity,
+                                    reduced::comparison_law(model).force_law(damping, setup),
+                                    1e-12);
       law = {impact.restitution, impact.contact_time, impact.force_max};
     }
     const Figures tool = tool_figures(run);
@@ -205,9 +212,10 @@ TEST(Liggghts, ReproducesThorntonsLawAsLiggghtsImplementsIt) {
   const json& refined = result.at("refined").at("runs");
   ASSERT_EQ(runs.size(), calibration.at("runs").size());
   ASSERT_EQ(refined.size(), runs.size());
-  std::printf("LIGGGHTS thornton_ning against Thornton's law as LIGGGHTS integrates it (tool / law - 1;"
-              " N steps per Hertz contact time):\n"
-              "  V [m/s]  V/V_y   quantity      N = 5000   N = 10000  Richardson\n");
+  std::printf(
+      "LIGGGHTS thornton_ning against Thornton's law as LIGGGHTS integrates it (tool / law - 1;"
+      " N steps per Hertz contact time):\n"
+      "  V [m/s]  V/V_y   quantity      N = 5000   N = 10000  Richardson\n");
   std::vector<double> velocities, liggghts_restitution;
   for (std::size_t i = 0; i < runs.size(); ++i) {
     const double velocity = runs[i].at("impact_velocity");
@@ -223,7 +231,8 @@ TEST(Liggghts, ReproducesThorntonsLawAsLiggghtsImplementsIt) {
                   {"t_c", law.contact_time, coarse.contact_time, fine.contact_time, 4e-4},
                   {"F_max", law.force_max, coarse.force_max, fine.force_max, 5e-5}};
     for (const auto& check : checks) {
-      const double error_coarse = check.coarse / check.law - 1, error_fine = check.fine / check.law - 1;
+      const double error_coarse = check.coarse / check.law - 1,
+                   error_fine = check.fine / check.law - 1;
       const double richardson = (2 * check.fine - check.coarse) / check.law - 1;
       std::printf("  %-7.3g  %-6.3g  %-12s  %+.2e  %+.2e  %+.2e\n", velocity,
                   law_impact.velocity_ratio(), check.name, error_coarse, error_fine, richardson);
@@ -245,9 +254,10 @@ TEST(Liggghts, ReproducesThorntonsLawAsLiggghtsImplementsIt) {
   // surface energy) along F* - (4/3) E* sqrt(R) (x_max^1.5 - x^1.5). A third reading, the
   // Hertz curve of the original R about a permanent approach, W = (2/5) F* (F* / c)^(2/3), is
   // printed to show that LIGGGHTS does not follow it either.
-  std::printf("Restitution: LIGGGHTS (Richardson) and the reduced library with each unloading;"
-              " cost = LIGGGHTS / paper - 1:\n"
-              "  V [m/s]  V/V_y   LIGGGHTS   law (LIGGGHTS)  Thornton (R_p)  Hertz on R about x_p  cost\n");
+  std::printf(
+      "Restitution: LIGGGHTS (Richardson) and the reduced library with each unloading;"
+      " cost = LIGGGHTS / paper - 1:\n"
+      "  V [m/s]  V/V_y   LIGGGHTS   law (LIGGGHTS)  Thornton (R_p)  Hertz on R about x_p  cost\n");
   for (std::size_t i = 0; i < velocities.size(); ++i) {
     const double velocity = velocities[i];
     const double mass = calibration_run(calibration, velocity).at("mass");
@@ -255,12 +265,13 @@ TEST(Liggghts, ReproducesThorntonsLawAsLiggghtsImplementsIt) {
     const reduced::ThorntonImpact paper(parameters, velocity);
     const auto peak = paper.response();
     const double stiffness = paper.contact().hertz_stiffness();
-    const double on_r = std::sqrt(0.4 * peak.force_max * std::pow(peak.force_max / stiffness, 2.0 / 3.0) /
-                                  (0.5 * mass * velocity * velocity));
+    const double on_r =
+        std::sqrt(0.4 * peak.force_max * std::pow(peak.force_max / stiffness, 2.0 / 3.0) /
+                  (0.5 * mass * velocity * velocity));
     const double law = reduced::LiggghtsThorntonImpact(parameters, velocity).response().restitution;
     std::printf("  %-7.3g  %-6.3g  %.6f   %.6f        %.6f        %.6f              %+.2f%%\n",
-                velocity, paper.velocity_ratio(), liggghts_restitution[i], law,
-                peak.restitution, on_r, 100 * (liggghts_restitution[i] / peak.restitution - 1));
+                velocity, paper.velocity_ratio(), liggghts_restitution[i], law, peak.restitution,
+                on_r, 100 * (liggghts_restitution[i] / peak.restitution - 1));
     // The difference is far above the time-step error: the test tells the readings apart.
     EXPECT_GT(std::abs(liggghts_restitution[i] / peak.restitution - 1), 100 * 1e-5) << velocity;
     EXPECT_GT(std::abs(liggghts_restitution[i] / on_r - 1), 100 * 1e-5) << velocity;

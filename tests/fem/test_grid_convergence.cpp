@@ -9,22 +9,17 @@
 
 using impact_fem::verification::grid_convergence;
 
-namespace
-{
-  // f(h) = f0 + C h^p on h = 1, r, r^2.
-  double
-  value(const double f0, const double C, const double p, const double h)
-  {
-    return f0 + C * std::pow(h, p);
-  }
+namespace {
+// f(h) = f0 + C h^p on h = 1, r, r^2.
+double value(const double f0, const double C, const double p, const double h) {
+  return f0 + C * std::pow(h, p);
+}
 } // namespace
 
-
-TEST(GridConvergence, SecondOrderSequence)
-{
+TEST(GridConvergence, SecondOrderSequence) {
   const double r = 1.5, f0 = 102.5, C = 0.3;
-  const auto   g = grid_convergence(value(f0, C, 2, 1), value(f0, C, 2, r),
-                                  value(f0, C, 2, r * r), r, 2);
+  const auto g =
+      grid_convergence(value(f0, C, 2, 1), value(f0, C, 2, r), value(f0, C, 2, r * r), r, 2);
   EXPECT_EQ(g.convergence, "monotone");
   EXPECT_NEAR(g.observed_order, 2, 1e-12);
   EXPECT_NEAR(g.extrapolated, f0, 1e-12);
@@ -35,21 +30,17 @@ TEST(GridConvergence, SecondOrderSequence)
   EXPECT_GT(g.gci_absolute, std::abs(value(f0, C, 2, 1) - f0));
 }
 
-
-TEST(GridConvergence, AnOrderAboveTheFormalOneIsNotTrustedForTheIndex)
-{
+TEST(GridConvergence, AnOrderAboveTheFormalOneIsNotTrustedForTheIndex) {
   const double r = 2, f0 = 1, C = -0.01;
-  const auto   g = grid_convergence(value(f0, C, 4, 1), value(f0, C, 4, r),
-                                  value(f0, C, 4, r * r), r, 2);
+  const auto g =
+      grid_convergence(value(f0, C, 4, 1), value(f0, C, 4, r), value(f0, C, 4, r * r), r, 2);
   EXPECT_NEAR(g.observed_order, 4, 1e-10);
   EXPECT_NEAR(g.extrapolated, f0, 1e-12);
   const double e21 = std::abs(value(f0, C, 4, r) - value(f0, C, 4, 1));
   EXPECT_NEAR(g.gci_absolute, 1.25 * e21 / (r * r - 1), 1e-14); // q = 2, not 4
 }
 
-
-TEST(GridConvergence, OscillatoryAndDivergentSequencesGetTheConservativeIndex)
-{
+TEST(GridConvergence, OscillatoryAndDivergentSequencesGetTheConservativeIndex) {
   const auto oscillatory = grid_convergence(1.0, 1.01, 0.99, 1.5, 2);
   EXPECT_EQ(oscillatory.convergence, "oscillatory");
   EXPECT_TRUE(std::isnan(oscillatory.observed_order));
@@ -61,9 +52,7 @@ TEST(GridConvergence, OscillatoryAndDivergentSequencesGetTheConservativeIndex)
   EXPECT_NEAR(divergent.gci_absolute, 3 * 0.02, 1e-14);
 }
 
-
-TEST(GridConvergence, IdenticalValuesAreConverged)
-{
+TEST(GridConvergence, IdenticalValuesAreConverged) {
   const auto g = grid_convergence(0.9375, 0.9375, 0.9375, 1.5, 2);
   EXPECT_EQ(g.convergence, "converged");
   EXPECT_EQ(g.gci_absolute, 0);
@@ -73,9 +62,7 @@ TEST(GridConvergence, IdenticalValuesAreConverged)
   EXPECT_EQ(finest.gci_absolute, 0);
 }
 
-
-TEST(GridConvergence, BadInputThrows)
-{
+TEST(GridConvergence, BadInputThrows) {
   EXPECT_THROW(grid_convergence(1, 2, 3, 1.0, 2), std::invalid_argument);
   EXPECT_THROW(grid_convergence(1, 2, 3, 1.5, 0), std::invalid_argument);
   EXPECT_THROW(grid_convergence(NAN, 2, 3, 1.5, 2), std::invalid_argument);

@@ -6,65 +6,50 @@
 
 #include <cmath>
 
-namespace
-{
-  using namespace impact_fem::summary;
+namespace {
+using namespace impact_fem::summary;
 
-  // F = A (t - t0)^p on [t0, t0 + T/2], mirrored on the falling side: a
-  // pulse whose flanks are exact power laws, sampled at t_i = offset + i h.
-  struct Pulse
-  {
-    double t0, T, p, A;
-    double
-    operator()(const double t) const
-    {
-      const double s = std::min(t - t0, t0 + T - t);
-      return s > 0 ? A * std::pow(s, p) : 0.;
-    }
-  };
-
-  std::vector<double>
-  samples(const double offset, const double h, const std::size_t n)
-  {
-    std::vector<double> t(n);
-    for (std::size_t i = 0; i < n; ++i)
-      t[i] = offset + i * h;
-    return t;
+// F = A (t - t0)^p on [t0, t0 + T/2], mirrored on the falling side: a
+// pulse whose flanks are exact power laws, sampled at t_i = offset + i h.
+struct Pulse {
+  double t0, T, p, A;
+  double operator()(const double t) const {
+    const double s = std::min(t - t0, t0 + T - t);
+    return s > 0 ? A * std::pow(s, p) : 0.;
   }
+};
+
+std::vector<double> samples(const double offset, const double h, const std::size_t n) {
+  std::vector<double> t(n);
+  for (std::size_t i = 0; i < n; ++i) t[i] = offset + i * h;
+  return t;
+}
 } // namespace
 
-
-TEST(PowerLawZero, RecoversTheZeroOfAnExactPowerLawOfAnyExponent)
-{
+TEST(PowerLawZero, RecoversTheZeroOfAnExactPowerLawOfAnyExponent) {
   for (const double p : {0.5, 1.5, 2.5})
     for (const double fraction : {0.03, 0.5, 0.97})
-      for (const bool rising : {true, false})
-        {
-          const double h = 1e-7, zero = 4e-6;
-          std::vector<double> t, F;
-          for (int k = 1; k <= 12; ++k)
-            {
-              const double s = (k - 1 + fraction) * h;
-              t.push_back(rising ? zero + s : zero - s);
-              F.push_back(3e3 * std::pow(s / h, p));
-            }
-          if (!rising)
-            {
-              std::reverse(t.begin(), t.end());
-              std::reverse(F.begin(), F.end());
-            }
-          EXPECT_NEAR(power_law_zero(t, F, rising), zero, 1e-8 * h)
-            << "p = " << p << ", offset " << fraction << ", rising " << rising;
+      for (const bool rising : {true, false}) {
+        const double h = 1e-7, zero = 4e-6;
+        std::vector<double> t, F;
+        for (int k = 1; k <= 12; ++k) {
+          const double s = (k - 1 + fraction) * h;
+          t.push_back(rising ? zero + s : zero - s);
+          F.push_back(3e3 * std::pow(s / h, p));
         }
+        if (!rising) {
+          std::reverse(t.begin(), t.end());
+          std::reverse(F.begin(), F.end());
+        }
+        EXPECT_NEAR(power_law_zero(t, F, rising), zero, 1e-8 * h)
+            << "p = " << p << ", offset " << fraction << ", rising " << rising;
+      }
 }
 
-
-TEST(InterpolatedPeak, ExactForAParabolaThirdOrderForASine)
-{
+TEST(InterpolatedPeak, ExactForAParabolaThirdOrderForASine) {
   const std::vector<double> t = samples(0, 0.1, 11);
-  std::vector<double>       parabola(t.size());
-  for (std::size_t i = 0; i < t.size(); ++i)
-    parabola[i] = 7 - 3 * (t[i] - 0.437) * (t[i] - 0.437);
+  std::vector<double> parabola(t.size());
+  for (std::size_t i = 0; i < t.size(); ++i) parabola[i] = 7 - 3 * (t[i] - 0.437) * (t[i] - 0.437);
   const Peak exact = interpolated_peak(t, parabola);
   EXPECT_NEAR(exact.time, 0.437, 1e-14);
   EXPECT_NEAR(exact.value, 7, 1e-14);
@@ -74,30 +59,25 @@ TEST(InterpolatedPeak, ExactForAParabolaThirdOrderForASine)
   // O(h^3) and better.
   const double T = 1e-4, h = T / 300;
   const std::vector<double> ts = samples(0.37 * h, h, 300);
-  std::vector<double>       sine(ts.size());
-  for (std::size_t i = 0; i < ts.size(); ++i)
-    sine[i] = std::sin(M_PI * ts[i] / T);
+  std::vector<double> sine(ts.size());
+  for (std::size_t i = 0; i < ts.size(); ++i) sine[i] = std::sin(M_PI * ts[i] / T);
   const Peak peak = interpolated_peak(ts, sine);
   EXPECT_NEAR(peak.value, 1, 1e-8);
   EXPECT_NEAR(peak.time, T / 2, 1e-4 * h);
 }
 
-
-TEST(StepOscillation, ZeroWhenLinearTwiceTheAmplitudeOfAnAlternation)
-{
+TEST(StepOscillation, ZeroWhenLinearTwiceTheAmplitudeOfAnAlternation) {
   // A Hertz-like pulse sin(pi t / T)^(3/2), 300 samples per contact.
   const double T = 300e-7;
   const std::vector<double> t = samples(0, 1e-7, 400);
   std::vector<double> smooth(t.size()), noisy(t.size());
   double peak = 0;
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    smooth[i] = t[i] < T ? 1e4 * std::pow(std::sin(M_PI * t[i] / T), 1.5) : 0.;
+    peak = std::max(peak, smooth[i]);
+  }
   for (std::size_t i = 0; i < t.size(); ++i)
-    {
-      smooth[i] = t[i] < T ? 1e4 * std::pow(std::sin(M_PI * t[i] / T), 1.5) : 0.;
-      peak      = std::max(peak, smooth[i]);
-    }
-  for (std::size_t i = 0; i < t.size(); ++i)
-    noisy[i] = smooth[i] > 0.05 * peak ? smooth[i] + (i % 2 ? 1 : -1) * 0.01 * peak :
-                                         smooth[i];
+    noisy[i] = smooth[i] > 0.05 * peak ? smooth[i] + (i % 2 ? 1 : -1) * 0.01 * peak : smooth[i];
   // A smooth pulse: the second difference h^2 F'' / 2 only, largest next to
   // the excluded samples, where F'' ~ t^(-1/2): 3/8 (pi h / T)^(3/2) / sqrt(6)
   // = 1.6e-4 of the peak at the sixth sample; an alternation of +-1 % of the
@@ -109,58 +89,49 @@ TEST(StepOscillation, ZeroWhenLinearTwiceTheAmplitudeOfAnAlternation)
   EXPECT_TRUE(std::isnan(step_oscillation({0, 1, 0})));
 }
 
-
-TEST(ForceAfterRelease, ZeroForACleanReleaseTheLargestChatterOtherwise)
-{
+TEST(ForceAfterRelease, ZeroForACleanReleaseTheLargestChatterOtherwise) {
   EXPECT_EQ(force_after_release({0, 1, 4, 9, 4, 1, 0, 0, 0}), 0);
   EXPECT_NEAR(force_after_release({0, 1, 4, 10, 4, 1, 0, 0.5, 0, 0.2}), 0.05, 1e-15);
   EXPECT_TRUE(std::isnan(force_after_release({0, 1, 4, 10})));
 }
 
-
-TEST(SummarizeImpact, ContactTimeDoesNotDependOnWhereTheStepsFall)
-{
+TEST(SummarizeImpact, ContactTimeDoesNotDependOnWhereTheStepsFall) {
   // Power-law flanks (p = 3/2, Hertz-like; a cusp at the peak, so the peak
   // itself is not checked here), contact from t0 to t0 + T; the samples
   // start at different fractions of a step before t0.
   const double T = 1e-4, h = T / 300;
-  double       shortest = 1, longest = 0;
-  for (int k = 0; k < 10; ++k)
-    {
-      const double t0 = 5 * h + 0.1 * k * h;
-      const Pulse  pulse{t0, T, 1.5, 1e10};
-      const std::vector<double> t = samples(0, h, 340);
-      std::vector<double> F(t.size()), x(t.size()), v(t.size(), -0.9);
-      for (std::size_t i = 0; i < t.size(); ++i)
-        {
-          F[i] = pulse(t[i]);
-          x[i] = std::cbrt(F[i] * F[i]);
-        }
-      const ImpactSummary s = summarize_impact(t, F, x, v, 1.0, 0.0);
-      EXPECT_NEAR(s.first_contact_time, t0, 1e-6 * h);
-      EXPECT_NEAR(s.separation_time, t0 + T, 1e-6 * h);
-      EXPECT_NEAR(s.restitution, 0.9, 1e-15);
-      EXPECT_EQ(s.force_after_release, 0);
-      shortest = std::min(shortest, s.contact_time);
-      longest  = std::max(longest, s.contact_time);
+  double shortest = 1, longest = 0;
+  for (int k = 0; k < 10; ++k) {
+    const double t0 = 5 * h + 0.1 * k * h;
+    const Pulse pulse{t0, T, 1.5, 1e10};
+    const std::vector<double> t = samples(0, h, 340);
+    std::vector<double> F(t.size()), x(t.size()), v(t.size(), -0.9);
+    for (std::size_t i = 0; i < t.size(); ++i) {
+      F[i] = pulse(t[i]);
+      x[i] = std::cbrt(F[i] * F[i]);
     }
+    const ImpactSummary s = summarize_impact(t, F, x, v, 1.0, 0.0);
+    EXPECT_NEAR(s.first_contact_time, t0, 1e-6 * h);
+    EXPECT_NEAR(s.separation_time, t0 + T, 1e-6 * h);
+    EXPECT_NEAR(s.restitution, 0.9, 1e-15);
+    EXPECT_EQ(s.force_after_release, 0);
+    shortest = std::min(shortest, s.contact_time);
+    longest = std::max(longest, s.contact_time);
+  }
   EXPECT_LT(longest - shortest, 1e-5 * h);
 }
 
-
-TEST(SummarizeImpact, KnownContactStartAndGravityAfterRelease)
-{
+TEST(SummarizeImpact, KnownContactStartAndGravityAfterRelease) {
   const double T = 1e-4, h = T / 200, g = 9.81;
-  const Pulse  pulse{0, T, 1.5, 1e10};
+  const Pulse pulse{0, T, 1.5, 1e10};
   const std::vector<double> t = samples(0, h, 260);
   std::vector<double> F(t.size()), x(t.size()), v(t.size());
-  for (std::size_t i = 0; i < t.size(); ++i)
-    {
-      F[i] = pulse(t[i]);
-      x[i] = std::cbrt(F[i] * F[i]);
-      // Moving up at 0.8 m/s at release, then slowed by gravity.
-      v[i] = t[i] > T ? -(0.8 - g * (t[i] - T)) : 0.;
-    }
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    F[i] = pulse(t[i]);
+    x[i] = std::cbrt(F[i] * F[i]);
+    // Moving up at 0.8 m/s at release, then slowed by gravity.
+    v[i] = t[i] > T ? -(0.8 - g * (t[i] - T)) : 0.;
+  }
   const ImpactSummary s = summarize_impact(t, F, x, v, 1.0, g, 0.0);
   EXPECT_EQ(s.first_contact_time, 0);
   EXPECT_NEAR(s.contact_time, T, 1e-6 * h);
@@ -168,14 +139,12 @@ TEST(SummarizeImpact, KnownContactStartAndGravityAfterRelease)
   EXPECT_NEAR(s.restitution, 0.8, 1e-9);
 }
 
-
-TEST(SummarizeImpact, NoContactNoSeparation)
-{
+TEST(SummarizeImpact, NoContactNoSeparation) {
   const std::vector<double> t = samples(0, 1, 5), zero(5, 0.), v(5, 0.);
-  const ImpactSummary       none = summarize_impact(t, zero, zero, v, 1, 0);
+  const ImpactSummary none = summarize_impact(t, zero, zero, v, 1, 0);
   EXPECT_TRUE(std::isnan(none.contact_time));
   const std::vector<double> rising = {0, 1, 2, 3, 4};
-  const ImpactSummary       open = summarize_impact(t, rising, rising, v, 1, 0);
+  const ImpactSummary open = summarize_impact(t, rising, rising, v, 1, 0);
   EXPECT_TRUE(std::isnan(open.separation_time));
   EXPECT_TRUE(std::isnan(open.restitution));
 }

@@ -32,7 +32,9 @@ inline std::string read_text(const fs::path& path) {
   return text.str();
 }
 
-inline std::string quote(const std::string& text) { return "'" + text + "'"; }
+inline std::string quote(const std::string& text) {
+  return "'" + text + "'";
+}
 
 inline CliRun run_command(const std::string& command, const fs::path& scratch) {
   const std::string full = command + " >" + quote((scratch / "out.txt").string()) + " 2>" +
@@ -109,7 +111,9 @@ inline std::size_t column(const MarkdownTable& table, const std::string& name) {
   return 0;
 }
 
-inline double cell_number(const std::string& cell) { return std::stod(cell); }
+inline double cell_number(const std::string& cell) {
+  return std::stod(cell);
+}
 
 // Six significant digits are printed.
 inline void expect_same(double shown, double expected, const std::string& what) {

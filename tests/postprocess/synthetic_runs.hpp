@@ -21,10 +21,10 @@
 namespace impact::testing {
 
 struct HuntCrossleyTruth {
-  double mass = 0.1;          // kg
-  double stiffness = 1.0e10;  // N/m^n
+  double mass = 0.1;         // kg
+  double stiffness = 1.0e10; // N/m^n
   double exponent = 1.45;
-  double damping = 0.1;       // s/m
+  double damping = 0.1; // s/m
 };
 
 // The samples of an impact (first contact to separation, `steps` + 1 of them), then 60 more
@@ -67,10 +67,10 @@ inline postprocess::FemRun synthetic_run(const HuntCrossleyTruth& truth, double 
   const reduced::HuntCrossleyImpact impact(truth.mass, truth.stiffness, truth.exponent,
                                            truth.damping, velocity);
   const auto response = impact.response();
-  postprocess::FemRun run = sampled_run(
-      truth.mass, velocity, response.restitution, response.contact_time, response.force_max,
-      response.time_force_max, response.approach_max, 0.0, response.rebound_velocity,
-      impact.history(301));
+  postprocess::FemRun run =
+      sampled_run(truth.mass, velocity, response.restitution, response.contact_time,
+                  response.force_max, response.time_force_max, response.approach_max, 0.0,
+                  response.rebound_velocity, impact.history(301));
   if (noise > 0) {
     std::mt19937 generator(seed);
     std::normal_distribution<double> normal(0, 1);

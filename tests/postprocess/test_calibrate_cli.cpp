@@ -41,7 +41,8 @@ std::string read_text(const fs::path& path) {
 CliRun run_cli(const std::vector<std::string>& arguments, const fs::path& scratch) {
   std::string command = std::string("'") + IMPACT_CALIBRATE_CLI + "'";
   for (const auto& argument : arguments) command += " '" + argument + "'";
-  command += " >'" + (scratch / "out.txt").string() + "' 2>'" + (scratch / "err.txt").string() + "'";
+  command +=
+      " >'" + (scratch / "out.txt").string() + "' 2>'" + (scratch / "err.txt").string() + "'";
   const int status = std::system(command.c_str());
   return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, read_text(scratch / "out.txt"),
           read_text(scratch / "err.txt")};
@@ -88,16 +89,16 @@ void expect_fit_keys(const json& fit, const std::string& where) {
 }
 
 void expect_prediction_keys(const json& prediction, const std::string& where) {
-  for (const char* key : {"damping", "restitution", "contact_time", "force_max", "time_force_max",
-                          "approach_max"})
+  for (const char* key :
+       {"damping", "restitution", "contact_time", "force_max", "time_force_max", "approach_max"})
     EXPECT_TRUE(prediction.contains(key)) << where << " has no '" << key << "'";
 }
 
 TEST_F(CalibrateCli, CampaignGivesEveryKey) {
   for (double velocity : {0.5, 1.0, 2.0}) add_run("v" + std::to_string(velocity), velocity);
-  const CliRun run = run_cli({"--campaign", directory.string(), "--output", output.string(),
-                              "--laws", few_laws},
-                             directory);
+  const CliRun run =
+      run_cli({"--campaign", directory.string(), "--output", output.string(), "--laws", few_laws},
+              directory);
   ASSERT_EQ(run.exit_code, 0) << run.err;
   EXPECT_TRUE(contains(run.err, "run 1/3")) << run.err; // progress on stderr
   EXPECT_TRUE(contains(run.out, "calibration written to")) << run.out;
@@ -119,8 +120,10 @@ TEST_F(CalibrateCli, CampaignGivesEveryKey) {
   EXPECT_NEAR(multibody["b"].get<double>(), truth.damping, 1e-7);
   // b(V) for a multibody code: the data have a constant b, so q = 0 and b_1 = b.
   const json& velocity_damping = calibration["multibody_velocity_damping"];
-  for (const char* key : {"model", "force_law", "c", "n", "b_1", "q", "units", "basis", "converged"})
-    EXPECT_TRUE(velocity_damping.contains(key)) << "multibody_velocity_damping has no '" << key << "'";
+  for (const char* key :
+       {"model", "force_law", "c", "n", "b_1", "q", "units", "basis", "converged"})
+    EXPECT_TRUE(velocity_damping.contains(key))
+        << "multibody_velocity_damping has no '" << key << "'";
   EXPECT_NEAR(velocity_damping["q"].get<double>(), 0, 1e-6);
   EXPECT_NEAR(velocity_damping["b_1"].get<double>(), truth.damping, 1e-7);
 
@@ -129,8 +132,8 @@ TEST_F(CalibrateCli, CampaignGivesEveryKey) {
     for (const char* key : {"source", "impact_velocity", "mass", "measured", "restitution_fit",
                             "loading_fit", "history_fit", "history_prediction"})
       EXPECT_TRUE(entry.contains(key)) << "run has no '" << key << "'";
-    for (const char* key : {"restitution", "contact_time", "force_max", "time_force_max",
-                            "approach_max"})
+    for (const char* key :
+         {"restitution", "contact_time", "force_max", "time_force_max", "approach_max"})
       EXPECT_TRUE(entry["measured"].contains(key)) << "measured has no '" << key << "'";
     EXPECT_NEAR(entry["restitution_fit"]["b"]["value"].get<double>(), truth.damping, 1e-12);
     expect_fit_keys(entry["loading_fit"], "loading_fit");
@@ -158,8 +161,8 @@ TEST_F(CalibrateCli, CampaignGivesEveryKey) {
       EXPECT_TRUE(fit.contains(key)) << fit["model"] << " has no '" << key << "'";
     ASSERT_EQ(fit["runs"].size(), 3u);
     for (const auto& entry : fit["runs"]) {
-      for (const char* key : {"source", "impact_velocity", "rms_residual", "r_squared", "samples",
-                              "prediction"})
+      for (const char* key :
+           {"source", "impact_velocity", "rms_residual", "r_squared", "samples", "prediction"})
         EXPECT_TRUE(entry.contains(key)) << fit["model"] << " run has no '" << key << "'";
       expect_prediction_keys(entry["prediction"], fit["model"].get<std::string>());
     }
@@ -177,7 +180,8 @@ TEST_F(CalibrateCli, CampaignGivesEveryKey) {
       EXPECT_TRUE(entry.contains(key)) << entry["model"] << " has no '" << key << "'";
   // Three velocities: every campaign fit is repeated without each, for out-of-sample
   // predictions and jackknife intervals.
-  for (const char* key : {"hunt_crossley", "hunt_crossley_energy", "hunt_crossley_velocity_damping"}) {
+  for (const char* key :
+       {"hunt_crossley", "hunt_crossley_energy", "hunt_crossley_velocity_damping"}) {
     const json& fit = campaign[key];
     ASSERT_TRUE(fit.is_object()) << key;
     EXPECT_EQ(fit["held_out"].size(), 3u) << key;
@@ -192,9 +196,9 @@ TEST_F(CalibrateCli, CampaignGivesEveryKey) {
 
 TEST_F(CalibrateCli, SingleVelocityCampaign) {
   add_run("v1", 1.0);
-  const CliRun run = run_cli({"--campaign", directory.string(), "--output", output.string(),
-                              "--laws", "none"},
-                             directory);
+  const CliRun run =
+      run_cli({"--campaign", directory.string(), "--output", output.string(), "--laws", "none"},
+              directory);
   EXPECT_EQ(run.exit_code, 2);
   EXPECT_TRUE(contains(run.err, "single impact velocity")) << run.err;
   const json calibration = read_json(output);
@@ -228,9 +232,9 @@ TEST_F(CalibrateCli, CampaignWithBadRunsCalibratesTheOthersAndListsTheProblems) 
       << R"({"runs": [{"velocity": 1, "path": "v1"}, {"velocity": 2, "path": "v2"},
                       {"velocity": 3, "path": "v3"}, {"velocity": 4, "path": "v4"},
                       {"velocity": 5, "path": "v5"}]})";
-  const CliRun run = run_cli({"--campaign", directory.string(), "--output", output.string(),
-                              "--laws", "none"},
-                             directory);
+  const CliRun run =
+      run_cli({"--campaign", directory.string(), "--output", output.string(), "--laws", "none"},
+              directory);
   EXPECT_EQ(run.exit_code, 2);
   EXPECT_TRUE(contains(run.err, "did not finish")) << run.err;
   EXPECT_TRUE(contains(run.err, "no contact")) << run.err;
@@ -246,11 +250,12 @@ TEST_F(CalibrateCli, CampaignWithBadRunsCalibratesTheOthersAndListsTheProblems) 
 // message why (a missing campaign directory, an empty one).
 TEST_F(CalibrateCli, NoUsableRunWritesNothing) {
   fs::create_directories(directory / "empty");
-  for (const auto& [campaign, why] : {std::pair<std::string, std::string>{"nowhere", "does not exist"},
-                                      {"empty", "holds no run"}}) {
-    const CliRun run = run_cli({"--campaign", (directory / campaign).string(), "--output",
-                                output.string()},
-                               directory);
+  for (const auto& [campaign, why] :
+       {std::pair<std::string, std::string>{"nowhere", "does not exist"},
+        {"empty", "holds no run"}}) {
+    const CliRun run =
+        run_cli({"--campaign", (directory / campaign).string(), "--output", output.string()},
+                directory);
     EXPECT_EQ(run.exit_code, 2) << campaign;
     EXPECT_TRUE(contains(run.err, why)) << run.err;
     EXPECT_TRUE(contains(run.err, "no usable run: nothing was calibrated")) << run.err;
@@ -272,8 +277,10 @@ TEST_F(CalibrateCli, UsageErrorsNameTheProblem) {
       {{file.string()}, "--output FILE is required"},
       {{"--output", output.string()}, "no input"},
       {{file.string(), "--campaign", directory.string(), "--output", output.string()}, "not both"},
-      {{file.string(), "--output", output.string(), "--frobnicate"}, "unknown option '--frobnicate'"},
-      {{file.string(), "--output", output.string(), "--laws", "nonsense"}, "unknown law 'nonsense'"},
+      {{file.string(), "--output", output.string(), "--frobnicate"},
+       "unknown option '--frobnicate'"},
+      {{file.string(), "--output", output.string(), "--laws", "nonsense"},
+       "unknown law 'nonsense'"},
       {{file.string(), "--output", output.string(), "--max-iterations", "0"}, "--max-iterations"},
       {{file.string(), "--output", output.string(), "--confidence", "1.5"}, "--confidence"},
       {{file.string(), "--output", output.string(), "--energy-weight", "-1"}, "--energy-weight"},

@@ -50,30 +50,48 @@ void collect(json& node, std::vector<json*>& values) {
     for (auto& child : node) collect(child, values);
 }
 
-const std::vector<std::string> replacements = {
-    "\"text\"", "null", "true", "[]", "{}", "-1", "0", "1e308", "-1e308", "5e-324", "1e999",
-    "\"NaN\"", "99999999999999999999", "-0.0", "[1, 2]", "{\"path\": 3}", "\"../v1\"", "\"\""};
-const std::vector<std::string> added_keys = {"axes", "point", "runs", "complete", "sphere_mass",
-                                             "contact_velocity", "restitution", "extra"};
+const std::vector<std::string> replacements = {"\"text\"",
+                                               "null",
+                                               "true",
+                                               "[]",
+                                               "{}",
+                                               "-1",
+                                               "0",
+                                               "1e308",
+                                               "-1e308",
+                                               "5e-324",
+                                               "1e999",
+                                               "\"NaN\"",
+                                               "99999999999999999999",
+                                               "-0.0",
+                                               "[1, 2]",
+                                               "{\"path\": 3}",
+                                               "\"../v1\"",
+                                               "\"\""};
+const std::vector<std::string> added_keys = {"axes",        "point",       "runs",
+                                             "complete",    "sphere_mass", "contact_velocity",
+                                             "restitution", "extra"};
 
 // The damaged text of `text` (a JSON document) and what was done, in words.
 std::pair<std::string, std::string> damaged(std::mt19937_64& random, const std::string& text) {
   switch (pick(random, 7)) {
-  case 0: { // truncated
-    const std::size_t length = pick(random, text.size());
-    return {text.substr(0, length), "truncated to " + std::to_string(length) + " bytes"};
-  }
-  case 1: { // a bit flipped
-    std::string flipped = text;
-    const std::size_t at = pick(random, text.size());
-    const int bit = static_cast<int>(pick(random, 8));
-    flipped[at] = static_cast<char>(flipped[at] ^ (1 << bit));
-    return {flipped, "bit " + std::to_string(bit) + " of byte " + std::to_string(at) + " flipped"};
-  }
-  case 2: // emptied, or not an object
-    return pick(random, 2) ? std::make_pair(std::string(), std::string("emptied"))
-                           : std::make_pair(std::string("[]"), std::string("replaced by []"));
-  default: break;
+    case 0: { // truncated
+      const std::size_t length = pick(random, text.size());
+      return {text.substr(0, length), "truncated to " + std::to_string(length) + " bytes"};
+    }
+    case 1: { // a bit flipped
+      std::string flipped = text;
+      const std::size_t at = pick(random, text.size());
+      const int bit = static_cast<int>(pick(random, 8));
+      flipped[at] = static_cast<char>(flipped[at] ^ (1 << bit));
+      return {flipped,
+              "bit " + std::to_string(bit) + " of byte " + std::to_string(at) + " flipped"};
+    }
+    case 2: // emptied, or not an object
+      return pick(random, 2) ? std::make_pair(std::string(), std::string("emptied"))
+                             : std::make_pair(std::string("[]"), std::string("replaced by []"));
+    default:
+      break;
   }
   json document = json::parse(text);
   std::vector<json*> values;
@@ -124,8 +142,7 @@ TEST(CalibrateCliFuzz, DamagedJsonGetsAnAnswerOrExitTwoNamingTheFile) {
   for (const auto& [name, velocity] : runs) files.push_back(fs::path(name) / "summary.json");
 
   // The valid campaign calibrates.
-  const std::vector<std::string> options = {"--laws", "none", "--quiet", "--max-iterations",
-                                            "50"};
+  const std::vector<std::string> options = {"--laws", "none", "--quiet", "--max-iterations", "50"};
   std::vector<std::string> arguments = {"--campaign", valid.string(), "--output",
                                         (scratch / "valid.json").string()};
   arguments.insert(arguments.end(), options.begin(), options.end());
@@ -183,9 +200,10 @@ TEST(CalibrateCliFuzz, DamagedJsonGetsAnAnswerOrExitTwoNamingTheFile) {
     if (!problem.empty()) failures.push_back(label + "\n    " + problem);
   }
   fs::remove_all(scratch);
-  std::printf("%lu cases: %d answered, %d not converged (exit 3), %d refused, %zu failures; "
-              "slowest %.2f s\n",
-              cases, answered, not_converged, refused, failures.size(), slowest);
+  std::printf(
+      "%lu cases: %d answered, %d not converged (exit 3), %d refused, %zu failures; "
+      "slowest %.2f s\n",
+      cases, answered, not_converged, refused, failures.size(), slowest);
   for (const auto& failure : failures) ADD_FAILURE() << failure;
 }
 

@@ -17,8 +17,10 @@ using namespace impact::postprocess;
 using json = nlohmann::json;
 
 void expect_same(double read, double written, const char* what) {
-  if (std::isnan(written)) EXPECT_TRUE(std::isnan(read)) << what;
-  else EXPECT_EQ(read, written) << what;
+  if (std::isnan(written))
+    EXPECT_TRUE(std::isnan(read)) << what;
+  else
+    EXPECT_EQ(read, written) << what;
 }
 
 void expect_same_fit(const ModelFit& read, const ModelFit& written) {
@@ -115,11 +117,13 @@ TEST(CalibrationJson, ErrorsNameTheKey) {
   EXPECT_NE(message(old).find("run impact-calibrate again"), std::string::npos) << message(old);
   json missing = good;
   missing["campaign"]["hunt_crossley"]["parameters"].erase("b");
-  EXPECT_NE(message(missing).find("campaign.hunt_crossley.parameters.b is missing"), std::string::npos)
+  EXPECT_NE(message(missing).find("campaign.hunt_crossley.parameters.b is missing"),
+            std::string::npos)
       << message(missing);
   json wrong = good;
   wrong["runs"][1]["mass"] = "heavy";
-  EXPECT_NE(message(wrong).find("runs[1].mass is not a number"), std::string::npos) << message(wrong);
+  EXPECT_NE(message(wrong).find("runs[1].mass is not a number"), std::string::npos)
+      << message(wrong);
 }
 
 } // namespace

@@ -46,12 +46,12 @@ Calibration calibrate_campaign(double noise, std::vector<std::string> laws) {
 }
 
 void print(const char* label, const ModelFit& fit) {
-  std::printf("%-28s c = %.9e [%.6e, %.6e]  n = %.9f [%.6f, %.6f]  %s = %.9f [%.6f, %.6f]  "
-              "rms %.2e\n",
-              label, fit.stiffness.value, fit.stiffness.lower, fit.stiffness.upper,
-              fit.exponent.value, fit.exponent.lower, fit.exponent.upper,
-              fit.parameter_name.c_str(), fit.parameter.value, fit.parameter.lower,
-              fit.parameter.upper, fit.quality.rms_residual);
+  std::printf(
+      "%-28s c = %.9e [%.6e, %.6e]  n = %.9f [%.6f, %.6f]  %s = %.9f [%.6f, %.6f]  "
+      "rms %.2e\n",
+      label, fit.stiffness.value, fit.stiffness.lower, fit.stiffness.upper, fit.exponent.value,
+      fit.exponent.lower, fit.exponent.upper, fit.parameter_name.c_str(), fit.parameter.value,
+      fit.parameter.lower, fit.parameter.upper, fit.quality.rms_residual);
 }
 
 void expect_close(const ModelFit& fit, double tolerance, bool with_damping) {
@@ -64,10 +64,10 @@ void expect_close(const ModelFit& fit, double tolerance, bool with_damping) {
 }
 
 void expect_inside(const Estimate& estimate, double value, const char* name) {
-  EXPECT_LE(estimate.lower, value) << name << " = " << estimate.value << " +- "
-                                   << estimate.standard_error;
-  EXPECT_GE(estimate.upper, value) << name << " = " << estimate.value << " +- "
-                                   << estimate.standard_error;
+  EXPECT_LE(estimate.lower, value)
+      << name << " = " << estimate.value << " +- " << estimate.standard_error;
+  EXPECT_GE(estimate.upper, value)
+      << name << " = " << estimate.value << " +- " << estimate.standard_error;
   EXPECT_GT(estimate.standard_error, 0) << name;
 }
 
@@ -136,8 +136,8 @@ TEST(CalibrationRoundTrip, WithTheHertzExponentTheFixedExponentFitReturnsTheTrut
   const auto& campaign = calibration.campaign;
   ASSERT_TRUE(campaign.hunt_crossley);
   ASSERT_TRUE(campaign.hunt_crossley_hertz_exponent);
-  for (const ModelFit* fit : {&campaign.hunt_crossley->fit,
-                              &campaign.hunt_crossley_hertz_exponent->fit}) {
+  for (const ModelFit* fit :
+       {&campaign.hunt_crossley->fit, &campaign.hunt_crossley_hertz_exponent->fit}) {
     print(fit->exponent_fixed ? "hertzian campaign n=3/2" : "hertzian campaign", *fit);
     EXPECT_TRUE(fit->converged) << fit->solver_message;
     EXPECT_NEAR(fit->stiffness.value / hertzian.stiffness, 1, 1e-6);

@@ -94,8 +94,8 @@ TEST(DampedPlasticModels, OnTheHertzSpringTheyAreHuntCrossley) {
                                 {truth.yield_approach(), 0.0});
   const auto t = predict_impact(contact_model("thornton"), truth.mass, 5 * v_y, truth.stiffness(),
                                 1.5, {truth.yield_approach()});
-  for (Quantity quantity : {Quantity::restitution, Quantity::contact_time, Quantity::force_max,
-                            Quantity::approach_max})
+  for (Quantity quantity :
+       {Quantity::restitution, Quantity::contact_time, Quantity::force_max, Quantity::approach_max})
     expect_relative(value(r, quantity), value(t, quantity), 1e-10, quantity_key(quantity));
 }
 
@@ -104,8 +104,8 @@ TEST(DampedPlasticModels, MatchedDampingGivesKuwabaraKonosSmallLossRestitution) 
   const double a = 2e-9, velocity = 2.0;
   const double b = matched_hunt_crossley_damping(a, velocity, setup);
   // gamma_1 = (6/5) (5/4)^(3/5) B(3/5, 3/2) = 1.7301732871 (Python math.gamma).
-  EXPECT_NEAR(b / (1.5 * 1.7301732871429325 * a * std::pow(1.7e11, 0.4) * std::pow(2.0, -0.8)),
-              1, 1e-12);
+  EXPECT_NEAR(b / (1.5 * 1.7301732871429325 * a * std::pow(1.7e11, 0.4) * std::pow(2.0, -0.8)), 1,
+              1e-12);
   // 1 - e of Hunt–Crossley with b(V) against Kuwabara–Kono without tension with A: equal to
   // first order in the loss (x = 1 - e ~ 1e-3 here: the second-order terms differ by x^2 / 10).
   const auto& law = reduced::comparison_law("kuwabara-kono-no-tension");
@@ -126,9 +126,8 @@ TEST(DampedPlasticModels, MatchedDampingGivesKuwabaraKonosSmallLossRestitution) 
   EXPECT_EQ(parameter_of([&] { matched_hunt_crossley_damping(1e-9, 1, {0, 1e10, 1.5}); }), "mass");
   EXPECT_EQ(parameter_of([] { damped_plastic_model("thornton"); }), "model");
   EXPECT_EQ(parameter_of([] { damped_plastic_model("hunt-crossley-jackson-green"); }), "model");
-  EXPECT_EQ(parameter_of([] {
-              damped_plastic_model("hunt-crossley-thornton", hunt_crossley_model());
-            }),
+  EXPECT_EQ(parameter_of(
+                [] { damped_plastic_model("hunt-crossley-thornton", hunt_crossley_model()); }),
             "spring");
 }
 
@@ -175,17 +174,19 @@ TEST(DampedPlasticModels, FromTheMaterialOnlyWithAViscousLoss) {
 // retardation time when given: A = tau on a rigid flat).
 FemRun damped_thornton_run(const Truth& truth, double damping, double velocity,
                            std::optional<double> retardation_time = std::nullopt) {
-  const auto spring = std::make_shared<reduced::ThorntonContact>(truth.radius, truth.contact_modulus,
-                                                                 truth.yield_pressure);
+  const auto spring =
+      std::make_shared<reduced::ThorntonContact>(truth.radius, truth.contact_modulus,
+                                                 truth.yield_pressure);
   const reduced::HuntCrossleyElasticPlasticImpact impact(truth.mass, spring, damping, velocity);
   const auto response = impact.response();
   std::vector<reduced::ImpactSample> history;
   for (const auto& state : impact.history(301))
     history.push_back({state.time, state.approach, state.approach_rate, state.force});
-  FemRun run = impact::testing::sampled_run(
-      truth.mass, velocity, response.restitution, response.contact_time, response.force_max,
-      response.time_force_max, response.approach_max, response.separation_approach,
-      response.rebound_velocity, history);
+  FemRun run = impact::testing::sampled_run(truth.mass, velocity, response.restitution,
+                                            response.contact_time, response.force_max,
+                                            response.time_force_max, response.approach_max,
+                                            response.separation_approach, response.rebound_velocity,
+                                            history);
   run.source = "damped_thornton_v" + std::to_string(velocity);
   impact::testing::record_elastic_plastic_sphere(run, truth.contact_modulus * (1 - 0.09), 0.3,
                                                  truth.yield_pressure / 1.6, truth.radius);
@@ -208,7 +209,8 @@ TEST(DampedPlasticCalibration, RecoversTheYieldApproachAndTheDampingOfItsOwnCamp
   const double b = 0.05;
   const double v_y = thornton_yield_velocity(truth.yield_approach(), truth.mass, truth.stiffness());
   std::vector<FemRun> runs;
-  for (double ratio : {0.5, 2.0, 5.0, 20.0}) runs.push_back(damped_thornton_run(truth, b, ratio * v_y));
+  for (double ratio : {0.5, 2.0, 5.0, 20.0})
+    runs.push_back(damped_thornton_run(truth, b, ratio * v_y));
 
   CalibrationOptions options;
   options.laws = {"thornton", "hunt-crossley-thornton"};
@@ -269,8 +271,8 @@ TEST(DampedPlasticCalibration, TheLawFromTheMaterialIsTheTruthOfItsOwnCampaign) 
   std::vector<FemRun> runs;
   for (double ratio : {0.5, 4.0, 20.0}) {
     const double velocity = ratio * v_y;
-    const double b = matched_hunt_crossley_damping(tau, velocity,
-                                                   {truth.mass, truth.stiffness(), 1.5});
+    const double b =
+        matched_hunt_crossley_damping(tau, velocity, {truth.mass, truth.stiffness(), 1.5});
     runs.push_back(damped_thornton_run(truth, b, velocity, tau));
   }
   CalibrationOptions options;
@@ -281,9 +283,10 @@ TEST(DampedPlasticCalibration, TheLawFromTheMaterialIsTheTruthOfItsOwnCampaign) 
   EXPECT_NEAR(*calibration.campaign.material_dissipative_constant / tau, 1, 1e-12);
 
   const auto& references = calibration.campaign.reference_models;
-  const auto material = std::find_if(references.begin(), references.end(), [](const ReferenceModel& m) {
-    return m.key == "hunt-crossley-thornton-material";
-  });
+  const auto material =
+      std::find_if(references.begin(), references.end(), [](const ReferenceModel& m) {
+        return m.key == "hunt-crossley-thornton-material";
+      });
   ASSERT_NE(material, references.end());
   EXPECT_EQ(material->model, "hunt-crossley-thornton-from-a");
   EXPECT_EQ(material->parameter_name, "x_y");
@@ -319,7 +322,9 @@ TEST(DampedPlasticCalibration, TheLawFromTheMaterialIsTheTruthOfItsOwnCampaign) 
   EXPECT_EQ(to_json(read).dump(), to_json(calibration).dump());
   const auto read_material =
       std::find_if(read.campaign.reference_models.begin(), read.campaign.reference_models.end(),
-                   [](const ReferenceModel& m) { return m.key == "hunt-crossley-thornton-material"; });
+                   [](const ReferenceModel& m) {
+                     return m.key == "hunt-crossley-thornton-material";
+                   });
   ASSERT_NE(read_material, read.campaign.reference_models.end());
   EXPECT_EQ(read_material->dissipation, material->dissipation);
   EXPECT_EQ(read_material->extra_units, std::vector<std::string>{"s"});
@@ -341,8 +346,10 @@ TEST(DampedPlasticCalibration, WithTwoVelocitiesTheFitsRankAfterTheModelsThatFit
   bool fits_began = false;
   for (const auto& entry : ranking) {
     const bool in_sample_fit = !entry.out_of_sample && entry.free_parameters > 0;
-    if (in_sample_fit) fits_began = true;
-    else EXPECT_FALSE(fits_began) << entry.key << " ranked after a fit scored in sample";
+    if (in_sample_fit)
+      fits_began = true;
+    else
+      EXPECT_FALSE(fits_began) << entry.key << " ranked after a fit scored in sample";
   }
   EXPECT_TRUE(fits_began);
   EXPECT_EQ(ranking.front().free_parameters, 0u);

@@ -58,8 +58,10 @@ protected:
     std::ofstream(scratch / "calibration.json") << calibration.dump(2);
   }
   std::vector<std::string> arguments(const fs::path& output) const {
-    return {"--campaign", campaign.string(), "--calibration", (scratch / "calibration.json").string(),
-            "--output", output.string(), "--quiet"};
+    return {"--campaign",    campaign.string(),
+            "--calibration", (scratch / "calibration.json").string(),
+            "--output",      output.string(),
+            "--quiet"};
   }
   void TearDown() override { fs::remove_all(scratch); }
 
@@ -95,7 +97,8 @@ TEST_F(ExportCli, WritesTheMappingsOfTheCalibration) {
   for (const auto& entry : manifest.at("exports")) {
     const json& p = entry.at("parameters");
     if (entry.at("tool") == "simbody") {
-      EXPECT_NEAR(p.at("stiffness").at("value").get<double>() / (3 * c / std::sqrt(2 * radius)), 1, 1e-14);
+      EXPECT_NEAR(p.at("stiffness").at("value").get<double>() / (3 * c / std::sqrt(2 * radius)), 1,
+                  1e-14);
       EXPECT_NEAR(p.at("dissipation").at("value").get<double>() / (2 * b / 3), 1, 1e-14);
       const std::string header = read_text(output / "simbody/impact_contact.hpp");
       EXPECT_TRUE(contains(header, "setBodyParameters(sphere, stiffness, dissipation"));
@@ -106,12 +109,13 @@ TEST_F(ExportCli, WritesTheMappingsOfTheCalibration) {
       const ImpactFigures linear = linear_contact_impact(k, damping, 0.1, 1.0);
       EXPECT_NEAR(linear.restitution / fem.at("restitution").get<double>(), 1, 1e-12);
       EXPECT_NEAR(linear.contact_time / fem.at("contact_time").get<double>(), 1, 1e-12);
-      EXPECT_EQ(p.at("solimp")[0], p.at("solimp")[1]);  // flat impedance: a linear contact
+      EXPECT_EQ(p.at("solimp")[0], p.at("solimp")[1]); // flat impedance: a linear contact
       EXPECT_LE(p.at("timestep").at("value").get<double>(), linear.contact_time / 1000);
     } else if (entry.at("model") == "kuwabara-kono") {
       EXPECT_NEAR(p.at("k_n").at("value").get<double>() / (c_kk / std::sqrt(radius)), 1, 1e-14);
       EXPECT_NEAR(p.at("eta_n0").at("value").get<double>() /
-                      (1.5 * a_kk * c_kk / (0.1 * std::sqrt(radius))), 1, 1e-14);
+                      (1.5 * a_kk * c_kk / (0.1 * std::sqrt(radius))),
+                  1, 1e-14);
     }
   }
 }
@@ -123,7 +127,8 @@ TEST(SimulatorExport, ClosedFormsAgreeWithTheIntegrationAndInvert) {
     const double omega = 6e4, k = omega * omega, damping = 2 * zeta * omega, mass = 0.1, v = 2;
     const ImpactFigures closed = linear_contact_impact(k, damping, mass, v);
     const auto integrated = impact::reduced::integrate_impact(
-        mass, v, [=](double x, double rate) { return std::max(0.0, mass * (k * x + damping * rate)); },
+        mass, v,
+        [=](double x, double rate) { return std::max(0.0, mass * (k * x + damping * rate)); },
         1e-13);
     EXPECT_NEAR(closed.restitution / integrated.restitution, 1, 1e-9) << zeta;
     EXPECT_NEAR(closed.force_max / integrated.force_max, 1, 1e-9) << zeta;
@@ -152,7 +157,9 @@ TEST_F(ExportCli, ReferenceVelocityOutsideTheCampaignIsAnError) {
   args.insert(args.end(), {"--reference-velocity", "3"});
   const CliRun run = run_export(args, scratch);
   EXPECT_EQ(run.exit_code, 2);
-  EXPECT_TRUE(contains(run.err, "reference velocity 3 m/s is not a velocity of the campaign (0.5, 1, 2 m/s)"))
+  EXPECT_TRUE(
+      contains(run.err,
+               "reference velocity 3 m/s is not a velocity of the campaign (0.5, 1, 2 m/s)"))
       << run.err;
   EXPECT_FALSE(fs::exists(scratch / "export"));
   args.back() = "-1";
@@ -163,8 +170,9 @@ TEST_F(ExportCli, ReferenceVelocityOutsideTheCampaignIsAnError) {
 TEST_F(ExportCli, NoUsableRunWritesNothing) {
   make({"tsuji"});
   fs::create_directories(scratch / "empty");
-  for (const auto& [directory, why] : {std::pair<std::string, std::string>{"nowhere", "does not exist"},
-                                       {"empty", "holds no run"}}) {
+  for (const auto& [directory, why] :
+       {std::pair<std::string, std::string>{"nowhere", "does not exist"},
+        {"empty", "holds no run"}}) {
     auto args = arguments(scratch / "export");
     args[1] = (scratch / directory).string();
     const CliRun run = run_export(args, scratch);

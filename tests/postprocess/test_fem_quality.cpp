@@ -25,7 +25,8 @@ constexpr double pi = 3.14159265358979323846;
 // A half-sine contact of `steps` steps between zero-force steps.
 std::vector<double> half_sine(std::size_t steps, double peak = 1000) {
   std::vector<double> force(5, 0.0);
-  for (std::size_t i = 1; i < steps; ++i) force.push_back(peak * std::sin(pi * double(i) / double(steps)));
+  for (std::size_t i = 1; i < steps; ++i)
+    force.push_back(peak * std::sin(pi * double(i) / double(steps)));
   for (int i = 0; i < 20; ++i) force.push_back(0.0);
   return force;
 }
@@ -39,7 +40,8 @@ TEST(ForceSmoothness, SmoothHistoryHasTheCurvatureOnly) {
 
 TEST(ForceSmoothness, AlternatingForceGivesTwiceItsAmplitude) {
   auto force = half_sine(300);
-  for (std::size_t i = 0; i < force.size(); ++i) force[i] += force[i] > 0 ? (i % 2 ? -15.0 : 15.0) : 0;
+  for (std::size_t i = 0; i < force.size(); ++i)
+    force[i] += force[i] > 0 ? (i % 2 ? -15.0 : 15.0) : 0;
   const auto smoothness = force_smoothness(force);
   // 2 x 15 N plus the curvature, of a peak of 1000 N +- 15 N.
   EXPECT_NEAR(smoothness.oscillation, 30.0 / 1015, 2e-4);
@@ -98,10 +100,11 @@ TEST(VelocityTrend, PowerLawIsRecoveredWithItsInterval) {
     linear.push_back(1 - 0.02 * v);
     constant.push_back(0.9 + 1e-4 * std::sin(v));
   }
-  EXPECT_TRUE(trend_family(*fit_restitution_trend(velocity, linear)).find("follows Hunt–Crossley") !=
-              std::string::npos);
-  EXPECT_TRUE(trend_family(*fit_restitution_trend(velocity, constant)).find("follows constant restitution") !=
-              std::string::npos);
+  EXPECT_TRUE(
+      trend_family(*fit_restitution_trend(velocity, linear)).find("follows Hunt–Crossley") !=
+      std::string::npos);
+  EXPECT_TRUE(trend_family(*fit_restitution_trend(velocity, constant))
+                  .find("follows constant restitution") != std::string::npos);
   // Fewer than three usable runs, or a single velocity: no trend.
   EXPECT_FALSE(fit_restitution_trend({1, 2}, {0.9, 0.8}));
   EXPECT_FALSE(fit_restitution_trend({1, 1, 1}, {0.9, 0.91, 0.92}));
@@ -137,7 +140,7 @@ TEST_F(FemRunRecordTest, UncertaintyWithoutVerificationComesFromTheHistory) {
   const double step = run.contact_time / 300;
   EXPECT_NEAR(record.time_step, step, 1e-9 * step);
   const ImpactFigures fem{run.restitution, run.contact_time, run.force_max, run.time_force_max,
-                             run.approach_max};
+                          run.approach_max};
   const FemUncertainty u = fem_uncertainty(record, fem);
   EXPECT_NEAR(u[std::size_t(Quantity::contact_time)].relative, 1.0 / 300, 1e-9);
   EXPECT_EQ(u[std::size_t(Quantity::force_max)].relative, record.smoothness.oscillation);
@@ -147,11 +150,15 @@ TEST_F(FemRunRecordTest, UncertaintyWithoutVerificationComesFromTheHistory) {
 
 // The summary's own measures and the FEM's yield keys are used when present.
 TEST_F(FemRunRecordTest, SummaryKeysOfTheFemAreRead) {
-  const FemRun run = written(impact::testing::synthetic_run({}, 1.0),
-                             {{"force_oscillation", 0.077}, {"force_after_release", 0.012},
-                              {"von_mises_max_sphere", 2.1e9}, {"von_mises_max_plate", 2.14e9},
-                              {"yield_strength_sphere", 2.03e9}, {"yield_strength_plate", 2.03e9},
-                              {"yield_exceeded", true}, {"yield_time_sphere", 4.9e-5}});
+  const FemRun run =
+      written(impact::testing::synthetic_run({}, 1.0), {{"force_oscillation", 0.077},
+                                                        {"force_after_release", 0.012},
+                                                        {"von_mises_max_sphere", 2.1e9},
+                                                        {"von_mises_max_plate", 2.14e9},
+                                                        {"yield_strength_sphere", 2.03e9},
+                                                        {"yield_strength_plate", 2.03e9},
+                                                        {"yield_exceeded", true},
+                                                        {"yield_time_sphere", 4.9e-5}});
   const FemRunRecord record = read_fem_run_record(run);
   EXPECT_EQ(record.smoothness_source, "summary.json");
   EXPECT_EQ(record.smoothness.oscillation, 0.077);
@@ -166,21 +173,28 @@ TEST_F(FemRunRecordTest, VerificationGivesTheUncertainty) {
   const FemRun made = impact::testing::synthetic_run({}, 1.0);
   written(made);
   const auto quantity = [](double fine, nlohmann::json gci, double absolute) {
-    return nlohmann::json{{"unit", "1"}, {"fine", fine}, {"medium", fine}, {"coarse", fine},
-                          {"observed_order", 2.0}, {"extrapolated", fine}, {"gci_fine", gci},
-                          {"gci_fine_absolute", absolute}, {"convergence", "monotone"}};
+    return nlohmann::json{{"unit", "1"},
+                          {"fine", fine},
+                          {"medium", fine},
+                          {"coarse", fine},
+                          {"observed_order", 2.0},
+                          {"extrapolated", fine},
+                          {"gci_fine", gci},
+                          {"gci_fine_absolute", absolute},
+                          {"convergence", "monotone"}};
   };
   const double e = made.restitution;
-  std::ofstream(directory / "run" / "verification.json")
-      << nlohmann::json{{"format", "impact-verification"}, {"format_version", 1},
-                        {"refinement_ratio", 1.5}, {"levels", nlohmann::json::array()},
-                        {"quantities",
-                         {{"contact_time", quantity(made.contact_time, 0.002, 2e-7)},
-                          {"force_max", quantity(made.force_max, 0.004, 14.0)},
-                          {"time_force_max", quantity(made.time_force_max, 0.003, 1.5e-7)},
-                          {"approach_max", quantity(made.approach_max, 0.001, 3e-8)},
-                          {"restitution", quantity(e, nullptr, 0.001)}}}}
-             .dump(2);
+  std::ofstream(directory / "run" / "verification.json") << nlohmann::json{
+      {"format", "impact-verification"},
+      {"format_version", 1},
+      {"refinement_ratio", 1.5},
+      {"levels", nlohmann::json::array()},
+      {"quantities",
+       {{"contact_time", quantity(made.contact_time, 0.002, 2e-7)},
+        {"force_max", quantity(made.force_max, 0.004, 14.0)},
+        {"time_force_max", quantity(made.time_force_max, 0.003, 1.5e-7)},
+        {"approach_max", quantity(made.approach_max, 0.001, 3e-8)},
+        {"restitution", quantity(e, nullptr, 0.001)}}}}.dump(2);
   const FemRun run = read_fem_run(directory / "run");
   const FemRunRecord record = read_fem_run_record(run);
   ASSERT_TRUE(record.verification) << record.verification_problem;

@@ -22,7 +22,9 @@ namespace fs = std::filesystem;
 
 const impact::testing::HuntCrossleyTruth truth;
 
-FemRun example(double velocity = 1) { return impact::testing::synthetic_run(truth, velocity); }
+FemRun example(double velocity = 1) {
+  return impact::testing::synthetic_run(truth, velocity);
+}
 
 // The message of the RunInputError thrown by read_fem_run(path), or "" if none.
 std::string read_error(const fs::path& path) {
@@ -191,11 +193,14 @@ fs::path sweep_campaign(const fs::path& directory,
     for (double v : {0.5, 1.0}) {
       FemRun run = example(v);
       run.text_attributes["Scenario/Plate thickness"] = h == 0.005 ? "0.005" : "0.01";
-      const std::string name = "plate-thickness-" + run.text_attributes["Scenario/Plate thickness"] +
+      const std::string name = "plate-thickness-" +
+                               run.text_attributes["Scenario/Plate thickness"] +
                                (v == 0.5 ? "_v0.5" : "_v1");
       write_fem_run(run, directory / name);
-      nlohmann::json entry{{"path", name}, {"velocity", v},
-                           {"point", {{"Scenario/Plate thickness", h}, {"Scenario/Impact velocity", v}}}};
+      nlohmann::json entry{{"path", name},
+                           {"velocity", v},
+                           {"point",
+                            {{"Scenario/Plate thickness", h}, {"Scenario/Impact velocity", v}}}};
       point(entry, h, v);
       index["runs"].push_back(entry);
     }
@@ -258,27 +263,29 @@ TEST_F(FemRunIo, BadSweepIndexNamesTheFileAndTheProblem) {
     EXPECT_NE(message.find(file), std::string::npos) << message;
   };
   // A point missing an axis.
-  expect([](nlohmann::json& entry, double, double) { entry["point"].erase("Scenario/Plate thickness"); },
+  expect([](nlohmann::json& entry, double,
+            double) { entry["point"].erase("Scenario/Plate thickness"); },
          "has no value of the axis 'Scenario/Plate thickness'", "index.json");
   // A point whose value is not one of the axis's.
-  expect([](nlohmann::json& entry, double h, double) {
-           if (h == 0.01) entry["point"]["Scenario/Plate thickness"] = 0.02;
-         },
-         "= '0.02', which is not one of the axis's values", "index.json");
+  expect(
+      [](nlohmann::json& entry, double h, double) {
+        if (h == 0.01) entry["point"]["Scenario/Plate thickness"] = 0.02;
+      },
+      "= '0.02', which is not one of the axis's values", "index.json");
   // A point with a parameter that is not an axis.
   expect([](nlohmann::json& entry, double, double) { entry["point"]["Sphere/Radius"] = 0.01; },
          "'Sphere/Radius', which is not an axis", "index.json");
   // A point that is not an object; a velocity that differs from the entry's.
   expect([](nlohmann::json& entry, double, double) { entry["point"] = 3; }, "is not an object",
          "index.json");
-  expect([](nlohmann::json& entry, double, double v) {
-           if (v == 1) entry["velocity"] = 2;
-         },
-         "but the entry's \"velocity\" is 2", "index.json");
+  expect(
+      [](nlohmann::json& entry, double, double v) {
+        if (v == 1) entry["velocity"] = 2;
+      },
+      "but the entry's \"velocity\" is 2", "index.json");
   // The run's own parameter differs from its point (the index swapped two thicknesses).
-  expect([](nlohmann::json& entry, double h, double) {
-           entry["point"]["Scenario/Plate thickness"] = h == 0.005 ? 0.01 : 0.005;
-         },
+  expect([](nlohmann::json& entry, double h,
+            double) { entry["point"]["Scenario/Plate thickness"] = h == 0.005 ? 0.01 : 0.005; },
          "differs from its point in the campaign index", "history.h5");
 }
 
@@ -296,8 +303,10 @@ TEST_F(FemRunIo, BadSweepAxes) {
   expect("{}", "\"axes\" must be a non-empty list");
   expect(R"([{"values": [1]}])", "has no \"parameter\"");
   expect(R"([{"parameter": "Scenario/Impact velocity"}])", "has no \"values\"");
-  expect(R"([{"parameter": "Scenario/Impact velocity", "values": [1, 1]}])", "lists the value '1' twice");
-  expect(R"([{"parameter": "Scenario/Impact velocity", "values": [true]}])", "must be a number or a string");
+  expect(R"([{"parameter": "Scenario/Impact velocity", "values": [1, 1]}])",
+         "lists the value '1' twice");
+  expect(R"([{"parameter": "Scenario/Impact velocity", "values": [true]}])",
+         "must be a number or a string");
   // A run without point whose parameter is missing: named by its file.
   fs::remove_all(directory);
   fs::create_directories(directory);
@@ -307,7 +316,8 @@ TEST_F(FemRunIo, BadSweepAxes) {
                       {"parameter": "Scenario/Impact velocity", "values": [1]}],
              "runs": [{"path": "v1", "velocity": 1}]})";
   const std::string message = campaign_error(directory);
-  EXPECT_NE(message.find("has no parameter 'Scenario/Plate thickness'"), std::string::npos) << message;
+  EXPECT_NE(message.find("has no parameter 'Scenario/Plate thickness'"), std::string::npos)
+      << message;
   EXPECT_NE(message.find("history.h5"), std::string::npos) << message;
 }
 

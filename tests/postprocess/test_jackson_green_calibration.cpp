@@ -38,9 +38,9 @@ struct Truth {
     return {radius, contact_modulus(), yield_strength, poisson_ratio};
   }
   double yield_velocity() const {
-    return reduced::yield_velocity(
-        reduced::yield_pressure(reduced::YieldCriterion::jackson_green, yield_strength, poisson_ratio),
-        contact_modulus(), radius, mass);
+    return reduced::yield_velocity(reduced::yield_pressure(reduced::YieldCriterion::jackson_green,
+                                                           yield_strength, poisson_ratio),
+                                   contact_modulus(), radius, mass);
   }
 };
 
@@ -84,9 +84,11 @@ TEST(JacksonGreenCalibration, CampaignRecoversTheYieldStrengthAndRanksJacksonGre
   EXPECT_LT(fitted->fit.quality.rms_residual, 1e-5);
 
   // The no-fit model from the material is the truth: its restitution is the runs'.
-  const auto reference = std::find_if(
-      calibration.campaign.reference_models.begin(), calibration.campaign.reference_models.end(),
-      [](const ReferenceModel& model) { return model.key == "jackson-green-material"; });
+  const auto reference =
+      std::find_if(calibration.campaign.reference_models.begin(),
+                   calibration.campaign.reference_models.end(), [](const ReferenceModel& model) {
+                     return model.key == "jackson-green-material";
+                   });
   ASSERT_NE(reference, calibration.campaign.reference_models.end());
   EXPECT_NEAR(reference->stiffness / truth.stiffness(), 1, 1e-12);
   EXPECT_NEAR(reference->dissipation.at(0) / truth.yield_strength, 1, 1e-12);
@@ -106,11 +108,12 @@ TEST(JacksonGreenCalibration, CampaignRecoversTheYieldStrengthAndRanksJacksonGre
   EXPECT_LT(ranking[1].score, 1e-4);
   // The other models (Hunt–Crossley, Thornton with the same material) are far behind.
   EXPECT_GT(ranking[2].score, 100 * ranking[1].score);
-  std::printf("Jackson-Green campaign: c recovered to %.1e, Y to %.1e; ranking %s %.2e, %s %.2e, "
-              "next %s %.2e\n",
-              c / truth.stiffness() - 1, y / truth.yield_strength - 1, ranking[0].key.c_str(),
-              ranking[0].score, ranking[1].key.c_str(), ranking[1].score, ranking[2].key.c_str(),
-              ranking[2].score);
+  std::printf(
+      "Jackson-Green campaign: c recovered to %.1e, Y to %.1e; ranking %s %.2e, %s %.2e, "
+      "next %s %.2e\n",
+      c / truth.stiffness() - 1, y / truth.yield_strength - 1, ranking[0].key.c_str(),
+      ranking[0].score, ranking[1].key.c_str(), ranking[1].score, ranking[2].key.c_str(),
+      ranking[2].score);
 }
 
 TEST(JacksonGreenCalibration, TheModelPredictsTheLibrarysImpactAndInvertsTheRestitution) {
@@ -121,8 +124,8 @@ TEST(JacksonGreenCalibration, TheModelPredictsTheLibrarysImpactAndInvertsTheRest
   for (double ratio : {3.0, 10.0, 100.0}) {
     const double velocity = ratio * truth.yield_velocity();
     const auto exact = reduced::elastic_plastic_impact(truth.mass, velocity, contact);
-    const auto prediction = predict_impact(model, truth.mass, velocity, truth.stiffness(), 1.5,
-                                           {truth.yield_strength});
+    const auto prediction =
+        predict_impact(model, truth.mass, velocity, truth.stiffness(), 1.5, {truth.yield_strength});
     EXPECT_NEAR(prediction.restitution / exact.restitution, 1, 1e-12) << ratio;
     EXPECT_NEAR(prediction.contact_time / exact.contact_time, 1, 1e-12) << ratio;
     EXPECT_NEAR(prediction.force_max / exact.force_max, 1, 1e-12) << ratio;

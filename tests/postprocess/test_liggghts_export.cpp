@@ -83,7 +83,7 @@ TEST(LiggghtsExport, ARigidPlateGetsOneMaterialWithTheSameContactModulus) {
 TEST(LiggghtsExport, TheCheckedStrengthOfAnElasticBodyIsUsedAndNoStrengthMeansNoExport) {
   FemRun run = run_with("kelvin-voigt", "kelvin-voigt");
   EXPECT_FALSE(scenario_plastic_contact({run}));
-  run.text_attributes["Sphere/Yield strength"] = "0";  // impact-fem's "none"
+  run.text_attributes["Sphere/Yield strength"] = "0"; // impact-fem's "none"
   EXPECT_FALSE(scenario_plastic_contact({run}));
   run.text_attributes["Sphere/Yield strength"] = "2.03e9";
   const auto contact = scenario_plastic_contact({run});
@@ -107,7 +107,7 @@ TEST(LiggghtsExport, MissingElasticConstantsAreNamed) {
 
 TEST(LiggghtsExport, AYieldPressureAboveLiggghtsRangeIsRefused) {
   FemRun run = run_with("elastic-plastic", "rigid");
-  run.text_attributes["Sphere/Elastic-plastic/Yield strength"] = "1e11";  // ratio > 1
+  run.text_attributes["Sphere/Elastic-plastic/Yield strength"] = "1e11"; // ratio > 1
   const auto contact = scenario_plastic_contact({run});
   ASSERT_TRUE(contact);
   EXPECT_THROW(liggghts_contact(*contact, 0.1, 0.01), ExportInputError);

@@ -26,14 +26,17 @@ namespace {
 using namespace impact::postprocess;
 namespace reduced = impact::reduced;
 
-using impact::testing::Truth;
 using impact::testing::thornton_run;
+using impact::testing::Truth;
 
 TEST(PlasticCalibration, ThorntonCampaignRecoversTheYieldPressureAndRanksThorntonFirst) {
   const Truth truth;
   const double v_y = thornton_yield_velocity(truth.yield_approach(), truth.mass, truth.stiffness());
-  EXPECT_NEAR(v_y, reduced::ThorntonImpact({truth.mass, truth.radius, truth.contact_modulus,
-                                            truth.yield_pressure}, 1.0).yield_velocity(),
+  EXPECT_NEAR(v_y,
+              reduced::ThorntonImpact({truth.mass, truth.radius, truth.contact_modulus,
+                                       truth.yield_pressure},
+                                      1.0)
+                  .yield_velocity(),
               1e-12 * v_y);
   std::vector<FemRun> runs;
   for (double ratio : {2.0, 5.0, 20.0}) runs.push_back(thornton_run(truth, ratio * v_y));
@@ -56,9 +59,10 @@ TEST(PlasticCalibration, ThorntonCampaignRecoversTheYieldPressureAndRanksThornto
   EXPECT_LT(thornton->fit.quality.rms_residual, 1e-6);
 
   // The no-fit model from the material is the truth itself.
-  const auto reference = std::find_if(
-      calibration.campaign.reference_models.begin(), calibration.campaign.reference_models.end(),
-      [](const ReferenceModel& model) { return model.key == "thornton-material"; });
+  const auto reference =
+      std::find_if(calibration.campaign.reference_models.begin(),
+                   calibration.campaign.reference_models.end(),
+                   [](const ReferenceModel& model) { return model.key == "thornton-material"; });
   ASSERT_NE(reference, calibration.campaign.reference_models.end());
   EXPECT_NEAR(reference->stiffness / truth.stiffness(), 1, 1e-12);
   EXPECT_NEAR(reference->dissipation.at(0) / truth.yield_approach(), 1, 1e-12);

@@ -61,9 +61,9 @@ std::vector<FemRun> elastic_runs(std::vector<FemRun> runs) {
     text["Sphere/Elastic/Young's modulus"] = text["Sphere/Elastic-plastic/Young's modulus"];
     text["Sphere/Elastic/Poisson's ratio"] = text["Sphere/Elastic-plastic/Poisson's ratio"];
     text["Sphere/Yield strength"] = text["Sphere/Elastic-plastic/Yield strength"];
-    for (const char* key : {"Sphere/Elastic-plastic/Young's modulus",
-                            "Sphere/Elastic-plastic/Poisson's ratio",
-                            "Sphere/Elastic-plastic/Yield strength"})
+    for (const char* key :
+         {"Sphere/Elastic-plastic/Young's modulus", "Sphere/Elastic-plastic/Poisson's ratio",
+          "Sphere/Elastic-plastic/Yield strength"})
       text.erase(key);
   }
   return runs;
@@ -87,7 +87,8 @@ const Reports& reports() {
     Campaign elastic{elastic_runs(plastic.runs), {}, {}};
     CalibrationOptions options;
     options.laws = {"thornton"};
-    const Calibration calibration = calibration_from_json(to_json(calibrate(plastic.runs, options)));
+    const Calibration calibration =
+        calibration_from_json(to_json(calibrate(plastic.runs, options)));
     return Reports{build_report(plastic, calibration, {}, "plastic", "calibration.json"),
                    build_report(elastic, calibration, {}, "elastic", "calibration.json"),
                    calibration.problems};
@@ -102,7 +103,8 @@ TEST(PlasticReport, AnElasticPlasticFemIsValidAboveYieldAndFollowsThePlasticFami
   // not: these runs are not Hunt–Crossley's.)
   for (const auto& problem : reports().calibration_problems)
     if (problem.source.rfind("thornton_v", 0) == 0) {
-      EXPECT_NE(problem.kind, ProblemKind::convergence) << problem.source << ": " << problem.message;
+      EXPECT_NE(problem.kind, ProblemKind::convergence)
+          << problem.source << ": " << problem.message;
     }
   ASSERT_EQ(report.runs.size(), ratios.size());
   for (const auto& run : report.runs) {
@@ -114,7 +116,8 @@ TEST(PlasticReport, AnElasticPlasticFemIsValidAboveYieldAndFollowsThePlasticFami
   }
   EXPECT_TRUE(report.plasticity.plastic_material);
   EXPECT_FALSE(report.plasticity.first_yielding_velocity);
-  EXPECT_TRUE(contains(report.plasticity.text, "stays valid above yield")) << report.plasticity.text;
+  EXPECT_TRUE(contains(report.plasticity.text, "stays valid above yield"))
+      << report.plasticity.text;
   EXPECT_FALSE(contains(report.summary, "no viscoelastic model")) << report.summary;
   for (const auto& verdict : report.verdicts)
     for (const auto& band : verdict.tolerances)
@@ -134,7 +137,8 @@ TEST(PlasticReport, AnElasticPlasticFemIsValidAboveYieldAndFollowsThePlasticFami
     EXPECT_EQ(laws.laws[0].run_permanent_approach[i] > 0, ratios[i] > 1) << i;
     // The FEM's permanent approach: measured on the history at the end of contact.
     EXPECT_NEAR(laws.fem_permanent_approach[i], laws.laws[0].run_permanent_approach[i],
-                1e-3 * laws.laws[0].run_permanent_approach.back()) << i;
+                1e-3 * laws.laws[0].run_permanent_approach.back())
+        << i;
   }
 
   // Below V_y elastic, above it the plastic family (Thornton's local slope is -0.16 to -0.24).
@@ -171,7 +175,7 @@ TEST(PlasticReport, AnElasticPlasticFemIsValidAboveYieldAndFollowsThePlasticFami
   EXPECT_FALSE(jgm->fitted);
   EXPECT_EQ(jgm->run_restitution.size(), report.runs.size());
   EXPECT_TRUE(jgm->loops.empty() && jgm->permanent_approach.empty());
-  EXPECT_EQ(jgm->run_restitution.front(), 1.0);  // below V_y (and V_c)
+  EXPECT_EQ(jgm->run_restitution.front(), 1.0); // below V_y (and V_c)
   EXPECT_LT(jgm->run_restitution.back(), 1.0);
 
   // The effective alpha against the measured range.
@@ -195,14 +199,16 @@ TEST(PlasticReport, WithoutPlasticityTheRunsAboveYieldAreFlagged) {
   EXPECT_FALSE(report.plastic_laws);
   EXPECT_FALSE(has_figure(report, FigureId::plastic_restitution));
   ASSERT_EQ(report.family_ranges.size(), 1u);
-  EXPECT_TRUE(contains(report.family_ranges[0].text, "does not apply")) << report.family_ranges[0].text;
+  EXPECT_TRUE(contains(report.family_ranges[0].text, "does not apply"))
+      << report.family_ranges[0].text;
 }
 
 TEST(FamilyRanges, AViscoelasticCampaignWithoutYieldVelocityIsOneRange) {
   std::vector<double> velocity, restitution;
   for (double v : {0.5, 1.0, 2.0, 5.0}) {
     velocity.push_back(v);
-    restitution.push_back(impact::reduced::HuntCrossleyImpact(0.1, 1e10, 1.5, 0.05, v).response().restitution);
+    restitution.push_back(
+        impact::reduced::HuntCrossleyImpact(0.1, 1e10, 1.5, 0.05, v).response().restitution);
   }
   const auto ranges = family_ranges(velocity, restitution, std::nullopt);
   ASSERT_EQ(ranges.size(), 1u);

@@ -22,7 +22,8 @@ TEST(PlasticTrend, ThorntonFarAboveYieldFollowsTheMinusQuarterSlope) {
   std::vector<double> velocity, restitution;
   for (double ratio : {50.0, 100.0, 200.0, 400.0}) {
     velocity.push_back(ratio * v_y);
-    restitution.push_back(impact::reduced::ThorntonImpact(steel, ratio * v_y).response().restitution);
+    restitution.push_back(
+        impact::reduced::ThorntonImpact(steel, ratio * v_y).response().restitution);
   }
   const auto trend = fit_restitution_power_law(velocity, restitution);
   ASSERT_TRUE(trend);
@@ -45,7 +46,8 @@ TEST(PlasticTrend, AViscoelasticRestitutionIsNotPlastic) {
   std::vector<double> velocity, restitution;
   for (double v : {0.5, 1.0, 2.0, 5.0}) {
     velocity.push_back(v);
-    restitution.push_back(impact::reduced::HuntCrossleyImpact(0.1, 1e10, 1.5, 0.05, v).response().restitution);
+    restitution.push_back(
+        impact::reduced::HuntCrossleyImpact(0.1, 1e10, 1.5, 0.05, v).response().restitution);
   }
   const auto trend = fit_restitution_power_law(velocity, restitution);
   ASSERT_TRUE(trend);

@@ -72,10 +72,11 @@ struct ReportOfCampaign {
     const fs::path campaign = *directory / "campaign";
     for (double v : velocities)
       write_fem_run(campaign_run(v), campaign / ("v" + std::to_string(v)));
-    add_to_summary(campaign / ("v" + std::to_string(1.0)),
-                   {{"energy_error", 0.0012}, {"max_von_mises", 1.2e9},
-                    {"yield_strength", 1.5e9}, {"dissipated_energy_fraction", 0.05},
-                    {"radiated_energy_fraction", 0.01}});
+    add_to_summary(campaign / ("v" + std::to_string(1.0)), {{"energy_error", 0.0012},
+                                                            {"max_von_mises", 1.2e9},
+                                                            {"yield_strength", 1.5e9},
+                                                            {"dissipated_energy_fraction", 0.05},
+                                                            {"radiated_energy_fraction", 0.01}});
     // V = 4 m/s yields: the report must flag it.
     add_to_summary(campaign / ("v" + std::to_string(4.0)),
                    {{"max_von_mises", 1.8e9}, {"yield_strength", 1.5e9}});
@@ -113,22 +114,24 @@ fs::path* ReportOfCampaign::directory = nullptr;
 CliRun* ReportOfCampaign::calibrate = nullptr;
 CliRun* ReportOfCampaign::report = nullptr;
 
-const std::vector<std::string> figure_files = {"loops.png",      "histories.png", "residuals.png",
+const std::vector<std::string> figure_files = {"loops.png",      "histories.png",   "residuals.png",
                                                "quantities.png", "energy_loss.png", "damping.png",
                                                "errors.png"};
 
 void check_HtmlAndMarkdownExist() {
-  EXPECT_TRUE(contains(ReportOfCampaign::report->out, "report written to " + (ReportOfCampaign::output() / "report.html").string()))
+  EXPECT_TRUE(
+      contains(ReportOfCampaign::report->out,
+               "report written to " + (ReportOfCampaign::output() / "report.html").string()))
       << ReportOfCampaign::report->out;
   const std::string html = read_text(ReportOfCampaign::output() / "report.html");
   const std::string markdown = read_text(ReportOfCampaign::output() / "report.md");
   EXPECT_TRUE(contains(html, "<!DOCTYPE html>"));
   EXPECT_TRUE(contains(html, "</html>"));
   EXPECT_TRUE(contains(markdown, "# Impact model-validity report"));
-  for (const char* section : {"Validity verdict", "Calibrated parameters", "Runs",
-                              "Force–approach loops", "Approach and force against time",
-                              "Per-run damping b against V", "Errors of the reduced models",
-                              "Energy balance and yield check", "In your simulator"}) {
+  for (const char* section :
+       {"Validity verdict", "Calibrated parameters", "Runs", "Force–approach loops",
+        "Approach and force against time", "Per-run damping b against V",
+        "Errors of the reduced models", "Energy balance and yield check", "In your simulator"}) {
     EXPECT_TRUE(contains(markdown, std::string("## ") + section)) << section;
     EXPECT_TRUE(contains(html, std::string("<h2>") + section)) << section;
   }
@@ -140,7 +143,8 @@ void check_HtmlAndMarkdownExist() {
                                      " --calibration " + calibration.string() +
                                      " --output EXPORT_DIR\n"
                                      "tests/consumers/run_in_simulators.sh EXPORT_DIR RESULTS_DIR\n"
-                                     "build/bin/impact-report --campaign " + campaign.string()))
+                                     "build/bin/impact-report --campaign " +
+                                     campaign.string()))
       << markdown;
   EXPECT_TRUE(contains(markdown, "--simulators RESULTS_DIR"));
 }
@@ -192,7 +196,8 @@ void check_TablesHoldTheNumbersOfTheCalibration() {
     const json& run = calibrated_runs[i];
     const json& measured = run["measured"];
     expect_same(cell_number(cells[0]), run["impact_velocity"].get<double>(), "V");
-    expect_same(cell_number(cells[column(*runs, "e [1]")]), measured["restitution"].get<double>(), "e");
+    expect_same(cell_number(cells[column(*runs, "e [1]")]), measured["restitution"].get<double>(),
+                "e");
     expect_same(cell_number(cells[column(*runs, "t_c [µs]")]) * 1e-6,
                 measured["contact_time"].get<double>(), "t_c");
     expect_same(cell_number(cells[column(*runs, "F_max [kN]")]) * 1e3,
@@ -290,9 +295,12 @@ void check_StatesTheVerdictTheModelsAndTheChecks() {
   EXPECT_TRUE(contains(markdown, "CONDITIONAL ON THE MODEL"));
   EXPECT_TRUE(find_table(tables, {"parameter", "value", "jackknife standard error"}) != nullptr);
   // The run above the recorded yield strength is flagged in every table.
-  EXPECT_TRUE(contains(markdown, "The FEM exceeds the yield strength (1.5 GPa, yield_strength) "
-                                 "from V = 4 m/s on")) << markdown;
-  EXPECT_TRUE(contains((*energy)[4].back(), "YIELDS: 120 % of the yield strength")) << (*energy)[4].back();
+  EXPECT_TRUE(contains(markdown,
+                       "The FEM exceeds the yield strength (1.5 GPa, yield_strength) "
+                       "from V = 4 m/s on"))
+      << markdown;
+  EXPECT_TRUE(contains((*energy)[4].back(), "YIELDS: 120 % of the yield strength"))
+      << (*energy)[4].back();
   for (const auto& table : tables)
     for (const auto& row : table)
       if (row.front().rfind("4", 0) == 0 && row.front().size() > 1 && row.front()[1] != '.') {
@@ -338,7 +346,8 @@ void check_StatesTheOffsetsFromHertz() {
   // The HTML states the same.
   const std::string html = read_text(ReportOfCampaign::output() / "report.html");
   EXPECT_TRUE(contains(html, "n - 3/2 = " + std::string(match[2])));
-  EXPECT_TRUE(contains(html, "fit with n fixed at 3/2, c and b free: c = " + std::string(match[5])));
+  EXPECT_TRUE(
+      contains(html, "fit with n fixed at 3/2, c and b free: c = " + std::string(match[5])));
 }
 
 void check_PageRendersInHeadlessChromium() {
@@ -351,26 +360,28 @@ void check_PageRendersInHeadlessChromium() {
   const CliRun render = run_command(
       "timeout 120 chromium --headless --no-sandbox --disable-gpu --disable-quic --no-first-run "
       "--disable-background-networking --disable-component-update --disable-sync "
-      "--user-data-dir=" + quote(profile.string()) + " --screenshot=" +
-          quote(screenshot.string()) + " --window-size=1200,3000 " +
+      "--user-data-dir=" +
+          quote(profile.string()) + " --screenshot=" + quote(screenshot.string()) +
+          " --window-size=1200,3000 " +
           quote("file://" + (ReportOfCampaign::output() / "report.html").string()),
       *ReportOfCampaign::directory);
-  ASSERT_TRUE(fs::exists(screenshot)) << "no screenshot (exit " << render.exit_code << "): "
-                                      << render.err;
+  ASSERT_TRUE(fs::exists(screenshot))
+      << "no screenshot (exit " << render.exit_code << "): " << render.err;
   const PngSize size = png_size(read_text(screenshot));
   ASSERT_TRUE(size.valid);
   EXPECT_EQ(size.width, 1200u);
   EXPECT_EQ(size.height, 3000u);
   // Not blank: many distinct colours and a good share of non-white pixels.
-  const CliRun analysis = run_command(
-      quote(IMPACT_REPORT_PYTHON) + " -c " +
-          quote("import sys, numpy, matplotlib.image as image\n"
-                "a = numpy.round(image.imread(sys.argv[1])[..., :3] * 255).astype(int)\n"
-                "p = a.reshape(-1, 3)\n"
-                "print(len(numpy.unique(p[:, 0] * 65536 + p[:, 1] * 256 + p[:, 2])),"
-                " float((p.min(axis=1) < 240).mean()))") +
-          " " + quote(screenshot.string()),
-      *ReportOfCampaign::directory);
+  const CliRun analysis =
+      run_command(quote(IMPACT_REPORT_PYTHON) + " -c " +
+                      quote(
+                          "import sys, numpy, matplotlib.image as image\n"
+                          "a = numpy.round(image.imread(sys.argv[1])[..., :3] * 255).astype(int)\n"
+                          "p = a.reshape(-1, 3)\n"
+                          "print(len(numpy.unique(p[:, 0] * 65536 + p[:, 1] * 256 + p[:, 2])),"
+                          " float((p.min(axis=1) < 240).mean()))") +
+                      " " + quote(screenshot.string()),
+                  *ReportOfCampaign::directory);
   ASSERT_EQ(analysis.exit_code, 0) << analysis.err;
   std::stringstream numbers(analysis.out);
   int colours = 0;
@@ -391,7 +402,8 @@ void check_FirstScreenAt1280Pixels() {
   const fs::path probe = ReportOfCampaign::output() / "report_measured.html";
   const std::string script =
       "<script>(function () {\n"
-      "  function bottom(e) { return e ? e.getBoundingClientRect().bottom + window.scrollY : -1; }\n"
+      "  function bottom(e) { return e ? e.getBoundingClientRect().bottom + window.scrollY : -1; "
+      "}\n"
       "  var m = {figure: bottom(document.querySelector('img')),\n"
       "           parameters: bottom(document.querySelector('pre')),\n"
       "           folded: document.querySelectorAll('details:not([open])').length,\n"
@@ -419,7 +431,8 @@ void check_FirstScreenAt1280Pixels() {
   const std::string chromium =
       "timeout 120 chromium --headless --no-sandbox --disable-gpu --disable-quic --no-first-run "
       "--disable-background-networking --disable-component-update --disable-sync "
-      "--user-data-dir=" + quote(profile.string()) + " --window-size=1280,900 ";
+      "--user-data-dir=" +
+      quote(profile.string()) + " --window-size=1280,900 ";
   const CliRun dump = run_command(chromium + "--dump-dom " + quote("file://" + probe.string()),
                                   *ReportOfCampaign::directory);
   const std::size_t from = dump.out.find("MEASURED"), to = dump.out.find("END", from);
@@ -586,8 +599,9 @@ TEST_F(ReportBadInput, FitThatDoesNotConverge) {
   expect_incomplete_report("did not converge");
   const std::string markdown = read_text(output / "report.md");
   EXPECT_TRUE(contains(markdown, "(not converged)"));
-  EXPECT_TRUE(contains(markdown, "Cause: No verdict: the campaign fit of Hunt–Crossley did not "
-                                 "converge"));
+  EXPECT_TRUE(contains(markdown,
+                       "Cause: No verdict: the campaign fit of Hunt–Crossley did not "
+                       "converge"));
 }
 
 TEST_F(ReportBadInput, CalibrationFileMissing) {
@@ -619,8 +633,8 @@ TEST_F(ReportBadInput, NoUsableRunWritesNothing) {
 TEST_F(ReportBadInput, FiguresThatCannotBeDrawn) {
   add_run(1.0);
   add_run(2.0);
-  const CliRun run = report({"--calibration", calibrate().string()},
-                            "IMPACT_REPORT_PYTHON=/nonexistent/python3 ");
+  const CliRun run =
+      report({"--calibration", calibrate().string()}, "IMPACT_REPORT_PYTHON=/nonexistent/python3 ");
   EXPECT_EQ(run.exit_code, 4) << run.err;
   EXPECT_TRUE(contains(run.err, "figures could not be drawn")) << run.err;
   expect_incomplete_report("Figure missing");
@@ -637,7 +651,8 @@ TEST(ReportCli, CalibratesTheCampaignItselfWithoutACalibrationFile) {
   EXPECT_EQ(run.exit_code, 0) << run.err;
   const json calibration = json::parse(read_text(directory / "report" / "calibration.json"));
   EXPECT_EQ(calibration["status"], "complete");
-  EXPECT_TRUE(contains(read_text(directory / "report" / "report.md"), "calibrated by impact-report"));
+  EXPECT_TRUE(
+      contains(read_text(directory / "report" / "report.md"), "calibrated by impact-report"));
   fs::remove_all(directory);
 }
 
@@ -666,8 +681,8 @@ TEST(ReportCli, UsageErrors) {
   const CliRun no_output = run_tool(IMPACT_REPORT_CLI, {"--campaign", "x"}, directory);
   EXPECT_EQ(no_output.exit_code, 2);
   EXPECT_TRUE(contains(no_output.err, "--output DIR is required"));
-  const CliRun unknown = run_tool(IMPACT_REPORT_CLI, {"--campaign", "x", "--output", "y", "--nope"},
-                                  directory);
+  const CliRun unknown =
+      run_tool(IMPACT_REPORT_CLI, {"--campaign", "x", "--output", "y", "--nope"}, directory);
   EXPECT_EQ(unknown.exit_code, 2);
   EXPECT_TRUE(contains(unknown.err, "unknown option '--nope'"));
   fs::remove_all(directory);

@@ -34,8 +34,8 @@ using impact::testing::read_text;
 using impact::testing::campaign_run;
 
 struct RecordingDrawer {
-  std::set<std::string> asked;     ///< figure files the report declared
-  std::set<std::string> left_out;  ///< not written (to test the problem it makes)
+  std::set<std::string> asked;    ///< figure files the report declared
+  std::set<std::string> left_out; ///< not written (to test the problem it makes)
   FigureDrawer drawer() {
     return [this](const Report& report, const fs::path&, const fs::path& figures) {
       std::vector<Problem> problems;
@@ -43,8 +43,8 @@ struct RecordingDrawer {
       for (const auto& figure : report_figures(report)) {
         asked.insert(figure.file);
         if (left_out.count(figure.file)) {
-          problems.push_back({(figures / figure.file).string(), ProblemKind::figures,
-                              "the figure was not drawn"});
+          problems.push_back(
+              {(figures / figure.file).string(), ProblemKind::figures, "the figure was not drawn"});
           continue;
         }
         std::ofstream(figures / figure.file, std::ios::binary) << "\x89PNG\r\n\x1a\n";
@@ -129,8 +129,7 @@ TEST_F(ReportPipeline, OpensWithTheVerdictTheErrorsFigureAndTheRecommendedModel)
   const std::string block = glance.substr(recommended);
   for (std::size_t i = 0; i < names.size(); ++i) {
     std::smatch match;
-    ASSERT_TRUE(std::regex_search(block, match,
-                                  std::regex("\n  " + names[i] + " *= ([-+0-9.e]+)")))
+    ASSERT_TRUE(std::regex_search(block, match, std::regex("\n  " + names[i] + " *= ([-+0-9.e]+)")))
         << names[i] << " not in " << block;
     EXPECT_NEAR(std::stod(match[1]), values[i], 1e-5 * std::abs(values[i])) << names[i];
   }

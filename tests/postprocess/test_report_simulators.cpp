@@ -44,8 +44,10 @@ Figures with_errors(const Figures& reference, const Errors& errors) {
 }
 
 json figures_json(const Figures& f) {
-  return {{"restitution", f.restitution}, {"energy_loss", f.energy_loss()},
-          {"contact_time", f.contact_time}, {"force_max", f.force_max}};
+  return {{"restitution", f.restitution},
+          {"energy_loss", f.energy_loss()},
+          {"contact_time", f.contact_time},
+          {"force_max", f.force_max}};
 }
 
 // What the simulator measured, the exported model and the FEM at one velocity.
@@ -65,9 +67,14 @@ json result_json(const std::string& tool, const std::string& version, const std:
                     {"tool", figures_json(run.tool)},
                     {"reduced_model", figures_json(run.reduced_model)},
                     {"fem", figures_json(run.fem)}});
-  return {{"format", "impact-simulator-run"}, {"format_version", 1},     {"tool", tool},
-          {"tool_version", version},          {"model", model},          {"export", "/exports/study/export.json"},
-          {"file", file},                     {"reference_velocity", reference_velocity},
+  return {{"format", "impact-simulator-run"},
+          {"format_version", 1},
+          {"tool", tool},
+          {"tool_version", version},
+          {"model", model},
+          {"export", "/exports/study/export.json"},
+          {"file", file},
+          {"reference_velocity", reference_velocity},
           {"runs", list}};
 }
 
@@ -143,7 +150,8 @@ protected:
     std::vector<KnownRun> runs;
     for (std::size_t i = 0; i < velocities.size(); ++i) {
       const Figures tool = with_errors((*fem)[i], errors[i]);
-      runs.push_back({velocities[i], tool,
+      runs.push_back({velocities[i],
+                      tool,
                       {tool.restitution / (1 + deviation), tool.contact_time / (1 + deviation),
                        tool.force_max / (1 + deviation)},
                       (*fem)[i]});
@@ -153,8 +161,9 @@ protected:
 
   CliRun report(const fs::path& output, const std::vector<std::string>& extra,
                 const std::string& environment = "") {
-    std::vector<std::string> arguments = {"--campaign", campaign().string(), "--calibration",
-                                          calibration().string(), "--output", output.string(),
+    std::vector<std::string> arguments = {"--campaign",    campaign().string(),
+                                          "--calibration", calibration().string(),
+                                          "--output",      output.string(),
                                           "--quiet"};
     arguments.insert(arguments.end(), extra.begin(), extra.end());
     return run_tool(IMPACT_REPORT_CLI, arguments, *directory, environment);
@@ -165,9 +174,19 @@ protected:
                            const std::vector<KnownRun>& runs, double reference_velocity) {
     ASSERT_EQ(table.size(), runs.size() + 1);
     const std::vector<std::string> header = {
-        "V [m/s]", "e " + tool, "e FEM", "error e", "1 - e^2 " + tool, "1 - e^2 FEM",
-        "error 1 - e^2", "t_c " + tool + " [µs]", "t_c FEM [µs]", "error t_c",
-        "F_max " + tool + " [kN]", "F_max FEM [kN]", "error F_max",
+        "V [m/s]",
+        "e " + tool,
+        "e FEM",
+        "error e",
+        "1 - e^2 " + tool,
+        "1 - e^2 FEM",
+        "error 1 - e^2",
+        "t_c " + tool + " [µs]",
+        "t_c FEM [µs]",
+        "error t_c",
+        "F_max " + tool + " [kN]",
+        "F_max FEM [kN]",
+        "error F_max",
         "largest |error| vs exported model (e, 1 - e^2, t_c, F_max)"};
     EXPECT_EQ(table.front(), header);
     for (std::size_t i = 0; i < runs.size(); ++i) {
@@ -178,8 +197,8 @@ protected:
       const std::string velocity = run.velocity == 0.5 ? "0.5" : "2";
       EXPECT_EQ(row[0], velocity + (run.velocity == reference_velocity ? " (reference)" : ""))
           << at;
-      const auto triple = [&](std::size_t first, double tool_value, double fem_value,
-                              double scale, const std::string& what) {
+      const auto triple = [&](std::size_t first, double tool_value, double fem_value, double scale,
+                              const std::string& what) {
         expect_value(row[first], tool_value * scale, at + what + " tool");
         expect_value(row[first + 1], fem_value * scale, at + what + " FEM");
         expect_percent(row[first + 2], (tool_value - fem_value) / fem_value, at + what + " error");
@@ -203,8 +222,8 @@ TEST_F(ReportSimulators, TablesHoldTheToolsNumbersAndTheirErrors) {
   const fs::path results = *directory / "in_simulator";
   const auto simbody = simbody_runs();
   const auto mujoco = mujoco_runs();
-  write_json(results / "simbody.json",
-             result_json("simbody", "3.7", "hunt-crossley", "simbody/impact_contact.hpp", nullptr, simbody));
+  write_json(results / "simbody.json", result_json("simbody", "3.7", "hunt-crossley",
+                                                   "simbody/impact_contact.hpp", nullptr, simbody));
   write_json(results / "mujoco.json", result_json("mujoco", "2.2.2", "linear-spring-damper",
                                                   "mujoco/impact_contact.xml", 2.0, mujoco));
   const fs::path output = *directory / "report";
@@ -221,8 +240,7 @@ TEST_F(ReportSimulators, TablesHoldTheToolsNumbersAndTheirErrors) {
   const auto tables = markdown_tables(markdown);
   std::vector<const MarkdownTable*> found;
   for (const auto& table : tables)
-    if (table.front().size() > 1 && table.front()[0] == "V [m/s]" &&
-        table.front()[2] == "e FEM")
+    if (table.front().size() > 1 && table.front()[0] == "V [m/s]" && table.front()[2] == "e FEM")
       found.push_back(&table);
   ASSERT_EQ(found.size(), 2u) << markdown;
   expect_table(*found[0], "Simbody", simbody, NAN);
@@ -241,8 +259,8 @@ TEST_F(ReportSimulators, TablesHoldTheToolsNumbersAndTheirErrors) {
   EXPECT_EQ(simbody_row[column(*summary, "within 5 %")], "0.5 to 2 m/s");
   EXPECT_EQ((*summary)[2][column(*summary, "within 5 %")], "none");
   // RMS over the two velocities and three quantities; the largest deviation from the model.
-  const double rms = std::sqrt((0.01 * 0.01 * 2 + 0.015 * 0.015 + 0.03 * 0.03 + 0.02 * 0.02 +
-                                0.04 * 0.04) / 6);
+  const double rms =
+      std::sqrt((0.01 * 0.01 * 2 + 0.015 * 0.015 + 0.03 * 0.03 + 0.02 * 0.02 + 0.04 * 0.04) / 6);
   expect_percent(simbody_row[column(*summary, "RMS error vs FEM (1 - e^2, t_c, F_max)")], rms,
                  "Simbody RMS");
   double largest = 0;
@@ -251,14 +269,17 @@ TEST_F(ReportSimulators, TablesHoldTheToolsNumbersAndTheirErrors) {
                  "Simbody vs model");
 
   // The sentences: ranges, largest errors, the file to use, MuJoCo's linear law.
-  EXPECT_TRUE(contains(markdown, "- Within 2 %: V = 0.5 m/s in Simbody (1 of 2 tested velocities). "
-                                 "Outside 2 % at V = 2 m/s"))
+  EXPECT_TRUE(contains(markdown,
+                       "- Within 2 %: V = 0.5 m/s in Simbody (1 of 2 tested velocities). "
+                       "Outside 2 % at V = 2 m/s"))
       << markdown;
-  EXPECT_TRUE(contains(markdown, "- Within 5 %: over the whole tested range, V = 0.5 to 2 m/s in "
-                                 "Simbody (2 of 2 tested velocities)."));
+  EXPECT_TRUE(contains(markdown,
+                       "- Within 5 %: over the whole tested range, V = 0.5 to 2 m/s in "
+                       "Simbody (2 of 2 tested velocities)."));
   EXPECT_TRUE(contains(markdown, "- Within 5 %: at no tested velocity in MuJoCo."));
-  EXPECT_TRUE(contains(markdown, "Largest errors against the FEM: 1 - e^2 -3 % (V = 2 m/s), "
-                                 "t_c +2 % (V = 2 m/s), F_max -4 % (V = 2 m/s)"));
+  EXPECT_TRUE(contains(markdown,
+                       "Largest errors against the FEM: 1 - e^2 -3 % (V = 2 m/s), "
+                       "t_c +2 % (V = 2 m/s), F_max -4 % (V = 2 m/s)"));
   EXPECT_TRUE(contains(markdown, "The file to use: /exports/study/mujoco/impact_contact.xml"));
   EXPECT_TRUE(contains(markdown, "Matched to the FEM at the reference velocity V = 2 m/s."));
   EXPECT_TRUE(contains(markdown, "MuJoCo's contact is a linear spring–damper"));
@@ -294,7 +315,9 @@ TEST_F(ReportSimulators, BadResultFilesAreReportedAndLeftOut) {
   EXPECT_TRUE(contains(markdown, "INCOMPLETE")) << markdown;
   const std::vector<std::pair<std::string, std::string>> expected = {
       {"broken.json", "not a usable simulator result: is not JSON"},
-      {"manifest.json", "is not a result file of format 'impact-simulator-run' (the key 'format' is \"impact-export\")"},
+      {"manifest.json",
+       "is not a result file of format 'impact-simulator-run' (the key 'format' is "
+       "\"impact-export\")"},
       {"version.json", "has format_version 2; impact-report reads version 1"},
       {"missing.json", "runs[1].tool.contact_time is missing"},
       {"negative.json", "runs[0].tool.force_max must be a finite number > 0 (got -1.0)"},

@@ -65,8 +65,8 @@ TEST(ResultFilesContract, MaterialConstantsUnderTheModelsSubsection) {
       impact::postprocess::material_constant(run, fem_format::plate_body, fem_format::density);
   ASSERT_TRUE(density);
   EXPECT_EQ(*density, 7800);
-  EXPECT_FALSE(impact::postprocess::material_constant(run, fem_format::sphere_body,
-                                                      fem_format::density));
+  EXPECT_FALSE(
+      impact::postprocess::material_constant(run, fem_format::sphere_body, fem_format::density));
 }
 
 } // namespace

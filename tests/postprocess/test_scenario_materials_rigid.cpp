@@ -22,7 +22,8 @@ FemRun rigid_flat_run(const std::string& sphere_model) {
   run.text_attributes = {{"Scenario/Sphere radius", "0.01452"},
                          {"Sphere/Material model", sphere_model},
                          {"Plate/Material model", "rigid"}};
-  const std::string section = sphere_model == "elastic" ? "Sphere/Elastic/" : "Sphere/Kelvin-voigt/";
+  const std::string section =
+      sphere_model == "elastic" ? "Sphere/Elastic/" : "Sphere/Kelvin-voigt/";
   run.text_attributes[section + "Young's modulus"] = "2e11";
   run.text_attributes[section + "Poisson's ratio"] = "0.25";
   run.text_attributes[section + "Retardation time"] = "1e-6";

@@ -54,7 +54,9 @@ CalibrationOptions kuwabara_kono_only() {
   return options;
 }
 
-double hertz() { return impact::reduced::hertz_stiffness({young, poisson, radius}, {young, poisson}); }
+double hertz() {
+  return impact::reduced::hertz_stiffness({young, poisson, radius}, {young, poisson});
+}
 
 // Brilliantov et al. (1996) in the viscosities (as test_verdict_synthetic.cpp).
 double brilliantov_constant() {
@@ -70,7 +72,8 @@ FemRun made_run(double thickness, double velocity) {
   FemRun run;
   if (thickness == thicknesses.front()) {
     const auto& law = impact::reduced::comparison_law("kuwabara-kono-no-tension");
-    run = impact::testing::synthetic_law_run(law, {mass, hertz(), 1.5}, brilliantov_constant(), velocity);
+    run = impact::testing::synthetic_law_run(law, {mass, hertz(), 1.5}, brilliantov_constant(),
+                                             velocity);
   } else {
     run = impact::testing::synthetic_run({mass, hertz(), 1.5, hc_damping}, velocity);
   }
@@ -87,12 +90,20 @@ std::string run_name(double thickness, double velocity) {
 
 json verification_with_force_gci(const FemRun& run, double gci) {
   const auto quantity = [](double fine, json relative, double absolute) {
-    return json{{"unit", "1"}, {"fine", fine}, {"medium", fine}, {"coarse", fine},
-                {"observed_order", 2.0}, {"extrapolated", fine}, {"gci_fine", relative},
-                {"gci_fine_absolute", absolute}, {"convergence", "monotone"}};
+    return json{{"unit", "1"},
+                {"fine", fine},
+                {"medium", fine},
+                {"coarse", fine},
+                {"observed_order", 2.0},
+                {"extrapolated", fine},
+                {"gci_fine", relative},
+                {"gci_fine_absolute", absolute},
+                {"convergence", "monotone"}};
   };
-  return json{{"format", "impact-verification"}, {"format_version", 1},
-              {"refinement_ratio", 1.5}, {"levels", json::array()},
+  return json{{"format", "impact-verification"},
+              {"format_version", 1},
+              {"refinement_ratio", 1.5},
+              {"levels", json::array()},
               {"quantities",
                {{"contact_time", quantity(run.contact_time, 1e-4, 1e-4 * run.contact_time)},
                 {"force_max", quantity(run.force_max, gci, gci * run.force_max)},
@@ -120,7 +131,8 @@ fs::path write_campaign(const std::string& name) {
     for (double v : velocities) {
       const FemRun run = made_run(h, v);
       write_fem_run(run, directory / run_name(h, v));
-      json entry{{"path", run_name(h, v)}, {"velocity", v},
+      json entry{{"path", run_name(h, v)},
+                 {"velocity", v},
                  {"point", {{thickness_axis, h}, {velocity_axis, v}}}};
       if (h == verified_thickness && v == verified_velocity) {
         std::ofstream(directory / run_name(h, v) / "verification.json")
@@ -252,8 +264,8 @@ TEST_F(ValidityMapTest, KuwabaraKonoRow) {
     const FemRun run = made_run(0.004, v);
     per_run_b.push_back(impact::reduced::impact_parameter_from_restitution(run.restitution) / v);
   }
-  std::printf("per-run b on the Kuwabara-Kono row: %g %g %g %g s/m\n", per_run_b[0],
-              per_run_b[1], per_run_b[2], per_run_b[3]);
+  std::printf("per-run b on the Kuwabara-Kono row: %g %g %g %g s/m\n", per_run_b[0], per_run_b[1],
+              per_run_b[2], per_run_b[3]);
   ASSERT_GT(per_run_b[0], 1.5 * per_run_b[1]); // b at 0.5 m/s 1.5 x that of any faster run
   const MapModelRow& hc = row.models[model_index(map, "calibrated")];
   ASSERT_TRUE(hc.missing.empty()) << hc.missing;
@@ -326,9 +338,10 @@ FemRun thin_plate_run(double thickness, double velocity) {
   std::vector<Sample> history;
   for (const auto& sample : model.history(velocity, 301))
     history.push_back({sample.time, sample.force, sample.approach, sample.sphere_velocity});
-  FemRun run = impact::testing::sampled_run(
-      mass, velocity, result.restitution, result.contact_time, result.force_max,
-      result.time_force_max, result.approach_max, 0.0, -result.restitution * velocity, history);
+  FemRun run =
+      impact::testing::sampled_run(mass, velocity, result.restitution, result.contact_time,
+                                   result.force_max, result.time_force_max, result.approach_max,
+                                   0.0, -result.restitution * velocity, history);
   impact::testing::record_kelvin_voigt_materials(run, young, poisson, tau_d, tau_v, radius);
   run.text_attributes["Sphere/Kelvin-voigt/Density"] = exact_text(density);
   run.text_attributes["Plate/Kelvin-voigt/Density"] = exact_text(density);
@@ -359,7 +372,8 @@ TEST(ValidityMapThinPlate, TheThinPlateModelIsTheTruthAndHuntCrossleyFailsOnThin
   fs::remove_all(directory);
   ASSERT_TRUE(report.map && report.map->available);
   const ValidityMap& map = *report.map;
-  const std::size_t thin = model_index(map, "thin-plate"), calibrated = model_index(map, "calibrated");
+  const std::size_t thin = model_index(map, "thin-plate"),
+                    calibrated = model_index(map, "calibrated");
 
   // What the truth says, computed here: Zener's lambda and the share of the energy the plate
   // takes, from the library's model with the true b.
@@ -386,7 +400,8 @@ TEST(ValidityMapThinPlate, TheThinPlateModelIsTheTruthAndHuntCrossleyFailsOnThin
       EXPECT_EQ(map_class_name(cell, report.tolerances), "within 2 %");
     }
   }
-  EXPECT_NE(map.models[thin].region.find("within 2 % for every Plate thickness tested at every velocity"),
+  EXPECT_NE(map.models[thin].region.find(
+                "within 2 % for every Plate thickness tested at every velocity"),
             std::string::npos)
       << map.models[thin].region;
 
@@ -451,7 +466,8 @@ TEST(ValidityMapNoRebound, TheCellSaysWhyAndTheReportStaysComplete) {
       FemRun run = made_run(h, v);
       if (h == 0.004 && v == 1) run.restitution = std::numeric_limits<double>::quiet_NaN();
       write_fem_run(run, directory / run_name(h, v));
-      index["runs"].push_back({{"path", run_name(h, v)}, {"velocity", v},
+      index["runs"].push_back({{"path", run_name(h, v)},
+                               {"velocity", v},
                                {"point", {{thickness_axis, h}, {velocity_axis, v}}}});
     }
   std::ofstream(directory / "index.json") << index.dump(2);
@@ -463,7 +479,8 @@ TEST(ValidityMapNoRebound, TheCellSaysWhyAndTheReportStaysComplete) {
   ReportOptions options;
   options.map_calibrations = calibrate_map_rows(campaign, kuwabara_kono_only());
   const Report report = build_report(campaign, std::nullopt, {}, "no rebound", "", options);
-  for (const auto& problem : report.problems) EXPECT_NE(problem.kind, ProblemKind::input) << problem.message;
+  for (const auto& problem : report.problems)
+    EXPECT_NE(problem.kind, ProblemKind::input) << problem.message;
   EXPECT_TRUE(std::any_of(report.problems.begin(), report.problems.end(),
                           [](const Problem& p) { return p.kind == ProblemKind::no_rebound; }));
   ASSERT_TRUE(report.map && report.map->available);

@@ -51,8 +51,7 @@ Reported calibrate_and_report(const std::vector<FemRun>& made, const std::string
   for (const auto& problem : campaign.problems) ADD_FAILURE() << problem.message;
   CalibrationOptions options;
   options.laws = laws;
-  const Calibration calibration =
-      calibration_from_json(to_json(calibrate(campaign.runs, options)));
+  const Calibration calibration = calibration_from_json(to_json(calibrate(campaign.runs, options)));
   Report report = build_report(campaign, calibration, {}, directory.string(), "calibration.json");
   fs::remove_all(directory);
   return {calibration, report};
@@ -65,7 +64,8 @@ const ReportModel& model(const Report& report, const std::string& key) {
 }
 
 void print_errors(const Report& report, const ReportModel& model) {
-  std::printf("%s (%s):\n", model.label.c_str(), model.out_of_sample ? "out of sample" : "in sample");
+  std::printf("%s (%s):\n", model.label.c_str(),
+              model.out_of_sample ? "out of sample" : "in sample");
   for (std::size_t i = 0; i < report.runs.size(); ++i) {
     std::printf("  V = %4.2f m/s:", report.runs[i].velocity);
     for (Quantity quantity : verdict_quantities)
@@ -84,7 +84,8 @@ const std::vector<double> hunt_crossley_velocities = {0.5, 1, 2, 4};
 
 std::vector<FemRun> hunt_crossley_campaign() {
   std::vector<FemRun> runs;
-  for (double v : hunt_crossley_velocities) runs.push_back(impact::testing::synthetic_run(truth, v));
+  for (double v : hunt_crossley_velocities)
+    runs.push_back(impact::testing::synthetic_run(truth, v));
   return runs;
 }
 
@@ -116,7 +117,8 @@ TEST(VerdictOnSyntheticCampaigns, HuntCrossleyCampaignIsValidEverywhere) {
   }
   EXPECT_TRUE(contains(report.cause, "holds within 2 % at every tested velocity")) << report.cause;
   // A clean history: no warning on the FEM's quality.
-  for (const auto& problem : report.problems) EXPECT_NE(problem.kind, ProblemKind::quality) << problem.message;
+  for (const auto& problem : report.problems)
+    EXPECT_NE(problem.kind, ProblemKind::quality) << problem.message;
   for (const auto& run : report.runs) EXPECT_LT(run.record.smoothness.oscillation, 1e-3);
   // The jackknife over the left-out fits holds the truth, and so does the Hunt–Crossley trend:
   // 1 - e = (2/3) b V + ... gives p near 1.
@@ -127,7 +129,8 @@ TEST(VerdictOnSyntheticCampaigns, HuntCrossleyCampaignIsValidEverywhere) {
   ASSERT_TRUE(report.trend);
   std::printf("trend: %s\n", report.trend_text.c_str());
   EXPECT_GT(report.trend->exponent, 0.7);
-  EXPECT_TRUE(contains(report.trend_text, "follows Hunt–Crossley with constant b")) << report.trend_text;
+  EXPECT_TRUE(contains(report.trend_text, "follows Hunt–Crossley with constant b"))
+      << report.trend_text;
 }
 
 // ---- Made by Kuwabara–Kono without tension -------------------------------------------------
@@ -153,12 +156,14 @@ TEST(VerdictOnSyntheticCampaigns, KuwabaraKonoCampaign) {
   const auto& law = impact::reduced::comparison_law("kuwabara-kono-no-tension");
   std::vector<FemRun> runs;
   for (double v : viscoelastic_velocities) {
-    FemRun run = impact::testing::synthetic_law_run(law, {mass, hertz, 1.5}, dissipative_constant, v);
+    FemRun run =
+        impact::testing::synthetic_law_run(law, {mass, hertz, 1.5}, dissipative_constant, v);
     impact::testing::record_kelvin_voigt_materials(run, young, poisson, tau_d, tau_v, radius);
     runs.push_back(run);
   }
-  const auto [calibration, report] = calibrate_and_report(
-      runs, "verdict_kk", {"kuwabara-kono-no-tension", "kuwabara-kono", "lankarani-nikravesh"});
+  const auto [calibration, report] =
+      calibrate_and_report(runs, "verdict_kk",
+                           {"kuwabara-kono-no-tension", "kuwabara-kono", "lankarani-nikravesh"});
   ASSERT_TRUE(report.verdict_available) << report.cause;
   const CampaignCalibration& campaign = calibration.campaign;
   std::printf("A: generated %.9e s, from the material %.9e s\n", dissipative_constant,
@@ -183,7 +188,8 @@ TEST(VerdictOnSyntheticCampaigns, KuwabaraKonoCampaign) {
   // Kuwabara–Kono ranked first (the fitted law or the material prediction, which tie).
   ASSERT_FALSE(campaign.ranking.empty());
   std::printf("ranking:");
-  for (const auto& entry : campaign.ranking) std::printf(" %s %.3e;", entry.key.c_str(), entry.score);
+  for (const auto& entry : campaign.ranking)
+    std::printf(" %s %.3e;", entry.key.c_str(), entry.score);
   std::printf("\n");
   EXPECT_EQ(campaign.ranking.front().key.rfind("kuwabara-kono", 0), 0u)
       << campaign.ranking.front().key;
@@ -194,8 +200,9 @@ TEST(VerdictOnSyntheticCampaigns, KuwabaraKonoCampaign) {
   std::printf("trend: %s\n", report.trend_text.c_str());
   EXPECT_NEAR(report.trend->exponent, 0.20, 0.02);
   EXPECT_TRUE(contains(report.trend_text, "follows Kuwabara–Kono")) << report.trend_text;
-  EXPECT_TRUE(contains(report.trend_text, "excluded: Hunt–Crossley with constant b (1) and "
-                                          "constant restitution"))
+  EXPECT_TRUE(contains(report.trend_text,
+                       "excluded: Hunt–Crossley with constant b (1) and "
+                       "constant restitution"))
       << report.trend_text;
 
   // Hunt–Crossley breaks where its energy loss says it must. In sample, independently of the
@@ -218,10 +225,12 @@ TEST(VerdictOnSyntheticCampaigns, KuwabaraKonoCampaign) {
   // L_HC / L_FEM ~ V / V^(1/5): rising with V, by about 10^0.8 = 6.3 over 0.5 to 5 m/s.
   std::vector<double> loss_ratio;
   for (std::size_t i = 0; i < report.runs.size(); ++i)
-    loss_ratio.push_back(1 + relative_error(*hc.runs[i].in_sample, report.runs[i].fem,
-                                       Quantity::energy_loss));
-  for (std::size_t i = 1; i < loss_ratio.size(); ++i) EXPECT_GT(loss_ratio[i], loss_ratio[i - 1]) << i;
-  EXPECT_NEAR(loss_ratio.back() / loss_ratio.front(), std::pow(10.0, 0.8), 0.15 * std::pow(10.0, 0.8));
+    loss_ratio.push_back(
+        1 + relative_error(*hc.runs[i].in_sample, report.runs[i].fem, Quantity::energy_loss));
+  for (std::size_t i = 1; i < loss_ratio.size(); ++i)
+    EXPECT_GT(loss_ratio[i], loss_ratio[i - 1]) << i;
+  EXPECT_NEAR(loss_ratio.back() / loss_ratio.front(), std::pow(10.0, 0.8),
+              0.15 * std::pow(10.0, 0.8));
   EXPECT_LT(loss_ratio.front(), 0.5); // far too little loss at the low end
   // Out of sample the range can only be narrower than what the energy loss allows in sample,
   // and a constant b can hold 1 - e ~ V^(1/5) within 5 % over no two tested velocities.
@@ -278,7 +287,8 @@ TEST(VerdictOnSyntheticCampaigns, StepToStepOscillationIsFlagged) {
   ASSERT_TRUE(report.verdict_available) << report.cause;
   std::size_t warnings = 0;
   for (const auto& problem : report.problems)
-    if (problem.kind == ProblemKind::quality && contains(problem.message, "oscillates from step to step"))
+    if (problem.kind == ProblemKind::quality &&
+        contains(problem.message, "oscillates from step to step"))
       ++warnings;
   EXPECT_EQ(warnings, runs.size());
   for (const auto& run : report.runs) {
@@ -310,7 +320,7 @@ TEST(VerdictOnSyntheticCampaigns, TwoElasticImpactsAgreeInTheirLoss) {
   reference.restitution = 0.99999999998768185;
   for (Quantity loss : {Quantity::energy_loss, Quantity::restitution_deficit})
     EXPECT_EQ(relative_error(model, reference, loss), 0.0) << quantity_key(loss);
-  reference.restitution = 0.999;  // 1 - e^2 = 2.0e-3: the model's 0 is -100 % off
+  reference.restitution = 0.999; // 1 - e^2 = 2.0e-3: the model's 0 is -100 % off
   EXPECT_DOUBLE_EQ(relative_error(model, reference, Quantity::energy_loss), -1.0);
   EXPECT_DOUBLE_EQ(relative_error(model, reference, Quantity::restitution_deficit), -1.0);
 }

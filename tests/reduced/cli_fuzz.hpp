@@ -31,8 +31,8 @@ namespace impact::testing::fuzz {
 
 /// The outcome of one run.
 struct Outcome {
-  int exit_code = -1;  ///< when the program exited
-  int signal = 0;      ///< when a signal ended it (SIGKILL also after the time limit)
+  int exit_code = -1; ///< when the program exited
+  int signal = 0;     ///< when a signal ended it (SIGKILL also after the time limit)
   bool timed_out = false;
   std::string out, err;
   double seconds = 0;

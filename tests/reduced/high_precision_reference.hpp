@@ -127,7 +127,6 @@ inline Real100 one_plus_w_reference(const Real100& s, bool principal) {
   return 1 + (principal ? boost::math::lambert_w0(z) : boost::math::lambert_wm1(z));
 }
 
-
 // ---------------------------------------------------------------------------------------
 // Hunt-Crossley impact: closed forms
 // ---------------------------------------------------------------------------------------
@@ -152,8 +151,10 @@ inline Real100 impact_parameter_reference(double restitution) {
   if (!(residual(lower) > 0 && residual(upper) < 0))
     throw std::runtime_error("impact_parameter_reference: root not bracketed");
   std::uintmax_t iterations = 300;
-  const auto [low, high] = boost::math::tools::toms748_solve(
-      residual, lower, upper, boost::math::tools::eps_tolerance<Real100>(250), iterations);
+  const auto [low, high] =
+      boost::math::tools::toms748_solve(residual, lower, upper,
+                                        boost::math::tools::eps_tolerance<Real100>(250),
+                                        iterations);
   return exp((low + high) / 2);
 }
 
@@ -250,8 +251,7 @@ inline ImpactReference hunt_crossley_reference(const ImpactInput& in, bool with_
   if (in.damping == 0) return hertz_reference(in);
   using boost::math::tools::eps_tolerance;
   using boost::math::tools::toms748_solve;
-  const Real100 m = in.mass, c = in.stiffness, n = in.exponent, b = in.damping,
-                V = in.velocity;
+  const Real100 m = in.mass, c = in.stiffness, n = in.exponent, b = in.damping, V = in.velocity;
   const Real100 p = n + 1;
   ImpactReference r;
   const Real100 beta = b * V; // exact: 106 bits < 333
@@ -283,7 +283,7 @@ inline ImpactReference hunt_crossley_reference(const ImpactInput& in, bool with_
   const Real100 energy_peak = energy_compression100(delta_peak);
   r.approach_at_peak = pow(p * m * energy_peak / (c * b * b), 1 / p);
   r.force_max = exp(psi_peak) * c * pow(r.approach_at_peak, n); // F = -w f(x)
-  r.rate_at_peak = expm1(psi_peak) / b;                           // v = -(1 + w) / b
+  r.rate_at_peak = expm1(psi_peak) / b;                         // v = -(1 + w) / b
 
   if (!with_times) return r;
 
@@ -305,9 +305,8 @@ inline ImpactReference hunt_crossley_reference(const ImpactInput& in, bool with_
   auto restitution_density = [&](const Real50& delta) {
     // y expm1(delta) - X(delta) cancels when y -> 1 (large beta); then the literal
     // delta - a expm1(delta), a = -w_out <= 1/2, has no cancellation.
-    const Real50 energy =
-        y50 <= 0.5 ? Real50(y50 * expm1(delta) - expm1_excess(delta))
-                   : Real50(delta - a50 * expm1(delta));
+    const Real50 energy = y50 <= 0.5 ? Real50(y50 * expm1(delta) - expm1_excess(delta))
+                                     : Real50(delta - a50 * expm1(delta));
     return time_scale / force_of_energy(energy);
   };
   auto& quadrature = quadrature50();
@@ -331,8 +330,8 @@ inline ImpactReference hunt_crossley_reference(const ImpactInput& in, bool with_
     const Real50 value =
         quadrature.integrate(integrand, Real50(0), Real50(1), tolerance, &error, &l1);
     if (std::getenv("HP_VERBOSE"))
-      std::cout << "    quadrature [" << lower << ", " << upper << "]: " << value << " +- "
-                << error << "\n";
+      std::cout << "    quadrature [" << lower << ", " << upper << "]: " << value << " +- " << error
+                << "\n";
     return value;
   };
   Real50 error_peak, error_to_max, error_restitution;
@@ -344,10 +343,9 @@ inline ImpactReference hunt_crossley_reference(const ImpactInput& in, bool with_
   r.time_force_max = Real100(to_peak);
   r.compression_time = Real100(to_peak) + Real100(peak_to_max);
   r.contact_time = r.compression_time + Real100(restitution);
-  r.quadrature_error = static_cast<double>(
-      std::max({error_peak / to_peak, (error_peak + error_to_max) / (to_peak + peak_to_max),
-                (error_peak + error_to_max + error_restitution) /
-                    (to_peak + peak_to_max + restitution)}));
+  r.quadrature_error = static_cast<double>(std::max(
+      {error_peak / to_peak, (error_peak + error_to_max) / (to_peak + peak_to_max),
+       (error_peak + error_to_max + error_restitution) / (to_peak + peak_to_max + restitution)}));
   return r;
 }
 
@@ -357,8 +355,8 @@ inline ImpactReference hunt_crossley_reference(const ImpactInput& in, bool with_
 /// Empty when x lies beyond x_max (no real solution).
 inline std::optional<Real100> approach_rate_reference(const ImpactInput& in, double approach,
                                                       bool compression) {
-  const Real100 m = in.mass, c = in.stiffness, n = in.exponent, b = in.damping,
-                V = in.velocity, x = approach;
+  const Real100 m = in.mass, c = in.stiffness, n = in.exponent, b = in.damping, V = in.velocity,
+                x = approach;
   const Real100 potential = c * pow(x, n + 1) / (n + 1);
   if (in.damping == 0) {
     const Real100 remaining = 1 - potential / (m * V * V / 2);

@@ -16,8 +16,8 @@
 namespace impact::testing {
 
 struct PlasticReferenceLaw {
-  std::function<long double(long double)> loading;  // F_L(x)
-  std::vector<long double> breakpoints;             // where F_L or F_L' jumps
+  std::function<long double(long double)> loading; // F_L(x)
+  std::vector<long double> breakpoints;            // where F_L or F_L' jumps
   // The unloading force F_U(x) from x_max and the approach where the bodies part.
   std::function<long double(long double approach, long double approach_max)> unloading;
   std::function<long double(long double approach_max)> separation_approach;
@@ -27,13 +27,13 @@ struct PlasticReferenceResult {
   long double approach_max;
   long double compression_time;
   long double contact_time;
-  long double rebound_velocity;  // negative
+  long double rebound_velocity; // negative
   long double separation_approach;
 };
 
 namespace detail {
 
-using State = std::array<long double, 2>;  // x, x'
+using State = std::array<long double, 2>; // x, x'
 
 // Integrates from `state` at `time` with step h under `force` until event(state) changes sign
 // from positive; returns the state and time exactly at the event.
@@ -57,7 +57,7 @@ inline void integrate_to_event(State& state, long double& time, long double mass
       time += h;
       continue;
     }
-    long double lower = 0, upper = h;  // event(step(lower)) > 0 >= event(step(upper))
+    long double lower = 0, upper = h; // event(step(lower)) > 0 >= event(step(upper))
     for (int i = 0; i < 200 && upper - lower > 1e-24L * h; ++i) {
       const long double middle = 0.5L * (lower + upper);
       (event(step(state, middle)) > 0 ? lower : upper) = middle;
@@ -84,7 +84,7 @@ inline PlasticReferenceResult integrate_plastic_reference(long double mass, long
     detail::integrate_to_event(state, time, mass, h, law.loading, [&](const detail::State& y) {
       return std::min(breakpoint - y[0], y[1]);
     });
-    if (state[1] <= 0) break;  // at rest before this breakpoint
+    if (state[1] <= 0) break; // at rest before this breakpoint
   }
   if (state[1] > 0)
     detail::integrate_to_event(state, time, mass, h, law.loading,
@@ -92,7 +92,7 @@ inline PlasticReferenceResult integrate_plastic_reference(long double mass, long
   PlasticReferenceResult result{};
   result.approach_max = state[0];
   result.compression_time = time;
-  state[1] = 0;  // exactly at rest at x_max
+  state[1] = 0; // exactly at rest at x_max
   const long double approach_max = result.approach_max;
   const long double separation = law.separation_approach(approach_max);
   detail::integrate_to_event(

@@ -36,59 +36,148 @@ using Arguments = std::vector<std::pair<std::string, std::string>>;
 // Valid argument sets of each subcommand, one per way of giving its inputs.
 const std::vector<std::pair<std::string, Arguments>> valid_sets = {
     {"hc",
-     {{"mass", "0.1"}, {"stiffness", "1.7135e10"}, {"exponent", "1.5"}, {"damping", "0.1"},
+     {{"mass", "0.1"},
+      {"stiffness", "1.7135e10"},
+      {"exponent", "1.5"},
+      {"damping", "0.1"},
       {"velocity", "1"}}},
     {"hc",
-     {{"sphere-modulus", "2e11"}, {"sphere-poisson", "0.25"}, {"radius", "0.01452"},
-      {"flat-modulus", "2e11"}, {"flat-poisson", "0.25"}, {"sphere-density", "7800"},
-      {"damping", "0.1"}, {"velocity", "1"}}},
+     {{"sphere-modulus", "2e11"},
+      {"sphere-poisson", "0.25"},
+      {"radius", "0.01452"},
+      {"flat-modulus", "2e11"},
+      {"flat-poisson", "0.25"},
+      {"sphere-density", "7800"},
+      {"damping", "0.1"},
+      {"velocity", "1"}}},
     {"hc",
-     {{"sphere-modulus", "2e11"}, {"sphere-poisson", "0.25"}, {"radius", "0.01452"},
-      {"flat", "rigid"}, {"mass", "0.1"}, {"damping", "0.5"}, {"velocity", "2"},
+     {{"sphere-modulus", "2e11"},
+      {"sphere-poisson", "0.25"},
+      {"radius", "0.01452"},
+      {"flat", "rigid"},
+      {"mass", "0.1"},
+      {"damping", "0.5"},
+      {"velocity", "2"},
       {"history", "20"}}},
     {"damping", {{"restitution", "0.9"}, {"velocity", "1"}}},
     {"law",
-     {{"model", "lankarani-nikravesh"}, {"restitution", "0.5"}, {"velocity", "1"},
-      {"mass", "0.1"}, {"stiffness", "1e9"}}},
+     {{"model", "lankarani-nikravesh"},
+      {"restitution", "0.5"},
+      {"velocity", "1"},
+      {"mass", "0.1"},
+      {"stiffness", "1e9"}}},
     {"law",
-     {{"model", "kuwabara-kono"}, {"restitution", "0.8"}, {"velocity", "1"},
-      {"sphere-modulus", "2e11"}, {"sphere-poisson", "0.3"}, {"radius", "0.01"},
-      {"flat", "rigid"}, {"sphere-density", "7800"}}},
+     {{"model", "kuwabara-kono"},
+      {"restitution", "0.8"},
+      {"velocity", "1"},
+      {"sphere-modulus", "2e11"},
+      {"sphere-poisson", "0.3"},
+      {"radius", "0.01"},
+      {"flat", "rigid"},
+      {"sphere-density", "7800"}}},
     {"oscillator",
-     {{"mass", "2"}, {"viscous", "8"}, {"c1", "800"}, {"c2", "4000"}, {"power", "1"},
-      {"a0", "0.05"}, {"count", "10"}, {"method", "numeric"}}},
+     {{"mass", "2"},
+      {"viscous", "8"},
+      {"c1", "800"},
+      {"c2", "4000"},
+      {"power", "1"},
+      {"a0", "0.05"},
+      {"count", "10"},
+      {"method", "numeric"}}},
     {"oscillator",
-     {{"mass", "2"}, {"viscous", "8"}, {"c1", "800"}, {"c2", "-4000"}, {"power", "2"},
-      {"a0", "0.05"}, {"count", "10"}, {"method", "lambert"}}},
+     {{"mass", "2"},
+      {"viscous", "8"},
+      {"c1", "800"},
+      {"c2", "-4000"},
+      {"power", "2"},
+      {"a0", "0.05"},
+      {"count", "10"},
+      {"method", "lambert"}}},
     {"thin-plate",
-     {{"plate-modulus", "2e11"}, {"plate-poisson", "0.25"}, {"plate-density", "7800"},
-      {"thickness", "0.005"}, {"stiffness", "1.7135e10"}, {"exponent", "1.5"}, {"mass", "0.1"},
-      {"damping", "0.1"}, {"velocity", "0.5,1,5"}}},
+     {{"plate-modulus", "2e11"},
+      {"plate-poisson", "0.25"},
+      {"plate-density", "7800"},
+      {"thickness", "0.005"},
+      {"stiffness", "1.7135e10"},
+      {"exponent", "1.5"},
+      {"mass", "0.1"},
+      {"damping", "0.1"},
+      {"velocity", "0.5,1,5"}}},
     {"thin-plate",
-     {{"plate-modulus", "2e11"}, {"plate-poisson", "0.25"}, {"plate-density", "7800"},
-      {"thickness", "0.005"}, {"sphere-modulus", "2e11"}, {"sphere-poisson", "0.25"},
-      {"radius", "0.01452"}, {"sphere-density", "7800"}, {"velocity", "1"}}},
+     {{"plate-modulus", "2e11"},
+      {"plate-poisson", "0.25"},
+      {"plate-density", "7800"},
+      {"thickness", "0.005"},
+      {"sphere-modulus", "2e11"},
+      {"sphere-poisson", "0.25"},
+      {"radius", "0.01452"},
+      {"sphere-density", "7800"},
+      {"velocity", "1"}}},
     {"plastic",
-     {{"model", "thornton"}, {"radius", "0.01"}, {"density", "7800"}, {"modulus", "2.1e11"},
-      {"poisson", "0.3"}, {"yield-strength", "1e9"}, {"velocity", "0.1,1,5"}}},
+     {{"model", "thornton"},
+      {"radius", "0.01"},
+      {"density", "7800"},
+      {"modulus", "2.1e11"},
+      {"poisson", "0.3"},
+      {"yield-strength", "1e9"},
+      {"velocity", "0.1,1,5"}}},
     {"plastic",
-     {{"model", "jackson-green"}, {"radius", "0.01"}, {"mass", "0.05"}, {"modulus", "2.1e11"},
-      {"poisson", "0.3"}, {"flat", "rigid"}, {"yield-strength", "1e9"}, {"velocity", "2"},
+     {{"model", "jackson-green"},
+      {"radius", "0.01"},
+      {"mass", "0.05"},
+      {"modulus", "2.1e11"},
+      {"poisson", "0.3"},
+      {"flat", "rigid"},
+      {"yield-strength", "1e9"},
+      {"velocity", "2"},
       {"unloading", "brake"}}},
     {"plastic",
-     {{"model", "thornton"}, {"radius", "0.01"}, {"density", "7800"}, {"modulus", "2.1e11"},
-      {"poisson", "0.3"}, {"flat-modulus", "7e10"}, {"flat-poisson", "0.33"},
-      {"yield-strength", "1e9"}, {"velocity", "1"}, {"loop", "20"}}},
+     {{"model", "thornton"},
+      {"radius", "0.01"},
+      {"density", "7800"},
+      {"modulus", "2.1e11"},
+      {"poisson", "0.3"},
+      {"flat-modulus", "7e10"},
+      {"flat-poisson", "0.33"},
+      {"yield-strength", "1e9"},
+      {"velocity", "1"},
+      {"loop", "20"}}},
 };
 
-const std::vector<std::string> special_values = {
-    "nan", "-nan", "NaN", "inf", "-inf", "1e300", "-1e300", "1e-300", "5e-324", "-5e-324",
-    "1e308", "1.7976931348623157e308", "0", "-0", "-1", "1e400", "abc", "", " 1", "0x10",
-    "1,2", "2.2250738585072014e-308"};
-const std::vector<std::string> word_values = {
-    "rigid", "json", "csv", "thornton", "jackson-green", "brake", "johnson", "numeric",
-    "implicit", "lambert", "lambert-approx", "tsuji", "kelvin-voigt", "kuwabara-kono-no-tension",
-    "hertz", "1", "2", "3", "10", "10000", "100000", "-5", "1e3"};
+const std::vector<std::string> special_values = {"nan",    "-nan",
+                                                 "NaN",    "inf",
+                                                 "-inf",   "1e300",
+                                                 "-1e300", "1e-300",
+                                                 "5e-324", "-5e-324",
+                                                 "1e308",  "1.7976931348623157e308",
+                                                 "0",      "-0",
+                                                 "-1",     "1e400",
+                                                 "abc",    "",
+                                                 " 1",     "0x10",
+                                                 "1,2",    "2.2250738585072014e-308"};
+const std::vector<std::string> word_values = {"rigid",
+                                              "json",
+                                              "csv",
+                                              "thornton",
+                                              "jackson-green",
+                                              "brake",
+                                              "johnson",
+                                              "numeric",
+                                              "implicit",
+                                              "lambert",
+                                              "lambert-approx",
+                                              "tsuji",
+                                              "kelvin-voigt",
+                                              "kuwabara-kono-no-tension",
+                                              "hertz",
+                                              "1",
+                                              "2",
+                                              "3",
+                                              "10",
+                                              "10000",
+                                              "100000",
+                                              "-5",
+                                              "1e3"};
 
 // An option as the usage of its subcommand describes it: its name and, for a number in an
 // interval, the interval's ends.
@@ -124,15 +213,19 @@ std::string random_value(std::mt19937_64& random, const std::string& valid,
   if (kind < 6 && interval) {
     const auto [lower, upper] = *interval;
     switch (pick(random, 8)) {
-    case 0: return number_text(lower);
-    case 1: return number_text(upper);
-    case 2: return number_text(std::nextafter(lower, -HUGE_VAL));
-    case 3: return number_text(std::nextafter(upper, HUGE_VAL));
-    default: {
-      const double fraction = static_cast<double>(pick(random, 1001)) / 1000;
-      return number_text(lower > 0 ? lower * std::pow(upper / lower, fraction)
-                                   : lower + (upper - lower) * fraction);
-    }
+      case 0:
+        return number_text(lower);
+      case 1:
+        return number_text(upper);
+      case 2:
+        return number_text(std::nextafter(lower, -HUGE_VAL));
+      case 3:
+        return number_text(std::nextafter(upper, HUGE_VAL));
+      default: {
+        const double fraction = static_cast<double>(pick(random, 1001)) / 1000;
+        return number_text(lower > 0 ? lower * std::pow(upper / lower, fraction)
+                                     : lower + (upper - lower) * fraction);
+      }
     }
   }
   if (kind < 8) return pick_from(random, special_values);
@@ -195,8 +288,8 @@ Case random_case(std::mt19937_64& random,
       const std::string& name = option.name;
       const auto same = std::find_if(arguments.begin(), arguments.end(),
                                      [&](const auto& entry) { return entry.first == name; });
-      const std::string value = random_value(
-          random, same == arguments.end() ? "1" : same->second, option.interval);
+      const std::string value =
+          random_value(random, same == arguments.end() ? "1" : same->second, option.interval);
       if (same != arguments.end() && pick(random, 4) != 0)
         same->second = value;
       else

@@ -32,9 +32,9 @@ TEST(ComparisonLaws, RegistryNamesAreUniqueAndFound) {
   const auto names = comparison_law_names();
   const std::set<std::string> unique(names.begin(), names.end());
   EXPECT_EQ(unique.size(), names.size());
-  for (const char* name : {"kelvin-voigt", "lankarani-nikravesh", "flores", "gonthier", "hu-guo",
-                           "zhiying-qishao", "tsuji", "tsuji-clamped", "kuwabara-kono",
-                           "kuwabara-kono-no-tension"}) {
+  for (const char* name :
+       {"kelvin-voigt", "lankarani-nikravesh", "flores", "gonthier", "hu-guo", "zhiying-qishao",
+        "tsuji", "tsuji-clamped", "kuwabara-kono", "kuwabara-kono-no-tension"}) {
     EXPECT_EQ(comparison_law(name).name, name);
     EXPECT_FALSE(comparison_law(name).formula.empty());
     EXPECT_FALSE(comparison_law(name).reference.empty());
@@ -91,7 +91,8 @@ TEST(ComparisonLaws, InvalidParametersAreNamed) {
     return "";
   };
   const double nan = std::nan("");
-  for (const double bad : {0.0, -0.5, 1.5, nan}) EXPECT_EQ(parameter_of(law, hertz_setup, bad, 1), "restitution");
+  for (const double bad : {0.0, -0.5, 1.5, nan})
+    EXPECT_EQ(parameter_of(law, hertz_setup, bad, 1), "restitution");
   for (const double bad : {0.0, -1.0, nan, std::numeric_limits<double>::infinity()}) {
     EXPECT_EQ(parameter_of(law, hertz_setup, 0.5, bad), "velocity");
     EXPECT_EQ(parameter_of(law, ContactSetup{bad, 1e9, 1.5}, 0.5, 1), "mass");
@@ -187,7 +188,9 @@ TEST(ComparisonLaws, KuwabaraKonoWithoutTensionAgainstAnIndependentIntegration) 
     const auto result = integrate_impact(mass, velocity, force, 1e-12, ContactEnd::zero_force);
     const auto pulled = integrate_impact(mass, velocity, force, 1e-12);
 
-    struct State { double x, v; };
+    struct State {
+      double x, v;
+    };
     const auto rate = [&](const State& s) {
       return State{s.v, -force(std::max(s.x, 0.0), s.v) / mass};
     };
@@ -218,13 +221,13 @@ TEST(ComparisonLaws, KuwabaraKonoWithoutTensionAgainstAnIndependentIntegration) 
       state = next;
       t += h;
     }
-    std::printf("Kuwabara-Kono A = %.0e s, no tension: e = %.12f (RK4 %.12f), t_c = %.9e s "
-                "(RK4 %.9e), x at release %.4e m (%.2e of x_max); with tension e = %.12f, "
-                "t_c = %.9e s\n",
-                dissipative_constant, result.restitution, -state.v / velocity,
-                result.contact_time, t, result.approach_at_separation,
-                result.approach_at_separation / result.approach_max, pulled.restitution,
-                pulled.contact_time);
+    std::printf(
+        "Kuwabara-Kono A = %.0e s, no tension: e = %.12f (RK4 %.12f), t_c = %.9e s "
+        "(RK4 %.9e), x at release %.4e m (%.2e of x_max); with tension e = %.12f, "
+        "t_c = %.9e s\n",
+        dissipative_constant, result.restitution, -state.v / velocity, result.contact_time, t,
+        result.approach_at_separation, result.approach_at_separation / result.approach_max,
+        pulled.restitution, pulled.contact_time);
     EXPECT_NEAR(result.restitution, -state.v / velocity, 1e-9);
     EXPECT_NEAR(result.contact_time / t, 1, 1e-9);
     EXPECT_NEAR(result.approach_at_separation / state.x, 1, 1e-7);
@@ -232,8 +235,8 @@ TEST(ComparisonLaws, KuwabaraKonoWithoutTensionAgainstAnIndependentIntegration) 
     EXPECT_LT(result.contact_time, pulled.contact_time);
     EXPECT_GT(result.restitution, pulled.restitution);
     // The damping map of the law returns the A that gives its restitution.
-    const double mapped = comparison_law_damping(no_tension, hertz_setup, result.restitution,
-                                                 velocity);
+    const double mapped =
+        comparison_law_damping(no_tension, hertz_setup, result.restitution, velocity);
     EXPECT_NEAR(mapped / dissipative_constant, 1, 1e-8);
   }
 }
@@ -243,10 +246,10 @@ TEST(ComparisonLaws, NoTensionClampKeepsTheForceCompressive) {
   const auto& clamped = comparison_law("tsuji-clamped");
   const auto& free = comparison_law("tsuji");
   const double eta = comparison_law_damping(clamped, hertz_setup, e, velocity);
-  const auto clamped_history = integrate_impact_history(
-      hertz_setup.mass, velocity, clamped.force_law(eta, hertz_setup), 401);
-  const auto free_history = integrate_impact_history(
-      hertz_setup.mass, velocity, free.force_law(eta, hertz_setup), 401);
+  const auto clamped_history = integrate_impact_history(hertz_setup.mass, velocity,
+                                                        clamped.force_law(eta, hertz_setup), 401);
+  const auto free_history =
+      integrate_impact_history(hertz_setup.mass, velocity, free.force_law(eta, hertz_setup), 401);
   double least_clamped = INFINITY, least_free = INFINITY;
   for (const auto& sample : clamped_history) least_clamped = std::min(least_clamped, sample.force);
   for (const auto& sample : free_history) least_free = std::min(least_free, sample.force);
@@ -259,7 +262,8 @@ TEST(ComparisonLaws, NoTensionClampKeepsTheForceCompressive) {
 }
 
 TEST(ComparisonLaws, KelvinVoigtShowsTheForceAtSeparationDefect) {
-  const auto result = evaluate_comparison_law(comparison_law("kelvin-voigt"), linear_setup, 0.5, 1.0);
+  const auto result =
+      evaluate_comparison_law(comparison_law("kelvin-voigt"), linear_setup, 0.5, 1.0);
   // Tension mu V_out at separation, and a jump mu V at first touch.
   EXPECT_LT(result.impact.force_at_separation, 0.0);
   EXPECT_NEAR(result.impact.force_at_separation, result.damping * result.impact.rebound_velocity,

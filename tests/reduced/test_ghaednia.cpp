@@ -33,8 +33,8 @@ const double steel_mass = 4.0 / 3.0 * 3.14159265358979323846 * 1e-6 * 7800;
 // Aluminium sphere (71 GPa, 0.33) on a steel flat (200 GPa, 0.3), R = 1 mm, Y = 500 MPa:
 // parameter set 4 of tmd-lab/microslip-rough-contact TESTS/verification_normal_plasticity.m.
 constexpr double aluminium_modulus = 71e9;
-const SphereFlatContact aluminium{1e-3, 1 / ((1 - 0.33 * 0.33) / 71e9 + (1 - 0.09) / 200e9),
-                                  500e6, 0.33};
+const SphereFlatContact aluminium{1e-3, 1 / ((1 - 0.33 * 0.33) / 71e9 + (1 - 0.09) / 200e9), 500e6,
+                                  0.33};
 
 double relative(long double value, long double reference) {
   return double(std::abs(value - reference) / std::abs(reference));
@@ -47,16 +47,20 @@ struct ReferenceLaw {
   Real radius, e_star, yield, nu, e_s, e_t;
   Real c, critical, critical_load, b, r, s;
   ReferenceLaw(const SphereFlatContact& contact, double youngs, double tangent)
-    : radius(contact.radius), e_star(contact.contact_modulus), yield(contact.yield_strength),
-      nu(contact.poisson_ratio), e_s(youngs), e_t(tangent) {
+      : radius(contact.radius),
+        e_star(contact.contact_modulus),
+        yield(contact.yield_strength),
+        nu(contact.poisson_ratio),
+        e_s(youngs),
+        e_t(tangent) {
     using std::exp;
     using std::sqrt;
     const Real pi = boost::math::constants::pi<Real>();
     c = Real(1295) / 1000 * exp(Real(736) / 1000 * nu);
     critical = (pi * c * yield / (2 * e_star)) * (pi * c * yield / (2 * e_star)) * radius;
     const Real pressure = c * pi * yield / 2;
-    critical_load = Real(4) / 3 * (radius / e_star) * (radius / e_star) * pressure * pressure *
-                    pressure;
+    critical_load =
+        Real(4) / 3 * (radius / e_star) * (radius / e_star) * pressure * pressure * pressure;
     b = Real(14) / 100 * exp(23 * yield / e_star);
     r = e_t / e_s;
     s = sqrt(e_s / yield);
@@ -144,19 +148,14 @@ struct PythonPoint {
 };
 const PythonPoint steel_points[] = {
     {1e-5, 0.4865042554105199, 3.1622776601683793e-5, 1.9460170216420796e-8, 7297563.8311577985},
-    {0.001, 485.03691302757534, 0.0003180161145703994, 0.0019461697405392631,
-     68658714.676765103},
+    {0.001, 485.03691302757534, 0.0003180161145703994, 0.0019461697405392631, 68658714.676765103},
     {0.01, 11156.098386701415, 0.0011736877111102653, 0.48053634094052334, 144286080.00492587},
     {0.05, 79455.127002157587, 0.0029040554401096303, 18.210368569648613, 179152259.23538424}};
 const PythonPoint aluminium_points[] = {
-    {1e-5, 0.0024656120344488455, 3.1622776601683793e-6, 9.862448137795382e-12,
-     369841.80516732683},
-    {0.001, 2.4516318160216678, 3.1712952645822315e-5, 9.8569637915906128e-7,
-     3518534.4904571819},
-    {0.01, 61.337980734418811, 0.00011082047922994986, 0.00025860386431551201,
-     8311616.3889436026},
-    {0.05, 513.23510974014908, 0.00026429070672253873, 0.011141523882498767,
-     13179955.068521417}};
+    {1e-5, 0.0024656120344488455, 3.1622776601683793e-6, 9.862448137795382e-12, 369841.80516732683},
+    {0.001, 2.4516318160216678, 3.1712952645822315e-5, 9.8569637915906128e-7, 3518534.4904571819},
+    {0.01, 61.337980734418811, 0.00011082047922994986, 0.00025860386431551201, 8311616.3889436026},
+    {0.05, 513.23510974014908, 0.00026429070672253873, 0.011141523882498767, 13179955.068521417}};
 
 void expect_python_points(const GhaedniaContact& law, double radius, const PythonPoint* points,
                           const char* name) {
@@ -183,8 +182,7 @@ TEST(Ghaednia, CriticalValuesByHand) {
   EXPECT_NEAR(law.critical_interference(), 4.8335689778144957e-6, 1e-15 * 4.83e-6);
   EXPECT_NEAR(law.critical_interference(), jackson_green_critical_interference(steel),
               1e-15 * law.critical_interference());
-  EXPECT_NEAR(law.critical_load(), jackson_green_critical_load(steel),
-              1e-15 * law.critical_load());
+  EXPECT_NEAR(law.critical_load(), jackson_green_critical_load(steel), 1e-15 * law.critical_load());
   EXPECT_EQ(law.transition_approach(), 1.9 * law.critical_interference());
   EXPECT_NEAR(law.elastic_weight(), 1 - std::exp(-3.3 * 0.02), 1e-16);
 }
@@ -200,16 +198,16 @@ const double hardening_ratios[] = {0.0, 1e-4, 0.005, 0.02, 0.1, 0.5, 0.9};
 
 TEST(Ghaednia, ForceAndRadiusAgainstALongDoubleRewrite) {
   double worst_force = 0, worst_radius = 0;
-  for (const auto& [contact, modulus] : {std::pair{steel, steel_modulus},
-                                         std::pair{aluminium, aluminium_modulus}})
+  for (const auto& [contact, modulus] :
+       {std::pair{steel, steel_modulus}, std::pair{aluminium, aluminium_modulus}})
     for (const double ratio : hardening_ratios) {
       const GhaedniaContact law(contact, modulus, ratio * modulus);
       const ReferenceLaw<long double> reference(contact, modulus, ratio * modulus);
       for (double w = 0.01; w < 2000; w *= 1.07) {
         const double x = w * law.critical_interference();
         worst_force = std::max(worst_force, relative(law.loading_force(x), reference.force(x)));
-        worst_radius = std::max(worst_radius,
-                                relative(law.contact_radius(x), reference.contact_radius(x)));
+        worst_radius =
+            std::max(worst_radius, relative(law.contact_radius(x), reference.contact_radius(x)));
       }
     }
   std::cout << "vs long double, omega* in [0.01, 2000], 7 hardening ratios, 2 materials: F "
@@ -248,8 +246,8 @@ TEST(Ghaednia, JumpAtTheTransitionIsMeasured) {
       const double above = std::nextafter(t, 2 * t);
       const double jump = law.loading_force(above) / law.loading_force(t) - 1;
       // The fit's slope on the right over Hertz's on the left.
-      const double slope = law.loading_stiffness(t) /
-                           law.loading_stiffness(std::nextafter(t, 0.0)) - 1;
+      const double slope =
+          law.loading_stiffness(t) / law.loading_stiffness(std::nextafter(t, 0.0)) - 1;
       if (ratio == 0) jump_perfectly_plastic = jump;
       std::cout << "  [E_t/E_s = " << ratio << ": F " << jump << ", slope " << slope << "]";
       // The sign depends on C(nu) through the fit: up for steel, down for aluminium.
@@ -270,8 +268,8 @@ TEST(Ghaednia, JumpAtTheTransitionIsMeasured) {
 TEST(Ghaednia, WorkAgainstTanhSinhIn50Digits) {
   boost::math::quadrature::tanh_sinh<cpp_bin_float_50> integrator;
   double worst = 0;
-  for (const auto& [contact, modulus] : {std::pair{steel, steel_modulus},
-                                         std::pair{aluminium, aluminium_modulus}})
+  for (const auto& [contact, modulus] :
+       {std::pair{steel, steel_modulus}, std::pair{aluminium, aluminium_modulus}})
     for (const double ratio : {0.0, 0.02, 0.5}) {
       const GhaedniaContact law(contact, modulus, ratio * modulus);
       const ReferenceLaw<cpp_bin_float_50> reference(contact, modulus, ratio * modulus);
@@ -281,16 +279,15 @@ TEST(Ghaednia, WorkAgainstTanhSinhIn50Digits) {
         const double x = w * law.critical_interference();
         cpp_bin_float_50 work = reference.hertz(x) * x * 2 / 5;
         if (x > t)
-          work = hertz_work + integrator.integrate(
-                                  [&](const cpp_bin_float_50& y) { return reference.force(y); },
-                                  t, cpp_bin_float_50(x));
+          work = hertz_work +
+                 integrator.integrate([&](const cpp_bin_float_50& y) { return reference.force(y); },
+                                      t, cpp_bin_float_50(x));
         const double error = double(abs(law.loading_work(x) - work) / work);
         EXPECT_LT(error, 1e-15) << "E_t/E_s = " << ratio << ", omega* = " << w;
         worst = std::max(worst, error);
       }
     }
-  std::cout << "loading work vs tanh-sinh (50 digits): worst relative difference " << worst
-            << "\n";
+  std::cout << "loading work vs tanh-sinh (50 digits): worst relative difference " << worst << "\n";
 }
 
 double central_difference(const ElasticPlasticContact& contact, double x, double h) {
@@ -301,8 +298,8 @@ double central_difference(const ElasticPlasticContact& contact, double x, double
 
 TEST(Ghaednia, StiffnessAgainstACentralDifference) {
   double worst = 0;
-  for (const auto& [contact, modulus] : {std::pair{steel, steel_modulus},
-                                         std::pair{aluminium, aluminium_modulus}})
+  for (const auto& [contact, modulus] :
+       {std::pair{steel, steel_modulus}, std::pair{aluminium, aluminium_modulus}})
     for (const double ratio : hardening_ratios) {
       const GhaedniaContact law(contact, modulus, ratio * modulus);
       for (const double w : {0.2, 1.0, 1.85, 1.95, 3.0, 10.0, 100.0, 1e3, 1e4}) {
@@ -364,7 +361,7 @@ TEST(Ghaednia, NearlyElasticHardeningDoesNotReachHertz) {
   std::cout << "a/a_Hertz at omega* = 100:";
   for (const double r : {0.01, 0.1, 0.5, 0.9, 0.99}) {
     const double a = GhaedniaContact(steel, steel_modulus, r * steel_modulus).contact_radius(x);
-    EXPECT_LE(a, previous) << r;  // equal to a_e (exp(Upsilon) underflows) from r = 0.9
+    EXPECT_LE(a, previous) << r; // equal to a_e (exp(Upsilon) underflows) from r = 0.9
     previous = a;
     std::cout << "  [E_t/E_s = " << r << ": " << a / std::sqrt(steel.radius * x) << "]";
   }
@@ -382,8 +379,7 @@ TEST(Ghaednia, RadiusPreservingUnloading) {
   EXPECT_NEAR(branch.stiffness, 4.0 / 3.0 * e * std::sqrt(4 * e * a * a * a / (3 * force)),
               1e-15 * branch.stiffness);
   // The branch passes through (x_max, F(x_max)).
-  EXPECT_NEAR(branch.stiffness * std::pow(x - branch.residual_approach, 1.5), force,
-              1e-13 * force);
+  EXPECT_NEAR(branch.stiffness * std::pow(x - branch.residual_approach, 1.5), force, 1e-13 * force);
   // Hertz below the transition.
   const HertzianUnloading elastic = law.unloading(law.critical_interference());
   EXPECT_EQ(elastic.residual_approach, 0.0);
@@ -471,8 +467,7 @@ TEST(Ghaednia, ImpactRestitution) {
   // The velocity that just reaches 1.9 delta_c: W_L(1.9 delta_c) = m V^2 / 2.
   for (const double ratio : {0.0, 0.02, 0.1, 0.5}) {
     const GhaedniaContact law(steel, steel_modulus, ratio * steel_modulus);
-    const double v_t =
-        std::sqrt(2 * law.loading_work(law.transition_approach()) / steel_mass);
+    const double v_t = std::sqrt(2 * law.loading_work(law.transition_approach()) / steel_mass);
     const auto elastic = elastic_plastic_impact(steel_mass, 0.5 * v_t, law);
     EXPECT_NEAR(elastic.restitution, 1.0, 1e-15);
     EXPECT_EQ(elastic.residual_approach, 0.0);
@@ -483,8 +478,7 @@ TEST(Ghaednia, ImpactRestitution) {
       EXPECT_LT(impact.restitution, 1.0);
       EXPECT_GT(impact.residual_approach, 0.0);
       std::cout << "  [V/V_t = " << multiple << ": e = " << impact.restitution
-                << ", x_max/delta_c = " << impact.approach_max / law.critical_interference()
-                << "]";
+                << ", x_max/delta_c = " << impact.approach_max / law.critical_interference() << "]";
     }
     std::cout << "\n";
   }

@@ -30,8 +30,8 @@ constexpr double damping = 0.1;
 
 // |value - printed| within half a unit of the printed value's last digit.
 void expect_printed(double value, double printed, int significant_digits, const char* name) {
-  const double unit = std::pow(10.0, std::floor(std::log10(std::fabs(printed))) -
-                                         (significant_digits - 1));
+  const double unit =
+      std::pow(10.0, std::floor(std::log10(std::fabs(printed))) - (significant_digits - 1));
   EXPECT_LE(std::fabs(value - printed), 0.5 * unit)
       << name << ": computed " << value << ", published " << printed;
 }
@@ -60,7 +60,8 @@ TEST(HuntCrossley, DampingForRestitutionNinetyPercent) {
 
 TEST(HuntCrossley, HertzStiffnessOfTheSteelBallOnASteelPlate) {
   const double density = 7800.0;
-  const double radius = std::cbrt(3.0 * mass / (4.0 * boost::math::constants::pi<double>() * density));
+  const double radius =
+      std::cbrt(3.0 * mass / (4.0 * boost::math::constants::pi<double>() * density));
   EXPECT_NEAR(radius, 14.52e-3, 0.005e-3);
   // The published check value 1.7135e10 is 1.5e-4 below the formula's 1.71376e10 for
   // R = 14.52 mm (it corresponds to R = 14.516 mm): agreement to 2e-4 is what it supports.
@@ -101,11 +102,13 @@ TEST(HuntCrossley, OtherVelocitiesAgreeWithOdeIntegration) {
         mass, velocity,
         [](double x, double v) { return stiffness * std::pow(x, exponent) * (1 + damping * v); },
         1e-13);
-    const std::pair<double, double> pairs[] = {
-        {closed.approach_max, ode.approach_max},   {closed.force_max, ode.force_max},
-        {closed.time_force_max, ode.time_force_max}, {closed.compression_time, ode.compression_time},
-        {closed.contact_time, ode.contact_time},   {closed.restitution, ode.restitution},
-        {closed.rebound_velocity, ode.rebound_velocity}};
+    const std::pair<double, double> pairs[] = {{closed.approach_max, ode.approach_max},
+                                               {closed.force_max, ode.force_max},
+                                               {closed.time_force_max, ode.time_force_max},
+                                               {closed.compression_time, ode.compression_time},
+                                               {closed.contact_time, ode.contact_time},
+                                               {closed.restitution, ode.restitution},
+                                               {closed.rebound_velocity, ode.rebound_velocity}};
     for (const auto& [exact, integrated] : pairs) {
       const double error = std::fabs(exact / integrated - 1.0);
       worst = std::max(worst, error);
@@ -142,8 +145,8 @@ TEST(HuntCrossley, LargeImpactParameterStaysFinite) {
   const HuntCrossleyImpact impact(mass, stiffness, exponent, 1e4, 1.0);
   const ImpactResponse response = impact.response();
   for (const double value : {response.approach_max, response.force_max, response.time_force_max,
-                             response.compression_time, response.contact_time,
-                             response.restitution, response.energy_loss})
+                             response.compression_time, response.contact_time, response.restitution,
+                             response.energy_loss})
     EXPECT_TRUE(std::isfinite(value));
   EXPECT_NEAR(response.restitution * 1e4, 1.0, 1e-3);
 }
@@ -193,8 +196,9 @@ TEST(HuntCrossley, HistoryFollowsTheOdeSolution) {
   EXPECT_DOUBLE_EQ(history.back().time, impact.contact_time());
   EXPECT_DOUBLE_EQ(history.back().approach_rate, impact.rebound_velocity());
   const auto ode = integrate_impact_history(
-      mass, 2.0, [](double x, double v) { return stiffness * std::pow(x, exponent) * (1 + damping * v); },
-      41, 1e-13);
+      mass, 2.0,
+      [](double x, double v) { return stiffness * std::pow(x, exponent) * (1 + damping * v); }, 41,
+      1e-13);
   ASSERT_EQ(ode.size(), history.size());
   const double force_scale = impact.force_peak().force;
   const double approach_scale = impact.approach_max();
@@ -239,7 +243,8 @@ TEST(HuntCrossley, InvalidInputNamesTheParameter) {
     expect_invalid([&] { HuntCrossleyImpact(bad, stiffness, exponent, damping, 1.0); }, "mass");
     expect_invalid([&] { HuntCrossleyImpact(mass, bad, exponent, damping, 1.0); }, "stiffness");
     expect_invalid([&] { HuntCrossleyImpact(mass, stiffness, bad, damping, 1.0); }, "exponent");
-    expect_invalid([&] { HuntCrossleyImpact(mass, stiffness, exponent, damping, bad); }, "velocity");
+    expect_invalid([&] { HuntCrossleyImpact(mass, stiffness, exponent, damping, bad); },
+                   "velocity");
     expect_invalid([&] { impact_parameter_from_restitution(bad); }, "restitution");
     expect_invalid([&] { damping_from_restitution(0.5, bad); }, "velocity");
   }

@@ -31,11 +31,11 @@
 namespace {
 
 using namespace impact::reduced;
+using hp::expect_target;
 using hp::ImpactInput;
 using hp::ImpactReference;
 using hp::Real100;
 using hp::relative_error;
-using hp::expect_target;
 using hp::report;
 using hp::WorstError;
 
@@ -54,8 +54,7 @@ constexpr double target_rate = 1e-12; // v(x)
 std::vector<double> log_grid(double first, double last, int count) {
   std::vector<double> grid;
   const double decades = std::log10(last / first);
-  for (int i = 0; i < count; ++i)
-    grid.push_back(first * std::pow(10.0, decades * i / (count - 1)));
+  for (int i = 0; i < count; ++i) grid.push_back(first * std::pow(10.0, decades * i / (count - 1)));
   grid.front() = first;
   grid.back() = last;
   return grid;
@@ -88,7 +87,6 @@ double call(const std::function<double()>& f, const std::string& what) {
     return std::numeric_limits<double>::quiet_NaN();
   }
 }
-
 
 // ---------------------------------------------------------------------------------------
 // The references themselves
@@ -124,7 +122,10 @@ TEST(HuntCrossleyAccuracy, ReferenceSelfCheck) {
       const Real100 golden = (sqrt(Real100(5)) - 1) / 2;
       for (int i = 0; i < 130; ++i) { // interval 1e-27 psi_in: F(peak) to ~1e-54
         const Real100 x1 = hi - golden * (hi - lo), x2 = lo + golden * (hi - lo);
-        if (force(x1) < force(x2)) lo = x1; else hi = x2;
+        if (force(x1) < force(x2))
+          lo = x1;
+        else
+          hi = x2;
       }
       const Real100 f_max = force((lo + hi) / 2);
       EXPECT_LT(static_cast<double>(abs((f_max - r.force_max) / f_max)), 1e-40)
@@ -146,8 +147,8 @@ TEST(HuntCrossleyAccuracy, ReferenceSelfCheck) {
         return hp::Real50(b / abs(y));
       };
       hp::Real50 error = 0;
-      const hp::Real50 t = hp::quadrature50().integrate(integrand, hp::Real50(0), x_max,
-                                                        hp::Real50(1e-30), &error);
+      const hp::Real50 t =
+          hp::quadrature50().integrate(integrand, hp::Real50(0), x_max, hp::Real50(1e-30), &error);
       const Real100 reference =
           compression ? r.compression_time : Real100(r.contact_time - r.compression_time);
       const double difference = static_cast<double>(abs((Real100(t) - reference) / reference));
@@ -181,8 +182,8 @@ TEST(HuntCrossleyAccuracy, RestitutionAndReboundVelocity) {
   // Dense (cheap): catches method switches inside the library.
   for (const double beta : beta_grid(1e4, 400)) {
     const Real100 reference = hp::restitution_reference(Real100(beta));
-    const double value =
-        call([&] { return restitution_from_impact_parameter(beta); }, "restitution_from_impact_parameter");
+    const double value = call([&] { return restitution_from_impact_parameter(beta); },
+                              "restitution_from_impact_parameter");
     k_free.update(relative_error(value, reference), hp::format("beta=%.17g", beta));
   }
   for (const double velocity : {1.0, 0.05, 20.0}) {
@@ -296,13 +297,13 @@ TEST(HuntCrossleyAccuracy, PeakTimeCompressionAndContactTimes) {
         t_compression = impact.compression_time();
         t_contact = impact.contact_time();
         const ImpactResponse all = impact.response();
-        const double consistency = std::max(
-            {std::fabs(all.time_force_max / t_peak - 1),
-             std::fabs(all.compression_time / t_compression - 1),
-             std::fabs(all.contact_time / t_contact - 1),
-             std::fabs(all.approach_max / impact.approach_max() - 1),
-             std::fabs(all.force_max / impact.force_peak().force - 1),
-             std::fabs(all.rebound_velocity / impact.rebound_velocity() - 1)});
+        const double consistency =
+            std::max({std::fabs(all.time_force_max / t_peak - 1),
+                      std::fabs(all.compression_time / t_compression - 1),
+                      std::fabs(all.contact_time / t_contact - 1),
+                      std::fabs(all.approach_max / impact.approach_max() - 1),
+                      std::fabs(all.force_max / impact.force_peak().force - 1),
+                      std::fabs(all.rebound_velocity / impact.rebound_velocity() - 1)});
         response_consistency.update(consistency, in.describe());
       } catch (const std::exception& error) {
         std::cout << "  EXCEPTION at " << in.describe() << ": " << error.what() << "\n";
@@ -335,12 +336,11 @@ double approach_at(const Real100& x_max, const Real100& fraction) {
 }
 
 TEST(HuntCrossleyAccuracy, ApproachRateBothBranches) {
-  const std::vector<Real100> fractions = {
-      Real100(0),         Real100(1e-6),       Real100(1) / 10,
-      Real100(1) / 2,     Real100(9) / 10,     1 - Real100(1e-6),
-      1 - Real100(1e-8),  1 - Real100(1e-10),  Real100(1)};
-  const char* fraction_names[] = {"0",        "1e-6",     "0.1",       "0.5", "0.9",
-                                  "1-1e-6",   "1-1e-8",   "1-1e-10",   "1(x<=x_max)"};
+  const std::vector<Real100> fractions = {Real100(0),        Real100(1e-6),      Real100(1) / 10,
+                                          Real100(1) / 2,    Real100(9) / 10,    1 - Real100(1e-6),
+                                          1 - Real100(1e-8), 1 - Real100(1e-10), Real100(1)};
+  const char* fraction_names[] = {"0",      "1e-6",   "0.1",     "0.5",        "0.9",
+                                  "1-1e-6", "1-1e-8", "1-1e-10", "1(x<=x_max)"};
   WorstError compression("approach_rate compression (W-1)", target_rate);
   WorstError restitution("approach_rate restitution (W0)", target_rate);
   WorstError near_max("  of which x >= (1-1e-6) x_max", target_rate);
@@ -366,8 +366,9 @@ TEST(HuntCrossleyAccuracy, ApproachRateBothBranches) {
         // At the library's own x_max (possibly an ulp beyond the true one): no exception,
         // and |v| ~ sqrt(2 f(x_max) dx / m) ~ 1e-8 V.
         for (const ImpactPhase phase : {ImpactPhase::compression, ImpactPhase::restitution}) {
-          const double v = call([&] { return impact->approach_rate(impact->approach_max(), phase); },
-                                "approach_rate(approach_max()) at " + in.describe());
+          const double v =
+              call([&] { return impact->approach_rate(impact->approach_max(), phase); },
+                   "approach_rate(approach_max()) at " + in.describe());
           EXPECT_LE(std::fabs(v), 1e-6 * c.velocity) << in.describe();
         }
       }
@@ -376,8 +377,8 @@ TEST(HuntCrossleyAccuracy, ApproachRateBothBranches) {
         for (const bool is_compression : {true, false}) {
           const auto reference = hp::approach_rate_reference(in, x, is_compression);
           ASSERT_TRUE(reference.has_value()) << "x beyond x_max at " << in.describe();
-          const std::string where = in.describe() + ", x=x_max*" + fraction_names[i] +
-                                    hp::format(" (x=%.17g)", x);
+          const std::string where =
+              in.describe() + ", x=x_max*" + fraction_names[i] + hp::format(" (x=%.17g)", x);
           double value = std::numeric_limits<double>::quiet_NaN();
           if (impact) {
             value = call(
@@ -447,8 +448,8 @@ TEST(HuntCrossleyAccuracy, HertzLimit) {
     }
   }
   std::cout << "Hertz limit b = 0:\n";
-  for (const WorstError* w : {&constant, &x_max, &f_max, &t_peak, &t_compression, &t_contact,
-                              &v_out})
+  for (const WorstError* w :
+       {&constant, &x_max, &f_max, &t_peak, &t_compression, &t_contact, &v_out})
     expect_target(*w);
 }
 
@@ -494,11 +495,12 @@ TEST(HuntCrossleyAccuracy, ContinuityAsBetaGoesToZero) {
     const HuntCrossleyImpact damped = make_impact(damped_in);
     const std::string where = hp::format("n=%g", n);
     const auto step_error = [&](WorstError& worst, double value_damped, double value_elastic,
-                                const Real100& reference_damped,
-                                const Real100& reference_elastic, const std::string& what) {
+                                const Real100& reference_damped, const Real100& reference_elastic,
+                                const std::string& what) {
       const Real100 true_step = reference_damped - reference_elastic;
       const Real100 step = Real100(value_damped) - Real100(value_elastic);
-      largest_step = std::max(largest_step, static_cast<double>(abs(true_step / reference_elastic)));
+      largest_step =
+          std::max(largest_step, static_cast<double>(abs(true_step / reference_elastic)));
       worst.update(static_cast<double>(abs((step - true_step) / reference_elastic)),
                    where + " " + what);
     };
@@ -506,14 +508,13 @@ TEST(HuntCrossleyAccuracy, ContinuityAsBetaGoesToZero) {
     step_error(step_peak, damped.approach_max(), elastic.approach_max(), d.approach_max,
                h.approach_max, "x_max");
     step_error(step_peak, peak_d.force, peak_e.force, d.force_max, h.force_max, "F_max");
-    step_error(step_peak, peak_d.time, peak_e.time, d.time_force_max, h.time_force_max,
-               "t(F_max)");
-    step_error(step_time, damped.compression_time(), elastic.compression_time(),
-               d.compression_time, h.compression_time, "t_comp");
+    step_error(step_peak, peak_d.time, peak_e.time, d.time_force_max, h.time_force_max, "t(F_max)");
+    step_error(step_time, damped.compression_time(), elastic.compression_time(), d.compression_time,
+               h.compression_time, "t_comp");
     step_error(step_time, damped.contact_time(), elastic.contact_time(), d.contact_time,
                h.contact_time, "t_c");
-    step_error(step_k, damped.restitution(), elastic.restitution(), d.restitution,
-               h.restitution, "k");
+    step_error(step_k, damped.restitution(), elastic.restitution(), d.restitution, h.restitution,
+               "k");
     for (const double fraction : {0.5, 0.999, 1 - 1e-6}) {
       const double x = fraction * elastic.approach_max();
       for (const bool compression : {true, false}) {
@@ -530,8 +531,8 @@ TEST(HuntCrossleyAccuracy, ContinuityAsBetaGoesToZero) {
   std::cout << "Continuity as beta -> 0 (tiny beta against the Hertz references; the step from "
                "b = 0 to beta = 1e-12 against the true step, largest true step "
             << largest_step << "):\n";
-  for (const WorstError* w : {&tiny_x, &tiny_f, &tiny_tp, &tiny_tc, &tiny_k, &step_peak,
-                              &step_time, &step_k, &step_rate})
+  for (const WorstError* w :
+       {&tiny_x, &tiny_f, &tiny_tp, &tiny_tc, &tiny_k, &step_peak, &step_time, &step_k, &step_rate})
     expect_target(*w);
 }
 
@@ -560,8 +561,13 @@ TEST(HuntCrossleyAccuracy, LargeImpactParameterIsFinite) {
       } catch (const std::exception& error) {
         ADD_FAILURE() << "throws at " << where << ": " << error.what();
       }
-      const double values[] = {impact->approach_max(), impact->restitution(),
-                               impact->rebound_velocity(), peak.force, peak.time, t_comp, t_c,
+      const double values[] = {impact->approach_max(),
+                               impact->restitution(),
+                               impact->rebound_velocity(),
+                               peak.force,
+                               peak.time,
+                               t_comp,
+                               t_c,
                                impact->approach_rate(0.5 * impact->approach_max(),
                                                      ImpactPhase::compression),
                                impact->approach_rate(0.5 * impact->approach_max(),

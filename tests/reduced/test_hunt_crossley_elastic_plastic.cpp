@@ -45,9 +45,9 @@ constexpr double pi = 3.14159265358979323846;
 // ---- The springs, written out from their published formulas in 50 digits ----
 
 struct ReferenceSpring {
-  std::function<Real50(const Real50&)> force;      // F_L(x)
-  std::function<Real50(const Real50&)> stiffness;  // F_L'(x)
-  std::vector<Real50> breakpoints;                 // where F_L or F_L' jumps
+  std::function<Real50(const Real50&)> force;     // F_L(x)
+  std::function<Real50(const Real50&)> stiffness; // F_L'(x)
+  std::vector<Real50> breakpoints;                // where F_L or F_L' jumps
   // Work of F_L between a and b (a < b), closed form where there is one.
   std::function<Real50(const Real50&, const Real50&)> work;
   // Hertzian unloading from x_max: stiffness k_u and residual x_r.
@@ -87,7 +87,8 @@ ReferenceSpring hertz_spring(double stiffness) {
 // Thornton (1997): Hertz to x_y, then F_y + pi p_y R (x - x_y); unloading on R_p with
 // a_p^2 = (2 F* + F_y) / (2 pi p_y), R_p = 4 E* a_p^3 / (3 F*), x_p = x_max - 3 F* / (4 E* a_p).
 ReferenceSpring thornton_spring(double radius, double modulus, double yield_pressure) {
-  const Real50 R = radius, E = modulus, p = yield_pressure, PI = boost::math::constants::pi<Real50>();
+  const Real50 R = radius, E = modulus, p = yield_pressure,
+               PI = boost::math::constants::pi<Real50>();
   const Real50 c = Real50(4) / 3 * E * sqrt(R);
   const Real50 x_y = R * pow(PI * p / (2 * E), 2);
   const Real50 F_y = c * pow(x_y, Real50(1.5));
@@ -96,9 +97,7 @@ ReferenceSpring thornton_spring(double radius, double modulus, double yield_pres
   s.force = [=](const Real50& x) {
     return x <= x_y ? Real50(c * pow(x, Real50(1.5))) : Real50(F_y + k_p * (x - x_y));
   };
-  s.stiffness = [=](const Real50& x) {
-    return x < x_y ? Real50(1.5 * c * sqrt(x)) : k_p;
-  };
+  s.stiffness = [=](const Real50& x) { return x < x_y ? Real50(1.5 * c * sqrt(x)) : k_p; };
   s.breakpoints = {x_y};
   s.work = [=](const Real50& a, const Real50& b) {
     auto W = [&](const Real50& x) {
@@ -145,14 +144,13 @@ Reference reference_impact(const ReferenceSpring& spring, double mass_, double d
   };
   // Energy stored in the spring at x_max: m V^2 / 2 (b = 0), (m / b^2)(beta - ln(1 + beta)).
   const Real50 beta = b * V;
-  const Real50 stored = b == 0 ? Real50(m * V * V / 2)
-                               : Real50(m / (b * b) * (beta - log1p(beta)));
+  const Real50 stored = b == 0 ? Real50(m * V * V / 2) : Real50(m / (b * b) * (beta - log1p(beta)));
   Real50 upper = 1e-12;
   while (work(Real50(0), upper) < stored) upper *= 2;
   std::uintmax_t iterations = 400;
-  const auto [low, high] = toms748_solve(
-      [&](const Real50& x) { return Real50(work(Real50(0), x) - stored); }, Real50(0), upper,
-      eps_tolerance<Real50>(160), iterations);
+  const auto [low, high] =
+      toms748_solve([&](const Real50& x) { return Real50(work(Real50(0), x) - stored); }, Real50(0),
+                    upper, eps_tolerance<Real50>(160), iterations);
   const Real50 x_max = (low + high) / 2;
   Reference r;
   r.approach_max = Real100(x_max);
@@ -206,7 +204,8 @@ Reference reference_impact(const ReferenceSpring& spring, double mass_, double d
         return 2 * sqrt(length * m / (2 * F));
       }
       const Real50 x = x_max - length * s * s;
-      const Real50 energy = compressing ? work(x, x_max) : Real50(branch_work(x_max) - branch_work(x));
+      const Real50 energy =
+          compressing ? work(x, x_max) : Real50(branch_work(x_max) - branch_work(x));
       return 2 * length * s / abs(rate_of_energy(energy, compressing));
     };
     std::vector<Real50> ends{Real50(0)};
@@ -232,7 +231,7 @@ struct Case {
   std::shared_ptr<const ElasticPlasticContact> spring;
   ReferenceSpring reference;
   double mass;
-  double yield_velocity;  // the scale of the velocities (V_y of the contact)
+  double yield_velocity; // the scale of the velocities (V_y of the contact)
 };
 
 // A 10 mm (radius 5 mm) steel ball on a steel flat: E* = 1.154e11 Pa, p_y = 1.6 x 1 GPa.
@@ -333,7 +332,7 @@ OdeReference jackson_green_ode_reference(const SphereFlatContact& contact, long 
     return P_c * (std::exp(-std::pow(w, 5.0L / 12) / 4) * std::pow(w, 1.5L) +
                   4 * H / C * (1 - std::exp(-std::pow(w, 5.0L / 9) / 25)) * w);
   };
-  auto slope = [&](Real x) {  // central difference, ~1e-12 relative: enough for the event
+  auto slope = [&](Real x) { // central difference, ~1e-12 relative: enough for the event
     const Real h = x * 1e-6L;
     if (!passed) return 1.5L * c * std::sqrt(x);
     return (loading(x + h) - loading(std::max(x_t * (1 + 1e-15L), x - h))) /
@@ -400,11 +399,11 @@ OdeReference jackson_green_ode_reference(const SphereFlatContact& contact, long 
     if (!passed && state[0] >= x_t * (1 - 1e-15L)) {
       passed = true;
       state[0] = x_t * (1 + 1e-18L);
-      peak = std::max(peak, force(state));  // the fit's side of the jump
+      peak = std::max(peak, force(state)); // the fit's side of the jump
       seek_peak = force_rate(state) > 0;
       continue;
     }
-    seek_peak = false;  // stopped at the peak
+    seek_peak = false; // stopped at the peak
   }
   r.approach_max = state[0];
   r.compression_time = time;
@@ -436,9 +435,9 @@ TEST(HuntCrossleyElasticPlastic, JacksonGreenSpringAgainstAnIndependentIntegrati
   for (const double ratio : {3.0, 30.0})
     for (const double beta : {0.0, 0.01, 1.0}) {
       const double velocity = ratio * c.yield_velocity, damping = beta / velocity;
-      const auto ours = HuntCrossleyElasticPlasticImpact(c.mass, c.spring, damping, velocity).response();
-      const OdeReference r =
-          jackson_green_ode_reference(contact, c.mass, damping, velocity, 20000);
+      const auto ours =
+          HuntCrossleyElasticPlasticImpact(c.mass, c.spring, damping, velocity).response();
+      const OdeReference r = jackson_green_ode_reference(contact, c.mass, damping, velocity, 20000);
       const std::string at = where(c, ratio, beta);
       const long double e = -r.rebound_velocity / velocity;
       const double errors[] = {
@@ -464,7 +463,8 @@ TEST(HuntCrossleyElasticPlastic, HertzSpringIsHuntCrossley) {
   for (const double velocity : {0.1, 1.0, 10.0})
     for (const double beta : {0.0, 1e-6, 0.05, 0.5, 3.0, 100.0}) {
       const double damping = beta / velocity;
-      const auto ours = HuntCrossleyElasticPlasticImpact(c.mass, c.spring, damping, velocity).response();
+      const auto ours =
+          HuntCrossleyElasticPlasticImpact(c.mass, c.spring, damping, velocity).response();
       const auto theirs = HuntCrossleyImpact(c.mass, stiffness, 1.5, damping, velocity).response();
       for (const auto& [a, z] : {std::pair{ours.restitution, theirs.restitution},
                                  {ours.approach_max, theirs.approach_max},
@@ -481,15 +481,16 @@ TEST(HuntCrossleyElasticPlastic, UndampedIsTheRateIndependentImpact) {
   for (const Case& c : {thornton_case(), jackson_green_case()})
     for (const double ratio : {0.7, 2.0, 20.0, 300.0}) {
       const double velocity = ratio * c.yield_velocity;
-      const auto ours = HuntCrossleyElasticPlasticImpact(c.mass, c.spring, 0.0, velocity).response();
+      const auto ours =
+          HuntCrossleyElasticPlasticImpact(c.mass, c.spring, 0.0, velocity).response();
       const auto theirs = elastic_plastic_impact(c.mass, velocity, *c.spring);
       const std::string at = where(c, ratio, 0);
       EXPECT_NEAR(ours.restitution, theirs.restitution, 1e-12 * theirs.restitution) << at;
       EXPECT_NEAR(ours.approach_max, theirs.approach_max, 1e-13 * theirs.approach_max) << at;
       EXPECT_NEAR(ours.force_max, theirs.force_max, 1e-13 * theirs.force_max) << at;
       EXPECT_NEAR(ours.contact_time, theirs.contact_time, 1e-11 * theirs.contact_time) << at;
-      EXPECT_NEAR(ours.separation_approach, theirs.residual_approach,
-                  1e-12 * theirs.approach_max) << at;
+      EXPECT_NEAR(ours.separation_approach, theirs.residual_approach, 1e-12 * theirs.approach_max)
+          << at;
     }
 }
 
@@ -502,8 +503,10 @@ TEST(HuntCrossleyElasticPlastic, CarriesBothLosses) {
   const double damping = 0.05 / below;
   EXPECT_NEAR(HuntCrossleyElasticPlasticImpact(c.mass, c.spring, damping, below).restitution(),
               HuntCrossleyImpact(c.mass, stiffness, 1.5, damping, below).restitution(), 1e-14);
-  const double plastic = HuntCrossleyElasticPlasticImpact(c.mass, c.spring, 0.0, above).restitution();
-  const double both = HuntCrossleyElasticPlasticImpact(c.mass, c.spring, damping, above).restitution();
+  const double plastic =
+      HuntCrossleyElasticPlasticImpact(c.mass, c.spring, 0.0, above).restitution();
+  const double both =
+      HuntCrossleyElasticPlasticImpact(c.mass, c.spring, damping, above).restitution();
   EXPECT_LT(plastic, 1.0);
   EXPECT_LT(both, plastic);
 }
@@ -523,8 +526,8 @@ TEST(HuntCrossleyElasticPlastic, HistoryEndsAtTheResponseAndRatesMatch) {
   for (std::size_t i = 1; i + 1 < states.size(); ++i) {
     const auto& s = states[i];
     EXPECT_GT(s.time, states[i - 1].time);
-    const auto phase = s.time <= response.compression_time ? ImpactPhase::compression
-                                                           : ImpactPhase::restitution;
+    const auto phase =
+        s.time <= response.compression_time ? ImpactPhase::compression : ImpactPhase::restitution;
     EXPECT_NEAR(s.approach_rate, impact.approach_rate(s.approach, phase), 1e-9 * velocity)
         << "t = " << s.time;
     EXPECT_NEAR(s.force, impact.force(s.approach, s.approach_rate, phase),
@@ -551,8 +554,11 @@ TEST(HuntCrossleyElasticPlastic, RefusesBadInputNamingTheParameter) {
   refuses("velocity", [&] { HuntCrossleyElasticPlasticImpact(1.0, c.spring, 1.0, NAN); });
   refuses("stiffness", [&] { HertzContact(-1.0); });
   const HuntCrossleyElasticPlasticImpact impact(c.mass, c.spring, 0.1, 10 * c.yield_velocity);
-  refuses("approach", [&] { impact.approach_rate(2 * impact.approach_max(), ImpactPhase::restitution); });
-  refuses("approach", [&] { impact.approach_rate(0.5 * impact.separation_approach(), ImpactPhase::restitution); });
+  refuses("approach",
+          [&] { impact.approach_rate(2 * impact.approach_max(), ImpactPhase::restitution); });
+  refuses("approach", [&] {
+    impact.approach_rate(0.5 * impact.separation_approach(), ImpactPhase::restitution);
+  });
   refuses("points", [&] { impact.history(1); });
 }
 

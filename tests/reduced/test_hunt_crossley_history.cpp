@@ -38,12 +38,12 @@ constexpr double stiffness = 1.7135e10;
 constexpr double target_state = 1e-12;
 constexpr double target_time = 1e-13;
 
-const std::vector<double> betas = {0.0,  1e-12, 1e-8, 1e-4, 0.01, 0.1, 0.5,   1.0,
-                                   1.0 + 1e-9, 2.0, 10.0, 100.0, 1e3};
+const std::vector<double> betas = {0.0, 1e-12,      1e-8, 1e-4, 0.01,  0.1, 0.5,
+                                   1.0, 1.0 + 1e-9, 2.0,  10.0, 100.0, 1e3};
 
 std::string where(double beta, double n, double velocity, std::size_t i) {
-  return hp::format("beta=%.6g", beta) + hp::format(" n=%g", n) +
-         hp::format(" V=%g", velocity) + " point " + std::to_string(i);
+  return hp::format("beta=%.6g", beta) + hp::format(" n=%g", n) + hp::format(" V=%g", velocity) +
+         " point " + std::to_string(i);
 }
 
 TEST(HuntCrossleyHistory, AgreesWithThePerPointQuadrature) {
@@ -125,10 +125,12 @@ StateReference state_reference(const hp::ImpactInput& in, const hp::ImpactRefere
   } else { // E(delta) = E(x), E increasing in delta on the phase
     const Real50 target = pow(Real50(state.approach), p50) / energy_to_xp;
     boost::uintmax_t iterations = 300;
-    const auto [low, high] = boost::math::tools::toms748_solve(
-        [&](const Real50& d) { return energy(d) - target; }, Real50(0),
-        compression ? Real50(psi_in) : Real50(-psi_out),
-        boost::math::tools::eps_tolerance<Real50>(160), iterations);
+    const auto [low, high] =
+        boost::math::tools::toms748_solve([&](const Real50& d) { return energy(d) - target; },
+                                          Real50(0),
+                                          compression ? Real50(psi_in) : Real50(-psi_out),
+                                          boost::math::tools::eps_tolerance<Real50>(160),
+                                          iterations);
     delta = (low + high) / 2;
   }
   Real50 error = 0;
@@ -137,15 +139,15 @@ StateReference state_reference(const hp::ImpactInput& in, const hp::ImpactRefere
                       [&](const Real50& u) {
                         // The tail within 1e-200 of the end weighs < 1e-57 (as in
                         // hunt_crossley_reference); there E underflows.
-                        return u > Real50(1e-200) ? Real50(delta * density(delta * u))
-                                                  : Real50(0);
+                        return u > Real50(1e-200) ? Real50(delta * density(delta * u)) : Real50(0);
                       },
                       Real50(0), Real50(1), Real50(1e-32), &error)
                 : Real50(0);
   StateReference s;
   s.time = compression ? Real100(elapsed) : Real100(r.contact_time - Real100(elapsed));
   s.approach = Real100(pow(energy_to_xp * energy(delta), 1 / p50));
-  const Real100 psi = compression ? Real100(psi_in - Real100(delta)) : Real100(psi_out + Real100(delta));
+  const Real100 psi =
+      compression ? Real100(psi_in - Real100(delta)) : Real100(psi_out + Real100(delta));
   s.rate = expm1(psi) / b;
   s.force = c * pow(s.approach, n) * exp(psi);
   return s;
@@ -168,11 +170,14 @@ TEST(HuntCrossleyHistory, StatesLieOnTheExactTrajectoryAtTheirTime) {
         const ImpactState& state = history[i];
         const StateReference exact = state_reference(in, r, state);
         const std::string at = where(beta, n, 1.0, i);
-        time.update(static_cast<double>(abs(Real100(state.time) - exact.time) / r.contact_time), at);
-        approach.update(
-            static_cast<double>(abs(Real100(state.approach) - exact.approach) / r.approach_max), at);
+        time.update(static_cast<double>(abs(Real100(state.time) - exact.time) / r.contact_time),
+                    at);
+        approach.update(static_cast<double>(abs(Real100(state.approach) - exact.approach) /
+                                            r.approach_max),
+                        at);
         rate.update(static_cast<double>(abs(Real100(state.approach_rate) - exact.rate)), at);
-        force.update(static_cast<double>(abs(Real100(state.force) - exact.force) / r.force_max), at);
+        force.update(static_cast<double>(abs(Real100(state.force) - exact.force) / r.force_max),
+                     at);
       }
     }
   }

@@ -23,7 +23,9 @@ using impact::reduced::InvalidInput;
 
 constexpr double pi = 3.14159265358979323846;
 
-double relative_error(double value, double exact) { return std::abs(value / exact - 1); }
+double relative_error(double value, double exact) {
+  return std::abs(value / exact - 1);
+}
 
 // Closed-form response of m x'' + mu x' + k x = 0, x(0) = 0, x'(0) = V (underdamped):
 // x = (V / w_d) exp(-sigma t) sin(w_d t) = Im(A exp(s t)), s = -sigma + i w_d, so that the
@@ -69,9 +71,10 @@ TEST(ImpactOde, LinearKelvinVoigtMatchesClosedForm) {
     };
     double worst = 0;
     for (double e : errors) worst = std::max(worst, e);
-    std::printf("Kelvin-Voigt zeta %.2f: restitution %.12f, %zu steps, worst relative error %.2e "
-                "(time of F_max %.2e)\n",
-                zeta, result.restitution, result.steps, worst, errors[5]);
+    std::printf(
+        "Kelvin-Voigt zeta %.2f: restitution %.12f, %zu steps, worst relative error %.2e "
+        "(time of F_max %.2e)\n",
+        zeta, result.restitution, result.steps, worst, errors[5]);
     for (double e : errors) EXPECT_LT(e, 1e-9);
     // The known defect: tension at separation, mu * V_out < 0.
     EXPECT_LT(result.force_at_separation, 0);
@@ -87,8 +90,8 @@ TEST(ImpactOde, SeparationAtZeroForceMatchesTheClosedForm) {
     const LinearOscillator exact{2.0, 3e5, zeta * 2 * std::sqrt(3e5 * 2.0), 0.7};
     const double release = (2 * pi - 2 * exact.theta()) / exact.damped();
     const auto law = kelvin_voigt(exact.stiffness, exact.damping);
-    const auto result = integrate_impact(exact.mass, exact.velocity, law, 1e-10,
-                                         ContactEnd::zero_force);
+    const auto result =
+        integrate_impact(exact.mass, exact.velocity, law, 1e-10, ContactEnd::zero_force);
     const auto history = integrate_impact_history(exact.mass, exact.velocity, law, 51, 1e-10,
                                                   ContactEnd::zero_force);
     const double errors[] = {
@@ -101,10 +104,11 @@ TEST(ImpactOde, SeparationAtZeroForceMatchesTheClosedForm) {
     };
     double worst = 0;
     for (double e : errors) worst = std::max(worst, e);
-    std::printf("Kelvin-Voigt zeta %.2f, no tension: released at %.6f of the x = 0 time, "
-                "x = %.3e m, e = %.12f (%.12f with tension), worst relative error %.2e\n",
-                zeta, release / exact.contact_time(), result.approach_at_separation,
-                result.restitution, exact.restitution(), worst);
+    std::printf(
+        "Kelvin-Voigt zeta %.2f, no tension: released at %.6f of the x = 0 time, "
+        "x = %.3e m, e = %.12f (%.12f with tension), worst relative error %.2e\n",
+        zeta, release / exact.contact_time(), result.approach_at_separation, result.restitution,
+        exact.restitution(), worst);
     for (double e : errors) EXPECT_LT(e, 1e-9);
     EXPECT_LT(std::abs(result.force_at_separation), 1e-9 * result.force_max);
     EXPECT_LT(release, exact.contact_time());
@@ -112,7 +116,9 @@ TEST(ImpactOde, SeparationAtZeroForceMatchesTheClosedForm) {
     for (const auto& sample : history) EXPECT_GE(sample.force, -1e-9 * result.force_max);
   }
   // A law that stays compressive until x = 0 ends there with either rule.
-  const auto hertz = [](double x, double v) { return 1.7135e10 * std::pow(x, 1.5) * (1 + 0.1 * v); };
+  const auto hertz = [](double x, double v) {
+    return 1.7135e10 * std::pow(x, 1.5) * (1 + 0.1 * v);
+  };
   const auto at_zero_force = integrate_impact(0.1, 1.0, hertz, 1e-10, ContactEnd::zero_force);
   const auto at_zero_approach = integrate_impact(0.1, 1.0, hertz, 1e-10);
   EXPECT_EQ(at_zero_force.contact_time, at_zero_approach.contact_time);
@@ -138,13 +144,14 @@ TEST(ImpactOde, ElasticHertzContactTimeAndSymmetry) {
     const double t_c = 2 / p * boost::math::beta(1 / p, 0.5) * x_max / velocity;
     const auto hertz = [=](double x, double) { return stiffness * std::pow(x, n); };
     const auto result = integrate_impact(mass, velocity, hertz, 1e-12);
-    std::printf("Hertz n = %.1f: t_c V / x_max = %.12f, errors: t_c %.2e, x_max %.2e, "
-                "1 - e %.2e, F_max %.2e, t_Fmax %.2e (%zu steps)\n",
-                n, result.contact_time * velocity / result.approach_max,
-                relative_error(result.contact_time, t_c), relative_error(result.approach_max, x_max),
-                std::abs(1 - result.restitution),
-                relative_error(result.force_max, stiffness * std::pow(x_max, n)),
-                relative_error(result.time_force_max, t_c / 2), result.steps);
+    std::printf(
+        "Hertz n = %.1f: t_c V / x_max = %.12f, errors: t_c %.2e, x_max %.2e, "
+        "1 - e %.2e, F_max %.2e, t_Fmax %.2e (%zu steps)\n",
+        n, result.contact_time * velocity / result.approach_max,
+        relative_error(result.contact_time, t_c), relative_error(result.approach_max, x_max),
+        std::abs(1 - result.restitution),
+        relative_error(result.force_max, stiffness * std::pow(x_max, n)),
+        relative_error(result.time_force_max, t_c / 2), result.steps);
     // At rtol 1e-12; at the default 1e-10 the same figures are ~2e-10.
     EXPECT_LT(relative_error(result.contact_time, t_c), 1e-9);
     EXPECT_LT(relative_error(result.approach_max, x_max), 1e-9);
@@ -169,9 +176,9 @@ TEST(ImpactOde, HuntCrossleyAgreesWithLambertForm) {
     const double beta = damping * velocity;
     const double restitution =
         (1 + boost::math::lambert_w0(-(1 + beta) * std::exp(-(1 + beta)))) / beta;
-    const double x_max = std::pow((n + 1) * mass / (stiffness * damping * damping) *
-                                      (beta - std::log1p(beta)),
-                                  1 / (n + 1));
+    const double x_max =
+        std::pow((n + 1) * mass / (stiffness * damping * damping) * (beta - std::log1p(beta)),
+                 1 / (n + 1));
     const auto law = [=](double x, double v) {
       return stiffness * std::pow(x, n) * (1 + damping * v);
     };
@@ -182,16 +189,19 @@ TEST(ImpactOde, HuntCrossleyAgreesWithLambertForm) {
     const double e_error = relative_error(result.restitution, restitution);
     const double x_error = relative_error(result.approach_max, x_max);
     worst = std::max({worst, e_error, x_error});
-    std::printf("HC V = %4.1f: e = %.15f (error %.2e), x_max error %.2e, %zu steps, %.0f us "
-                "at rtol 1e-13\n",
-                velocity, result.restitution, e_error, x_error, result.steps, seconds * 1e6);
+    std::printf(
+        "HC V = %4.1f: e = %.15f (error %.2e), x_max error %.2e, %zu steps, %.0f us "
+        "at rtol 1e-13\n",
+        velocity, result.restitution, e_error, x_error, result.steps, seconds * 1e6);
     EXPECT_LT(e_error, 1e-11);
     EXPECT_LT(x_error, 1e-11);
     EXPECT_LT(std::abs(result.force_at_separation), 1e-9 * result.force_max);
   }
   std::printf("HC worst relative error at rtol 1e-13: %.2e\n", worst);
   // The published example (V = 1 m/s), to the printed digits.
-  const auto law = [=](double x, double v) { return stiffness * std::pow(x, n) * (1 + damping * v); };
+  const auto law = [=](double x, double v) {
+    return stiffness * std::pow(x, n) * (1 + damping * v);
+  };
   const auto start = std::chrono::steady_clock::now();
   const auto result = integrate_impact(mass, 1.0, law);
   const auto tight = integrate_impact(mass, 1.0, law, 1e-13);
@@ -199,10 +209,11 @@ TEST(ImpactOde, HuntCrossleyAgreesWithLambertForm) {
               tight.approach_max, tight.force_max, tight.contact_time, tight.restitution);
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  std::printf("HC published example at rtol 1e-10: %zu steps, %.1f us; x_max %.9e, F_max %.9e, "
-              "t_c %.9e, e %.9f\n",
-              result.steps, seconds * 1e6, result.approach_max, result.force_max,
-              result.contact_time, result.restitution);
+  std::printf(
+      "HC published example at rtol 1e-10: %zu steps, %.1f us; x_max %.9e, F_max %.9e, "
+      "t_c %.9e, e %.9f\n",
+      result.steps, seconds * 1e6, result.approach_max, result.force_max, result.contact_time,
+      result.restitution);
   EXPECT_NEAR(result.approach_max, 3.42046253e-5, 0.5e-13);
   EXPECT_NEAR(result.force_max, 3441.11223, 0.5e-5);
   // t_c = 1.03994693495e-4 (rtol 1e-13): the printed 1.03994694e-4 is a double rounding
@@ -271,7 +282,8 @@ TEST(ImpactOde, InvalidInputNamesTheParameter) {
   }
   EXPECT_EQ(parameter_of([&] { integrate_impact(1.0, 1.0, ContactForceLaw{}); }), "force");
   // A law returning NaN is reported, never integrated.
-  EXPECT_THROW(integrate_impact(1.0, 1.0, [nan](double x, double) { return x > 1e-3 ? nan : 1e6 * x; }),
+  EXPECT_THROW(integrate_impact(1.0, 1.0,
+                                [nan](double x, double) { return x > 1e-3 ? nan : 1e6 * x; }),
                std::runtime_error);
   // No resistance at all.
   EXPECT_THROW(integrate_impact(1.0, 1.0, [](double, double) { return 0.0; }), std::runtime_error);

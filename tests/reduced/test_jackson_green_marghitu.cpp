@@ -47,8 +47,9 @@ TEST(JacksonGreenMarghitu, TheStudysBallOnARigidFlat) {
   const double v_c = jackson_green_marghitu_critical_velocity(contact, mass);
   EXPECT_NEAR(v_c, 0.22496351852169464451, 1e-15);
   EXPECT_NEAR(jackson_green_marghitu_yield_strain(contact), 0.014916585596523549494, 1e-17);
-  EXPECT_NEAR(v_c, yield_velocity(yield_pressure(YieldCriterion::jackson_green, 2.03e9, 0.3),
-                                  contact.contact_modulus, contact.radius, mass),
+  EXPECT_NEAR(v_c,
+              yield_velocity(yield_pressure(YieldCriterion::jackson_green, 2.03e9, 0.3),
+                             contact.contact_modulus, contact.radius, mass),
               1e-16);
   EXPECT_NEAR(jackson_green_marghitu_restitution(0.5, contact, mass), 0.95208801553925251128,
               1e-15);
@@ -74,7 +75,8 @@ TEST(JacksonGreenMarghitu, BadInputIsRefusedWithTheParameterNamed) {
   // Far beyond the fit's reach the formula gives e <= 0: refused, not returned.
   EXPECT_EQ(parameter_of([] { jackson_green_marghitu_restitution(1e4, 0.015); }), "velocity_ratio");
   const SphereFlatContact contact{0.01452, 2e11, 2.03e9, 0.3};
-  EXPECT_EQ(parameter_of([&] { jackson_green_marghitu_restitution(-1.0, contact, 0.1); }), "velocity");
+  EXPECT_EQ(parameter_of([&] { jackson_green_marghitu_restitution(-1.0, contact, 0.1); }),
+            "velocity");
   EXPECT_EQ(parameter_of([&] { jackson_green_marghitu_restitution(1.0, contact, 0.0); }), "mass");
   EXPECT_EQ(parameter_of([&] {
               jackson_green_marghitu_restitution(1.0, SphereFlatContact{0.01, 2e11, 2e9, 0.6}, 0.1);

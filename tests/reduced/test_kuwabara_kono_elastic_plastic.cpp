@@ -29,7 +29,7 @@ namespace {
 
 using namespace impact::reduced;
 using Real = long double;
-using State = std::array<Real, 2>;  // x, x'
+using State = std::array<Real, 2>; // x, x'
 
 constexpr double pi = 3.14159265358979323846;
 constexpr double ball_radius = 5e-3, contact_modulus = 1.154e11, yield_pressure = 1.6e9;
@@ -38,7 +38,7 @@ const double ball_mass = 4.0 / 3.0 * pi * ball_radius * ball_radius * ball_radiu
 // Thornton's spring in long double: force, slope and its derivative on each branch.
 struct ReferenceThornton {
   Real c, x_y, F_y, k_p;
-  bool plastic = true;  // false: Hertz everywhere (the elastic spring)
+  bool plastic = true; // false: Hertz everywhere (the elastic spring)
   ReferenceThornton(bool yields) {
     const Real R = ball_radius, E = contact_modulus, p = yield_pressure;
     const Real PI = 3.141592653589793238462643383279502884L;
@@ -70,7 +70,8 @@ struct ReferenceResult {
   Real approach_max, force_max, contact_time, rebound_velocity;
 };
 
-ReferenceResult reference(const ReferenceThornton& spring, Real m, Real V, Real A, long steps = 20000) {
+ReferenceResult reference(const ReferenceThornton& spring, Real m, Real V, Real A,
+                          long steps = 20000) {
   namespace odeint = boost::numeric::odeint;
   Real x_max = 0, k_u = 0, x_r = 0;
   bool restoring = false;
@@ -82,7 +83,7 @@ ReferenceResult reference(const ReferenceThornton& spring, Real m, Real V, Real 
     const Real s = std::max(Real(0), y[0] - x_r);
     return k_u * std::sqrt(s) * (s + 1.5L * A * y[1]);
   };
-  auto force_rate = [&](const State& y) -> Real {  // dF/dt while compressing
+  auto force_rate = [&](const State& y) -> Real { // dF/dt while compressing
     const Real a = -force(y) / m;
     return spring.slope(y[0]) * y[1] + A * spring.slope_rate(y[0]) * y[1] * y[1] +
            A * spring.slope(y[0]) * a;
@@ -143,7 +144,8 @@ ReferenceResult reference(const ReferenceThornton& spring, Real m, Real V, Real 
 }
 
 std::shared_ptr<const ElasticPlasticContact> library_spring(bool yields) {
-  if (!yields) return std::make_shared<HertzContact>(4.0 / 3.0 * contact_modulus * std::sqrt(ball_radius));
+  if (!yields)
+    return std::make_shared<HertzContact>(4.0 / 3.0 * contact_modulus * std::sqrt(ball_radius));
   return std::make_shared<ThorntonContact>(ball_radius, contact_modulus, yield_pressure);
 }
 
@@ -171,10 +173,10 @@ TEST(KuwabaraKonoElasticPlastic, AgainstAnIndependentIntegration) {
           char at[160];
           std::snprintf(at, sizeof at, "%s V/V_y = %g A = %g s, tolerance %g",
                         yields ? "Thornton" : "Hertz", ratio, A, tolerance);
-          for (const double error : {relative(ours.restitution, e),
-                                     relative(ours.approach_max, r.approach_max),
-                                     relative(ours.force_max, r.force_max),
-                                     relative(ours.contact_time, r.contact_time)}) {
+          for (const double error :
+               {relative(ours.restitution, e), relative(ours.approach_max, r.approach_max),
+                relative(ours.force_max, r.force_max),
+                relative(ours.contact_time, r.contact_time)}) {
             EXPECT_LT(error, target) << at;
             if (error > worst) {
               worst = error;
@@ -196,8 +198,9 @@ TEST(KuwabaraKonoElasticPlastic, HertzSpringIsKuwabaraKono) {
   for (const double A : {1e-8, 1e-6})
     for (const double velocity : {0.3, 3.0}) {
       const auto ours = kuwabara_kono_elastic_plastic_impact(ball_mass, velocity, spring, A, 1e-12);
-      const auto theirs = integrate_impact(ball_mass, velocity, law.force_law(A, {ball_mass, c, 1.5}),
-                                           1e-12, ContactEnd::zero_force);
+      const auto theirs =
+          integrate_impact(ball_mass, velocity, law.force_law(A, {ball_mass, c, 1.5}), 1e-12,
+                           ContactEnd::zero_force);
       EXPECT_NEAR(ours.restitution, theirs.restitution, 1e-11);
       EXPECT_NEAR(ours.contact_time, theirs.contact_time, 1e-11 * theirs.contact_time);
       EXPECT_NEAR(ours.force_max, theirs.force_max, 1e-11 * theirs.force_max);
@@ -208,11 +211,13 @@ TEST(KuwabaraKonoElasticPlastic, BothLossesAndTheHistory) {
   const double v_y = yield_velocity(yield_pressure, contact_modulus, ball_radius, ball_mass);
   const auto spring = library_spring(true);
   const double velocity = 20 * v_y;
-  const double plastic = kuwabara_kono_elastic_plastic_impact(ball_mass, velocity, *spring, 0.0).restitution;
+  const double plastic =
+      kuwabara_kono_elastic_plastic_impact(ball_mass, velocity, *spring, 0.0).restitution;
   const auto both = kuwabara_kono_elastic_plastic_impact(ball_mass, velocity, *spring, 1e-6);
   EXPECT_LT(plastic, 1.0);
   EXPECT_LT(both.restitution, plastic);
-  const auto history = kuwabara_kono_elastic_plastic_history(ball_mass, velocity, *spring, 1e-6, 50);
+  const auto history =
+      kuwabara_kono_elastic_plastic_history(ball_mass, velocity, *spring, 1e-6, 50);
   ASSERT_EQ(history.size(), 50u);
   EXPECT_NEAR(history.back().time, both.contact_time, 1e-12 * both.contact_time);
   EXPECT_NEAR(history.back().approach_rate, both.rebound_velocity, 1e-9 * velocity);
@@ -237,8 +242,10 @@ TEST(KuwabaraKonoElasticPlastic, RefusesBadInputNamingTheParameter) {
   };
   refuses("mass", [&] { kuwabara_kono_elastic_plastic_impact(-1, 1, *spring, 1e-6); });
   refuses("velocity", [&] { kuwabara_kono_elastic_plastic_impact(1, 0, *spring, 1e-6); });
-  refuses("dissipative_constant", [&] { kuwabara_kono_elastic_plastic_impact(1, 1, *spring, -1e-6); });
-  refuses("relative_tolerance", [&] { kuwabara_kono_elastic_plastic_impact(1, 1, *spring, 1e-6, 1.0); });
+  refuses("dissipative_constant",
+          [&] { kuwabara_kono_elastic_plastic_impact(1, 1, *spring, -1e-6); });
+  refuses("relative_tolerance",
+          [&] { kuwabara_kono_elastic_plastic_impact(1, 1, *spring, 1e-6, 1.0); });
 }
 
 } // namespace

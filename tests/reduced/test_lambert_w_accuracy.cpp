@@ -19,9 +19,9 @@
 namespace {
 
 using namespace impact::reduced;
+using hp::expect_target;
 using hp::Real100;
 using hp::relative_error;
-using hp::expect_target;
 using hp::report;
 using hp::WorstError;
 
@@ -32,8 +32,7 @@ std::vector<double> log_grid(double first, double last, int per_decade) {
   const double decades = std::log10(last / first);
   const int count = std::max(2, static_cast<int>(std::ceil(decades * per_decade)) + 1);
   std::vector<double> grid;
-  for (int i = 0; i < count; ++i)
-    grid.push_back(first * std::pow(10.0, decades * i / (count - 1)));
+  for (int i = 0; i < count; ++i) grid.push_back(first * std::pow(10.0, decades * i / (count - 1)));
   grid.front() = first;
   grid.back() = last;
   return grid;
@@ -97,13 +96,13 @@ TEST(LambertWAccuracy, OnePlusLambertWBothBranches) {
       const Real100 reference = hp::one_plus_w_reference(Real100(s), is_principal);
       double value;
       try {
-        value = one_plus_lambert_w(s, is_principal ? LambertBranch::principal
-                                                   : LambertBranch::lower);
+        value =
+            one_plus_lambert_w(s, is_principal ? LambertBranch::principal : LambertBranch::lower);
       } catch (const std::exception&) {
         value = std::numeric_limits<double>::quiet_NaN();
       }
-      (is_principal ? principal : lower).update(relative_error(value, reference),
-                                                hp::format("s=%.17g", s));
+      (is_principal ? principal : lower)
+          .update(relative_error(value, reference), hp::format("s=%.17g", s));
     }
   }
   EXPECT_EQ(one_plus_lambert_w(0.0, LambertBranch::principal), 0.0);

@@ -30,8 +30,8 @@ struct Option {
 };
 
 const std::vector<Option> options = {
-    {"model", "flores"},     {"restitution", "0.7"}, {"velocity", "1.5"},
-    {"mass", "0.1"},         {"stiffness", "1.7135e10"}, {"exponent", "1.5"},
+    {"model", "flores"}, {"restitution", "0.7"},     {"velocity", "1.5"},
+    {"mass", "0.1"},     {"stiffness", "1.7135e10"}, {"exponent", "1.5"},
 };
 
 std::string arguments_with(const std::string& name, const std::string& value, bool omit = false) {
@@ -95,8 +95,9 @@ TEST(LawCli, BadInputExitsWithTwoAndNamesTheParameter) {
     }
   }
   // An exponent the law is not defined for, and an unknown option.
-  auto run = run_cli(" --model kelvin-voigt --restitution 0.5 --velocity 1 --mass 0.1 "
-                     "--stiffness 1e9 --exponent 1.5");
+  auto run = run_cli(
+      " --model kelvin-voigt --restitution 0.5 --velocity 1 --mass 0.1 "
+      "--stiffness 1e9 --exponent 1.5");
   EXPECT_EQ(run.status, 2) << run.output;
   EXPECT_NE(run.output.find("exponent"), std::string::npos) << run.output;
   run = run_cli(arguments_with("", "") + " --damping 3");

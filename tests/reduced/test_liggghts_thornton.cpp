@@ -29,11 +29,11 @@ double relative(double value, double reference) {
 // The LIGGGHTS law in long double: Thornton's loading, unloading F* - c (x_max^1.5 - x^1.5).
 impact::testing::PlasticReferenceLaw reference_law(const ThorntonParameters& p) {
   const long double R = p.radius, E = p.contact_modulus, py = p.yield_pressure;
-  const long double a_y = pi_l * py * R / (2 * E);  // LIGGGHTS' yield contact radius
+  const long double a_y = pi_l * py * R / (2 * E); // LIGGGHTS' yield contact radius
   const long double x_y = a_y * a_y / R;
   const long double c = 4.0L / 3.0L * E * std::sqrt(R);
   const long double f_y = c * std::pow(x_y, 1.5L);
-  const long double k = 2 * E * a_y;  // LIGGGHTS' plastic slope
+  const long double k = 2 * E * a_y; // LIGGGHTS' plastic slope
   const auto loading = [=](long double x) {
     return x <= x_y ? c * std::pow(std::max(x, 0.0L), 1.5L) : f_y + k * (x - x_y);
   };
@@ -57,13 +57,13 @@ TEST(LiggghtsThornton, AgreesWithAnIndependentIntegration) {
     const auto library = LiggghtsThorntonImpact(steel, ratio * v_y).response();
     const auto ode = impact::testing::integrate_plastic_reference(steel.mass, ratio * v_y, law,
                                                                   library.approach_max);
-    const double errors[] = {
-        relative(double(ode.approach_max), library.approach_max),
-        relative(double(-ode.rebound_velocity / (ratio * v_y)), library.restitution),
-        relative(double(ode.compression_time), library.compression_time),
-        relative(double(ode.contact_time), library.contact_time),
-        std::abs(double(ode.separation_approach) - library.residual_approach) /
-            library.approach_max};
+    const double errors[] = {relative(double(ode.approach_max), library.approach_max),
+                             relative(double(-ode.rebound_velocity / (ratio * v_y)),
+                                      library.restitution),
+                             relative(double(ode.compression_time), library.compression_time),
+                             relative(double(ode.contact_time), library.contact_time),
+                             std::abs(double(ode.separation_approach) - library.residual_approach) /
+                                 library.approach_max};
     for (const double error : errors) {
       EXPECT_LT(error, 1e-10) << "V/V_y = " << ratio;
       worst = std::max(worst, error);

@@ -33,9 +33,9 @@ constexpr double pi = boost::math::constants::pi<double>();
 // One published case of tests/reduced/data/olshanskiy_tables.csv.
 struct PublishedCase {
   PowerLawOscillator oscillator{};
-  std::vector<double> time;      // t_i [s], 5 decimals
-  std::vector<double> numeric;   // a_i [m], numerical integration, 5 decimals
-  std::vector<double> formula;   // a_i [m], explicit Lambert formula, 5 decimals
+  std::vector<double> time;    // t_i [s], 5 decimals
+  std::vector<double> numeric; // a_i [m], numerical integration, 5 decimals
+  std::vector<double> formula; // a_i [m], explicit Lambert formula, 5 decimals
 };
 
 std::map<std::string, PublishedCase> read_published_cases() {
@@ -69,7 +69,9 @@ std::map<std::string, PublishedCase> read_published_cases() {
 }
 
 // A value as printed with 5 decimals, in units of the last digit.
-long long last_digits(double value) { return std::llround(value * 1e5); }
+long long last_digits(double value) {
+  return std::llround(value * 1e5);
+}
 
 double max_relative_deviation(const std::vector<double>& values,
                               const std::vector<double>& reference) {
@@ -113,9 +115,10 @@ TEST(Oscillator, NumericReproducesPublishedNumericColumn) {
           std::max(worst_amplitude, std::abs(extremes[i].amplitude - published.numeric[i]));
       worst_time = std::max(worst_time, std::abs(extremes[i].time - published.time[i]));
     }
-    std::cout << "[ numeric vs published ] " << name << ": max |a - printed| = "
-              << worst_amplitude / 1e-5 << " units of 1e-5 m, max |t - printed| = "
-              << worst_time / 1e-5 << " units of 1e-5 s\n";
+    std::cout << "[ numeric vs published ] " << name
+              << ": max |a - printed| = " << worst_amplitude / 1e-5
+              << " units of 1e-5 m, max |t - printed| = " << worst_time / 1e-5
+              << " units of 1e-5 s\n";
   }
 }
 
@@ -146,8 +149,9 @@ TEST(Oscillator, ApproximationsAgainstNumericTruth) {
     std::cout << "[ deviation ] " << name << " (10 extremes): max relative deviation from "
               << "own numeric / from published numeric column, max |a - printed formula|\n";
     for (const std::string method : {"implicit", "lambert", "lambert-approx"}) {
-      const auto amplitudes = reduced::free_decay_amplitudes(
-          published.oscillator, count, reduced::amplitude_method_from_name(method));
+      const auto amplitudes =
+          reduced::free_decay_amplitudes(published.oscillator, count,
+                                         reduced::amplitude_method_from_name(method));
       const double from_truth = max_relative_deviation(amplitudes, truth);
       const double from_published = max_relative_deviation(amplitudes, published.numeric);
       const double from_formula = max_absolute_deviation(amplitudes, published.formula);
@@ -155,8 +159,8 @@ TEST(Oscillator, ApproximationsAgainstNumericTruth) {
       for (int i = 0; i < count; ++i)
         digits_off += last_digits(amplitudes[i]) != last_digits(published.formula[i]);
       std::cout << "    " << method << ": " << 100 * from_truth << " % / " << 100 * from_published
-                << " %, " << from_formula / 1e-5 << " units of 1e-5 m (" << digits_off
-                << " of " << count << " printed entries differ)\n";
+                << " %, " << from_formula / 1e-5 << " units of 1e-5 m (" << digits_off << " of "
+                << count << " printed entries differ)\n";
       EXPECT_LT(from_truth, bound.at(name).at(method)) << name << " " << method;
       if (method != "implicit") { // within one unit of the last printed digit of the formula
         EXPECT_LE(from_formula, 1.0e-5) << name << " " << method;
@@ -168,11 +172,12 @@ TEST(Oscillator, ApproximationsAgainstNumericTruth) {
 // The reference integration against the exact solution of the linear oscillator
 // (c2 = 0, or v = 0 with stiffness c1 + c2): t_i = i pi / omega, a_i = a0 exp(-k t_i / 2m).
 TEST(Oscillator, NumericMatchesExactLinearDecay) {
-  const std::vector<PowerLawOscillator> linear = {
-      {2, 8, 800, 0, 1, 0.05},      // c2 = 0
-      {2, 8, 800, -300, 0, 0.05},   // v = 0: stiffness 500
-      {1, 0.3, 1e4, 0, 2.5, 1e-3},  // light damping
-      {1, 190, 1e4, 0, 1, 1e-3}};   // 95 % of critical damping
+  const std::vector<PowerLawOscillator> linear = {{2, 8, 800, 0, 1, 0.05}, // c2 = 0
+                                                  {2, 8, 800, -300, 0,
+                                                   0.05}, // v = 0: stiffness 500
+                                                  {1, 0.3, 1e4, 0, 2.5, 1e-3}, // light damping
+                                                  {1, 190, 1e4, 0, 1,
+                                                   1e-3}}; // 95 % of critical damping
   double worst_amplitude = 0, worst_time = 0;
   const int count = 200;
   for (const auto& o : linear) {
@@ -193,8 +198,8 @@ TEST(Oscillator, NumericMatchesExactLinearDecay) {
          {AmplitudeMethod::implicit, AmplitudeMethod::lambert, AmplitudeMethod::lambert_approx}) {
       const auto amplitudes = reduced::free_decay_amplitudes(o, 20, method);
       for (int i = 1; i <= 20; ++i)
-        EXPECT_NEAR(amplitudes[i - 1] /
-                        (o.initial_amplitude * std::exp(-beta * i * pi / omega)), 1, 1e-13);
+        EXPECT_NEAR(amplitudes[i - 1] / (o.initial_amplitude * std::exp(-beta * i * pi / omega)), 1,
+                    1e-13);
     }
   }
   std::cout << "[ numeric vs exact linear, 200 extremes ] max relative error: amplitude "
@@ -224,13 +229,12 @@ TEST(Oscillator, NumericMatchesUndampedNonlinearPeriod) {
       return a0 / std::sqrt(2 * energy_gap / o.mass);
     };
     const double half_period =
-        2 * boost::math::quadrature::gauss_kronrod<double, 61>::integrate(integrand, 0, pi / 2,
-                                                                          15, 1e-15);
+        2 * boost::math::quadrature::gauss_kronrod<double, 61>::integrate(integrand, 0, pi / 2, 15,
+                                                                          1e-15);
     const auto extremes = reduced::free_decay_extremes(o, 50);
     for (const auto& extreme : extremes) {
       worst_amplitude = std::max(worst_amplitude, std::abs(extreme.amplitude / a0 - 1));
-      worst_time =
-          std::max(worst_time, std::abs(extreme.time / (extreme.index * half_period) - 1));
+      worst_time = std::max(worst_time, std::abs(extreme.time / (extreme.index * half_period) - 1));
     }
     const auto lambert = reduced::free_decay_amplitudes(o, 5, AmplitudeMethod::lambert);
     const auto implicit = reduced::free_decay_amplitudes(o, 5, AmplitudeMethod::implicit);
@@ -259,8 +263,8 @@ TEST(Oscillator, ElementaryLambertWAccuracy) {
             << " % at z = " << worst_at << '\n';
   EXPECT_LT(worst, 0.0022);
   EXPECT_EQ(reduced::lambert_w0_elementary(0.0), 0.0);
-  for (const double z : {-0.2000001, 0.3000001, -1 / std::exp(1.0), 1.0,
-                         std::numeric_limits<double>::quiet_NaN()})
+  for (const double z :
+       {-0.2000001, 0.3000001, -1 / std::exp(1.0), 1.0, std::numeric_limits<double>::quiet_NaN()})
     EXPECT_THROW(reduced::lambert_w0_elementary(z), InvalidInput) << z;
 }
 
@@ -281,17 +285,16 @@ TEST(Oscillator, SofteningAgainstNumeric) {
     PowerLawOscillator oscillator;
     std::map<AmplitudeMethod, double> tolerance;
   };
-  const std::vector<Softening> cases = {
-      {"quadratic_soft",
-       {2, 8, 800, -4000, 1, 0.05},
-       {{AmplitudeMethod::implicit, 0.06},
-        {AmplitudeMethod::lambert, 0.07},
-        {AmplitudeMethod::lambert_approx, 0.07}}},
-      {"cubic_soft",
-       {2, 8, 800, -160000, 2, 0.03},
-       {{AmplitudeMethod::implicit, 0.035},
-        {AmplitudeMethod::lambert, 0.04},
-        {AmplitudeMethod::lambert_approx, 0.04}}}};
+  const std::vector<Softening> cases = {{"quadratic_soft",
+                                         {2, 8, 800, -4000, 1, 0.05},
+                                         {{AmplitudeMethod::implicit, 0.06},
+                                          {AmplitudeMethod::lambert, 0.07},
+                                          {AmplitudeMethod::lambert_approx, 0.07}}},
+                                        {"cubic_soft",
+                                         {2, 8, 800, -160000, 2, 0.03},
+                                         {{AmplitudeMethod::implicit, 0.035},
+                                          {AmplitudeMethod::lambert, 0.04},
+                                          {AmplitudeMethod::lambert_approx, 0.04}}}};
   for (const auto& c : cases) {
     const auto truth = numeric_amplitudes(c.oscillator, 10);
     for (std::size_t i = 1; i < truth.size(); ++i) EXPECT_LT(truth[i], truth[i - 1]);
@@ -330,8 +333,7 @@ std::string rejected_parameter(const PowerLawOscillator& o, int count = 10,
   try {
     reduced::free_decay_amplitudes(o, count, method);
   } catch (const InvalidInput& error) {
-    EXPECT_NE(std::string(error.what()).find(error.parameter()), std::string::npos)
-        << error.what();
+    EXPECT_NE(std::string(error.what()).find(error.parameter()), std::string::npos) << error.what();
     return error.parameter();
   }
   return "";

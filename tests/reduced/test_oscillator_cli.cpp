@@ -29,9 +29,10 @@ CliRun run_cli(const std::vector<std::string>& arguments) {
 }
 
 // The published quadratic case.
-const std::map<std::string, std::string> good = {
-    {"mass", "2"},  {"viscous", "8"}, {"c1", "800"},  {"c2", "4000"},
-    {"power", "1"}, {"a0", "0.05"},   {"count", "10"}, {"method", "numeric"}};
+const std::map<std::string, std::string> good = {{"mass", "2"},   {"viscous", "8"},
+                                                 {"c1", "800"},   {"c2", "4000"},
+                                                 {"power", "1"},  {"a0", "0.05"},
+                                                 {"count", "10"}, {"method", "numeric"}};
 
 std::vector<std::vector<double>> parse_csv(const std::string& text, std::string& header) {
   std::stringstream lines(text);
@@ -75,8 +76,9 @@ TEST(OscillatorCli, ApproximationTablesMatchLibrary) {
     std::string header;
     const auto rows = parse_csv(run.out, header);
     EXPECT_EQ(header, "i,amplitude") << method;
-    const auto amplitudes = reduced::free_decay_amplitudes(
-        {2, 8, 800, 4000, 1, 0.05}, 10, reduced::amplitude_method_from_name(method));
+    const auto amplitudes =
+        reduced::free_decay_amplitudes({2, 8, 800, 4000, 1, 0.05}, 10,
+                                       reduced::amplitude_method_from_name(method));
     ASSERT_EQ(rows.size(), amplitudes.size()) << method;
     for (std::size_t i = 0; i < rows.size(); ++i) {
       EXPECT_EQ(rows[i].at(0), static_cast<double>(i + 1)) << method;
@@ -88,8 +90,8 @@ TEST(OscillatorCli, ApproximationTablesMatchLibrary) {
 // Every option: missing, and each bad value; exit code 2, the message names the option,
 // nothing on stdout.
 TEST(OscillatorCli, BadInputExitsWithTwoAndNamesTheParameter) {
-  const std::vector<std::string> non_numbers = {"abc", "nan", "NaN", "inf", "-inf", "1e400", "",
-                                                "3x"};
+  const std::vector<std::string> non_numbers = {"abc",  "nan",   "NaN", "inf",
+                                                "-inf", "1e400", "",    "3x"};
   std::map<std::string, std::vector<std::string>> bad;
   for (const auto& [name, value] : good)
     if (name != "method") bad[name] = non_numbers;
@@ -98,8 +100,8 @@ TEST(OscillatorCli, BadInputExitsWithTwoAndNamesTheParameter) {
     bad[name].push_back("-1");
   }
   for (const std::string name : {"viscous", "power"}) bad[name].push_back("-1"); // >= 0
-  bad["viscous"].push_back("80");   // critical damping 2 sqrt(c1 m) = 80
-  bad["viscous"].push_back("1e3");  // overdamped
+  bad["viscous"].push_back("80");  // critical damping 2 sqrt(c1 m) = 80
+  bad["viscous"].push_back("1e3"); // overdamped
   bad["count"] = {"0", "-1", "10001", "1.5", "abc", "nan", "inf", ""};
   bad["method"] = {"exact", "", "NUMERIC"};
 
@@ -109,7 +111,8 @@ TEST(OscillatorCli, BadInputExitsWithTwoAndNamesTheParameter) {
     without.erase(name);
     CliRun run = run_cli(arguments_of(without));
     EXPECT_EQ(run.exit_code, 2) << "missing --" << name;
-    EXPECT_NE(run.err.find("--" + name), std::string::npos) << "missing " << name << ": " << run.err;
+    EXPECT_NE(run.err.find("--" + name), std::string::npos)
+        << "missing " << name << ": " << run.err;
     EXPECT_TRUE(run.out.empty()) << run.out;
     for (const auto& value : values) {
       auto options = good;
@@ -133,9 +136,9 @@ TEST(OscillatorCli, InconsistentInputExitsWithTwo) {
     std::string named;
   };
   const std::vector<Case> cases = {
-      {{{"c2", "-20000"}}, "a0"},                            // beyond the softening barrier
-      {{{"power", "0"}, {"c2", "-800"}}, "c2"},              // linear stiffness c1 + c2 = 0
-      {{{"c2", "1e6"}, {"method", "lambert"}}, "a0"},        // W0 argument below -1/e
+      {{{"c2", "-20000"}}, "a0"},                              // beyond the softening barrier
+      {{{"power", "0"}, {"c2", "-800"}}, "c2"},                // linear stiffness c1 + c2 = 0
+      {{{"c2", "1e6"}, {"method", "lambert"}}, "a0"},          // W0 argument below -1/e
       {{{"c2", "29000"}, {"method", "lambert-approx"}}, "a0"}, // outside [-0.2, 0.3]
       {{{"c2", "-15000"}, {"viscous", "56"}, {"method", "implicit"}}, "a0"},
       {{{"unknown", "1"}}, "--unknown"},

@@ -25,9 +25,8 @@ using namespace impact::reduced;
 constexpr double pi = 3.14159265358979323846;
 
 const std::map<std::string, std::string> thornton = {
-    {"model", "thornton"},   {"radius", "0.01"},        {"density", "7800"},
-    {"modulus", "2.1e11"},   {"poisson", "0.3"},        {"yield-strength", "1e9"},
-    {"velocity", "0.1,1,5"}};
+    {"model", "thornton"}, {"radius", "0.01"},        {"density", "7800"},    {"modulus", "2.1e11"},
+    {"poisson", "0.3"},    {"yield-strength", "1e9"}, {"velocity", "0.1,1,5"}};
 
 TEST(PlasticCli, ThorntonGivesTheLibrarysImpacts) {
   const auto run = run_cli("plastic", arguments_of(thornton));
@@ -56,7 +55,7 @@ TEST(PlasticCli, ThorntonGivesTheLibrarysImpacts) {
     EXPECT_EQ(impact["restitution_jackson_green_marghitu"].get<double>(),
               jackson_green_marghitu_restitution(velocities[i], {0.01, e_star, 1e9, 0.3}, mass));
   }
-  EXPECT_EQ(json["impacts"][0]["restitution"].get<double>(), 1.0);  // below V_y
+  EXPECT_EQ(json["impacts"][0]["restitution"].get<double>(), 1.0); // below V_y
 }
 
 TEST(PlasticCli, JacksonGreenTwoMaterialsAsCsv) {
@@ -72,9 +71,10 @@ TEST(PlasticCli, JacksonGreenTwoMaterialsAsCsv) {
   std::stringstream lines(run.out);
   std::string line;
   std::getline(lines, line);
-  EXPECT_EQ(line, "velocity,velocity_ratio,restitution,contact_time,compression_time,"
-                  "force_max,approach_max,residual_approach,dissipated_energy,"
-                  "restitution_jackson_green_marghitu");
+  EXPECT_EQ(line,
+            "velocity,velocity_ratio,restitution,contact_time,compression_time,"
+            "force_max,approach_max,residual_approach,dissipated_energy,"
+            "restitution_jackson_green_marghitu");
   const double e_star = contact_modulus(2.1e11, 0.3, 7e10, 0.33);
   const JacksonGreenContact contact({0.01, e_star, 1e9, 0.3});
   for (const double velocity : {0.1, 1.0, 5.0}) {

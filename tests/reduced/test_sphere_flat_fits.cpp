@@ -45,7 +45,8 @@ TEST(JacksonGreen, CriticalValuesByHand) {
   const double omega_c = std::pow(M_PI * c * 1e9 / (2 * 2.1e11 / 1.82), 2) * 0.01;
   EXPECT_NEAR(jackson_green_critical_interference(steel), omega_c, 1e-15 * omega_c);
   // P_c = (4/3) (R/E*)^2 (C pi Y / 2)^3 is the Hertz load at omega_c.
-  const double p_c = 4.0 / 3.0 * std::pow(0.01 / (2.1e11 / 1.82), 2) * std::pow(c * M_PI * 1e9 / 2, 3);
+  const double p_c =
+      4.0 / 3.0 * std::pow(0.01 / (2.1e11 / 1.82), 2) * std::pow(c * M_PI * 1e9 / 2, 3);
   EXPECT_NEAR(jackson_green_critical_load(steel), p_c, 1e-14 * p_c);
   EXPECT_NEAR(p_c, 4.0 / 3.0 * steel.contact_modulus * 0.1 * std::pow(omega_c, 1.5), 1e-13 * p_c);
   // And the same as yield_force with p_y = C Y (Jackson-Green criterion).
@@ -66,8 +67,8 @@ TEST(JacksonGreen, JumpAtTheTransitionIsMeasured) {
   // The fit does not meet Hertz at omega* = 1.9: report and bound the jump.
   const double above = jackson_green_load_ratio(1.9 * (1 + 1e-12), steel);
   const double jump = above / std::pow(1.9, 1.5) - 1;
-  std::cout << "Jackson-Green fit / Hertz at omega* = 1.9 (steel, Y/E* = " << 1e9 / steel.contact_modulus
-            << "): 1 + " << jump << "\n";
+  std::cout << "Jackson-Green fit / Hertz at omega* = 1.9 (steel, Y/E* = "
+            << 1e9 / steel.contact_modulus << "): 1 + " << jump << "\n";
   EXPECT_GT(jump, 0.0);
   EXPECT_LT(jump, 0.01);
 }
@@ -90,7 +91,7 @@ TEST(JacksonGreen, ContactRadiusAndResidualInterference) {
 }
 
 TEST(KogutEtsion, CriticalValuesAndBranchesByHand) {
-  const double k = 0.454 + 0.41 * 0.3;  // 0.577
+  const double k = 0.454 + 0.41 * 0.3; // 0.577
   const double omega_c = std::pow(M_PI * k * 2.8e9 / (2 * steel.contact_modulus), 2) * 0.01;
   EXPECT_NEAR(kogut_etsion_critical_interference(steel), omega_c, 1e-15 * omega_c);
   const double p_c = 2.0 / 3.0 * M_PI * k * 2.8e9 * 0.01 * omega_c;
@@ -111,8 +112,7 @@ TEST(KogutEtsion, CriticalValuesAndBranchesByHand) {
               1e-12 * p_c * 5);
 }
 
-impact::testing::PlasticReferenceLaw reference_law(const SphereFlatContact& s,
-                                                   bool brake = false) {
+impact::testing::PlasticReferenceLaw reference_law(const SphereFlatContact& s, bool brake = false) {
   const long double c = 1.295L * std::exp(0.736L * s.poisson_ratio);
   const long double e = s.contact_modulus, r = s.radius;
   const long double omega_c = std::pow(pi_l * c * s.yield_strength / (2 * e), 2) * r;
@@ -130,7 +130,7 @@ impact::testing::PlasticReferenceLaw reference_law(const SphereFlatContact& s,
       return;
     }
     const long double p_m = load(x_max), a_m = radius(x_max);
-    if (brake) {  // Brake: x_r = x_m (1 - P_m / ((4/3) E* sqrt(R) x_m^1.5)), R_u = P_m^2/((4/3 E*)^2 (x_m - x_r)^3)
+    if (brake) { // Brake: x_r = x_m (1 - P_m / ((4/3) E* sqrt(R) x_m^1.5)), R_u = P_m^2/((4/3 E*)^2 (x_m - x_r)^3)
       x_r = x_max * (1 - p_m / (4.0L / 3.0L * e * std::sqrt(r) * std::pow(x_max, 1.5L)));
       const long double r_u = p_m * p_m / std::pow(4.0L / 3.0L * e, 2) / std::pow(x_max - x_r, 3);
       stiffness = 4.0L / 3.0L * e * std::sqrt(r_u);
@@ -165,13 +165,12 @@ TEST(JacksonGreen, ImpactAgreesWithAnIndependentIntegration) {
     const auto impact = elastic_plastic_impact(steel_mass, ratio * v_y, contact);
     const auto ode = impact::testing::integrate_plastic_reference(steel_mass, ratio * v_y, law,
                                                                   impact.approach_max, 16000);
-    const double errors[] = {
-        relative(ode.approach_max, impact.approach_max),
-        relative(-ode.rebound_velocity / (ratio * v_y), impact.restitution),
-        relative(ode.compression_time, impact.compression_time),
-        relative(ode.contact_time, impact.contact_time),
-        double(std::abs(ode.separation_approach - impact.residual_approach)) /
-            impact.approach_max};
+    const double errors[] = {relative(ode.approach_max, impact.approach_max),
+                             relative(-ode.rebound_velocity / (ratio * v_y), impact.restitution),
+                             relative(ode.compression_time, impact.compression_time),
+                             relative(ode.contact_time, impact.contact_time),
+                             double(std::abs(ode.separation_approach - impact.residual_approach)) /
+                                 impact.approach_max};
     for (const double error : errors) {
       EXPECT_LT(error, 1e-12) << "V/V_y = " << ratio;
       worst = std::max(worst, error);
@@ -199,10 +198,12 @@ TEST(JacksonGreen, BrakesUnloadingAgreesWithAnIndependentIntegration) {
     EXPECT_LT(relative(-ode.rebound_velocity / (ratio * v_y), impact.restitution), 1e-12) << ratio;
     EXPECT_LT(relative(ode.contact_time, impact.contact_time), 1e-12) << ratio;
     EXPECT_LT(double(std::abs(ode.separation_approach - impact.residual_approach)) /
-                  impact.approach_max, 1e-12) << ratio;
-    std::cout << "Jackson-Green + Brake unloading V/V_y = " << ratio << ": e = "
-              << impact.restitution << ", x_r/x_max = "
-              << impact.residual_approach / impact.approach_max << "\n";
+                  impact.approach_max,
+              1e-12)
+        << ratio;
+    std::cout << "Jackson-Green + Brake unloading V/V_y = " << ratio
+              << ": e = " << impact.restitution
+              << ", x_r/x_max = " << impact.residual_approach / impact.approach_max << "\n";
   }
   // By hand at omega* = 20: omega_r = omega_m (1 - P_m / P_Hertz(omega_m)).
   const double omega = 20 * jackson_green_critical_interference(steel);
@@ -224,11 +225,11 @@ TEST(JacksonGreen, NoReboundAboveTheImpactVelocityNextToTheFitsJump) {
     const auto impact = elastic_plastic_impact(steel_mass, ratio * v_y, contact);
     EXPECT_LE(impact.restitution, 1.0) << ratio;
     EXPECT_LE(impact.restitution, previous + 1e-15) << ratio;
-    EXPECT_LT(previous - impact.restitution, 2e-3) << ratio;  // no jump
+    EXPECT_LT(previous - impact.restitution, 2e-3) << ratio; // no jump
     if (impact.restitution == 1.0 && ratio > 2.25) ++elastic;
     previous = impact.restitution;
   }
-  EXPECT_GT(elastic, 0);  // the guard was exercised
+  EXPECT_GT(elastic, 0); // the guard was exercised
 }
 
 TEST(SphereFlatFits, InvalidInputNamesTheParameter) {

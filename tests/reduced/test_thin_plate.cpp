@@ -42,7 +42,9 @@ constexpr double stiffness = 1.7135e10;
 constexpr double hertz = 1.5;
 constexpr double velocity = 1.0;
 
-double relative_error(double value, double exact) { return std::abs(value / exact - 1); }
+double relative_error(double value, double exact) {
+  return std::abs(value / exact - 1);
+}
 
 // Zener's time unit and the impedance that gives `lambda`.
 double time_unit(double m, double c, double n, double V) {
@@ -108,7 +110,11 @@ Reference reference_impact(double m_in, double c_in, double n_in, double b_in, d
   };
   const auto maximise = [&](Real lower, Real upper, auto value) {
     const auto found = boost::math::tools::brent_find_minima(
-        [&](Real t) { stepper.calc_state(t, y); return -value(y); }, lower, upper, 32);
+        [&](Real t) {
+          stepper.calc_state(t, y);
+          return -value(y);
+        },
+        lower, upper, 32);
     return std::make_pair(-found.second, found.first);
   };
   while (true) {
@@ -122,7 +128,8 @@ Reference reference_impact(double m_in, double c_in, double n_in, double b_in, d
         out.result.time_force_max = static_cast<double>(tf * time);
       }
       const auto [x, tx] = maximise(t0, t1, gap);
-      if (length * x > out.result.approach_max) out.result.approach_max = static_cast<double>(length * x);
+      if (length * x > out.result.approach_max)
+        out.result.approach_max = static_cast<double>(length * x);
       if (compressing && approach_rate(end) <= 0) {
         compressing = false;
         out.result.time_approach_max = static_cast<double>(bisect(t0, t1, approach_rate) * time);
@@ -180,8 +187,10 @@ Worst compare_with_reference(double tolerance) {
       static std::map<std::pair<double, double>, Reference> references;
       auto known = references.find({beta, lambda});
       if (known == references.end())
-        known = references.emplace(std::make_pair(beta, lambda),
-                                   reference_impact(mass, stiffness, hertz, b, Z, velocity)).first;
+        known = references
+                    .emplace(std::make_pair(beta, lambda),
+                             reference_impact(mass, stiffness, hertz, b, Z, velocity))
+                    .first;
       const Reference& reference = known->second;
       const auto& exact = reference.result;
       EXPECT_NEAR(result.zener_lambda, lambda, 1e-14 * lambda);
@@ -192,7 +201,8 @@ Worst compare_with_reference(double tolerance) {
       track(worst.force_max, relative_error(result.force_max, exact.force_max));
       track(worst.approach_max, relative_error(result.approach_max, exact.approach_max));
       EXPECT_LT(relative_error(result.time_approach_max, exact.time_approach_max), 1e-8);
-      EXPECT_LT(relative_error(result.time_force_max, exact.time_force_max), 1e-7); // Brent: sqrt(eps)
+      EXPECT_LT(relative_error(result.time_force_max, exact.time_force_max),
+                1e-7); // Brent: sqrt(eps)
       EXPECT_LT(relative_error(result.plate_deflection, exact.plate_deflection), 1e-8);
       EXPECT_NEAR(result.plate_energy_fraction, exact.plate_energy_fraction, 1e-9);
       EXPECT_NEAR(result.damping_energy_fraction, exact.damping_energy_fraction, 1e-9);
@@ -201,17 +211,18 @@ Worst compare_with_reference(double tolerance) {
       EXPECT_EQ(result.number_of_contacts, 1u);
       EXPECT_NEAR(-reference.velocity_after / velocity, exact.restitution, 1e-15);
       if (tolerance == 1e-14)
-        std::printf("lambda %5.2f bV %3.1f  e = %.12e  t_c = %.10e s  F_max = %.8e N  "
-                    "x_max = %.8e m  plate %.6f damping %.6f\n",
-                    lambda, beta, result.restitution, result.contact_time, result.force_max,
-                    result.approach_max, result.plate_energy_fraction,
-                    result.damping_energy_fraction);
+        std::printf(
+            "lambda %5.2f bV %3.1f  e = %.12e  t_c = %.10e s  F_max = %.8e N  "
+            "x_max = %.8e m  plate %.6f damping %.6f\n",
+            lambda, beta, result.restitution, result.contact_time, result.force_max,
+            result.approach_max, result.plate_energy_fraction, result.damping_energy_fraction);
     }
   }
-  std::printf("tolerance %.0e: worst e %.2e absolute, %.2e relative; t_c %.2e, F_max %.2e, "
-              "x_max %.2e relative\n",
-              tolerance, worst.restitution_absolute, worst.restitution, worst.contact_time,
-              worst.force_max, worst.approach_max);
+  std::printf(
+      "tolerance %.0e: worst e %.2e absolute, %.2e relative; t_c %.2e, F_max %.2e, "
+      "x_max %.2e relative\n",
+      tolerance, worst.restitution_absolute, worst.restitution, worst.contact_time, worst.force_max,
+      worst.approach_max);
   return worst;
 }
 
@@ -258,9 +269,9 @@ TEST(ThinPlate, RigidPlateIsTheClosedFormHuntCrossley) {
   std::printf("rigid limit: worst relative error %.2e\n", worst);
   // Continuity: a very stiff plate approaches the rigid one.
   const auto rigid = ThinPlateImpact(stiffness, hertz, 0, mass, inf).impact(velocity);
-  const auto stiff =
-      ThinPlateImpact(stiffness, hertz, 0, mass,
-                      impedance_for(1e-8, mass, stiffness, hertz, velocity)).impact(velocity);
+  const auto stiff = ThinPlateImpact(stiffness, hertz, 0, mass,
+                                     impedance_for(1e-8, mass, stiffness, hertz, velocity))
+                         .impact(velocity);
   EXPECT_NEAR(stiff.restitution, rigid.restitution, 1e-7);
   EXPECT_LT(stiff.restitution, rigid.restitution);
 }
@@ -315,8 +326,8 @@ TEST(ThinPlate, EqualLambdaGivesTheSameImpact) {
   const auto impact_of = [](double R, double rho, double E, double nu, const KirchhoffPlate& p,
                             double V, double beta) {
     const double m = 4.0 / 3.0 * pi * R * R * R * rho;
-    const double E_star = 1 / ((1 - nu * nu) / E + (1 - p.poisson_ratio * p.poisson_ratio) /
-                                                        p.youngs_modulus);
+    const double E_star =
+        1 / ((1 - nu * nu) / E + (1 - p.poisson_ratio * p.poisson_ratio) / p.youngs_modulus);
     const double c = 4.0 / 3.0 * E_star * std::sqrt(R);
     const double Z = impact::reduced::plate_point_impedance(p);
     const auto result = ThinPlateImpact(c, 1.5, beta / V, m, Z).impact(V);
@@ -330,8 +341,8 @@ TEST(ThinPlate, EqualLambdaGivesTheSameImpact) {
     EXPECT_LT(relative_error(a.restitution, g.restitution), 1e-10);
     EXPECT_LT(relative_error(a.contact_time / ta, g.contact_time / tg), 1e-10);
     EXPECT_LT(relative_error(a.plate_energy_fraction, g.plate_energy_fraction), 1e-10);
-    std::printf("equal lambda %.6f, beta %.1f: e = %.12f and %.12f\n", lambda, beta,
-                a.restitution, g.restitution);
+    std::printf("equal lambda %.6f, beta %.1f: e = %.12f and %.12f\n", lambda, beta, a.restitution,
+                g.restitution);
   }
 }
 
@@ -388,12 +399,21 @@ TEST(ThinPlate, BadInputNamesTheParameter) {
     expect_invalid([&] { ThinPlateImpact(1, 1.5, 0, bad, 1); }, "mass");
     expect_invalid([&] { ThinPlateImpact(1, 1.5, 0, 1, 1).impact(bad); }, "velocity");
     expect_invalid([&] { ThinPlateImpact(1, 1.5, 0, 1, 1).zener_lambda(bad); }, "velocity");
-    expect_invalid([&] { impact::reduced::flexural_rigidity({bad, 0.3, 1, 1}); },
-                   "plate.youngs_modulus");
-    expect_invalid([&] { impact::reduced::plate_point_impedance({1, 0.3, bad, 1}); },
-                   "plate.density");
-    expect_invalid([&] { impact::reduced::plate_point_impedance({1, 0.3, 1, bad}); },
-                   "plate.thickness");
+    expect_invalid(
+        [&] {
+          impact::reduced::flexural_rigidity({bad, 0.3, 1, 1});
+        },
+        "plate.youngs_modulus");
+    expect_invalid(
+        [&] {
+          impact::reduced::plate_point_impedance({1, 0.3, bad, 1});
+        },
+        "plate.density");
+    expect_invalid(
+        [&] {
+          impact::reduced::plate_point_impedance({1, 0.3, 1, bad});
+        },
+        "plate.thickness");
     const KirchhoffPlate plate{1, 0.3, 1, 1};
     expect_invalid([&] { impact::reduced::zener_lambda(bad, 1, 1, 0.3, plate, 1); },
                    "sphere_radius");
@@ -408,10 +428,16 @@ TEST(ThinPlate, BadInputNamesTheParameter) {
   for (const double bad : {0.0, -1.0, nan, -inf})
     expect_invalid([&] { ThinPlateImpact(1, 1.5, 0, 1, bad); }, "impedance");
   for (const double bad : {-1.0, 0.5, 0.7, -1.5, nan}) {
-    expect_invalid([&] { impact::reduced::flexural_rigidity({1, bad, 1, 1}); },
-                   "plate.poisson_ratio");
-    expect_invalid([&] { impact::reduced::zener_lambda(1, 1, 1, bad, {1, 0.3, 1, 1}, 1); },
-                   "sphere_poisson_ratio");
+    expect_invalid(
+        [&] {
+          impact::reduced::flexural_rigidity({1, bad, 1, 1});
+        },
+        "plate.poisson_ratio");
+    expect_invalid(
+        [&] {
+          impact::reduced::zener_lambda(1, 1, 1, bad, {1, 0.3, 1, 1}, 1);
+        },
+        "sphere_poisson_ratio");
   }
   for (const double bad : {0.0, 1e-15, 1e-2, nan})
     expect_invalid([&] { ThinPlateImpact(1, 1.5, 0, 1, 1).impact(1, bad); }, "relative_tolerance");

@@ -22,15 +22,15 @@ constexpr double pi = 3.14159265358979323846;
 
 // The study's steel ball on a 5 mm steel plate, from the materials.
 const std::map<std::string, std::string> materials = {
-    {"plate-modulus", "2e11"},   {"plate-poisson", "0.25"},  {"plate-density", "7800"},
-    {"thickness", "0.005"},      {"sphere-modulus", "2e11"}, {"sphere-poisson", "0.25"},
-    {"radius", "0.01452"},       {"sphere-density", "7800"}, {"velocity", "1"}};
+    {"plate-modulus", "2e11"}, {"plate-poisson", "0.25"},  {"plate-density", "7800"},
+    {"thickness", "0.005"},    {"sphere-modulus", "2e11"}, {"sphere-poisson", "0.25"},
+    {"radius", "0.01452"},     {"sphere-density", "7800"}, {"velocity", "1"}};
 
 // The same plate, the contact and the mass given directly, Hunt-Crossley damping.
 const std::map<std::string, std::string> direct = {
-    {"plate-modulus", "2e11"}, {"plate-poisson", "0.25"}, {"plate-density", "7800"},
+    {"plate-modulus", "2e11"}, {"plate-poisson", "0.25"},  {"plate-density", "7800"},
     {"thickness", "0.005"},    {"stiffness", "1.7135e10"}, {"exponent", "1.5"},
-    {"mass", "0.1"},           {"damping", "0.1"},        {"velocity", "0.5,1,5"}};
+    {"mass", "0.1"},           {"damping", "0.1"},         {"velocity", "0.5,1,5"}};
 
 TEST(ThinPlateCli, MaterialsGiveTheLibrarysImpact) {
   const auto run = run_cli("thin-plate", arguments_of(materials));
@@ -46,10 +46,10 @@ TEST(ThinPlateCli, MaterialsGiveTheLibrarysImpact) {
   EXPECT_DOUBLE_EQ(json["impedance"].get<double>(), Z);
   ASSERT_EQ(json["impacts"].size(), 1u);
   const auto& impact = json["impacts"][0];
-  for (const char* key : {"velocity", "zener_lambda", "restitution", "contact_time", "force_max",
-                          "time_force_max", "approach_max", "time_approach_max",
-                          "plate_energy_fraction", "damping_energy_fraction", "plate_deflection",
-                          "number_of_contacts"})
+  for (const char* key :
+       {"velocity", "zener_lambda", "restitution", "contact_time", "force_max", "time_force_max",
+        "approach_max", "time_approach_max", "plate_energy_fraction", "damping_energy_fraction",
+        "plate_deflection", "number_of_contacts"})
     EXPECT_TRUE(impact.contains(key)) << key;
   EXPECT_EQ(impact["restitution"].get<double>(), expected.restitution);
   EXPECT_EQ(impact["contact_time"].get<double>(), expected.contact_time);
@@ -65,9 +65,9 @@ TEST(ThinPlateCli, SeveralVelocitiesAsJsonAndCsv) {
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const auto json = nlohmann::json::parse(run.out);
   ASSERT_EQ(json["impacts"].size(), 3u);
-  const impact::reduced::ThinPlateImpact model(
-      1.7135e10, 1.5, 0.1, 0.1,
-      impact::reduced::plate_point_impedance({2e11, 0.25, 7800, 0.005}));
+  const impact::reduced::ThinPlateImpact model(1.7135e10, 1.5, 0.1, 0.1,
+                                               impact::reduced::plate_point_impedance(
+                                                   {2e11, 0.25, 7800, 0.005}));
   const double velocities[] = {0.5, 1, 5};
   for (int i = 0; i < 3; ++i) {
     const auto expected = model.impact(velocities[i]);
@@ -83,9 +83,10 @@ TEST(ThinPlateCli, SeveralVelocitiesAsJsonAndCsv) {
   std::stringstream lines(csv.out);
   std::string line;
   std::getline(lines, line);
-  EXPECT_EQ(line, "velocity,zener_lambda,restitution,contact_time,force_max,time_force_max,"
-                  "approach_max,time_approach_max,plate_energy_fraction,"
-                  "damping_energy_fraction,plate_deflection,number_of_contacts");
+  EXPECT_EQ(line,
+            "velocity,zener_lambda,restitution,contact_time,force_max,time_force_max,"
+            "approach_max,time_approach_max,plate_energy_fraction,"
+            "damping_energy_fraction,plate_deflection,number_of_contacts");
   int rows = 0;
   while (std::getline(lines, line)) ++rows;
   EXPECT_EQ(rows, 3);

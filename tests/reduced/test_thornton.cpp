@@ -69,8 +69,8 @@ TEST(Thornton, ClosedFormRestitutionIsThePublishedForm) {
     const double velocity = 1.0;
     ThorntonParameters p = steel;
     const ThorntonImpact impact(p, velocity * ThorntonImpact(p, 1.0).yield_velocity() / r);
-    worst = std::max(worst, relative(impact.response().restitution,
-                                     thornton_restitution_formula(r)));
+    worst =
+        std::max(worst, relative(impact.response().restitution, thornton_restitution_formula(r)));
   }
   EXPECT_LT(worst, 2e-15);
   EXPECT_EQ(thornton_restitution_formula(1.0), 1.0);
@@ -129,19 +129,19 @@ TEST(Thornton, ClosedFormsAgreeWithAnIndependentIntegration) {
     const auto exact = ThorntonImpact(steel, ratio * v_y).response();
     const auto ode = impact::testing::integrate_plastic_reference(steel.mass, ratio * v_y, law,
                                                                   exact.approach_max);
-    const double errors[] = {
-        relative(double(ode.approach_max), exact.approach_max),
-        relative(double(-ode.rebound_velocity / (ratio * v_y)), exact.restitution),
-        relative(double(ode.compression_time), exact.compression_time),
-        relative(double(ode.contact_time), exact.contact_time),
-        std::abs(double(ode.separation_approach) - exact.residual_approach) / exact.approach_max};
+    const double errors[] = {relative(double(ode.approach_max), exact.approach_max),
+                             relative(double(-ode.rebound_velocity / (ratio * v_y)),
+                                      exact.restitution),
+                             relative(double(ode.compression_time), exact.compression_time),
+                             relative(double(ode.contact_time), exact.contact_time),
+                             std::abs(double(ode.separation_approach) - exact.residual_approach) /
+                                 exact.approach_max};
     for (const double error : errors) {
       EXPECT_LT(error, 1e-10) << "V/V_y = " << ratio;
       worst = std::max(worst, error);
     }
   }
-  std::cout << "Thornton: worst relative difference to the RKF7(8) integration " << worst
-            << "\n";
+  std::cout << "Thornton: worst relative difference to the RKF7(8) integration " << worst << "\n";
 }
 
 TEST(Thornton, PermanentApproachAndUnloadingRadius) {
@@ -151,7 +151,8 @@ TEST(Thornton, PermanentApproachAndUnloadingRadius) {
   // x_p = x_max - 3 F* / (4 E* a_p), a_p^2 = (2 F* + F_y) / (2 pi p_y), by hand.
   const double f_y = impact.contact().yield_force();
   const double a_p = std::sqrt((2 * response.force_max + f_y) / (2 * M_PI * steel.yield_pressure));
-  const double x_p = response.approach_max - 3 * response.force_max / (4 * steel.contact_modulus * a_p);
+  const double x_p =
+      response.approach_max - 3 * response.force_max / (4 * steel.contact_modulus * a_p);
   EXPECT_NEAR(response.residual_approach, x_p, 1e-13 * response.approach_max);
   const double r_p = 4 * steel.contact_modulus * a_p * a_p * a_p / (3 * response.force_max);
   EXPECT_NEAR(impact.unloading_radius(), r_p, 1e-13 * r_p);
@@ -187,13 +188,12 @@ TEST(Thornton, LoopEndsAtTheResponseAndKeepsTheEnergyBalance) {
     EXPECT_GT(loop[i].time, loop[i - 1].time) << i;
     const double kinetic = 0.5 * steel.mass * loop[i].approach_rate * loop[i].approach_rate;
     const double total = 0.5 * steel.mass * velocity * velocity;
-    if (i <= 100) {  // loading: m v^2 / 2 + W_L(x) = m V^2 / 2
+    if (i <= 100) { // loading: m v^2 / 2 + W_L(x) = m V^2 / 2
       EXPECT_NEAR(kinetic + impact.contact().loading_work(loop[i].approach), total, 1e-13 * total);
-    } else {  // unloading: m v^2 / 2 = energy released from x_max down to x
-      const double released =
-          0.4 * unloading.stiffness *
-          (std::pow(response.approach_max - unloading.residual_approach, 2.5) -
-           std::pow(loop[i].approach - unloading.residual_approach, 2.5));
+    } else { // unloading: m v^2 / 2 = energy released from x_max down to x
+      const double released = 0.4 * unloading.stiffness *
+                              (std::pow(response.approach_max - unloading.residual_approach, 2.5) -
+                               std::pow(loop[i].approach - unloading.residual_approach, 2.5));
       EXPECT_NEAR(kinetic, released, 1e-13 * total);
     }
   }

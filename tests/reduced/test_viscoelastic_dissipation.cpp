@@ -68,16 +68,22 @@ TEST(ViscoelasticDissipation, InvalidInputIsNamed) {
     }
     return std::string("none");
   };
-  EXPECT_EQ(parameter([] { kuwabara_kono_dissipative_constant(0.0, 1e-6, 1e-6); }), "poisson_ratio");
-  EXPECT_EQ(parameter([] { kuwabara_kono_dissipative_constant(0.5, 1e-6, 1e-6); }), "poisson_ratio");
+  EXPECT_EQ(parameter([] { kuwabara_kono_dissipative_constant(0.0, 1e-6, 1e-6); }),
+            "poisson_ratio");
+  EXPECT_EQ(parameter([] { kuwabara_kono_dissipative_constant(0.5, 1e-6, 1e-6); }),
+            "poisson_ratio");
   EXPECT_EQ(parameter([] { kuwabara_kono_dissipative_constant(0.25, -1e-6, 1e-6); }),
             "deviatoric_retardation_time");
   EXPECT_EQ(parameter([] { kuwabara_kono_dissipative_constant(0.25, 1e-6, NAN); }),
             "volumetric_retardation_time");
   const KelvinVoigtBody steel{2e11, 0.25, 1e-6, 1e-6};
-  EXPECT_EQ(parameter([&] { kuwabara_kono_dissipative_constant(steel, {0, 0.25, 1e-6, 1e-6}); }),
+  EXPECT_EQ(parameter([&] {
+              kuwabara_kono_dissipative_constant(steel, {0, 0.25, 1e-6, 1e-6});
+            }),
             "second.youngs_modulus");
-  EXPECT_EQ(parameter([&] { kuwabara_kono_dissipative_constant({2e11, 0.7, 1e-6, 1e-6}, steel); }),
+  EXPECT_EQ(parameter([&] {
+              kuwabara_kono_dissipative_constant({2e11, 0.7, 1e-6, 1e-6}, steel);
+            }),
             "first.poisson_ratio");
 }
 

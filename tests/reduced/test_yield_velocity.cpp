@@ -33,7 +33,7 @@ TEST(YieldVelocity, ContactModulusAndEffectiveQuantities) {
 
 TEST(YieldVelocity, JohnsonCriterionByHand) {
   const double e_star = 2.1e11 / 1.82;
-  const double p_y = 1.6 * 1e9;  // Johnson: 1.6 Y
+  const double p_y = 1.6 * 1e9; // Johnson: 1.6 Y
   EXPECT_DOUBLE_EQ(yield_pressure(YieldCriterion::johnson, strength, poisson), p_y);
   // m = 4/3 pi R^3 rho = 0.032672563597333850 kg.
   const double mass = 4.0 / 3.0 * pi * 1e-6 * 7800;
@@ -76,8 +76,8 @@ TEST(YieldVelocity, TwoSpheresUseEffectiveRadiusAndMass) {
   const double m1 = 4.0 / 3.0 * pi * std::pow(0.01, 3) * 7800;
   const double m2 = 4.0 / 3.0 * pi * std::pow(0.02, 3) * 7800;
   // R = 0.02/3 m, m = m1 m2 / (m1 + m2) = 8/9 m1; mpmath: 0.0784631906015166711 m/s.
-  const double v_y = yield_velocity(1.6e9, e_star, effective_radius(0.01, 0.02),
-                                    effective_mass(m1, m2));
+  const double v_y =
+      yield_velocity(1.6e9, e_star, effective_radius(0.01, 0.02), effective_mass(m1, m2));
   EXPECT_NEAR(v_y, 0.0784631906015166711, 1e-15);
 }
 

@@ -34,14 +34,14 @@ namespace impact_fem
     /// quadrature points, JxW); @p dofs the cell's global dof indices;
     /// @p ghosted_layout a vector with the owned and ghost entries of the
     /// vectors the operator will read.
-    CellStrainOperator(const dealii::FEValues<2>                        &fe_values,
+    CellStrainOperator(const dealii::FEValues<2> &fe_values,
                        const std::vector<dealii::types::global_dof_index> &dofs,
                        const VectorType &ghosted_layout)
       : dofs(dofs)
       , points(fe_values.get_quadrature_points())
     {
-      const unsigned int n = dofs.size();
-      const auto &partitioner = ghosted_layout.trilinos_partitioner();
+      const unsigned int n           = dofs.size();
+      const auto        &partitioner = ghosted_layout.trilinos_partitioner();
       for (const auto dof : dofs)
         local_index.push_back(partitioner.LID(
           static_cast<dealii::TrilinosWrappers::types::int_type>(dof)));
@@ -82,8 +82,8 @@ namespace impact_fem
     dealii::SymmetricTensor<2, 3>
     strain(const unsigned int q, const std::vector<double> &values) const
     {
-      const unsigned int n   = dofs.size();
-      const double      *row = &rows[4 * q * n];
+      const unsigned int n    = dofs.size();
+      const double      *row  = &rows[4 * q * n];
       double             e[4] = {0, 0, 0, 0};
       for (unsigned int k = 0; k < 4; ++k)
         for (unsigned int i = 0; i < n; ++i)
@@ -105,7 +105,10 @@ namespace impact_fem
     {
       const unsigned int n    = dofs.size();
       const double      *row  = &rows[4 * q * n];
-      const double       s[4] = {stress[0][0], stress[1][1], stress[2][2], 2 * stress[0][1]};
+      const double       s[4] = {stress[0][0],
+                                 stress[1][1],
+                                 stress[2][2],
+                                 2 * stress[0][1]};
       for (unsigned int k = 0; k < 4; ++k)
         for (unsigned int i = 0; i < n; ++i)
           cell_force(i) += s[k] * row[k * n + i];
@@ -142,7 +145,7 @@ namespace impact_fem
     std::vector<dealii::types::global_dof_index> dofs;
     std::vector<dealii::Point<2>>                points;
     std::vector<double>                          volumes;
-    std::vector<int> local_index;
+    std::vector<int>                             local_index;
     // rows[(4 q + c) n + i]: component c (rr, zz, theta-theta, rz) of the
     // strain of shape function i (of n) at point q.
     std::vector<double> rows;

@@ -285,20 +285,20 @@ namespace impact_fem
     unsigned int                    step_iterations = 0;
     double                          step_residual   = 0;
     // Right-hand side part of the Maxwell arms' forces at the next step.
-    VectorType     internal_force_predictor;
+    VectorType internal_force_predictor;
     // Indentation: displacement for a unit approach of the base, the load
     // that prescribes it and the rows it holds (owned).
-    VectorType     unit_approach_response, unit_approach_load;
+    VectorType unit_approach_response, unit_approach_load;
     std::vector<types::global_dof_index> indentation_held_rows;
-    VectorType     ghosted_u, ghosted_v, ghosted_trial;
-    Vector<double> pressures;
-    double         first_contact_speed = 0;
+    VectorType                           ghosted_u, ghosted_v, ghosted_trial;
+    Vector<double>                       pressures;
+    double                               first_contact_speed = 0;
 
-    History history;
+    History                               history;
     std::chrono::steady_clock::time_point wall_start;
-    double end_time        = 0;
-    double separation_time = -1;
-    double first_force_time = -1;
+    double                                end_time         = 0;
+    double                                separation_time  = -1;
+    double                                first_force_time = -1;
   };
 } // namespace impact_fem
 

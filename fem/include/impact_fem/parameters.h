@@ -40,8 +40,8 @@ namespace impact_fem
   /// The conditions of the plate's side and bottom faces.
   struct PlateFaces
   {
-    FaceCondition side   = FaceCondition::absorbing;
-    FaceCondition bottom = FaceCondition::absorbing;
+    FaceCondition side       = FaceCondition::absorbing;
+    FaceCondition bottom     = FaceCondition::absorbing;
     double support_stiffness = 0; ///< k of a 'support' bottom [N/m^3 = Pa/m]
 
     /// The condition of the face plate_side or plate_bottom.
@@ -90,11 +90,12 @@ namespace impact_fem
     end_time(const double time_step) const;
 
     // Scenario
-    bool     static_press    = false; ///< quasi-static press, no impact
-    bool     indentation     = false; ///< quasi-static displacement-controlled indentation
-    double   static_force    = 0;     ///< [N]
-    double   impact_velocity = 0;     ///< [m/s]
-    double   gravity         = 0;     ///< on the sphere [m/s^2]
+    bool static_press = false; ///< quasi-static press, no impact
+    bool indentation =
+      false; ///< quasi-static displacement-controlled indentation
+    double     static_force    = 0; ///< [N]
+    double     impact_velocity = 0; ///< [m/s]
+    double     gravity         = 0; ///< on the sphere [m/s^2]
     Geometry   geometry;
     PlateFaces plate_faces;
 
@@ -102,14 +103,14 @@ namespace impact_fem
     // is the fixed plane z = 0: no material, no mesh, no faces.
     std::unique_ptr<materials::Interface> material[2];
     bool                                  rigid_plate = false;
-    double                                yield_strength[2] = {0, 0}; ///< [Pa], 0: none
+    double yield_strength[2] = {0, 0}; ///< [Pa], 0: none
 
     // Time control
-    std::string scheme; ///< Time integration/Scheme
-    double steps_per_contact_time = 0; ///< [-]
-    double prescribed_time_step   = 0; ///< [s], 0: from steps_per_contact_time
-    double time_after_separation  = 0; ///< fraction of the contact time [-]
-    double maximum_time           = 0; ///< [s], 0: automatic
+    std::string scheme;                     ///< Time integration/Scheme
+    double      steps_per_contact_time = 0; ///< [-]
+    double prescribed_time_step  = 0; ///< [s], 0: from steps_per_contact_time
+    double time_after_separation = 0; ///< fraction of the contact time [-]
+    double maximum_time          = 0; ///< [s], 0: automatic
 
     std::string direct_solver;
     std::string output_directory;

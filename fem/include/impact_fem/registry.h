@@ -23,10 +23,10 @@ namespace impact_fem
   public:
     struct Entry
     {
-      std::string                                        name;
-      std::string                                        description;
-      std::function<void(dealii::ParameterHandler &)>    declare_parameters;
-      std::function<std::unique_ptr<Interface>()>        create;
+      std::string                                     name;
+      std::string                                     description;
+      std::function<void(dealii::ParameterHandler &)> declare_parameters;
+      std::function<std::unique_ptr<Interface>()>     create;
     };
 
     /// Add a kind; returns true (for use in a static initialiser).
@@ -92,17 +92,17 @@ namespace impact_fem
  * declare_parameters(ParameterHandler &)) as a kind of @p interface under
  * @p name. Used inside the class's namespace.
  */
-#define IMPACT_FEM_REGISTER(interface, classname, name, description)        \
-  namespace                                                                 \
-  {                                                                         \
-    const bool impact_fem_registered_##classname =                          \
-      impact_fem::Registry<interface>::add(                                 \
-        {name,                                                              \
-         description,                                                       \
-         &classname::declare_parameters,                                    \
-         []() -> std::unique_ptr<interface> {                               \
-           return std::make_unique<classname>();                            \
-         }});                                                               \
+#define IMPACT_FEM_REGISTER(interface, classname, name, description) \
+  namespace                                                          \
+  {                                                                  \
+    const bool impact_fem_registered_##classname =                   \
+      impact_fem::Registry<interface>::add(                          \
+        {name,                                                       \
+         description,                                                \
+         &classname::declare_parameters,                             \
+         []() -> std::unique_ptr<interface> {                        \
+           return std::make_unique<classname>();                     \
+         }});                                                        \
   }
 
 #endif

@@ -41,7 +41,7 @@ namespace impact_fem
       unsigned int iterations = 0, most_iterations = 0, bisections = 0;
       // The first step with plastic strain: approach, contact radius and
       // where the plastic strain is largest then.
-      bool            yielded = false;
+      bool            yielded        = false;
       double          onset_approach = 0, onset_contact_radius = 0;
       PlasticZonePeak onset, at_force_max;
       double          force_max = -1;
@@ -101,13 +101,14 @@ namespace impact_fem
   IndentationControl::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Indentation");
-    maximum_approach = prm.get_double("Maximum approach");
-    const long n     = prm.get_integer("Steps");
+    maximum_approach    = prm.get_double("Maximum approach");
+    const long n        = prm.get_integer("Steps");
     base_fixed_radially = prm.get("Base radial displacement") == "fixed";
     prm.leave_subsection();
     AssertThrow(maximum_approach > 0,
-                ExcMessage("Indentation/Maximum approach must be positive, got " +
-                           as_written(maximum_approach) + " m."));
+                ExcMessage(
+                  "Indentation/Maximum approach must be positive, got " +
+                  as_written(maximum_approach) + " m."));
     AssertThrow(n >= 1 && n <= 100000,
                 ExcMessage("Indentation/Steps must lie in [1, 100000], got " +
                            std::to_string(n) + "."));
@@ -151,7 +152,8 @@ namespace impact_fem
                                           FEValuesExtractors::Scalar(0)),
                                         {boundary_ids::sphere_base}) :
         IndexSet(dof_handler.n_dofs());
-    AssertThrow(Utilities::MPI::sum(base_dofs.n_elements(), mpi_communicator) > 0,
+    AssertThrow(Utilities::MPI::sum(base_dofs.n_elements(), mpi_communicator) >
+                  0,
                 ExcMessage("The indentation mesh has no hemisphere base "
                            "(physical group 8 of the geometry file)."));
     std::vector<types::global_dof_index> owned_base;
@@ -196,7 +198,8 @@ namespace impact_fem
     // solved exactly. Elastic-plastic bodies iterate this step on their
     // plastic force (solve_plastic_indentation_step).
     displacement.equ(approach, unit_approach_response);
-    pressures = contact.solve_complementarity(contact.weighted_gaps(displacement));
+    pressures =
+      contact.solve_complementarity(contact.weighted_gaps(displacement));
     contact.add_contact_response(pressures, displacement);
   }
 
@@ -225,7 +228,8 @@ namespace impact_fem
     // force of an impact step, does not vanish when the contact opens: near
     // the release the contact force alone tends to zero).
     const double committed_norm = start.l2_norm();
-    const auto linear_solve = [&](const VectorType &plastic_force, VectorType &u) {
+    const auto   linear_solve   = [&](const VectorType &plastic_force,
+                                  VectorType       &u) {
       load = plastic_force;
       hold(load);
       load.add(approach, unit_approach_load);
@@ -239,7 +243,10 @@ namespace impact_fem
       distributed = u;
       constraints.distribute(distributed);
       ghosted_trial = distributed;
-      arms.plastic_force(constraints, ghosted_trial, quasi_static_time_step, force);
+      arms.plastic_force(constraints,
+                         ghosted_trial,
+                         quasi_static_time_step,
+                         force);
       hold(force);
     };
     return nonlinear_step.solve(
@@ -253,14 +260,28 @@ namespace impact_fem
     setup_indentation();
     setup_contact();
 
-    history.declare({
-      {"approach", "m", "displacement of the hemisphere's base towards the plate minus the mean displacement of the plate bottom (downward positive): the interference omega"},
-      {"base_displacement", "m", "prescribed downward displacement of the hemisphere's base"},
-      {"contact_force", "N", "total normal contact force, 2 pi int p r dr"},
-      {"contact_radius", "m", "contact radius: between the outermost loaded node and the next, where p^2 extrapolated linearly in r^2 vanishes"},
-      {"max_pressure", "Pa", "largest nodal contact pressure"},
-      {"penetration", "m", "largest pointwise penetration of a contact node (the constraint holds in the weighted sense)"},
-      {"unloading", "1", "0 on the loading branch (and the start), 1 on the unloading branch"}});
+    history.declare(
+      {{"approach",
+        "m",
+        "displacement of the hemisphere's base towards the plate minus the "
+        "mean displacement of the plate bottom (downward positive): the "
+        "interference omega"},
+       {"base_displacement",
+        "m",
+        "prescribed downward displacement of the hemisphere's base"},
+       {"contact_force", "N", "total normal contact force, 2 pi int p r dr"},
+       {"contact_radius",
+        "m",
+        "contact radius: between the outermost loaded node and the next, where "
+        "p^2 extrapolated linearly in r^2 vanishes"},
+       {"max_pressure", "Pa", "largest nodal contact pressure"},
+       {"penetration",
+        "m",
+        "largest pointwise penetration of a contact node (the constraint holds "
+        "in the weighted sense)"},
+       {"unloading",
+        "1",
+        "0 on the loading branch (and the start), 1 on the unloading branch"}});
     history.set_profile("contact_node_radius",
                         "m",
                         "radius of the contact nodes",
@@ -268,22 +289,33 @@ namespace impact_fem
 
     // Elastic-plastic bodies: iterated steps, the plastic state committed
     // after each, and what the plastic zone does (analysis/indentation.cc).
-    arms.initialize(dof_handler,
-                    *mapping,
-                    *quadrature,
-                    [this](const types::material_id id)
-                      -> const materials::Interface & { return material_of(id); },
-                    ghosted_u);
-    const bool plastic = arms.nonlinear();
+    arms.initialize(
+      dof_handler,
+      *mapping,
+      *quadrature,
+      [this](const types::material_id id) -> const materials::Interface & {
+        return material_of(id);
+      },
+      ghosted_u);
+    const bool         plastic = arms.nonlinear();
     PlasticIndentation plastic_record;
-    VectorType committed(locally_owned_dofs, mpi_communicator);
+    VectorType         committed(locally_owned_dofs, mpi_communicator);
     if (plastic)
       {
-        history.declare({
-          {result_files::newton_iterations_dataset, "1", "iterations of the step's nonlinear solve (Nonlinear solver)"},
-          {result_files::newton_residual_dataset, "1", "out-of-balance force of the accepted iterate / (||B^T lambda|| + ||f_p,n||)"},
-          {"max_accumulated_plastic_strain", "1", "largest accumulated plastic strain of both bodies"},
-          {"plastic_work", "J", "cumulative plastic work int sigma : d eps^p"}});
+        history.declare(
+          {{result_files::newton_iterations_dataset,
+            "1",
+            "iterations of the step's nonlinear solve (Nonlinear solver)"},
+           {result_files::newton_residual_dataset,
+            "1",
+            "out-of-balance force of the accepted iterate / (||B^T lambda|| + "
+            "||f_p,n||)"},
+           {"max_accumulated_plastic_strain",
+            "1",
+            "largest accumulated plastic strain of both bodies"},
+           {"plastic_work",
+            "J",
+            "cumulative plastic work int sigma : d eps^p"}});
       }
     // The sphere's lowest point (reference configuration), from which the
     // depth of the plastic zone is measured.
@@ -295,7 +327,10 @@ namespace impact_fem
     lowest = Utilities::MPI::min(lowest, mpi_communicator);
     // The largest accumulated plastic strain and where it is (all ranks).
     const auto plastic_zone_peak = [&]() {
-      FEValues<2>     fe_values(*mapping, *fe, *quadrature, update_quadrature_points);
+      FEValues<2>     fe_values(*mapping,
+                            *fe,
+                            *quadrature,
+                            update_quadrature_points);
       PlasticZonePeak local;
       for (const auto &cell : dof_handler.active_cell_iterators())
         if (cell->is_locally_owned())
@@ -315,14 +350,17 @@ namespace impact_fem
       PlasticZonePeak global;
       global.value = Utilities::MPI::max(local.value, mpi_communicator);
       // The rank that holds the peak gives its place (the others send 0).
-      const bool mine = local.value == global.value && global.value > 0;
+      const bool         mine = local.value == global.value && global.value > 0;
       const unsigned int owner = Utilities::MPI::min(
         mine ? Utilities::MPI::this_mpi_process(mpi_communicator) :
                Utilities::MPI::n_mpi_processes(mpi_communicator),
         mpi_communicator);
-      const bool sends = owner == Utilities::MPI::this_mpi_process(mpi_communicator);
-      global.radius = Utilities::MPI::sum(sends ? local.radius : 0., mpi_communicator);
-      global.depth  = Utilities::MPI::sum(sends ? local.depth : 0., mpi_communicator);
+      const bool sends =
+        owner == Utilities::MPI::this_mpi_process(mpi_communicator);
+      global.radius =
+        Utilities::MPI::sum(sends ? local.radius : 0., mpi_communicator);
+      global.depth =
+        Utilities::MPI::sum(sends ? local.depth : 0., mpi_communicator);
       return global;
     };
     // Solve one step; a plastic step that does not converge stops the run.
@@ -345,29 +383,33 @@ namespace impact_fem
         solve_plastic_indentation_step(approach, committed, displacement);
       unsigned int iterations = result.iterations;
       while (prepare && result.converged &&
-             !arms.prepare_commit(constraints, ghosted_trial, quasi_static_time_step))
+             !arms.prepare_commit(constraints,
+                                  ghosted_trial,
+                                  quasi_static_time_step))
         {
-          result = solve_plastic_indentation_step(approach, committed, displacement);
+          result =
+            solve_plastic_indentation_step(approach, committed, displacement);
           iterations += result.iterations;
         }
       result.iterations = iterations;
-      step_iterations = result.iterations;
-      step_residual   = result.residual;
+      step_iterations   = result.iterations;
+      step_residual     = result.residual;
       plastic_record.iterations += result.iterations;
       plastic_record.most_iterations =
         std::max(plastic_record.most_iterations, result.iterations);
       if (!result.converged)
         {
           // The criterion in words, with the force scale of this analysis.
-          std::string       criterion = nonlinear_step.criterion();
+          std::string       criterion    = nonlinear_step.criterion();
           const std::string impact_scale = "||f_body||";
-          const auto        at = criterion.find(impact_scale);
+          const auto        at           = criterion.find(impact_scale);
           if (at != std::string::npos)
             criterion.replace(at, impact_scale.size(), "||f_p,n||");
           std::ostringstream message;
           message << std::setprecision(6) << "Indentation step " << step
                   << " (approach " << approach << " m, "
-                  << (step > indentation_control.steps ? "unloading" : "loading")
+                  << (step > indentation_control.steps ? "unloading" :
+                                                         "loading")
                   << ") did not converge: after " << result.iterations
                   << " iterations the residual is " << result.residual
                   << " of the load and the increment " << result.increment
@@ -390,11 +432,11 @@ namespace impact_fem
     };
 
     const std::vector<double> approaches = indentation_control.approaches();
-    VectorType   displacement(locally_owned_dofs, mpi_communicator);
-    double       force_max = 0, radius_at_force_max = 0, deepest = 0;
-    double       residual_approach = 0, last_loaded_approach = 0;
-    bool         released = false;
-    std::size_t  step     = 0;
+    VectorType  displacement(locally_owned_dofs, mpi_communicator);
+    double      force_max = 0, radius_at_force_max = 0, deepest = 0;
+    double      residual_approach = 0, last_loaded_approach = 0;
+    bool        released = false;
+    std::size_t step     = 0;
     for (; step < approaches.size() && !released; ++step)
       {
         AssertThrow(interrupt_received() == 0,
@@ -413,8 +455,8 @@ namespace impact_fem
         const double       step_residual_kept   = step_residual;
         if (plastic && unloading && force <= 0)
           {
-            double      low = approaches[step], high = approaches[step - 1];
-            VectorType  trial(displacement);
+            double     low = approaches[step], high = approaches[step - 1];
+            VectorType trial(displacement);
             const Vector<double> kept_pressures(pressures);
             while (high - low > 1e-4 * indentation_control.maximum_approach)
               {
@@ -423,24 +465,29 @@ namespace impact_fem
                 (contact.total_force(pressures) > 0 ? high : low) = middle;
                 ++plastic_record.bisections;
               }
-            pressures = kept_pressures;
+            pressures                       = kept_pressures;
             plastic_record.released_between = {{low, high}};
           }
         if (plastic)
           {
             commit(displacement);
-            history.append(result_files::newton_iterations_dataset, step_iterations_kept);
-            history.append(result_files::newton_residual_dataset, step_residual_kept);
+            history.append(result_files::newton_iterations_dataset,
+                           step_iterations_kept);
+            history.append(result_files::newton_residual_dataset,
+                           step_residual_kept);
             history.append("max_accumulated_plastic_strain",
                            std::max(arms.max_accumulated_plastic_strain(0),
                                     arms.max_accumulated_plastic_strain(1)));
             history.append("plastic_work", arms.plastic_work());
-            plastic_record.observe(plastic_zone_peak(), approaches[step], force,
-                                   contact.contact_radius(pressures), unloading);
+            plastic_record.observe(plastic_zone_peak(),
+                                   approaches[step],
+                                   force,
+                                   contact.contact_radius(pressures),
+                                   unloading);
           }
         const double plate_displacement =
           -(weights.plate_bottom_mean * displacement);
-        const double penetration = contact.penetration(displacement);
+        const double penetration  = contact.penetration(displacement);
         double       max_pressure = 0;
         for (const double p : pressures)
           max_pressure = std::max(max_pressure, p);
@@ -479,51 +526,56 @@ namespace impact_fem
           last_loaded_approach = approaches[step] - plate_displacement;
       }
 
-    const double wall_time =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start)
-        .count();
-    const double R          = parameters.geometry.sphere_radius;
-    const double omega      = indentation_control.maximum_approach;
+    const double wall_time = std::chrono::duration<double>(
+                               std::chrono::steady_clock::now() - wall_start)
+                               .count();
+    const double R     = parameters.geometry.sphere_radius;
+    const double omega = indentation_control.maximum_approach;
     const double hertz_force =
       parameters.hertz.stiffness() * std::pow(omega, 1.5);
     nlohmann::json result;
-    result["complete"]            = true;
-    result["analysis"]            = "indentation";
-    result["maximum_approach"]    = omega;
-    result["steps"]               = indentation_control.steps;
-    result["force_max"]           = force_max;
-    result["contact_radius_max"]  = radius_at_force_max;
-    result["residual_approach"]   = residual_approach;
-    result["residual_approach_upper_bound"] = released ? last_loaded_approach : omega;
-    result["released"]            = released;
-    result["max_penetration"]     = deepest;
-    result["hertz_force_max"]     = hertz_force;
+    result["complete"]           = true;
+    result["analysis"]           = "indentation";
+    result["maximum_approach"]   = omega;
+    result["steps"]              = indentation_control.steps;
+    result["force_max"]          = force_max;
+    result["contact_radius_max"] = radius_at_force_max;
+    result["residual_approach"]  = residual_approach;
+    result["residual_approach_upper_bound"] =
+      released ? last_loaded_approach : omega;
+    result["released"]                 = released;
+    result["max_penetration"]          = deepest;
+    result["hertz_force_max"]          = hertz_force;
     result["hertz_contact_radius_max"] = std::sqrt(R * omega);
-    result["effective_modulus"]   = parameters.hertz.effective_modulus;
-    result["cells"]               = triangulation.n_global_active_cells();
-    result["dofs"]                = dof_handler.n_dofs();
-    result["contact_nodes"]       = contact.n_contact_nodes();
-    result["ranks"]               = Utilities::MPI::n_mpi_processes(mpi_communicator);
-    result["wall_time"]           = wall_time;
+    result["effective_modulus"]        = parameters.hertz.effective_modulus;
+    result["cells"]                    = triangulation.n_global_active_cells();
+    result["dofs"]                     = dof_handler.n_dofs();
+    result["contact_nodes"]            = contact.n_contact_nodes();
+    result["ranks"]     = Utilities::MPI::n_mpi_processes(mpi_communicator);
+    result["wall_time"] = wall_time;
     if (plastic)
       {
         // The permanent approach bisected to 1e-4 of the maximum approach;
         // the yield onset and the plastic zone at the largest force.
         result["residual_approach_bisections"] = plastic_record.bisections;
-        result["plastic_work"]                  = arms.plastic_work();
+        result["plastic_work"]                 = arms.plastic_work();
         result["max_accumulated_plastic_strain"] =
           std::max(arms.max_accumulated_plastic_strain(0),
                    arms.max_accumulated_plastic_strain(1));
-        result["newton_iterations"]      = plastic_record.iterations;
-        result["newton_iterations_max"]  = plastic_record.most_iterations;
-        result["yielded"]                = plastic_record.yielded;
-        result["yield_onset_approach"]   = plastic_record.onset_approach;
-        result["yield_onset_contact_radius"] = plastic_record.onset_contact_radius;
-        result["yield_onset_r"]          = plastic_record.onset.radius;
-        result["yield_onset_depth"]      = plastic_record.onset.depth;
-        result["plastic_strain_peak_at_force_max"] = plastic_record.at_force_max.value;
-        result["plastic_strain_peak_r_at_force_max"] = plastic_record.at_force_max.radius;
-        result["plastic_strain_peak_depth_at_force_max"] = plastic_record.at_force_max.depth;
+        result["newton_iterations"]     = plastic_record.iterations;
+        result["newton_iterations_max"] = plastic_record.most_iterations;
+        result["yielded"]               = plastic_record.yielded;
+        result["yield_onset_approach"]  = plastic_record.onset_approach;
+        result["yield_onset_contact_radius"] =
+          plastic_record.onset_contact_radius;
+        result["yield_onset_r"]     = plastic_record.onset.radius;
+        result["yield_onset_depth"] = plastic_record.onset.depth;
+        result["plastic_strain_peak_at_force_max"] =
+          plastic_record.at_force_max.value;
+        result["plastic_strain_peak_r_at_force_max"] =
+          plastic_record.at_force_max.radius;
+        result["plastic_strain_peak_depth_at_force_max"] =
+          plastic_record.at_force_max.depth;
       }
     AssertThrow(released,
                 ExcMessage("Internal error: the contact force did not vanish "
@@ -561,21 +613,23 @@ namespace impact_fem
           << " um in " << indentation_control.steps << " steps each way\n"
           << "  peak force        " << force_max << " N (Hertz " << hertz_force
           << " N)\n"
-          << "  contact radius    " << radius_at_force_max * 1e3 << " mm (Hertz "
-          << std::sqrt(R * omega) * 1e3 << " mm)\n"
+          << "  contact radius    " << radius_at_force_max * 1e3
+          << " mm (Hertz " << std::sqrt(R * omega) * 1e3 << " mm)\n"
           << "  residual approach " << residual_approach * 1e6 << " um\n";
     if (plastic)
-      pcout << "  plastic work      " << arms.plastic_work() << " J, max accumulated "
-            << "plastic strain " << result["max_accumulated_plastic_strain"].get<double>()
+      pcout << "  plastic work      " << arms.plastic_work()
+            << " J, max accumulated "
+            << "plastic strain "
+            << result["max_accumulated_plastic_strain"].get<double>()
             << "\n  yield onset       at approach "
-            << plastic_record.onset_approach * 1e6 << " um, peak at r = "
-            << plastic_record.onset.radius * 1e6 << " um, depth "
-            << plastic_record.onset.depth * 1e6 << " um (contact radius "
+            << plastic_record.onset_approach * 1e6
+            << " um, peak at r = " << plastic_record.onset.radius * 1e6
+            << " um, depth " << plastic_record.onset.depth * 1e6
+            << " um (contact radius "
             << plastic_record.onset_contact_radius * 1e6 << " um)\n"
             << "  iterations        " << plastic_record.iterations << " (max "
             << plastic_record.most_iterations << " in a step)\n";
-    pcout
-          << "  max penetration   " << deepest * 1e9 << " nm\n"
+    pcout << "  max penetration   " << deepest * 1e9 << " nm\n"
           << "  cells " << triangulation.n_global_active_cells() << ", dofs "
           << dof_handler.n_dofs() << ", steps " << step << ", wall time "
           << wall_time << " s" << std::endl;

@@ -36,22 +36,25 @@ namespace impact_fem
       l.directory = prm.get("Directory");
       prm.leave_subsection();
       prm.enter_subsection("Material point");
-      l.loading = prm.get("Loading");
-      l.strain_hat =
-        Utilities::string_to_double(Utilities::split_string_list(prm.get("Strain")));
-      l.stress_hat =
-        Utilities::string_to_double(Utilities::split_string_list(prm.get("Stress")));
-      for (const auto &point : Utilities::split_string_list(prm.get("Strain path"), ';'))
+      l.loading    = prm.get("Loading");
+      l.strain_hat = Utilities::string_to_double(
+        Utilities::split_string_list(prm.get("Strain")));
+      l.stress_hat = Utilities::string_to_double(
+        Utilities::split_string_list(prm.get("Stress")));
+      for (const auto &point :
+           Utilities::split_string_list(prm.get("Strain path"), ';'))
         {
-          const auto c = Utilities::string_to_double(Utilities::split_string_list(point));
+          const auto c =
+            Utilities::string_to_double(Utilities::split_string_list(point));
           AssertThrow(c.size() == 4,
-                      ExcMessage("Material point/Strain path: each point needs "
-                                 "4 components (rr, zz, theta-theta, rz), got '" +
-                                 point + "'."));
+                      ExcMessage(
+                        "Material point/Strain path: each point needs "
+                        "4 components (rr, zz, theta-theta, rz), got '" +
+                        point + "'."));
           l.path.push_back(tensor_from(c));
         }
-      l.axial_path =
-        Utilities::string_to_double(Utilities::split_string_list(prm.get("Axial strain path")));
+      l.axial_path = Utilities::string_to_double(
+        Utilities::split_string_list(prm.get("Axial strain path")));
       l.ramp_time = prm.get_double("Ramp time");
       l.omega     = prm.get_double("Angular frequency");
       l.duration  = prm.get_double("Duration");
@@ -67,16 +70,18 @@ namespace impact_fem
     double
     strain_factor(const Loading &loading, const double t)
     {
-      return loading.loading == "strain ramp" ? std::min(t / loading.ramp_time, 1.) :
-                                                std::sin(loading.omega * t);
+      return loading.loading == "strain ramp" ?
+               std::min(t / loading.ramp_time, 1.) :
+               std::sin(loading.omega * t);
     }
 
 
     double
     strain_factor_rate(const Loading &loading, const double t)
     {
-      return loading.loading == "strain ramp" ? (t < loading.ramp_time ? 1. / loading.ramp_time : 0.) :
-                                                loading.omega * std::cos(loading.omega * t);
+      return loading.loading == "strain ramp" ?
+               (t < loading.ramp_time ? 1. / loading.ramp_time : 0.) :
+               loading.omega * std::cos(loading.omega * t);
     }
 
 
@@ -88,10 +93,12 @@ namespace impact_fem
       const char *components[4] = {"rr", "zz", "thetatheta", "rz"};
       history.declare("time", "s", "time");
       for (const auto *c : components)
-        history.declare(std::string("strain_") + c, "1",
+        history.declare(std::string("strain_") + c,
+                        "1",
                         before + "strain " + c + after);
       for (const auto *c : components)
-        history.declare(std::string("stress_") + c, "Pa",
+        history.declare(std::string("stress_") + c,
+                        "Pa",
                         before + "stress " + c + after);
     }
 

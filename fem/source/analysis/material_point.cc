@@ -24,22 +24,23 @@ namespace impact_fem
   MaterialPointTest::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Material point");
-    prm.declare_entry("Loading",
-                      "strain ramp",
-                      Patterns::Selection(
-                        "strain ramp|strain oscillation|stress step|strain path|"
-                        "axial strain path"),
-                      "Prescribed history at the material point (Scenario/"
-                      "Analysis = material point, sphere material): "
-                      "'strain ramp' min(t/t_ramp, 1) eps_hat, 'strain "
-                      "oscillation' sin(omega t) eps_hat, 'stress step' "
-                      "sigma_hat for t > 0, 'strain path' piecewise linear "
-                      "from 0 through the points of 'Strain path', one "
-                      "Ramp time per segment, then held; 'axial strain path' "
-                      "(specimen only) the axial strain zz piecewise linear "
-                      "from 0 through the values of 'Axial strain path', one "
-                      "Ramp time per segment, then held, the lateral faces "
-                      "free: uniaxial stress, a tension or compression test.");
+    prm.declare_entry(
+      "Loading",
+      "strain ramp",
+      Patterns::Selection(
+        "strain ramp|strain oscillation|stress step|strain path|"
+        "axial strain path"),
+      "Prescribed history at the material point (Scenario/"
+      "Analysis = material point, sphere material): "
+      "'strain ramp' min(t/t_ramp, 1) eps_hat, 'strain "
+      "oscillation' sin(omega t) eps_hat, 'stress step' "
+      "sigma_hat for t > 0, 'strain path' piecewise linear "
+      "from 0 through the points of 'Strain path', one "
+      "Ramp time per segment, then held; 'axial strain path' "
+      "(specimen only) the axial strain zz piecewise linear "
+      "from 0 through the values of 'Axial strain path', one "
+      "Ramp time per segment, then held, the lateral faces "
+      "free: uniaxial stress, a tension or compression test.");
     prm.declare_entry("Axial strain path",
                       "2e-2",
                       Patterns::List(Patterns::Double(), 1),
@@ -86,26 +87,28 @@ namespace impact_fem
   void
   MaterialPointTest::run()
   {
-    const Loading                 input      = read_loading(parameters);
-    const auto                   &material   = input.material;
-    const std::string            &directory  = input.directory;
-    const std::string            &loading    = input.loading;
-    const SymmetricTensor<2, 3>   strain_hat = tensor_from(input.strain_hat);
-    const SymmetricTensor<2, 3>   stress_hat = tensor_from(input.stress_hat);
-    const double                  ramp_time  = input.ramp_time;
-    const double                  duration   = input.duration;
-    const double                  dt         = input.dt;
+    const Loading               input      = read_loading(parameters);
+    const auto                 &material   = input.material;
+    const std::string          &directory  = input.directory;
+    const std::string          &loading    = input.loading;
+    const SymmetricTensor<2, 3> strain_hat = tensor_from(input.strain_hat);
+    const SymmetricTensor<2, 3> stress_hat = tensor_from(input.stress_hat);
+    const double                ramp_time  = input.ramp_time;
+    const double                duration   = input.duration;
+    const double                dt         = input.dt;
 
-    const SymmetricTensor<4, 3> C = material->stiffness_tangent();
-    const SymmetricTensor<4, 3> D = material->damping_tangent();
+    const SymmetricTensor<4, 3> C          = material->stiffness_tangent();
+    const SymmetricTensor<4, 3> D          = material->damping_tangent();
     const SymmetricTensor<4, 3> C_internal = material->internal_tangent(dt);
-    std::vector<SymmetricTensor<2, 3>> internal(material->n_internal_variables());
+    std::vector<SymmetricTensor<2, 3>> internal(
+      material->n_internal_variables());
     const bool stress_controlled = loading == "stress step";
     AssertThrow(loading != "axial strain path",
-                ExcMessage("Material point: the 'axial strain path' loading "
-                           "(uniaxial stress, lateral faces free) is one of "
-                           "Scenario/Analysis = specimen; at a material point "
-                           "prescribe the lateral strains with 'strain path'."));
+                ExcMessage(
+                  "Material point: the 'axial strain path' loading "
+                  "(uniaxial stress, lateral faces free) is one of "
+                  "Scenario/Analysis = specimen; at a material point "
+                  "prescribe the lateral strains with 'strain path'."));
     AssertThrow(!stress_controlled || D.norm() > 0,
                 ExcMessage("Material point: the 'stress step' (creep) "
                            "loading needs a viscous material (Kelvin-Voigt), "
@@ -130,8 +133,8 @@ namespace impact_fem
       if (loading == "strain path")
         {
           double             w;
-          const unsigned int i     = path_segment(t, w);
-          const auto         start = i == 0 ? SymmetricTensor<2, 3>() : path[i - 1];
+          const unsigned int i = path_segment(t, w);
+          const auto start     = i == 0 ? SymmetricTensor<2, 3>() : path[i - 1];
           return start + w * (path[i] - start);
         }
       return strain_factor(input, t) * strain_hat;
@@ -142,8 +145,8 @@ namespace impact_fem
           if (t >= path.size() * ramp_time)
             return SymmetricTensor<2, 3>();
           double             w;
-          const unsigned int i     = path_segment(t, w);
-          const auto         start = i == 0 ? SymmetricTensor<2, 3>() : path[i - 1];
+          const unsigned int i = path_segment(t, w);
+          const auto start     = i == 0 ? SymmetricTensor<2, 3>() : path[i - 1];
           return (path[i] - start) / ramp_time;
         }
       return strain_factor_rate(input, t) * strain_hat;
@@ -159,11 +162,18 @@ namespace impact_fem
 
     History history;
     declare_components(history, "", "");
-    history.declare("internal_energy", "J/m^3", "energy stored in the Maxwell arms");
-    history.declare("dissipated_energy", "J/m^3", "cumulative dissipation in the Maxwell arms");
+    history.declare("internal_energy",
+                    "J/m^3",
+                    "energy stored in the Maxwell arms");
+    history.declare("dissipated_energy",
+                    "J/m^3",
+                    "cumulative dissipation in the Maxwell arms");
     if (nonlinear)
-      history.declare({{"accumulated_plastic_strain", "1", "accumulated plastic strain"},
-                       {"plastic_work", "J/m^3", "cumulative plastic work, trapezoidal in the stress"}});
+      history.declare(
+        {{"accumulated_plastic_strain", "1", "accumulated plastic strain"},
+         {"plastic_work",
+          "J/m^3",
+          "cumulative plastic work, trapezoidal in the stress"}});
     double plastic_work = 0;
 
     // Initial state: unstrained; under a stress step the dashpot takes the
@@ -181,16 +191,18 @@ namespace impact_fem
       history.append("dissipated_energy", dissipated);
       if (nonlinear)
         {
-          history.append("accumulated_plastic_strain", point.accumulated_plastic_strain);
+          history.append("accumulated_plastic_strain",
+                         point.accumulated_plastic_strain);
           history.append("plastic_work", plastic_work);
         }
     };
     record(0);
 
-    const unsigned int n_steps = static_cast<unsigned int>(std::lround(duration / dt));
+    const unsigned int n_steps =
+      static_cast<unsigned int>(std::lround(duration / dt));
     for (unsigned int step = 1; step <= n_steps; ++step)
       {
-        const double t = step * dt;
+        const double                t = step * dt;
         const SymmetricTensor<2, 3> predictor =
           material->internal_stress_predictor(internal, strain, dt);
         SymmetricTensor<2, 3> new_strain, new_rate;
@@ -198,9 +210,9 @@ namespace impact_fem
           {
             // C eps + D d eps/dt + C_int eps + predictor = sigma_hat with the
             // trapezoidal rule of the Newmark step for d eps/dt.
-            new_strain = invert(C + 2 / dt * D + C_internal) *
-                         (stress_hat + D * (2 / dt * strain + strain_rate) -
-                          predictor);
+            new_strain =
+              invert(C + 2 / dt * D + C_internal) *
+              (stress_hat + D * (2 / dt * strain + strain_rate) - predictor);
             new_rate = 2 / dt * (new_strain - strain) - strain_rate;
           }
         else
@@ -210,9 +222,10 @@ namespace impact_fem
           }
         if (nonlinear)
           {
-            const SymmetricTensor<2, 3> elastic_start = C * (strain - point.plastic_strain);
-            const SymmetricTensor<2, 3> elastic_end =
-              material->stress_update(point, new_strain, dt, point_end, tangent);
+            const SymmetricTensor<2, 3> elastic_start =
+              C * (strain - point.plastic_strain);
+            const SymmetricTensor<2, 3> elastic_end = material->stress_update(
+              point, new_strain, dt, point_end, tangent);
             plastic_work += 0.5 * (elastic_start + elastic_end) *
                             (point_end.plastic_strain - point.plastic_strain);
             point  = point_end;
@@ -220,9 +233,12 @@ namespace impact_fem
           }
         else
           {
-            stress = C * new_strain + D * new_rate + C_internal * new_strain + predictor;
-            dissipated +=
-              material->update_internal_variables(internal, strain, new_strain, dt);
+            stress = C * new_strain + D * new_rate + C_internal * new_strain +
+                     predictor;
+            dissipated += material->update_internal_variables(internal,
+                                                              strain,
+                                                              new_strain,
+                                                              dt);
           }
         strain      = new_strain;
         strain_rate = new_rate;
@@ -231,14 +247,13 @@ namespace impact_fem
 
     std::filesystem::create_directories(directory);
     std::map<std::string, std::string> text;
-    text["Scenario/Analysis"]        = "material point";
-    text["Material point/Loading"]   = loading;
+    text["Scenario/Analysis"]      = "material point";
+    text["Material point/Loading"] = loading;
     std::map<std::string, double> numbers;
     numbers["time_step [s]"] = dt;
     history.write_hdf5(directory + "/history.h5", text, numbers, true);
     std::cout << "material point (" << loading << "): " << n_steps
-              << " steps of " << dt << " s, final stress zz "
-              << stress[1][1] << " Pa -> " << directory << "/history.h5"
-              << std::endl;
+              << " steps of " << dt << " s, final stress zz " << stress[1][1]
+              << " Pa -> " << directory << "/history.h5" << std::endl;
   }
 } // namespace impact_fem

@@ -61,7 +61,8 @@ namespace impact_fem
       for (const auto &sigma : stresses)
         for (unsigned int a = 0; a < 3; ++a)
           for (unsigned int b = a; b < 3; ++b)
-            deviation = std::max(deviation, std::abs(sigma[a][b] - mean_stress[a][b]));
+            deviation =
+              std::max(deviation, std::abs(sigma[a][b] - mean_stress[a][b]));
       append_components(history, t, mean_strain, mean_stress);
       history.append("inhomogeneity", scale > 0 ? deviation / scale : 0.);
     }
@@ -80,8 +81,8 @@ namespace impact_fem
       text["Material point/Loading"] = loading;
       std::map<std::string, double> numbers;
       numbers["time_step [s]"] = dt;
-      numbers["cells"]         = dof_handler.get_triangulation().n_active_cells();
-      numbers["dofs"]          = dof_handler.n_dofs();
+      numbers["cells"] = dof_handler.get_triangulation().n_active_cells();
+      numbers["dofs"]  = dof_handler.n_dofs();
       history.write_hdf5(directory + "/history.h5", text, numbers, true);
     }
 
@@ -120,10 +121,16 @@ namespace impact_fem
                       AffineConstraints<double> &constraints)
     {
       VectorTools::interpolate_boundary_values(
-        dof_handler, 0, Functions::ZeroFunction<2>(2), constraints,
+        dof_handler,
+        0,
+        Functions::ZeroFunction<2>(2),
+        constraints,
         fe.component_mask(FEValuesExtractors::Scalar(0)));
       VectorTools::interpolate_boundary_values(
-        dof_handler, 2, Functions::ZeroFunction<2>(2), constraints,
+        dof_handler,
+        2,
+        Functions::ZeroFunction<2>(2),
+        constraints,
         fe.component_mask(FEValuesExtractors::Scalar(1)));
     }
 
@@ -138,14 +145,19 @@ namespace impact_fem
     {
       const HomogeneousDisplacement boundary(a, b);
       for (const types::boundary_id id : {0, 1, 2, 3})
-        VectorTools::interpolate_boundary_values(dof_handler, id, boundary, constraints);
+        VectorTools::interpolate_boundary_values(dof_handler,
+                                                 id,
+                                                 boundary,
+                                                 constraints);
     }
 
 
     // Axial strain of the 'axial strain path' at time t: piecewise linear
     // from 0 through the points, one ramp time per segment, then held.
     double
-    axial_strain(const std::vector<double> &path, const double ramp_time, const double t)
+    axial_strain(const std::vector<double> &path,
+                 const double               ramp_time,
+                 const double               t)
     {
       const double       x = t / ramp_time;
       const unsigned int i = static_cast<unsigned int>(std::floor(x));
@@ -178,26 +190,32 @@ namespace impact_fem
       AssertThrow(!uniaxial || !input.axial_path.empty(),
                   ExcMessage("Material point/Axial strain path is empty."));
       AssertThrow(loading != "stress step",
-                  ExcMessage("Specimen: the 'stress step' (creep) loading "
-                             "needs a linear viscous material (Kelvin-Voigt)."));
+                  ExcMessage(
+                    "Specimen: the 'stress step' (creep) loading "
+                    "needs a linear viscous material (Kelvin-Voigt)."));
 
       const double     size = 1e-3;
       Triangulation<2> triangulation;
-      GridGenerator::hyper_rectangle(triangulation, Point<2>(0, 0),
-                                     Point<2>(size, size), true);
+      GridGenerator::hyper_rectangle(triangulation,
+                                     Point<2>(0, 0),
+                                     Point<2>(size, size),
+                                     true);
       triangulation.refine_global(1);
       const FESystem<2> fe(FE_Q<2>(degree), 2);
       DoFHandler<2>     dof_handler(triangulation);
       dof_handler.distribute_dofs(fe);
-      const QGauss<2> quadrature = cell_quadrature(fe);
-      FEValues<2>     fe_values(fe, quadrature,
+      const QGauss<2>                  quadrature = cell_quadrature(fe);
+      FEValues<2>                      fe_values(fe,
+                            quadrature,
                             update_values | update_gradients |
                               update_quadrature_points | update_JxW_values);
       const FEValuesExtractors::Vector u(0);
       const unsigned int               dofs_per_cell = fe.n_dofs_per_cell();
       const unsigned int               n_q           = quadrature.size();
 
-      CellDataStorage<Triangulation<2>::cell_iterator, materials::QuadraturePointState> states;
+      CellDataStorage<Triangulation<2>::cell_iterator,
+                      materials::QuadraturePointState>
+        states;
       for (const auto &cell : triangulation.active_cell_iterators())
         {
           states.initialize(cell, n_q);
@@ -226,17 +244,24 @@ namespace impact_fem
         if (uniaxial)
           {
             const double top =
-              homogeneous ? 0. : axial_strain(input.axial_path, input.ramp_time, t) * size;
+              homogeneous ?
+                0. :
+                axial_strain(input.axial_path, input.ramp_time, t) * size;
             constrain_rollers(dof_handler, fe, constraints);
             VectorTools::interpolate_boundary_values(
-              dof_handler, 3, Functions::ConstantFunction<2>(top, 2), constraints,
+              dof_handler,
+              3,
+              Functions::ConstantFunction<2>(top, 2),
+              constraints,
               fe.component_mask(FEValuesExtractors::Scalar(1)));
           }
         else
           {
             const double factor = homogeneous ? 0. : strain_factor(input, t);
-            constrain_homogeneous_strain(dof_handler, factor * strain_hat[0],
-                                         factor * strain_hat[1], constraints);
+            constrain_homogeneous_strain(dof_handler,
+                                         factor * strain_hat[0],
+                                         factor * strain_hat[1],
+                                         constraints);
           }
         constraints.close();
         return constraints;
@@ -262,8 +287,8 @@ namespace impact_fem
         Vector<double>     cell_rhs(dofs_per_cell);
         std::vector<types::global_dof_index> dofs(dofs_per_cell);
         std::vector<SymmetricTensor<2, 3>>   shape_strain(dofs_per_cell);
-        std::vector<Tensor<1, 2>> values(n_q), rates(n_q);
-        std::vector<Tensor<2, 2>> gradients(n_q), rate_gradients(n_q);
+        std::vector<Tensor<1, 2>>            values(n_q), rates(n_q);
+        std::vector<Tensor<2, 2>>   gradients(n_q), rate_gradients(n_q);
         const SymmetricTensor<4, 3> C = material->stiffness_tangent();
         for (const auto &cell : dof_handler.active_cell_iterators())
           {
@@ -272,39 +297,45 @@ namespace impact_fem
             fe_values[u].get_function_gradients(displacement, gradients);
             fe_values[u].get_function_values(velocity, rates);
             fe_values[u].get_function_gradients(velocity, rate_gradients);
-            cell_matrix = 0;
-            cell_rhs    = 0;
+            cell_matrix             = 0;
+            cell_rhs                = 0;
             const auto point_states = states.get_data(cell);
             for (unsigned int q = 0; q < n_q; ++q)
               {
                 const double r  = fe_values.quadrature_point(q)[0];
                 const double dV = 2 * M_PI * r * fe_values.JxW(q);
                 materials::QuadraturePointState &start = *point_states[q];
-                const SymmetricTensor<2, 3> eps =
+                const SymmetricTensor<2, 3>      eps =
                   axisymmetric_strain(values[q], gradients[q], r);
                 materials::QuadraturePointState end;
                 SymmetricTensor<4, 3>           tangent;
                 const SymmetricTensor<2, 3>     elastic_plastic =
                   material->stress_update(start, eps, dt, end, tangent);
                 const SymmetricTensor<2, 3> sigma =
-                  elastic_plastic + D * axisymmetric_strain(rates[q], rate_gradients[q], r);
+                  elastic_plastic +
+                  D * axisymmetric_strain(rates[q], rate_gradients[q], r);
                 const SymmetricTensor<4, 3> A = tangent + 2 / dt * D;
                 for (unsigned int i = 0; i < dofs_per_cell; ++i)
-                  shape_strain[i] = axisymmetric_strain(fe_values[u].value(i, q),
-                                                        fe_values[u].gradient(i, q), r);
+                  shape_strain[i] =
+                    axisymmetric_strain(fe_values[u].value(i, q),
+                                        fe_values[u].gradient(i, q),
+                                        r);
                 for (unsigned int i = 0; i < dofs_per_cell; ++i)
                   {
                     for (unsigned int j = 0; j < dofs_per_cell; ++j)
-                      cell_matrix(i, j) += (A * shape_strain[j]) * shape_strain[i] * dV;
+                      cell_matrix(i, j) +=
+                        (A * shape_strain[j]) * shape_strain[i] * dV;
                     cell_rhs(i) -= (sigma * shape_strain[i]) * dV;
                   }
                 if (commit)
                   {
                     const SymmetricTensor<2, 3> elastic_start =
                       C * (start.strain - start.plastic_strain);
-                    step_plastic_work += 0.5 * ((elastic_start + elastic_plastic) *
-                                                (end.plastic_strain - start.plastic_strain)) *
-                                         dV;
+                    step_plastic_work +=
+                      0.5 *
+                      ((elastic_start + elastic_plastic) *
+                       (end.plastic_strain - start.plastic_strain)) *
+                      dV;
                     start = end;
                   }
                 strains.push_back(eps);
@@ -314,24 +345,29 @@ namespace impact_fem
             cell->get_dof_indices(dofs);
             for (unsigned int i = 0; i < dofs_per_cell; ++i)
               internal_force(dofs[i]) -= cell_rhs(i);
-            constraints.distribute_local_to_global(cell_matrix, cell_rhs, dofs,
-                                                   tangent_matrix, residual);
+            constraints.distribute_local_to_global(
+              cell_matrix, cell_rhs, dofs, tangent_matrix, residual);
           }
         return step_plastic_work;
       };
 
       History history;
       declare_components(history, "mean ", " over the quadrature points");
-      history.declare("inhomogeneity", "1",
-                      "largest deviation of a quadrature point's stress from the "
-                      "mean, relative to the largest mean component");
-      history.declare({{"accumulated_plastic_strain", "1",
-                        "mean accumulated plastic strain over the quadrature points"},
-                       {"plastic_work", "J",
-                        "cumulative plastic work in the specimen, trapezoidal in the stress"},
-                       {"newton_iterations", "1", "Newton iterations of the step"}});
+      history.declare(
+        "inhomogeneity",
+        "1",
+        "largest deviation of a quadrature point's stress from the "
+        "mean, relative to the largest mean component");
+      history.declare(
+        {{"accumulated_plastic_strain",
+          "1",
+          "mean accumulated plastic strain over the quadrature points"},
+         {"plastic_work",
+          "J",
+          "cumulative plastic work in the specimen, trapezoidal in the stress"},
+         {"newton_iterations", "1", "Newton iterations of the step"}});
       double plastic_work = 0;
-      auto   record = [&](const double t, const unsigned int iterations) {
+      auto   record       = [&](const double t, const unsigned int iterations) {
         double mean_plastic = 0;
         for (const double p : plastic_strains)
           mean_plastic += p / plastic_strains.size();
@@ -348,16 +384,18 @@ namespace impact_fem
         if (uniaxial)
           {
             const double rate = input.axial_path.front() / input.ramp_time;
-            VectorTools::interpolate(dof_handler, HomogeneousDisplacement(-nu * rate, rate),
+            VectorTools::interpolate(dof_handler,
+                                     HomogeneousDisplacement(-nu * rate, rate),
                                      velocity);
           }
         else
           {
             const double rate = strain_factor_rate(input, 0);
-            VectorTools::interpolate(dof_handler,
-                                     HomogeneousDisplacement(rate * strain_hat[0],
-                                                             rate * strain_hat[1]),
-                                     velocity);
+            VectorTools::interpolate(
+              dof_handler,
+              HomogeneousDisplacement(rate * strain_hat[0],
+                                      rate * strain_hat[1]),
+              velocity);
           }
       }
       assemble(make_constraints(0, true), false);
@@ -373,14 +411,15 @@ namespace impact_fem
       unsigned int total_iterations = 0;
       for (unsigned int step = 1; step <= n_steps; ++step)
         {
-          const double t = step * dt;
+          const double t    = step * dt;
           previous          = displacement;
           previous_velocity = velocity;
           // Start from the last step's displacement with the new boundary
           // values; the iterations then correct the free degrees of freedom.
           make_constraints(t, false).distribute(displacement);
-          const AffineConstraints<double> homogeneous = make_constraints(t, true);
-          unsigned int                    iteration   = 0;
+          const AffineConstraints<double> homogeneous =
+            make_constraints(t, true);
+          unsigned int iteration = 0;
           for (;; ++iteration)
             {
               // v_{n+1} = 2/dt (u_{n+1} - u_n) - v_n
@@ -393,13 +432,14 @@ namespace impact_fem
               if (norm <= tolerance * internal_force.l2_norm() || norm == 0)
                 break;
               AssertThrow(iteration < max_iterations,
-                          ExcMessage("Specimen: the Newton iteration of step " +
-                                     std::to_string(step) + " (t = " +
-                                     as_written(t) + " s) did not converge in " +
-                                     std::to_string(max_iterations) +
-                                     " iterations: out-of-balance force " +
-                                     as_written(norm) + " N, criterion 1e-10 of " +
-                                     as_written(internal_force.l2_norm()) + " N."));
+                          ExcMessage(
+                            "Specimen: the Newton iteration of step " +
+                            std::to_string(step) + " (t = " + as_written(t) +
+                            " s) did not converge in " +
+                            std::to_string(max_iterations) +
+                            " iterations: out-of-balance force " +
+                            as_written(norm) + " N, criterion 1e-10 of " +
+                            as_written(internal_force.l2_norm()) + " N."));
               SparseDirectUMFPACK solver;
               solver.initialize(tangent_matrix);
               solver.vmult(increment, residual);
@@ -414,10 +454,10 @@ namespace impact_fem
       const std::string &directory = input.directory;
       write_specimen_history(history, directory, loading, dt, dof_handler);
       std::cout << "specimen (" << loading << ", general constitutive update): "
-                << triangulation.n_active_cells() << " cells, " << dof_handler.n_dofs()
-                << " dofs, " << n_steps << " steps of " << dt << " s, "
-                << total_iterations << " Newton iterations -> " << directory
-                << "/history.h5" << std::endl;
+                << triangulation.n_active_cells() << " cells, "
+                << dof_handler.n_dofs() << " dofs, " << n_steps << " steps of "
+                << dt << " s, " << total_iterations << " Newton iterations -> "
+                << directory << "/history.h5" << std::endl;
     }
   } // namespace
 
@@ -430,15 +470,15 @@ namespace impact_fem
   void
   SpecimenTest::run()
   {
-    ParameterHandler &prm = parameters;
-    const Loading       input      = read_loading(prm);
-    const auto         &material   = input.material;
-    const std::string  &directory  = input.directory;
-    const std::string  &loading    = input.loading;
-    const auto         &strain_hat = input.strain_hat;
-    const auto         &stress_hat = input.stress_hat;
-    const double        duration   = input.duration;
-    const double        dt         = input.dt;
+    ParameterHandler  &prm        = parameters;
+    const Loading      input      = read_loading(prm);
+    const auto        &material   = input.material;
+    const std::string &directory  = input.directory;
+    const std::string &loading    = input.loading;
+    const auto        &strain_hat = input.strain_hat;
+    const auto        &stress_hat = input.stress_hat;
+    const double       duration   = input.duration;
+    const double       dt         = input.dt;
     prm.enter_subsection("Mesh");
     const unsigned int degree = prm.get_integer("Polynomial degree");
     prm.leave_subsection();
@@ -450,9 +490,10 @@ namespace impact_fem
       {
         AssertThrow(loading == "axial strain path" || stress_controlled ||
                       (strain_hat[2] == strain_hat[0] && strain_hat[3] == 0),
-                    ExcMessage("Specimen: a homogeneous axisymmetric strain has "
-                               "theta-theta = rr and no rz component; set "
-                               "Material point/Strain accordingly."));
+                    ExcMessage(
+                      "Specimen: a homogeneous axisymmetric strain has "
+                      "theta-theta = rr and no rz component; set "
+                      "Material point/Strain accordingly."));
         run_general_specimen(input, degree);
         return;
       }
@@ -462,7 +503,8 @@ namespace impact_fem
                            "theta-theta = rr and no rz component; set "
                            "Material point/Strain accordingly."));
     AssertThrow(!stress_controlled ||
-                  (stress_hat[0] == 0 && stress_hat[2] == 0 && stress_hat[3] == 0),
+                  (stress_hat[0] == 0 && stress_hat[2] == 0 &&
+                   stress_hat[3] == 0),
                 ExcMessage("Specimen: the stress step is uniaxial, only the "
                            "zz component of Material point/Stress may be "
                            "non-zero."));
@@ -481,13 +523,13 @@ namespace impact_fem
     const FESystem<2> fe(FE_Q<2>(degree), 2);
     DoFHandler<2>     dof_handler(triangulation);
     dof_handler.distribute_dofs(fe);
-    const QGauss<2>     quadrature      = cell_quadrature(fe);
-    const QGauss<1>     face_rule       = face_quadrature(fe);
-    FEValues<2>         fe_values(fe,
+    const QGauss<2>                  quadrature = cell_quadrature(fe);
+    const QGauss<1>                  face_rule  = face_quadrature(fe);
+    FEValues<2>                      fe_values(fe,
                           quadrature,
                           update_values | update_gradients |
                             update_quadrature_points | update_JxW_values);
-    FEFaceValues<2>     fe_face_values(fe,
+    FEFaceValues<2>                  fe_face_values(fe,
                                    face_rule,
                                    update_values | update_quadrature_points |
                                      update_JxW_values);
@@ -503,8 +545,8 @@ namespace impact_fem
                                  SymmetricTensor<2, 3>());
       }
 
-    const SymmetricTensor<4, 3> C = material->stiffness_tangent();
-    const SymmetricTensor<4, 3> D = material->damping_tangent();
+    const SymmetricTensor<4, 3> C          = material->stiffness_tangent();
+    const SymmetricTensor<4, 3> D          = material->damping_tangent();
     const SymmetricTensor<4, 3> C_internal = material->internal_tangent(dt);
 
     DynamicSparsityPattern dsp(dof_handler.n_dofs());
@@ -512,8 +554,8 @@ namespace impact_fem
     SparsityPattern sparsity;
     sparsity.copy_from(dsp);
     SparseMatrix<double> system_matrix(sparsity), damping_matrix(sparsity);
-    Vector<double> displacement(dof_handler.n_dofs()), velocity(dof_handler.n_dofs()),
-      rhs(dof_handler.n_dofs());
+    Vector<double>       displacement(dof_handler.n_dofs()),
+      velocity(dof_handler.n_dofs()), rhs(dof_handler.n_dofs());
 
     auto make_constraints = [&](const double t, const bool homogeneous) {
       AffineConstraints<double> constraints;
@@ -522,8 +564,10 @@ namespace impact_fem
       else
         {
           const double factor = homogeneous ? 0 : strain_factor(input, t);
-          constrain_homogeneous_strain(dof_handler, factor * strain_hat[0],
-                                       factor * strain_hat[1], constraints);
+          constrain_homogeneous_strain(dof_handler,
+                                       factor * strain_hat[0],
+                                       factor * strain_hat[1],
+                                       constraints);
         }
       constraints.close();
       return constraints;
@@ -532,23 +576,23 @@ namespace impact_fem
     // One assembly: K_eff = C + C_internal + c D (c = 2/dt, or 1 and no C
     // for the initial rate), rhs = traction - history + D (c u_n + v_n).
     auto assemble = [&](const AffineConstraints<double> &constraints,
-                        const bool initial_rate) {
-      system_matrix = 0;
+                        const bool                       initial_rate) {
+      system_matrix  = 0;
       damping_matrix = 0;
-      rhs = 0;
+      rhs            = 0;
       FullMatrix<double> cell_matrix(dofs_per_cell, dofs_per_cell),
         cell_damping(dofs_per_cell, dofs_per_cell);
-      Vector<double>     cell_rhs(dofs_per_cell);
+      Vector<double>                       cell_rhs(dofs_per_cell);
       std::vector<types::global_dof_index> dofs(dofs_per_cell);
       std::vector<SymmetricTensor<2, 3>>   strain(dofs_per_cell);
-      const SymmetricTensor<4, 3> A =
+      const SymmetricTensor<4, 3>          A =
         initial_rate ? D : C + C_internal + 2 / dt * D;
       for (const auto &cell : dof_handler.active_cell_iterators())
         {
           fe_values.reinit(cell);
-          cell_matrix  = 0;
-          cell_damping = 0;
-          cell_rhs     = 0;
+          cell_matrix             = 0;
+          cell_damping            = 0;
+          cell_rhs                = 0;
           const auto point_states = states.get_data(cell);
           for (unsigned int q = 0; q < quadrature.size(); ++q)
             {
@@ -556,11 +600,14 @@ namespace impact_fem
               const double dV = 2 * M_PI * r * fe_values.JxW(q);
               for (unsigned int i = 0; i < dofs_per_cell; ++i)
                 strain[i] = axisymmetric_strain(fe_values[u].value(i, q),
-                                            fe_values[u].gradient(i, q), r);
+                                                fe_values[u].gradient(i, q),
+                                                r);
               const SymmetricTensor<2, 3> history =
-                initial_rate ? SymmetricTensor<2, 3>() :
-                               material->internal_stress_predictor(
-                                 point_states[q]->internal, point_states[q]->strain, dt);
+                initial_rate ?
+                  SymmetricTensor<2, 3>() :
+                  material->internal_stress_predictor(point_states[q]->internal,
+                                                      point_states[q]->strain,
+                                                      dt);
               for (unsigned int i = 0; i < dofs_per_cell; ++i)
                 {
                   for (unsigned int j = 0; j < dofs_per_cell; ++j)
@@ -579,32 +626,39 @@ namespace impact_fem
                   fe_face_values.reinit(cell, face);
                   for (unsigned int q = 0; q < face_rule.size(); ++q)
                     for (unsigned int i = 0; i < dofs_per_cell; ++i)
-                      cell_rhs(i) += stress_hat[1] * fe_face_values[u].value(i, q)[1] *
-                                     2 * M_PI * fe_face_values.quadrature_point(q)[0] *
-                                     fe_face_values.JxW(q);
+                      cell_rhs(i) +=
+                        stress_hat[1] * fe_face_values[u].value(i, q)[1] * 2 *
+                        M_PI * fe_face_values.quadrature_point(q)[0] *
+                        fe_face_values.JxW(q);
                 }
           cell->get_dof_indices(dofs);
-          constraints.distribute_local_to_global(cell_matrix, cell_rhs, dofs,
-                                                 system_matrix, rhs);
+          constraints.distribute_local_to_global(
+            cell_matrix, cell_rhs, dofs, system_matrix, rhs);
           damping_matrix.add(dofs, cell_damping);
         }
     };
 
     History history;
     declare_components(history, "mean ", " over the quadrature points");
-    history.declare("inhomogeneity", "1",
+    history.declare("inhomogeneity",
+                    "1",
                     "largest deviation of a quadrature point's stress from the "
                     "mean, relative to the largest mean component");
-    history.declare("internal_energy", "J", "energy stored in the Maxwell arms of the specimen");
-    history.declare("dissipated_energy", "J", "cumulative dissipation in the Maxwell arms");
+    history.declare("internal_energy",
+                    "J",
+                    "energy stored in the Maxwell arms of the specimen");
+    history.declare("dissipated_energy",
+                    "J",
+                    "cumulative dissipation in the Maxwell arms");
 
     // Evaluates the step's strain and stress at the quadrature points
     // (stress from the state at the start of the step), then updates the
     // states; appends the means to the history.
-    double dissipated = 0;
+    double dissipated          = 0;
     auto   evaluate_and_update = [&](const double t, const bool update) {
       std::vector<SymmetricTensor<2, 3>> strains, stresses;
-      std::vector<Tensor<1, 2>> values(quadrature.size()), rates(quadrature.size());
+      std::vector<Tensor<1, 2>>          values(quadrature.size()),
+        rates(quadrature.size());
       std::vector<Tensor<2, 2>> gradients(quadrature.size()),
         rate_gradients(quadrature.size());
       double stored = 0;
@@ -618,17 +672,20 @@ namespace impact_fem
           const auto point_states = states.get_data(cell);
           for (unsigned int q = 0; q < quadrature.size(); ++q)
             {
-              const double r  = fe_values.quadrature_point(q)[0];
-              const double dV = 2 * M_PI * r * fe_values.JxW(q);
-              SpecimenPointState &state = *point_states[q];
-              const SymmetricTensor<2, 3> eps = axisymmetric_strain(values[q], gradients[q], r);
+              const double                r = fe_values.quadrature_point(q)[0];
+              const double                dV = 2 * M_PI * r * fe_values.JxW(q);
+              SpecimenPointState         &state = *point_states[q];
+              const SymmetricTensor<2, 3> eps =
+                axisymmetric_strain(values[q], gradients[q], r);
               SymmetricTensor<2, 3> sigma =
-                C * eps + D * axisymmetric_strain(rates[q], rate_gradients[q], r);
+                C * eps +
+                D * axisymmetric_strain(rates[q], rate_gradients[q], r);
               if (update)
                 {
                   sigma += C_internal * eps +
                            material->internal_stress_predictor(state.internal,
-                                                               state.strain, dt);
+                                                               state.strain,
+                                                               dt);
                   dissipated += material->update_internal_variables(
                                   state.internal, state.strain, eps, dt) *
                                 dV;
@@ -670,8 +727,9 @@ namespace impact_fem
     Vector<double> previous(displacement.size()), tmp(displacement.size());
     for (unsigned int step = 1; step <= n_steps; ++step)
       {
-        const double t = step * dt;
-        const AffineConstraints<double> constraints = make_constraints(t, false);
+        const double                    t = step * dt;
+        const AffineConstraints<double> constraints =
+          make_constraints(t, false);
         assemble(constraints, false);
         // + D (2/dt u_n + v_n) for the trapezoidal strain rate.
         tmp = displacement;
@@ -696,9 +754,9 @@ namespace impact_fem
       }
 
     write_specimen_history(history, directory, loading, dt, dof_handler);
-    std::cout << "specimen (" << loading << "): " << triangulation.n_active_cells()
-              << " cells, " << dof_handler.n_dofs() << " dofs, " << n_steps
-              << " steps of " << dt << " s -> " << directory << "/history.h5"
-              << std::endl;
+    std::cout << "specimen (" << loading
+              << "): " << triangulation.n_active_cells() << " cells, "
+              << dof_handler.n_dofs() << " dofs, " << n_steps << " steps of "
+              << dt << " s -> " << directory << "/history.h5" << std::endl;
   }
 } // namespace impact_fem

@@ -22,7 +22,8 @@ namespace impact_fem
         throw std::runtime_error("cannot read " + file_name);
       const std::unique_ptr<EVP_MD_CTX, decltype(&EVP_MD_CTX_free)> context(
         EVP_MD_CTX_new(), &EVP_MD_CTX_free);
-      if (!context || EVP_DigestInit_ex(context.get(), EVP_sha256(), nullptr) != 1)
+      if (!context ||
+          EVP_DigestInit_ex(context.get(), EVP_sha256(), nullptr) != 1)
         throw std::runtime_error("OpenSSL: SHA-256 not available");
       std::array<char, 1 << 16> buffer;
       while (in)
@@ -54,8 +55,9 @@ namespace impact_fem
       std::ostringstream text;
       for (const auto &name : files)
         text << sha256_of_file(directory + "/" + name) << "  " << name << "\n";
-      const std::string manifest  = directory + "/" + manifest_name;
-      const std::string temporary = manifest + ".tmp" + std::to_string(::getpid());
+      const std::string manifest = directory + "/" + manifest_name;
+      const std::string temporary =
+        manifest + ".tmp" + std::to_string(::getpid());
       {
         std::ofstream out(temporary);
         out << text.str();
@@ -68,7 +70,8 @@ namespace impact_fem
 
 
     std::string
-    check_manifest(const std::string &directory, std::vector<std::string> &listed)
+    check_manifest(const std::string        &directory,
+                   std::vector<std::string> &listed)
     {
       listed.clear();
       std::ifstream in(directory + "/" + manifest_name);
@@ -78,10 +81,12 @@ namespace impact_fem
       while (std::getline(in, line))
         {
           // sha256sum's text mode: digest, two spaces (or " *"), name.
-          if (line.size() < 67 || (line.compare(64, 2, "  ") != 0 &&
-                                   line.compare(64, 2, " *") != 0) ||
+          if (line.size() < 67 ||
+              (line.compare(64, 2, "  ") != 0 &&
+               line.compare(64, 2, " *") != 0) ||
               line.find_first_not_of("0123456789abcdef") < 64)
-            return std::string(manifest_name) + ": malformed line <" + line + ">";
+            return std::string(manifest_name) + ": malformed line <" + line +
+                   ">";
           listed.push_back(line.substr(66));
         }
       if (listed.empty())

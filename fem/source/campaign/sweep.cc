@@ -36,7 +36,10 @@ namespace impact_fem
     {
       std::string result;
       for (const char c : entry)
-        result += c == ' ' ? '-' : static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+        result +=
+          c == ' ' ?
+            '-' :
+            static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
       return result;
     }
 
@@ -99,13 +102,13 @@ namespace impact_fem
         const auto            fail    = [&](const std::string &problem) {
           restore();
           AssertThrow(false,
-                      ExcMessage(option + " \"" + item + "\": " + problem + form +
-                                 "."));
+                      ExcMessage(option + " \"" + item + "\": " + problem +
+                                 form + "."));
         };
         const auto equal = item.find('=');
         if (equal == std::string::npos)
           fail("no '=' between the entry and its values");
-        const std::string path = Utilities::trim(item.substr(0, equal));
+        const std::string path      = Utilities::trim(item.substr(0, equal));
         const auto        parameter = find_parameter(prm, path);
         if (!parameter)
           fail("there is no entry <" + path + ">");
@@ -115,16 +118,19 @@ namespace impact_fem
                "--velocities V1,V2,... (or Campaign/Impact velocities), not as "
                "a sweep");
         if (name == "Output/Directory" || name == "Verification/Verify" ||
-            name == "Scenario/Analysis" || parameter->sections.front() == "Campaign")
-          fail("<" + name + "> belongs to the campaign itself and cannot be swept");
+            name == "Scenario/Analysis" ||
+            parameter->sections.front() == "Campaign")
+          fail("<" + name +
+               "> belongs to the campaign itself and cannot be swept");
         for (const auto &axis : axes)
           if (axis.parameter.name() == name)
-            fail("the entry <" + name + "> is swept twice; give all its "
+            fail("the entry <" + name +
+                 "> is swept twice; give all its "
                  "values in one item");
 
-        SweepAxis axis{*parameter, {}};
+        SweepAxis         axis{*parameter, {}};
         const std::string original = parameter->get(prm);
-        restore = [&]() { parameter->set(prm, original); };
+        restore                    = [&]() { parameter->set(prm, original); };
         std::set<std::string> names;
         for (const auto &value :
              Utilities::split_string_list(item.substr(equal + 1), ','))
@@ -142,7 +148,8 @@ namespace impact_fem
               }
             axis.values.push_back(value);
             // Distinct values whose directory names coincide ("a b", "a-b").
-            if (!names.insert(axis.name_component(axis.values.size() - 1)).second)
+            if (!names.insert(axis.name_component(axis.values.size() - 1))
+                   .second)
               fail("the values give the same run directory name <" +
                    axis.name_component(axis.values.size() - 1) + ">");
           }

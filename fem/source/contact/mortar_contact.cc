@@ -138,8 +138,8 @@ namespace impact_fem
           breaks.push_back(face.r_min());
           breaks.push_back(face.r_max());
         }
-    const double r_end = std::min(sphere_faces.back().r_max(),
-                                  plate_faces.back().r_max());
+    const double r_end =
+      std::min(sphere_faces.back().r_max(), plate_faces.back().r_max());
     std::sort(breaks.begin(), breaks.end());
 
     RowsUnderAssembly rows(n_nodes);
@@ -184,8 +184,10 @@ namespace impact_fem
     point_dofs.clear();
     point_values.clear();
     point_reference_gaps.clear();
-    auto add_point = [&](const ContactFace &upper, const double s_upper,
-                         const ContactFace &lower, const double s_lower) {
+    auto add_point = [&](const ContactFace &upper,
+                         const double       s_upper,
+                         const ContactFace &lower,
+                         const double       s_lower) {
       std::vector<types::global_dof_index> dofs;
       std::vector<double>                  values;
       for (unsigned int k = 0; k < upper.xi.size(); ++k)
@@ -207,15 +209,23 @@ namespace impact_fem
       for (unsigned int i = 0; i < plate.xi.size(); ++i)
         if (plate.x[i][0] <= r_end)
           {
-            const ContactFace &sphere = face_containing(sphere_faces, plate.x[i][0]);
-            add_point(sphere, sphere.parameter_at_radius(plate.x[i][0]), plate, plate.xi[i]);
+            const ContactFace &sphere =
+              face_containing(sphere_faces, plate.x[i][0]);
+            add_point(sphere,
+                      sphere.parameter_at_radius(plate.x[i][0]),
+                      plate,
+                      plate.xi[i]);
           }
     for (const auto &sphere : sphere_faces)
       for (unsigned int i = 0; i < sphere.xi.size(); ++i)
         if (sphere.x[i][0] <= r_end)
           {
-            const ContactFace &plate = face_containing(plate_faces, sphere.x[i][0]);
-            add_point(sphere, sphere.xi[i], plate, plate.parameter_at_radius(sphere.x[i][0]));
+            const ContactFace &plate =
+              face_containing(plate_faces, sphere.x[i][0]);
+            add_point(sphere,
+                      sphere.xi[i],
+                      plate,
+                      plate.parameter_at_radius(sphere.x[i][0]));
           }
     active.assign(n_nodes, false);
   }
@@ -228,9 +238,9 @@ namespace impact_fem
     const IndexSet &locally_owned_dofs,
     const MPI_Comm  comm)
   {
-    owned                    = locally_owned_dofs;
-    communicator             = comm;
-    const unsigned int n     = n_contact_nodes();
+    owned                = locally_owned_dofs;
+    communicator         = comm;
+    const unsigned int n = n_contact_nodes();
     influence.resize(n);
     TrilinosWrappers::MPI::Vector load(owned, comm);
     for (unsigned int j = 0; j < n; ++j)
@@ -252,7 +262,8 @@ namespace impact_fem
           for (unsigned int j = 0; j < n; ++j)
             local[i * n + j] += row_values[i][k] * influence[j][row_dofs[i][k]];
     std::vector<double> global(n * n);
-    MPI_Allreduce(local.data(), global.data(), n * n, MPI_DOUBLE, MPI_SUM, comm);
+    MPI_Allreduce(
+      local.data(), global.data(), n * n, MPI_DOUBLE, MPI_SUM, comm);
     delassus.reinit(n, n);
     for (unsigned int i = 0; i < n; ++i)
       for (unsigned int j = 0; j < n; ++j)
@@ -271,8 +282,9 @@ namespace impact_fem
         if (owned.is_element(row_dofs[j][k]))
           local[j] += row_values[j][k] * displacement[row_dofs[j][k]];
     std::vector<double> global(n);
-    MPI_Allreduce(local.data(), global.data(), n, MPI_DOUBLE, MPI_SUM, communicator);
-    Vector<double>            gaps(reference_gaps);
+    MPI_Allreduce(
+      local.data(), global.data(), n, MPI_DOUBLE, MPI_SUM, communicator);
+    Vector<double> gaps(reference_gaps);
     for (unsigned int j = 0; j < n; ++j)
       gaps[j] += global[j];
     return gaps;
@@ -287,8 +299,7 @@ namespace impact_fem
     // with the previous step's contact set.
     const unsigned int n = n_contact_nodes();
     Vector<double>     lambda(n);
-    const double       tolerance = 1e-12 * std::max(free_gaps.linfty_norm(),
-                                                   1e-300);
+    const double tolerance = 1e-12 * std::max(free_gaps.linfty_norm(), 1e-300);
 
     auto gaps_of = [&](const Vector<double> &l) {
       Vector<double> g(free_gaps);
@@ -319,7 +330,7 @@ namespace impact_fem
       return z;
     };
 
-    std::vector<bool> passive = active;
+    std::vector<bool> passive   = active;
     unsigned int      iteration = 0;
     // Inner loop: from a feasible lambda, move towards the unconstrained
     // solution on P, dropping nodes whose pressure would turn negative.
@@ -331,7 +342,7 @@ namespace impact_fem
                                  "converge in Contact/Maximum active set "
                                  "iterations = " +
                                  std::to_string(max_iterations) + "."));
-          const Vector<double> z = solve_on(passive);
+          const Vector<double> z    = solve_on(passive);
           double               step = 1;
           for (unsigned int j = 0; j < n; ++j)
             if (passive[j] && z[j] <= 0)
@@ -384,7 +395,7 @@ namespace impact_fem
 
   void
   MortarContact::add_contact_response(
-    const Vector<double>         &pressures,
+    const Vector<double>          &pressures,
     TrilinosWrappers::MPI::Vector &displacement) const
   {
     for (unsigned int j = 0; j < n_contact_nodes(); ++j)
@@ -394,7 +405,7 @@ namespace impact_fem
 
 
   void
-  MortarContact::add_contact_forces(const Vector<double>         &pressures,
+  MortarContact::add_contact_forces(const Vector<double>          &pressures,
                                     TrilinosWrappers::MPI::Vector &forces) const
   {
     for (unsigned int j = 0; j < n_contact_nodes(); ++j)
@@ -416,7 +427,8 @@ namespace impact_fem
       for (unsigned int k = 0; k < point_dofs[j].size(); ++k)
         if (owned.is_element(point_dofs[j][k]))
           local[j] += point_values[j][k] * displacement[point_dofs[j][k]];
-    MPI_Allreduce(local.data(), global.data(), n, MPI_DOUBLE, MPI_SUM, communicator);
+    MPI_Allreduce(
+      local.data(), global.data(), n, MPI_DOUBLE, MPI_SUM, communicator);
     double deepest = 0;
     for (unsigned int j = 0; j < n; ++j)
       deepest = std::max(deepest, -(point_reference_gaps[j] + global[j]));
@@ -451,8 +463,8 @@ namespace impact_fem
     if (last == 0 || last + 1 == n || !(pressures[last - 1] > pressures[last]))
       return node_radius[last];
     const double r1 = node_radius[last - 1], r2 = node_radius[last];
-    const double q1 = pressures[last - 1] * pressures[last - 1],
-                 q2 = pressures[last] * pressures[last];
+    const double q1           = pressures[last - 1] * pressures[last - 1],
+                 q2           = pressures[last] * pressures[last];
     const double edge_squared = r2 * r2 + q2 * (r2 * r2 - r1 * r1) / (q1 - q2);
     return std::clamp(std::sqrt(edge_squared), r2, node_radius[last + 1]);
   }

@@ -49,8 +49,8 @@ namespace impact_fem
             for (unsigned int e = 0; e < 2; ++e)
               {
                 const unsigned int j = ends[e], other = ends[1 - e];
-                const double       Nj =
-                  (r - face.x[other][0]) / (face.x[j][0] - face.x[other][0]) * weight;
+                const double       Nj = (r - face.x[other][0]) /
+                                  (face.x[j][0] - face.x[other][0]) * weight;
                 const unsigned int row = row_of.at(face.z_dofs[j]);
                 reference_gaps[row] += Nj * height;
                 node_area[row] += Nj;

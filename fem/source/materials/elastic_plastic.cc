@@ -87,8 +87,12 @@ namespace impact_fem
       bulk_modulus  = young / (3 * (1 - 2 * poisson));
 
       yield_strength = prm.get_double(result_files::yield_strength.entry);
-      check_entry(yield_strength > 0, "Yield strength", "be > 0 Pa", yield_strength);
-      johnson_cook = prm.get(result_files::hardening_law_entry) == result_files::johnson_cook_law;
+      check_entry(yield_strength > 0,
+                  "Yield strength",
+                  "be > 0 Pa",
+                  yield_strength);
+      johnson_cook = prm.get(result_files::hardening_law_entry) ==
+                     result_files::johnson_cook_law;
       hardening_modulus = prm.get_double(result_files::hardening_modulus.entry);
       check_entry(hardening_modulus >= 0,
                   "Hardening modulus",
@@ -97,7 +101,10 @@ namespace impact_fem
       jc_b = prm.get_double(result_files::johnson_cook_b.entry);
       check_entry(jc_b >= 0, "Johnson-Cook B", "be >= 0 Pa", jc_b);
       jc_n = prm.get_double("Johnson-Cook n");
-      check_entry(jc_n > 0 && jc_n <= 1, "Johnson-Cook n", "lie in (0, 1]", jc_n);
+      check_entry(jc_n > 0 && jc_n <= 1,
+                  "Johnson-Cook n",
+                  "lie in (0, 1]",
+                  jc_n);
       jc_c = prm.get_double(result_files::johnson_cook_c.entry);
       check_entry(jc_c >= 0, "Johnson-Cook C", "be >= 0", jc_c);
       reference_rate = prm.get_double("Reference strain rate");
@@ -129,15 +136,17 @@ namespace impact_fem
       // (A + B eps^n)(1 + C ln(max(rate/rate_0, 1))), no rate effect below
       // the reference rate; slope is the derivative with respect to the
       // increment of eps over the step (rate = increment / dt).
-      const double strain_part = yield_strength + jc_b * std::pow(accumulated, jc_n);
+      const double strain_part =
+        yield_strength + jc_b * std::pow(accumulated, jc_n);
       const double strain_slope =
         accumulated > 0 ? jc_b * jc_n * std::pow(accumulated, jc_n - 1) :
                           (jc_n < 1 && jc_b > 0 ? 1e300 : jc_b);
-      const double ratio = rate / reference_rate;
+      const double ratio     = rate / reference_rate;
       const double rate_part = ratio > 1 ? 1 + jc_c * std::log(ratio) : 1;
       const double rate_slope =
         ratio > 1 && rate > 0 ? jc_c / (rate * time_step) : 0;
-      slope = std::min(strain_slope * rate_part + strain_part * rate_slope, 1e300);
+      slope =
+        std::min(strain_slope * rate_part + strain_part * rate_slope, 1e300);
       return strain_part * rate_part;
     }
 
@@ -151,7 +160,7 @@ namespace impact_fem
 
 
     SymmetricTensor<2, 3>
-    ElasticPlastic::stress_update(const QuadraturePointState &start,
+    ElasticPlastic::stress_update(const QuadraturePointState  &start,
                                   const SymmetricTensor<2, 3> &strain_end,
                                   const double                 dt,
                                   QuadraturePointState        &end,
@@ -160,7 +169,8 @@ namespace impact_fem
       end        = start;
       end.strain = strain_end;
       // Elastic predictor.
-      const SymmetricTensor<2, 3> elastic_trial = strain_end - start.plastic_strain;
+      const SymmetricTensor<2, 3> elastic_trial =
+        strain_end - start.plastic_strain;
       const SymmetricTensor<2, 3> s_trial =
         2 * shear_modulus * deviator(elastic_trial);
       const double q_trial = std::sqrt(1.5) * s_trial.norm();
@@ -185,7 +195,7 @@ namespace impact_fem
       else
         {
           double low = 0, high = q_trial / G3;
-          x          = 0.5 * (low + high);
+          x = 0.5 * (low + high);
           for (unsigned int it = 0; it < 200; ++it)
             {
               const double f =
@@ -205,7 +215,7 @@ namespace impact_fem
       // Radial return: the deviator is scaled back along the trial
       // direction, the volumetric part is untouched.
       const SymmetricTensor<2, 3> N = s_trial / s_trial.norm();
-      end.plastic_strain             = start.plastic_strain + std::sqrt(1.5) * x * N;
+      end.plastic_strain = start.plastic_strain + std::sqrt(1.5) * x * N;
       end.accumulated_plastic_strain = eps_n + x;
 
       // Consistent tangent (Simo & Taylor 1985):
@@ -214,7 +224,7 @@ namespace impact_fem
       // H the slope of the flow stress at the converged increment.
       const double beta = G3 * x / q_trial;
       const double Hs   = std::min(H, 1e20 * G3); // an infinite slope: elastic
-      tangent = stiffness -
+      tangent           = stiffness -
                 2 * shear_modulus * beta *
                   (deviator_tensor<3>() - outer_product(N, N)) -
                 2 * shear_modulus * G3 / (G3 + Hs) * outer_product(N, N);

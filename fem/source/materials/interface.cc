@@ -25,8 +25,9 @@ namespace impact_fem
         return result_files::material_subsection(name);
       }
 
-      static_assert(std::string_view(rigid_model_name) == result_files::rigid_model,
-                    "the rigid plate's name differs from the result files' one");
+      static_assert(
+        std::string_view(rigid_model_name) == result_files::rigid_model,
+        "the rigid plate's name differs from the result files' one");
     } // namespace
 
 
@@ -43,13 +44,14 @@ namespace impact_fem
     double
     Interface::s_wave_speed() const
     {
-      const double shear_modulus = youngs_modulus() / (2 * (1 + poissons_ratio()));
+      const double shear_modulus =
+        youngs_modulus() / (2 * (1 + poissons_ratio()));
       return std::sqrt(shear_modulus / density());
     }
 
 
     SymmetricTensor<2, 3>
-    Interface::stress_update(const QuadraturePointState &start,
+    Interface::stress_update(const QuadraturePointState  &start,
                              const SymmetricTensor<2, 3> &strain_end,
                              const double                 time_step,
                              QuadraturePointState        &end,
@@ -57,7 +59,10 @@ namespace impact_fem
     {
       end        = start;
       end.strain = strain_end;
-      update_internal_variables(end.internal, start.strain, strain_end, time_step);
+      update_internal_variables(end.internal,
+                                start.strain,
+                                strain_end,
+                                time_step);
       tangent = stiffness_tangent() + internal_tangent(time_step);
       return stiffness_tangent() * strain_end + internal_stress(end.internal);
     }
@@ -74,8 +79,8 @@ namespace impact_fem
     SymmetricTensor<4, 3>
     isotropic_stiffness(const double E, const double nu)
     {
-      const double lambda = E * nu / ((1 + nu) * (1 - 2 * nu));
-      const double mu     = E / (2 * (1 + nu));
+      const double          lambda = E * nu / ((1 + nu) * (1 - 2 * nu));
+      const double          mu     = E / (2 * (1 + nu));
       SymmetricTensor<4, 3> C;
       for (unsigned int i = 0; i < 3; ++i)
         for (unsigned int j = 0; j < 3; ++j)
@@ -126,8 +131,7 @@ namespace impact_fem
                                             rigid_model_name),
                         "Constitutive law of this body; its constants are in "
                         "the subsection of the same name. Known models:" +
-                          Kinds::descriptions() +
-                          "\n  " + rigid_model_name +
+                          Kinds::descriptions() + "\n  " + rigid_model_name +
                           ": the plate only: a fixed rigid plane z = 0, not "
                           "meshed (the sphere's own E* in Hertz's theory).");
       for (const auto &kind : Kinds::all())

@@ -11,11 +11,11 @@ namespace impact_fem
   {
     void
     InternalVariables::initialize(
-      const DoFHandler<2>   &dof_handler,
-      const Mapping<2>      &mapping,
-      const Quadrature<2>   &quadrature,
+      const DoFHandler<2>                                        &dof_handler,
+      const Mapping<2>                                           &mapping,
+      const Quadrature<2>                                        &quadrature,
       const std::function<const Interface &(types::material_id)> &material,
-      const VectorType      &ghosted_layout)
+      const VectorType &ghosted_layout)
     {
       material_of  = material;
       is_active    = false;
@@ -31,12 +31,13 @@ namespace impact_fem
       prepared_force.reinit(plastic_force_now);
       prepared = false;
 
-      FEValues<2> fe_values(mapping,
+      FEValues<2>                          fe_values(mapping,
                             dof_handler.get_fe(),
                             quadrature,
                             update_values | update_gradients |
                               update_quadrature_points | update_JxW_values);
-      std::vector<types::global_dof_index> dofs(dof_handler.get_fe().n_dofs_per_cell());
+      std::vector<types::global_dof_index> dofs(
+        dof_handler.get_fe().n_dofs_per_cell());
       for (const auto &cell : dof_handler.active_cell_iterators())
         if (cell->is_locally_owned())
           {
@@ -63,8 +64,8 @@ namespace impact_fem
                std::vector<QuadraturePointState>(quadrature.size())});
           }
       const MPI_Comm comm = dof_handler.get_communicator();
-      is_active    = Utilities::MPI::logical_or(is_active, comm);
-      is_nonlinear = Utilities::MPI::logical_or(is_nonlinear, comm);
+      is_active           = Utilities::MPI::logical_or(is_active, comm);
+      is_nonlinear        = Utilities::MPI::logical_or(is_nonlinear, comm);
     }
 
 
@@ -103,7 +104,9 @@ namespace impact_fem
             if (point_stress(c, q, c.strain.strain(q, values), stress))
               {
                 loaded = true;
-                c.strain.add_transpose(q, stress * c.strain.volume(q), cell_force);
+                c.strain.add_transpose(q,
+                                       stress * c.strain.volume(q),
+                                       cell_force);
               }
           // Cells that never yielded add nothing: skip their scatter.
           if (loaded)
@@ -116,10 +119,11 @@ namespace impact_fem
 
 
     void
-    InternalVariables::plastic_force(const AffineConstraints<double> &constraints,
-                                     const VectorType &ghosted_trial,
-                                     const double      dt,
-                                     VectorType       &force) const
+    InternalVariables::plastic_force(
+      const AffineConstraints<double> &constraints,
+      const VectorType                &ghosted_trial,
+      const double                     dt,
+      VectorType                      &force) const
     {
       SymmetricTensor<4, 3> tangent;
       QuadraturePointState  end;
@@ -129,8 +133,10 @@ namespace impact_fem
         ghosted_trial,
         true,
         force,
-        [&](const PlasticCell &c, const unsigned int q,
-            const SymmetricTensor<2, 3> &strain, SymmetricTensor<2, 3> &stress) {
+        [&](const PlasticCell           &c,
+            const unsigned int           q,
+            const SymmetricTensor<2, 3> &strain,
+            SymmetricTensor<2, 3>       &stress) {
           const Interface &m = material_of(c.cell->material_id());
           m.stress_update(*c.states[q], strain, dt, end, tangent);
           if (end.accumulated_plastic_strain == 0)
@@ -153,14 +159,14 @@ namespace impact_fem
       predictor_force = 0;
       if (!is_active)
         return;
-      const auto        &fe = dof_handler.get_fe();
-      FEValues<2>        fe_values(mapping,
+      const auto                          &fe = dof_handler.get_fe();
+      FEValues<2>                          fe_values(mapping,
                             fe,
                             quadrature,
                             update_values | update_gradients |
                               update_quadrature_points | update_JxW_values);
-      const unsigned int dofs_per_cell = fe.n_dofs_per_cell();
-      Vector<double>     cell_force(dofs_per_cell);
+      const unsigned int                   dofs_per_cell = fe.n_dofs_per_cell();
+      Vector<double>                       cell_force(dofs_per_cell);
       std::vector<types::global_dof_index> local_dofs(dofs_per_cell);
       std::vector<Tensor<1, 2>>            values(quadrature.size());
       std::vector<Tensor<2, 2>>            gradients(quadrature.size());
@@ -172,8 +178,8 @@ namespace impact_fem
             material_of(cell->material_id()).n_internal_variables() > 0 &&
             material_of(cell->material_id()).is_linear())
           {
-            const auto &material = material_of(cell->material_id());
-            const auto  states   = storage.get_data(cell);
+            const auto        &material = material_of(cell->material_id());
+            const auto         states   = storage.get_data(cell);
             const unsigned int body =
               cell->material_id() == body_ids::sphere ? 0 : 1;
             fe_values.reinit(cell);
@@ -182,23 +188,27 @@ namespace impact_fem
             cell_force = 0;
             for (unsigned int q = 0; q < quadrature.size(); ++q)
               {
-                const double r  = fe_values.quadrature_point(q)[0];
-                const double dV = 2 * M_PI * r * fe_values.JxW(q);
-                QuadraturePointState       &state = *states[q];
+                const double          r     = fe_values.quadrature_point(q)[0];
+                const double          dV    = 2 * M_PI * r * fe_values.JxW(q);
+                QuadraturePointState &state = *states[q];
                 const SymmetricTensor<2, 3> strain =
                   axisymmetric_strain(values[q], gradients[q], r);
                 step_dissipated += material.update_internal_variables(
                                      state.internal, state.strain, strain, dt) *
                                    dV;
                 state.strain = strain;
-                now_stored[body] += material.internal_energy(state.internal) * dV;
+                now_stored[body] +=
+                  material.internal_energy(state.internal) * dV;
                 const SymmetricTensor<2, 3> predictor =
-                  material.internal_stress_predictor(state.internal, strain, dt);
+                  material.internal_stress_predictor(state.internal,
+                                                     strain,
+                                                     dt);
                 for (unsigned int i = 0; i < dofs_per_cell; ++i)
                   cell_force(i) +=
-                    (predictor * axisymmetric_strain(fe_values[u].value(i, q),
-                                                     fe_values[u].gradient(i, q),
-                                                     r)) *
+                    (predictor *
+                     axisymmetric_strain(fe_values[u].value(i, q),
+                                         fe_values[u].gradient(i, q),
+                                         r)) *
                     dV;
               }
             cell->get_dof_indices(local_dofs);
@@ -217,9 +227,10 @@ namespace impact_fem
 
 
     bool
-    InternalVariables::prepare_commit(const AffineConstraints<double> &constraints,
-                                      const VectorType                &ghosted_trial,
-                                      const double                     dt)
+    InternalVariables::prepare_commit(
+      const AffineConstraints<double> &constraints,
+      const VectorType                &ghosted_trial,
+      const double                     dt)
     {
       SymmetricTensor<4, 3> tangent;
       double step_work = 0, correction[2] = {0, 0}, largest[2] = {0, 0};
@@ -232,9 +243,11 @@ namespace impact_fem
         ghosted_trial,
         false,
         prepared_force,
-        [&](PlasticCell &c, const unsigned int q,
-            const SymmetricTensor<2, 3> &strain, SymmetricTensor<2, 3> &stress) {
-          const Interface            &m     = material_of(c.cell->material_id());
+        [&](PlasticCell                 &c,
+            const unsigned int           q,
+            const SymmetricTensor<2, 3> &strain,
+            SymmetricTensor<2, 3>       &stress) {
+          const Interface            &m = material_of(c.cell->material_id());
           const QuadraturePointState &start = *c.states[q];
           QuadraturePointState       &end   = c.prepared[q];
           const auto                  C     = m.stiffness_tangent();
@@ -246,8 +259,9 @@ namespace impact_fem
           // sigma : d eps^p, trapezoidal in the stress: with the elastic
           // energy 1/2 (eps - eps^p) : C : (eps - eps^p) this is the internal
           // work (Delta eps : mean sigma) of the step exactly.
-          step_work += 0.5 * ((stress_start + stress_end) *
-                              (end.plastic_strain - start.plastic_strain)) *
+          step_work += 0.5 *
+                       ((stress_start + stress_end) *
+                        (end.plastic_strain - start.plastic_strain)) *
                        dV;
           if (end.accumulated_plastic_strain == 0)
             {
@@ -266,7 +280,8 @@ namespace impact_fem
           stress               = C * end.plastic_strain;
           correction[c.body] +=
             (0.5 * (stress * end.plastic_strain) - stress * strain) * dV;
-          largest[c.body] = std::max(largest[c.body], end.accumulated_plastic_strain);
+          largest[c.body] =
+            std::max(largest[c.body], end.accumulated_plastic_strain);
           return true;
         });
       const MPI_Comm comm = prepared_force.get_mpi_communicator();
@@ -281,8 +296,9 @@ namespace impact_fem
       prepared_work = Utilities::MPI::sum(step_work, comm);
       for (unsigned int body = 0; body < 2; ++body)
         {
-          prepared_correction[body] = Utilities::MPI::sum(correction[body], comm);
-          prepared_largest[body]    = Utilities::MPI::max(largest[body], comm);
+          prepared_correction[body] =
+            Utilities::MPI::sum(correction[body], comm);
+          prepared_largest[body] = Utilities::MPI::max(largest[body], comm);
         }
       prepared = true;
       return true;

@@ -49,8 +49,10 @@ namespace impact_fem
       parse_parameters(ParameterHandler &prm) override
       {
         parse_elastic_constants(prm);
-        const double tau_d = prm.get_double(result_files::retardation_time.entry);
-        double       tau_v = prm.get_double(result_files::volumetric_retardation_time.entry);
+        const double tau_d =
+          prm.get_double(result_files::retardation_time.entry);
+        double tau_v =
+          prm.get_double(result_files::volumetric_retardation_time.entry);
         AssertThrow(tau_d >= 0,
                     ExcMessage("Kelvin-voigt/Retardation time must not be "
                                "negative."));

@@ -76,10 +76,9 @@ namespace impact_fem
         arms.clear();
         for (const bool deviatoric : {true, false})
           {
-            const std::string kind = deviatoric ? "Shear" : "Bulk";
-            const auto        moduli =
-              Utilities::string_to_double(Utilities::split_string_list(
-                prm.get(kind + " moduli")));
+            const std::string kind   = deviatoric ? "Shear" : "Bulk";
+            const auto        moduli = Utilities::string_to_double(
+              Utilities::split_string_list(prm.get(kind + " moduli")));
             const auto times =
               Utilities::string_to_double(Utilities::split_string_list(
                 prm.get(kind + " relaxation times")));
@@ -108,7 +107,8 @@ namespace impact_fem
                                "positive."));
         young   = 9 * K0 * G0 / (3 * K0 + G0);
         poisson = (3 * K0 - 2 * G0) / (2 * (3 * K0 + G0));
-        stiffness = isotropic_tensor(shear_modulus_relaxed, bulk_modulus_relaxed);
+        stiffness =
+          isotropic_tensor(shear_modulus_relaxed, bulk_modulus_relaxed);
       }
 
       unsigned int
@@ -147,22 +147,23 @@ namespace impact_fem
       update_internal_variables(std::vector<SymmetricTensor<2, 3>> &h,
                                 const SymmetricTensor<2, 3> &strain_start,
                                 const SymmetricTensor<2, 3> &strain_end,
-                                const double dt) const override
+                                const double                 dt) const override
       {
         double dissipated = 0;
         for (unsigned int i = 0; i < arms.size(); ++i)
           {
-            const double x     = dt / arms[i].relaxation_time;
-            const double decay = std::exp(-x);
+            const double                x     = dt / arms[i].relaxation_time;
+            const double                decay = std::exp(-x);
             const SymmetricTensor<2, 3> increment =
               project(strain_end - strain_start, arms[i].deviatoric);
             // (M / tau) int_0^dt h:h dt for h(s) = a(s) h_n + tau (1 - a(s))
             // r, a(s) = exp(-s/tau), r = increment / dt, in closed form; the
             // small-x series avoid the cancellation of the closed form.
             const double hh = h[i] * h[i], hr = h[i] * increment,
-                         rr = increment * increment;
+                         rr           = increment * increment;
             const double one_minus_a2 = -std::expm1(-2 * x);
-            double       cross, square; // int a(1-a) / (tau x), int (1-a)^2 / (tau x^2)
+            double       cross,
+              square; // int a(1-a) / (tau x), int (1-a)^2 / (tau x^2)
             if (x < 1e-3)
               {
                 cross  = x / 2 - x * x / 2 + 7 * x * x * x / 24;
@@ -171,18 +172,19 @@ namespace impact_fem
             else
               {
                 const double one_minus_a = -std::expm1(-x);
-                cross  = (one_minus_a - one_minus_a2 / 2) / x;
+                cross                    = (one_minus_a - one_minus_a2 / 2) / x;
                 square = (x - 2 * one_minus_a + one_minus_a2 / 2) / (x * x);
               }
-            dissipated += arms[i].modulus *
-                          (hh * one_minus_a2 / 2 + 2 * hr * cross + rr * square);
+            dissipated += arms[i].modulus * (hh * one_minus_a2 / 2 +
+                                             2 * hr * cross + rr * square);
             h[i] = decay * h[i] + growth(x) * increment;
           }
         return dissipated;
       }
 
       SymmetricTensor<2, 3>
-      internal_stress(const std::vector<SymmetricTensor<2, 3>> &h) const override
+      internal_stress(
+        const std::vector<SymmetricTensor<2, 3>> &h) const override
       {
         SymmetricTensor<2, 3> stress;
         for (unsigned int i = 0; i < arms.size(); ++i)
@@ -191,7 +193,8 @@ namespace impact_fem
       }
 
       double
-      internal_energy(const std::vector<SymmetricTensor<2, 3>> &h) const override
+      internal_energy(
+        const std::vector<SymmetricTensor<2, 3>> &h) const override
       {
         double energy = 0;
         for (unsigned int i = 0; i < arms.size(); ++i)

@@ -11,7 +11,7 @@
 #include <sstream>
 
 #ifndef IMPACT_FEM_MESH_DIRECTORY
-#  define IMPACT_FEM_MESH_DIRECTORY "meshes"
+#define IMPACT_FEM_MESH_DIRECTORY "meshes"
 #endif
 
 namespace impact_fem
@@ -90,10 +90,10 @@ namespace impact_fem
   {
     geometry = geometry_in;
     prm.enter_subsection("Mesh");
-    contact_element_size   = prm.get_double("Contact element size");
-    uniform_zone_radius    = prm.get_double("Uniform zone radius");
-    growth_factor          = prm.get_double("Growth factor");
-    maximum_element_size   = prm.get_double("Maximum element size");
+    contact_element_size = prm.get_double("Contact element size");
+    uniform_zone_radius  = prm.get_double("Uniform zone radius");
+    growth_factor        = prm.get_double("Growth factor");
+    maximum_element_size = prm.get_double("Maximum element size");
     elements_across_thickness =
       prm.get_double("Elements across the plate thickness");
     contact_surface_radius = prm.get_double("Contact surface radius");
@@ -121,7 +121,8 @@ namespace impact_fem
     AssertThrow(maximum_element_size >= contact_element_size,
                 ExcMessage("Mesh/Maximum element size must not be smaller "
                            "than the contact element size."));
-    AssertThrow(elements_across_thickness >= 1 && elements_across_thickness <= 1000,
+    AssertThrow(elements_across_thickness >= 1 &&
+                  elements_across_thickness <= 1000,
                 ExcMessage("Mesh/Elements across the plate thickness must lie "
                            "in [1, 1000], got " +
                            as_written(elements_across_thickness) + "."));
@@ -133,7 +134,8 @@ namespace impact_fem
                            as_written(far_field_element_size()) + " m)."));
     AssertThrow(contact_surface_radius > 0 && contact_surface_radius <= 0.5 * R,
                 ExcMessage("Mesh/Contact surface radius must lie in (0, R/2] "
-                           "= (0, " + as_written(0.5 * R) + "] m, got " +
+                           "= (0, " +
+                           as_written(0.5 * R) + "] m, got " +
                            as_written(contact_surface_radius) + " m."));
     AssertThrow(contact_surface_radius < geometry.plate_radius,
                 ExcMessage("Mesh/Contact surface radius must be smaller than "
@@ -148,12 +150,13 @@ namespace impact_fem
 
 
   void
-  SpherePlateMesh::create(parallel::distributed::Triangulation<2> &triangulation,
-                          const std::string &work_directory) const
+  SpherePlateMesh::create(
+    parallel::distributed::Triangulation<2> &triangulation,
+    const std::string                       &work_directory) const
   {
-    const MPI_Comm     comm     = triangulation.get_communicator();
-    const std::string  msh_file = work_directory + "/mesh.msh";
-    const std::string  log_file = work_directory + "/gmsh.log";
+    const MPI_Comm    comm     = triangulation.get_communicator();
+    const std::string msh_file = work_directory + "/mesh.msh";
+    const std::string log_file = work_directory + "/gmsh.log";
 
     // gmsh runs on one rank; the others wait for its verdict.
     int status = 0;
@@ -171,13 +174,11 @@ namespace impact_fem
                 << " -setnumber rc " << contact_surface_radius
                 << " -setnumber hc " << contact_element_size
                 << " -setnumber rz " << uniform_zone_radius
-                << " -setnumber growth " << growth_factor
-                << " -setnumber hmax " << far_field_element_size()
-                << " -setnumber plate " << (geometry.plate_meshed ? 1 : 0)
-                << " -setnumber hemisphere " << (geometry.hemisphere ? 1 : 0)
-                << " \""
-                << geometry_file << "\" -o \"" << msh_file << "\" > \""
-                << log_file << "\" 2>&1";
+                << " -setnumber growth " << growth_factor << " -setnumber hmax "
+                << far_field_element_size() << " -setnumber plate "
+                << (geometry.plate_meshed ? 1 : 0) << " -setnumber hemisphere "
+                << (geometry.hemisphere ? 1 : 0) << " \"" << geometry_file
+                << "\" -o \"" << msh_file << "\" > \"" << log_file << "\" 2>&1";
         std::filesystem::remove(msh_file);
         const int rc = std::system(command.str().c_str());
         status       = WIFEXITED(rc) ? WEXITSTATUS(rc) : 255;

@@ -75,8 +75,9 @@ namespace impact_fem
     {
       HDF5::File file(temporary_name, HDF5::File::FileAccessMode::create);
       file.set_attribute(result_files::status_attribute,
-                         std::string(complete ? result_files::status_complete :
-                                                result_files::status_incomplete));
+                         std::string(complete ?
+                                       result_files::status_complete :
+                                       result_files::status_incomplete));
       for (const auto &[key, value] : text_attributes)
         file.set_attribute(key, value);
       for (const auto &[key, value] : numeric_attributes)
@@ -96,7 +97,8 @@ namespace impact_fem
                                         std::vector<hsize_t>{values.size()});
           dataset.write(values);
           dataset.set_attribute(result_files::unit_attribute, s.unit);
-          dataset.set_attribute(result_files::description_attribute, s.description);
+          dataset.set_attribute(result_files::description_attribute,
+                                s.description);
         }
       for (const auto &s : profiles)
         if (!s.values.empty())
@@ -105,7 +107,8 @@ namespace impact_fem
               s.name, std::vector<hsize_t>{s.values.size()});
             dataset.write(s.values);
             dataset.set_attribute(result_files::unit_attribute, s.unit);
-            dataset.set_attribute(result_files::description_attribute, s.description);
+            dataset.set_attribute(result_files::description_attribute,
+                                  s.description);
           }
     }
     std::filesystem::rename(temporary_name, final_name);

@@ -7,8 +7,9 @@ namespace impact_fem
 {
   namespace postprocess
   {
-    CellStress::CellStress(const ImpactProblem &problem,
-                           const std::function<bool(const CellIterator &)> &selected)
+    CellStress::CellStress(
+      const ImpactProblem                             &problem,
+      const std::function<bool(const CellIterator &)> &selected)
     {
       AssertThrow(problem.ghosted_displacement().trilinos_partitioner().SameAs(
                     problem.ghosted_velocity().trilinos_partitioner()),
@@ -27,7 +28,9 @@ namespace impact_fem
             cell->get_dof_indices(dofs);
             cells.push_back(
               {cell,
-               CellStrainOperator(fe_values, dofs, problem.ghosted_displacement())});
+               CellStrainOperator(fe_values,
+                                  dofs,
+                                  problem.ghosted_displacement())});
           }
     }
 
@@ -37,8 +40,8 @@ namespace impact_fem
       const ImpactProblem &problem,
       const std::function<void(const CellIterator &,
                                const std::vector<Point<2>> &,
-                               const std::vector<SymmetricTensor<2, 3>> &)> &visit)
-      const
+                               const std::vector<SymmetricTensor<2, 3>> &)>
+        &visit) const
     {
       std::vector<double>                local_u, local_v;
       std::vector<SymmetricTensor<2, 3>> stress;

@@ -22,16 +22,36 @@ namespace impact_fem
       void
       initialize(const ImpactProblem &problem, History &history) override
       {
-        history.declare({
-               {result_files::contact_force_dataset, result_files::contact_force_unit, "total normal contact force, 2 pi int p r dr"},
-               {"sphere_displacement", "m", "centre-of-mass displacement of the sphere, downward positive"},
-               {result_files::sphere_velocity_dataset, result_files::sphere_velocity_unit, "centre-of-mass velocity of the sphere, downward positive"},
-               {"plate_displacement", "m", "mean vertical displacement of the plate bottom, downward positive"},
-               {"plate_momentum", "kg m/s", "axial momentum of the plate, int rho v_z dV, downward positive (the sphere's is sphere_velocity times its mass)"},
-               {result_files::approach_dataset, result_files::approach_unit, "sphere_displacement - initial gap - plate_displacement"},
-               {"contact_radius", "m", "contact radius: between the outermost loaded node and the next, where p^2 extrapolated linearly in r^2 vanishes"},
-               {"max_pressure", "Pa", "largest nodal contact pressure"},
-               {"penetration", "m", "largest pointwise penetration of a contact node (the constraint holds in the weighted sense)"}});
+        history.declare(
+          {{result_files::contact_force_dataset,
+            result_files::contact_force_unit,
+            "total normal contact force, 2 pi int p r dr"},
+           {"sphere_displacement",
+            "m",
+            "centre-of-mass displacement of the sphere, downward positive"},
+           {result_files::sphere_velocity_dataset,
+            result_files::sphere_velocity_unit,
+            "centre-of-mass velocity of the sphere, downward positive"},
+           {"plate_displacement",
+            "m",
+            "mean vertical displacement of the plate bottom, downward "
+            "positive"},
+           {"plate_momentum",
+            "kg m/s",
+            "axial momentum of the plate, int rho v_z dV, downward positive "
+            "(the sphere's is sphere_velocity times its mass)"},
+           {result_files::approach_dataset,
+            result_files::approach_unit,
+            "sphere_displacement - initial gap - plate_displacement"},
+           {"contact_radius",
+            "m",
+            "contact radius: between the outermost loaded node and the next, "
+            "where p^2 extrapolated linearly in r^2 vanishes"},
+           {"max_pressure", "Pa", "largest nodal contact pressure"},
+           {"penetration",
+            "m",
+            "largest pointwise penetration of a contact node (the constraint "
+            "holds in the weighted sense)"}});
         history.set_profile("contact_node_radius",
                             "m",
                             "radius of the contact nodes (vertices of the "
@@ -42,18 +62,20 @@ namespace impact_fem
       void
       execute(const ImpactProblem &problem, History &history) override
       {
-        const auto &contact   = problem.contact_conditions();
-        const auto &pressures = problem.contact_pressures();
-        const auto &w         = problem.functionals();
-        const auto &stepper   = problem.stepper();
-        const double mass     = problem.scenario().sphere_mass;
-        const double force    = contact.total_force(pressures);
+        const auto  &contact   = problem.contact_conditions();
+        const auto  &pressures = problem.contact_pressures();
+        const auto  &w         = problem.functionals();
+        const auto  &stepper   = problem.stepper();
+        const double mass      = problem.scenario().sphere_mass;
+        const double force     = contact.total_force(pressures);
         // Centre-of-mass motion of the sphere and mean motion of the plate
         // bottom, downward positive.
         const double sphere_displacement =
           -(w.sphere_momentum * stepper.displacement()) / mass;
-        const double sphere_velocity = -(w.sphere_momentum * stepper.velocity()) / mass;
-        const double plate_displacement = -(w.plate_bottom_mean * stepper.displacement());
+        const double sphere_velocity =
+          -(w.sphere_momentum * stepper.velocity()) / mass;
+        const double plate_displacement =
+          -(w.plate_bottom_mean * stepper.displacement());
         double max_pressure = 0;
         for (const double p : pressures)
           max_pressure = std::max(max_pressure, p);
@@ -64,9 +86,11 @@ namespace impact_fem
         history.append("sphere_displacement", sphere_displacement);
         history.append(result_files::sphere_velocity_dataset, sphere_velocity);
         history.append("plate_displacement", plate_displacement);
-        history.append("plate_momentum", -(w.plate_momentum * stepper.velocity()));
+        history.append("plate_momentum",
+                       -(w.plate_momentum * stepper.velocity()));
         history.append(result_files::approach_dataset,
-                       sphere_displacement - problem.scenario().geometry.initial_gap -
+                       sphere_displacement -
+                         problem.scenario().geometry.initial_gap -
                          plate_displacement);
         history.append("contact_radius", contact.contact_radius(pressures));
         history.append("max_pressure", max_pressure);
@@ -78,7 +102,8 @@ namespace impact_fem
                                 "Pa",
                                 "contact pressure at the contact nodes at the "
                                 "time of the largest contact force",
-                                std::vector<double>(pressures.begin(), pressures.end()));
+                                std::vector<double>(pressures.begin(),
+                                                    pressures.end()));
           }
       }
 
@@ -96,9 +121,10 @@ namespace impact_fem
       double largest_force = -1;
       double penetration   = 0;
     };
-    IMPACT_FEM_REGISTER_POSTPROCESSOR(ContactQuantities,
-                                      "contact",
-                                      "contact force, approach, contact radius, "
-                                      "pressures, penetration")
+    IMPACT_FEM_REGISTER_POSTPROCESSOR(
+      ContactQuantities,
+      "contact",
+      "contact force, approach, contact radius, "
+      "pressures, penetration")
   } // namespace postprocess
 } // namespace impact_fem

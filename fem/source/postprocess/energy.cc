@@ -30,26 +30,46 @@ namespace impact_fem
       void
       initialize(const ImpactProblem &problem, History &history) override
       {
-        history.declare({
-               {"kinetic_energy", "J", "kinetic energy of both bodies"},
-               {"strain_energy", "J", "stored elastic energy of both bodies, including internal_energy"},
-               {"internal_energy", "J", "elastic energy stored in the springs of the Maxwell arms (part of strain_energy)"},
-               {"dissipated_energy", "J", "cumulative viscous and plastic dissipation in the materials"},
-               {"radiated_energy", "J", "cumulative energy absorbed by the far-boundary dashpots"},
-               {"gravity_work", "J", "cumulative work of the body force on the sphere"},
-               {"contact_work", "J", "cumulative work of the contact forces (zero for an ideal constraint)"},
-               {"energy_error", "1", "(kinetic + strain + dissipated + radiated - initial - gravity work) / initial energy"},
-               {"sphere_kinetic_energy", "J", "kinetic energy of the sphere"},
-               {"sphere_strain_energy", "J", "strain energy of the sphere"}});
+        history.declare(
+          {{"kinetic_energy", "J", "kinetic energy of both bodies"},
+           {"strain_energy",
+            "J",
+            "stored elastic energy of both bodies, including internal_energy"},
+           {"internal_energy",
+            "J",
+            "elastic energy stored in the springs of the Maxwell arms (part of "
+            "strain_energy)"},
+           {"dissipated_energy",
+            "J",
+            "cumulative viscous and plastic dissipation in the materials"},
+           {"radiated_energy",
+            "J",
+            "cumulative energy absorbed by the far-boundary dashpots"},
+           {"gravity_work",
+            "J",
+            "cumulative work of the body force on the sphere"},
+           {"contact_work",
+            "J",
+            "cumulative work of the contact forces (zero for an ideal "
+            "constraint)"},
+           {"energy_error",
+            "1",
+            "(kinetic + strain + dissipated + radiated - initial - gravity "
+            "work) / initial energy"},
+           {"sphere_kinetic_energy", "J", "kinetic energy of the sphere"},
+           {"sphere_strain_energy", "J", "strain energy of the sphere"}});
         const auto &stepper = problem.stepper();
         product.reinit(stepper.velocity());
         masked.reinit(stepper.velocity());
         mean_velocity.reinit(stepper.velocity());
-        previous_u = stepper.displacement();
-        previous_v = stepper.velocity();
+        previous_u         = stepper.displacement();
+        previous_v         = stepper.velocity();
         previous_pressures = problem.contact_pressures();
         if (problem.internal_variables().nonlinear())
-          history.declare("plastic_work", "J", "cumulative plastic work int sigma : d eps^p of both bodies (part of dissipated_energy)");
+          history.declare("plastic_work",
+                          "J",
+                          "cumulative plastic work int sigma : d eps^p of both "
+                          "bodies (part of dissipated_energy)");
         previous_gaps = problem.contact_conditions().weighted_gaps(previous_u);
         problem.matrices().mass.vmult(product, previous_v);
         // At first contact (an initial gap is crossed before the run
@@ -64,7 +84,7 @@ namespace impact_fem
         const auto &m       = problem.matrices();
         const auto &w       = problem.functionals();
         const auto &u = stepper.displacement(), &v = stepper.velocity();
-        const bool first = stepper.step_number() == 0;
+        const bool  first = stepper.step_number() == 0;
 
         if (!first)
           {
@@ -83,9 +103,9 @@ namespace impact_fem
             masked = u;
             masked -= previous_u;
             gravity_work += w.body_force * masked;
-            const auto &contact  = problem.contact_conditions();
-            const auto &pressure = problem.contact_pressures();
-            const Vector<double> gaps = contact.weighted_gaps(u);
+            const auto          &contact  = problem.contact_conditions();
+            const auto          &pressure = problem.contact_pressures();
+            const Vector<double> gaps     = contact.weighted_gaps(u);
             for (unsigned int j = 0; j < pressure.size(); ++j)
               contact_work += 0.5 * (pressure[j] + previous_pressures[j]) *
                               (gaps[j] - previous_gaps[j]);
@@ -103,7 +123,8 @@ namespace impact_fem
         const double sphere_kinetic = 0.5 * (masked * product);
         m.stiffness.vmult(product, u);
         // The long-term springs plus the springs of the Maxwell arms.
-        const double arm_energy = arms.stored_energy(sphere) + arms.stored_energy(plate);
+        const double arm_energy =
+          arms.stored_energy(sphere) + arms.stored_energy(plate);
         // 1/2 u^T K u is the elastic energy of the total strain; a plastic
         // body stores 1/2 (eps - eps^p) : C : (eps - eps^p).
         const double strain = 0.5 * (u * product) + arm_energy +
@@ -120,7 +141,8 @@ namespace impact_fem
           kinetic + strain + radiated + dissipated - initial - gravity_work;
         // A static press starts without energy: its balance is relative to
         // the work of the load.
-        const double reference = initial > 0 ? initial : std::max(gravity_work, 1e-300);
+        const double reference =
+          initial > 0 ? initial : std::max(gravity_work, 1e-300);
         largest_error = std::max(largest_error, std::abs(balance / reference));
 
         history.append("kinetic_energy", kinetic);
@@ -146,25 +168,30 @@ namespace impact_fem
         const std::size_t n = history.n_steps();
         if (n == 0)
           return;
-        const auto last = [&](const char *name) { return history[name][n - 1]; };
+        const auto last = [&](const char *name) {
+          return history[name][n - 1];
+        };
         // What the sphere holds beyond its rigid motion (>= 0: the kinetic
         // energy of the centre of mass is at most the sphere's).
-        const double v_cm = history[result_files::sphere_velocity_dataset][n - 1];
+        const double v_cm =
+          history[result_files::sphere_velocity_dataset][n - 1];
         const double rigid = 0.5 * problem.scenario().sphere_mass * v_cm * v_cm;
         const double sphere_vibration =
           last("sphere_kinetic_energy") + last("sphere_strain_energy") - rigid;
-        const double plate_stored = last("kinetic_energy") + last("strain_energy") -
-                                    last("sphere_kinetic_energy") -
-                                    last("sphere_strain_energy");
-        const double E0 = initial;
-        summary[result_files::energy_error_key]      = largest_error;
+        const double plate_stored =
+          last("kinetic_energy") + last("strain_energy") -
+          last("sphere_kinetic_energy") - last("sphere_strain_energy");
+        const double E0                             = initial;
+        summary[result_files::energy_error_key]     = largest_error;
         summary["energy_error_final"]               = last("energy_error");
         summary["initial_energy"]                   = E0;
         summary["sphere_vibration_energy_fraction"] = sphere_vibration / E0;
         summary["plate_energy_fraction"]            = plate_stored / E0;
-        summary[result_files::radiated_energy_fraction_key] = last("radiated_energy") / E0;
-        summary[result_files::dissipated_energy_fraction_key] = last("dissipated_energy") / E0;
-        summary["internal_energy_fraction"]         = last("internal_energy") / E0;
+        summary[result_files::radiated_energy_fraction_key] =
+          last("radiated_energy") / E0;
+        summary[result_files::dissipated_energy_fraction_key] =
+          last("dissipated_energy") / E0;
+        summary["internal_energy_fraction"] = last("internal_energy") / E0;
         report << "  energy: sphere vibration " << sphere_vibration / E0 * 100
                << " %, plate " << plate_stored / E0 * 100 << " %, radiated "
                << last("radiated_energy") / E0 * 100 << " %, dissipated "
@@ -175,7 +202,7 @@ namespace impact_fem
     private:
       VectorType     product, masked, mean_velocity, previous_u, previous_v;
       Vector<double> previous_pressures, previous_gaps;
-      double initial = 0, radiated = 0, viscous = 0, gravity_work = 0,
+      double         initial = 0, radiated = 0, viscous = 0, gravity_work = 0,
              contact_work = 0, largest_error = 0;
     };
     IMPACT_FEM_REGISTER_POSTPROCESSOR(Energy,

@@ -82,28 +82,30 @@ namespace impact_fem
         };
         summary["plastic_work"] = states.plastic_work();
         summary["plastic_work_fraction"] =
-          states.plastic_work() / (0.5 * problem.scenario().sphere_mass * V * V);
+          states.plastic_work() /
+          (0.5 * problem.scenario().sphere_mass * V * V);
         summary["max_accumulated_plastic_strain_sphere"] =
           states.max_accumulated_plastic_strain(sphere);
         // A rigid flat is no body: its keys are null, not a plate that
         // stayed elastic.
         const bool rigid_flat = problem.scenario().rigid_plate;
         summary["max_accumulated_plastic_strain_plate"] =
-          rigid_flat ? nlohmann::json(nullptr) :
-                       nlohmann::json(states.max_accumulated_plastic_strain(plate));
+          rigid_flat ?
+            nlohmann::json(nullptr) :
+            nlohmann::json(states.max_accumulated_plastic_strain(plate));
         summary["max_accumulated_plastic_strain"] =
           std::max(states.max_accumulated_plastic_strain(sphere),
                    states.max_accumulated_plastic_strain(plate));
         const double nan = std::numeric_limits<double>::quiet_NaN();
-        summary["yield_onset_time"] = number(onset_time >= 0 ? onset_time : nan);
+        summary["yield_onset_time"] =
+          number(onset_time >= 0 ? onset_time : nan);
         summary["yield_onset_sphere_velocity"] =
           number(onset_time >= 0 ? onset_sphere_velocity : nan);
-        summary["yield_onset_velocity"] =
-          number(onset_time >= 0 ?
-                   std::sqrt(std::max(V * V - onset_sphere_velocity *
-                                                onset_sphere_velocity,
-                                      0.)) :
-                   nan);
+        summary["yield_onset_velocity"] = number(
+          onset_time >= 0 ? std::sqrt(std::max(V * V - onset_sphere_velocity *
+                                                         onset_sphere_velocity,
+                                               0.)) :
+                            nan);
 
         // Permanent approach: the approach at the separation time.
         double permanent = nan;
@@ -123,8 +125,10 @@ namespace impact_fem
           }
         summary["permanent_approach"] = number(permanent);
 
-        const double plate_dent  = dent_radius(problem, boundary_ids::plate_contact);
-        const double sphere_dent = dent_radius(problem, boundary_ids::sphere_contact);
+        const double plate_dent =
+          dent_radius(problem, boundary_ids::plate_contact);
+        const double sphere_dent =
+          dent_radius(problem, boundary_ids::sphere_contact);
         summary["dent_radius"] =
           rigid_flat ? nlohmann::json(nullptr) : nlohmann::json(plate_dent);
         summary["sphere_dent_radius"] = sphere_dent;
@@ -139,8 +143,7 @@ namespace impact_fem
         else
           report << plate_dent * 1e3 << " mm (sphere " << sphere_dent * 1e3
                  << " mm)";
-        report << ", yield from "
-               << (onset_time >= 0 ? onset_time * 1e6 : nan)
+        report << ", yield from " << (onset_time >= 0 ? onset_time * 1e6 : nan)
                << " us, at an impact-equivalent velocity "
                << summary["yield_onset_velocity"] << " m/s\n";
       }
@@ -149,14 +152,15 @@ namespace impact_fem
       /// Largest radius of a yielded quadrature point in the cells along
       /// the boundary @p surface, all ranks [m].
       static double
-      dent_radius(const ImpactProblem &problem, const types::boundary_id surface)
+      dent_radius(const ImpactProblem     &problem,
+                  const types::boundary_id surface)
       {
         const auto &states = problem.internal_variables();
         FEValues<2> fe_values(problem.geometric_mapping(),
                               problem.dofs().get_fe(),
                               problem.cell_quadrature(),
                               update_quadrature_points);
-        double radius = 0;
+        double      radius = 0;
         for (const auto &cell : problem.dofs().active_cell_iterators())
           if (cell->is_locally_owned() && cell->at_boundary())
             {
@@ -179,10 +183,11 @@ namespace impact_fem
       double onset_time            = -1;
       double onset_sphere_velocity = 0;
     };
-    IMPACT_FEM_REGISTER_POSTPROCESSOR(Plasticity,
-                                      "plasticity",
-                                      "plastic work, largest accumulated plastic "
-                                      "strain, yield onset, permanent approach, "
-                                      "dent radius")
+    IMPACT_FEM_REGISTER_POSTPROCESSOR(
+      Plasticity,
+      "plasticity",
+      "plastic work, largest accumulated plastic "
+      "strain, yield onset, permanent approach, "
+      "dent radius")
   } // namespace postprocess
 } // namespace impact_fem

@@ -37,7 +37,8 @@ namespace impact_fem
         prm.leave_subsection();
         AssertThrow(interval >= 0,
                     ExcMessage("Output/Progress interval must not be negative, "
-                               "got " + as_written(interval) + " s."));
+                               "got " +
+                               as_written(interval) + " s."));
       }
 
       void
@@ -54,9 +55,10 @@ namespace impact_fem
         const double time    = stepper.time();
         const bool   done =
           time >= problem.expected_end_time() - 0.5 * stepper.time_step();
-        const bool terminal = problem.console_is_terminal();
-        const auto now      = std::chrono::steady_clock::now();
-        const double since_last = std::chrono::duration<double>(now - last).count();
+        const bool   terminal = problem.console_is_terminal();
+        const auto   now      = std::chrono::steady_clock::now();
+        const double since_last =
+          std::chrono::duration<double>(now - last).count();
         if (!done && since_last < (terminal ? 0.1 : interval))
           return;
         last = now;
@@ -72,12 +74,15 @@ namespace impact_fem
         if (terminal)
           out << '\r';
         out << "  t = " << std::setw(8) << std::fixed << std::setprecision(2)
-            << time * 1e6 << " us  step " << std::setw(5) << stepper.step_number()
-            << "  force " << std::setw(8) << std::setprecision(4)
-            << problem.contact_conditions().total_force(problem.contact_pressures()) /
+            << time * 1e6 << " us  step " << std::setw(5)
+            << stepper.step_number() << "  force " << std::setw(8)
+            << std::setprecision(4)
+            << problem.contact_conditions().total_force(
+                 problem.contact_pressures()) /
                  1e3
             << " kN  contact radius " << std::setw(6)
-            << problem.contact_conditions().contact_radius(problem.contact_pressures()) *
+            << problem.contact_conditions().contact_radius(
+                 problem.contact_pressures()) *
                  1e3
             << " mm  remaining " << std::setprecision(0) << remaining << " s "
             << std::defaultfloat << std::setprecision(6);
@@ -91,8 +96,9 @@ namespace impact_fem
       double                                interval = 1, start_time = 0;
       std::chrono::steady_clock::time_point last;
     };
-    IMPACT_FEM_REGISTER_POSTPROCESSOR(Progress,
-                                      "progress",
-                                      "progress line with the remaining wall time")
+    IMPACT_FEM_REGISTER_POSTPROCESSOR(
+      Progress,
+      "progress",
+      "progress line with the remaining wall time")
   } // namespace postprocess
 } // namespace impact_fem

@@ -44,7 +44,8 @@ namespace impact_fem
         prm.leave_subsection();
         AssertThrow(interval >= 0,
                     ExcMessage("Output/Snapshot interval must not be negative, "
-                               "got " + as_written(interval) + " s."));
+                               "got " +
+                               as_written(interval) + " s."));
       }
 
       void
@@ -73,7 +74,8 @@ namespace impact_fem
       {
         const auto &dof_handler = problem.dofs();
         std::vector<DataComponentInterpretation::DataComponentInterpretation>
-          vector_field(2, DataComponentInterpretation::component_is_part_of_vector);
+          vector_field(
+            2, DataComponentInterpretation::component_is_part_of_vector);
         DataOut<2> data_out;
         data_out.attach_dof_handler(dof_handler);
         data_out.add_data_vector(problem.ghosted_displacement(),
@@ -118,10 +120,14 @@ namespace impact_fem
                   plastic_strain[cell->active_cell_index()] =
                     std::max<float>(plastic_strain[cell->active_cell_index()],
                                     state->accumulated_plastic_strain);
-            data_out.add_data_vector(plastic_strain, "accumulated_plastic_strain");
+            data_out.add_data_vector(plastic_strain,
+                                     "accumulated_plastic_strain");
           }
-        const char *names[5] = {
-          "stress_rr", "stress_zz", "stress_thetatheta", "stress_rz", "von_mises"};
+        const char *names[5] = {"stress_rr",
+                                "stress_zz",
+                                "stress_thetatheta",
+                                "stress_rz",
+                                "von_mises"};
         for (unsigned int c = 0; c < 5; ++c)
           data_out.add_data_vector(stress[c], names[c]);
         data_out.build_patches(problem.geometric_mapping(),
@@ -130,13 +136,12 @@ namespace impact_fem
 
         const std::string &directory = problem.scenario().output_directory;
         records.emplace_back(time,
-                             "snapshots/" +
-                               data_out.write_vtu_with_pvtu_record(
-                                 directory + "/snapshots/",
-                                 "solution",
-                                 records.size(),
-                                 problem.communicator(),
-                                 4));
+                             "snapshots/" + data_out.write_vtu_with_pvtu_record(
+                                              directory + "/snapshots/",
+                                              "solution",
+                                              records.size(),
+                                              problem.communicator(),
+                                              4));
         if (Utilities::MPI::this_mpi_process(problem.communicator()) == 0)
           {
             std::ofstream pvd(directory + "/snapshots.pvd");
@@ -148,9 +153,10 @@ namespace impact_fem
       std::vector<std::pair<double, std::string>> records; // (time, .pvtu)
       std::optional<CellStress>                   cell_stress;
     };
-    IMPACT_FEM_REGISTER_POSTPROCESSOR(Snapshots,
-                                      "snapshots",
-                                      "ParaView snapshots every Output/Snapshot "
-                                      "interval")
+    IMPACT_FEM_REGISTER_POSTPROCESSOR(
+      Snapshots,
+      "snapshots",
+      "ParaView snapshots every Output/Snapshot "
+      "interval")
   } // namespace postprocess
 } // namespace impact_fem

@@ -33,19 +33,34 @@ namespace impact_fem
       initialize(const ImpactProblem &problem, History &history) override
       {
         std::vector<History::Column> quantities = {
-          {"max_von_mises", "Pa", "largest von Mises stress in both bodies within 2 contact surface radii of the contact point"},
+          {"max_von_mises",
+           "Pa",
+           "largest von Mises stress in both bodies within 2 contact surface "
+           "radii of the contact point"},
           {"max_von_mises_r", "m", "radial position of max_von_mises"},
-          {"max_von_mises_z", "m", "axial position of max_von_mises (reference configuration)"}};
+          {"max_von_mises_z",
+           "m",
+           "axial position of max_von_mises (reference configuration)"}};
         for (const unsigned int body : {sphere, plate})
           {
-            const std::string name = std::string("max_von_mises_") + body_name(body);
-            quantities.push_back({name, "Pa", std::string("largest von Mises stress in the ") + body_name(body) + " (same zone)"});
-            quantities.push_back({name + "_r", "m", "radial position of " + name});
-            quantities.push_back({name + "_z", "m", "axial position of " + name + " (reference configuration)"});
+            const std::string name =
+              std::string("max_von_mises_") + body_name(body);
+            quantities.push_back(
+              {name,
+               "Pa",
+               std::string("largest von Mises stress in the ") +
+                 body_name(body) + " (same zone)"});
+            quantities.push_back(
+              {name + "_r", "m", "radial position of " + name});
+            quantities.push_back(
+              {name + "_z",
+               "m",
+               "axial position of " + name + " (reference configuration)"});
           }
         history.declare(quantities);
 
-        const double   zone = 2 * problem.mesh_parameters().contact_surface_radius;
+        const double zone =
+          2 * problem.mesh_parameters().contact_surface_radius;
         const Point<2> contact_points[2] = {
           Point<2>(0, 0), Point<2>(0, problem.scenario().geometry.initial_gap)};
         cell_stress.emplace(problem, [&](const CellStress::CellIterator &cell) {
@@ -59,32 +74,34 @@ namespace impact_fem
       {
         double   body_max[2] = {0, 0};
         Point<2> body_location[2];
-        cell_stress->evaluate(problem,
-                              [&](const CellStress::CellIterator &cell,
-                                  const std::vector<Point<2>>     &points,
-                                  const std::vector<SymmetricTensor<2, 3>> &stress) {
-                                const unsigned int body =
-                                  cell->material_id() == body_ids::sphere ? sphere : plate;
-                                for (unsigned int q = 0; q < stress.size(); ++q)
-                                  {
-                                    const double s = materials::von_mises(stress[q]);
-                                    if (s > body_max[body])
-                                      {
-                                        body_max[body]      = s;
-                                        body_location[body] = points[q];
-                                      }
-                                  }
-                              });
+        cell_stress->evaluate(
+          problem,
+          [&](const CellStress::CellIterator           &cell,
+              const std::vector<Point<2>>              &points,
+              const std::vector<SymmetricTensor<2, 3>> &stress) {
+            const unsigned int body =
+              cell->material_id() == body_ids::sphere ? sphere : plate;
+            for (unsigned int q = 0; q < stress.size(); ++q)
+              {
+                const double s = materials::von_mises(stress[q]);
+                if (s > body_max[body])
+                  {
+                    body_max[body]      = s;
+                    body_location[body] = points[q];
+                  }
+              }
+          });
         const MPI_Comm comm = problem.communicator();
         const double   time = problem.stepper().time();
         for (const unsigned int body : {sphere, plate})
           {
             // The location travels with the rank that holds the maximum.
-            const double       global = Utilities::MPI::max(body_max[body], comm);
-            const unsigned int holder = Utilities::MPI::min(
-              body_max[body] == global ? Utilities::MPI::this_mpi_process(comm) :
-                                         Utilities::MPI::n_mpi_processes(comm),
-              comm);
+            const double global = Utilities::MPI::max(body_max[body], comm);
+            const unsigned int holder =
+              Utilities::MPI::min(body_max[body] == global ?
+                                    Utilities::MPI::this_mpi_process(comm) :
+                                    Utilities::MPI::n_mpi_processes(comm),
+                                  comm);
             body_location[body] =
               Utilities::MPI::broadcast(comm, body_location[body], holder);
             body_max[body] = global;
@@ -102,13 +119,15 @@ namespace impact_fem
                 p.first_yield_location = body_location[body];
               }
           }
-        const unsigned int larger = body_max[plate] > body_max[sphere] ? plate : sphere;
+        const unsigned int larger =
+          body_max[plate] > body_max[sphere] ? plate : sphere;
         history.append("max_von_mises", body_max[larger]);
         history.append("max_von_mises_r", body_location[larger][0]);
         history.append("max_von_mises_z", body_location[larger][1]);
         for (const unsigned int body : {sphere, plate})
           {
-            const std::string name = std::string("max_von_mises_") + body_name(body);
+            const std::string name =
+              std::string("max_von_mises_") + body_name(body);
             history.append(name, body_max[body]);
             history.append(name + "_r", body_location[body][0]);
             history.append(name + "_z", body_location[body][1]);
@@ -123,7 +142,7 @@ namespace impact_fem
       {
         // The viscoelastic model holds only below the elastic limit.
         bool any_limit = false, exceeded_any = false;
-        auto optional  = [](const bool has, const auto value) {
+        auto optional = [](const bool has, const auto value) {
           return has ? nlohmann::json(value) : nlohmann::json(nullptr);
         };
         for (const unsigned int body : {sphere, plate})
@@ -136,14 +155,18 @@ namespace impact_fem
             any_limit |= has_limit;
             exceeded_any |= exceeded;
             summary[result_files::von_mises_max_prefix + name] = p.value;
-            summary["von_mises_max_" + name + "_time"] = p.time;
-            summary["von_mises_max_" + name + "_r"]    = p.location[0];
-            summary["von_mises_max_" + name + "_z"]    = p.location[1];
-            summary[result_files::yield_strength_prefix + name] = optional(has_limit, limit);
-            summary["yield_exceeded_" + name]          = optional(has_limit, exceeded);
-            summary["yield_time_" + name]  = optional(exceeded, p.first_yield_time);
-            summary["yield_r_" + name]     = optional(exceeded, p.first_yield_location[0]);
-            summary["yield_z_" + name]     = optional(exceeded, p.first_yield_location[1]);
+            summary["von_mises_max_" + name + "_time"]         = p.time;
+            summary["von_mises_max_" + name + "_r"]            = p.location[0];
+            summary["von_mises_max_" + name + "_z"]            = p.location[1];
+            summary[result_files::yield_strength_prefix + name] =
+              optional(has_limit, limit);
+            summary["yield_exceeded_" + name] = optional(has_limit, exceeded);
+            summary["yield_time_" + name] =
+              optional(exceeded, p.first_yield_time);
+            summary["yield_r_" + name] =
+              optional(exceeded, p.first_yield_location[0]);
+            summary["yield_z_" + name] =
+              optional(exceeded, p.first_yield_location[1]);
             std::ostringstream line;
             line << std::setprecision(4) << "  von Mises " << name << " max "
                  << p.value / 1e9 << " GPa at t = " << p.time * 1e6
@@ -158,8 +181,10 @@ namespace impact_fem
               line << " (below the yield strength " << limit / 1e9 << " GPa)";
             report << line.str() << "\n";
           }
-        summary[result_files::yield_exceeded_key] = optional(any_limit, exceeded_any);
-        summary[result_files::max_von_mises_key] = std::max(peak[sphere].value, peak[plate].value);
+        summary[result_files::yield_exceeded_key] =
+          optional(any_limit, exceeded_any);
+        summary[result_files::max_von_mises_key] =
+          std::max(peak[sphere].value, peak[plate].value);
       }
 
     private:

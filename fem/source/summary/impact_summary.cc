@@ -33,13 +33,13 @@ namespace impact_fem
                    const std::vector<double> &F,
                    const bool                 rising)
     {
-      const std::size_t n = t.size();
+      const std::size_t   n = t.size();
       std::vector<double> log_force(n);
       for (std::size_t k = 0; k < n; ++k)
         log_force[k] = std::log(F[k]);
       // Residual of the best (ln A, p) for a given zero.
       auto residual = [&](const double zero) {
-        double sx = 0, sy = 0, sxx = 0, sxy = 0;
+        double              sx = 0, sy = 0, sxx = 0, sxy = 0;
         std::vector<double> x(n);
         for (std::size_t k = 0; k < n; ++k)
           {
@@ -60,7 +60,7 @@ namespace impact_fem
       const double end  = rising ? t[0] : t[n - 1];
       const double sign = rising ? -1 : 1;
       // t* = end + sign s, s in (0, 20 h]: golden section on s.
-      double low = 1e-9 * h, high = 20 * h;
+      double       low = 1e-9 * h, high = 20 * h;
       const double golden = 0.5 * (std::sqrt(5.) - 1);
       double a = high - golden * (high - low), b = low + golden * (high - low);
       double ra = residual(end + sign * a), rb = residual(end + sign * b);
@@ -96,9 +96,9 @@ namespace impact_fem
         std::max_element(values.begin(), values.end()) - values.begin();
       if (i == 0 || i + 1 == n)
         return {time[i], values[i]};
-      const double h     = 0.5 * (time[i + 1] - time[i - 1]);
-      const double left  = values[i - 1], middle = values[i],
-                   right = values[i + 1];
+      const double h    = 0.5 * (time[i + 1] - time[i - 1]);
+      const double left = values[i - 1], middle = values[i],
+                   right     = values[i + 1];
       const double curvature = left - 2 * middle + right; // <= 0 at a maximum
       if (!(curvature < 0))
         return {time[i], middle};
@@ -110,19 +110,20 @@ namespace impact_fem
 
     double
     step_oscillation(const std::vector<double> &force,
-                     const unsigned int          excluded)
+                     const unsigned int         excluded)
     {
       const ContactPhase phase = contact_phase(force);
       if (phase.empty(force.size()) ||
           phase.last < phase.first + 2 * excluded + 2)
         return nan;
-      const double peak = *std::max_element(force.begin(), force.end());
+      const double peak  = *std::max_element(force.begin(), force.end());
       double       worst = 0;
       for (std::size_t i = phase.first + excluded + 1;
            i + 1 <= phase.last - excluded;
            ++i)
-        worst = std::max(worst,
-                         std::abs(force[i] - 0.5 * (force[i - 1] + force[i + 1])));
+        worst =
+          std::max(worst,
+                   std::abs(force[i] - 0.5 * (force[i - 1] + force[i + 1])));
       return worst / peak;
     }
 
@@ -165,7 +166,8 @@ namespace impact_fem
         force.begin();
       auto flank_zero = [&](const bool rising) {
         std::vector<double> t, F;
-        for (std::size_t i = rising ? first : peak; i <= (rising ? peak : last); ++i)
+        for (std::size_t i = rising ? first : peak; i <= (rising ? peak : last);
+             ++i)
           if (force[i] <= flank_fraction * force[peak])
             {
               t.push_back(time[i]);
@@ -183,18 +185,18 @@ namespace impact_fem
         s.separation_time = flank_zero(false);
       s.contact_time = s.separation_time - s.first_contact_time;
 
-      const Peak force_peak = interpolated_peak(time, force);
-      s.force_max           = force_peak.value;
-      s.time_force_max      = force_peak.time;
+      const Peak force_peak    = interpolated_peak(time, force);
+      s.force_max              = force_peak.value;
+      s.time_force_max         = force_peak.time;
       const Peak approach_peak = interpolated_peak(time, approach);
       s.approach_max           = approach_peak.value;
       s.time_approach_max      = approach_peak.time;
 
       if (phase.ended)
         {
-          s.rebound_velocity =
-            -(sphere_velocity[n - 1] - gravity * (time[n - 1] - s.separation_time));
-          s.restitution = s.rebound_velocity / contact_velocity;
+          s.rebound_velocity = -(sphere_velocity[n - 1] -
+                                 gravity * (time[n - 1] - s.separation_time));
+          s.restitution      = s.rebound_velocity / contact_velocity;
         }
       s.force_oscillation   = step_oscillation(force);
       s.force_after_release = force_after_release(force);

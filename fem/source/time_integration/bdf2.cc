@@ -41,7 +41,8 @@ namespace impact_fem
       }
 
       void
-      history_terms(VectorType &mass_term, VectorType &damping_term) const override
+      history_terms(VectorType &mass_term,
+                    VectorType &damping_term) const override
       {
         // v_{n+1} = 3/(2dt) u_{n+1} - w,   w = (4 u_n - u_{n-1}) / (2 dt)
         // a_{n+1} = 3/(2dt) v_{n+1} - q,   q = (4 v_n - v_{n-1}) / (2 dt)

@@ -67,7 +67,8 @@ namespace impact_fem
       }
 
       void
-      history_terms(VectorType &mass_term, VectorType &damping_term) const override
+      history_terms(VectorType &mass_term,
+                    VectorType &damping_term) const override
       {
         // M (c_M u + c_v v + c_a a) + C (c_C u + d_v v + d_a a)
         mass_term.equ(1 / (beta * dt * dt), u);

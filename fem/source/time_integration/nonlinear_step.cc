@@ -74,8 +74,8 @@ namespace impact_fem
     {
       std::ostringstream s;
       s << "||r|| <= " << residual_tolerance
-        << " (||B^T lambda|| + ||f_body|| + ||f_p||) and ||du|| <= " << increment_tolerance
-        << " ||u - u_n|| within " << max_iterations
+        << " (||B^T lambda|| + ||f_body|| + ||f_p||) and ||du|| <= "
+        << increment_tolerance << " ||u - u_n|| within " << max_iterations
         << " iterations (Nonlinear solver/Residual tolerance, Increment "
            "tolerance, Maximum iterations; strategy "
         << strategy << ")";
@@ -143,9 +143,9 @@ namespace impact_fem
                   dG.pop_front();
                 }
             }
-          last_r = r;
-          last_g = g;
-          x      = g;
+          last_r               = r;
+          last_g               = g;
+          x                    = g;
           const unsigned int n = dR.size();
           if (n == 0)
             continue;

@@ -26,19 +26,20 @@ namespace impact_fem
       g.medium           = medium;
       g.coarse           = coarse;
       g.refinement_ratio = r;
-      const double e21   = medium - fine, e32 = coarse - medium;
-      const double scale = std::max({std::abs(fine), std::abs(medium),
-                                     std::abs(coarse), 1e-300});
-      const double round_off = 64 * std::numeric_limits<double>::epsilon() * scale;
+      const double e21 = medium - fine, e32 = coarse - medium;
+      const double scale =
+        std::max({std::abs(fine), std::abs(medium), std::abs(coarse), 1e-300});
+      const double round_off =
+        64 * std::numeric_limits<double>::epsilon() * scale;
       auto relative = [&](const double absolute) {
         return fine != 0 ? absolute / std::abs(fine) : __builtin_nan("");
       };
       if (std::abs(e21) <= round_off && std::abs(e32) <= round_off)
         {
-          g.convergence    = "converged";
-          g.extrapolated   = fine;
-          g.gci_absolute   = 0;
-          g.gci_relative   = relative(0);
+          g.convergence  = "converged";
+          g.extrapolated = fine;
+          g.gci_absolute = 0;
+          g.gci_relative = relative(0);
           return g;
         }
       if (std::abs(e21) <= round_off)
@@ -50,8 +51,9 @@ namespace impact_fem
           g.gci_relative = relative(0);
           return g;
         }
-      const double R = std::abs(e32) > round_off ? e21 / e32 :
-                                                   std::numeric_limits<double>::infinity();
+      const double R = std::abs(e32) > round_off ?
+                         e21 / e32 :
+                         std::numeric_limits<double>::infinity();
       if (R > 0 && R < 1)
         {
           g.convergence    = "monotone";

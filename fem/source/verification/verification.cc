@@ -47,7 +47,7 @@ namespace impact_fem
 
       /// Set "Section/Entry" to a number.
       void
-      set_number(ParameterHandler &prm,
+      set_number(ParameterHandler  &prm,
                  const std::string &section,
                  const std::string &entry,
                  const double       value)
@@ -60,7 +60,9 @@ namespace impact_fem
       }
 
       double
-      get_number(ParameterHandler &prm, const std::string &section, const std::string &entry)
+      get_number(ParameterHandler  &prm,
+                 const std::string &section,
+                 const std::string &entry)
       {
         prm.enter_subsection(section);
         const double value = prm.get_double(entry);
@@ -121,11 +123,12 @@ namespace impact_fem
            std::ostream     &log,
            const bool        fine_done)
     {
-      const bool root = Utilities::MPI::this_mpi_process(comm) == 0;
-      const double r  = get_number(prm, "Verification", "Refinement ratio");
+      const bool   root = Utilities::MPI::this_mpi_process(comm) == 0;
+      const double r    = get_number(prm, "Verification", "Refinement ratio");
       AssertThrow(r >= 1.5 && r <= 3,
                   ExcMessage("Verification/Refinement ratio must lie in [1.5, "
-                             "3], got " + as_written(r) + "."));
+                             "3], got " +
+                             as_written(r) + "."));
       prm.enter_subsection("Verification");
       const bool nested = prm.get("Meshes") == "nested";
       prm.leave_subsection();
@@ -151,13 +154,15 @@ namespace impact_fem
       const double g    = get_number(prm, "Mesh", "Growth factor");
       const double across =
         get_number(prm, "Mesh", "Elements across the plate thickness");
-      const double dt   = get_number(prm, "Time integration", "Time step");
-      const double n    = get_number(prm, "Time integration", "Steps per contact time");
+      const double dt = get_number(prm, "Time integration", "Time step");
+      const double n =
+        get_number(prm, "Time integration", "Steps per contact time");
       AssertThrow(dt > 0 || n / (r * r) >= 10,
                   ExcMessage("Verification: the coarsest level would have "
                              "fewer than 10 steps per contact time; raise "
                              "Time integration/Steps per contact time to at "
-                             "least " + as_written(10 * r * r) + "."));
+                             "least " +
+                             as_written(10 * r * r) + "."));
 
       // The entries the levels change, as text, to restore them exactly.
       const std::pair<const char *, const char *> changed[] = {
@@ -190,11 +195,12 @@ namespace impact_fem
         {
           const double      scale = std::pow(r, level);
           const std::string level_directory =
-            level == 0 ? directory :
-                         directory + "/verification/level" + std::to_string(level);
+            level == 0 ?
+              directory :
+              directory + "/verification/level" + std::to_string(level);
           // The level's discretisation: nested levels drop contact
           // refinements of one mesh, remeshed ones scale the size field.
-          const int    level_refinements = refinements - static_cast<int>(level);
+          const int level_refinements = refinements - static_cast<int>(level);
           const double level_hc =
             nested ? hc / std::pow(2., level_refinements) : hc * scale;
           const double level_hmax = nested ? hmax : hmax * scale;
@@ -206,13 +212,17 @@ namespace impact_fem
                   if (nested)
                     {
                       prm.enter_subsection("Mesh");
-                      prm.set("Contact refinements", std::to_string(level_refinements));
+                      prm.set("Contact refinements",
+                              std::to_string(level_refinements));
                       prm.leave_subsection();
                     }
                   else
                     {
                       set_number(prm, "Mesh", "Contact element size", level_hc);
-                      set_number(prm, "Mesh", "Maximum element size", level_hmax);
+                      set_number(prm,
+                                 "Mesh",
+                                 "Maximum element size",
+                                 level_hmax);
                       set_number(prm, "Mesh", "Growth factor", level_g);
                       set_number(prm,
                                  "Mesh",
@@ -220,18 +230,25 @@ namespace impact_fem
                                  std::max(1.0, across / scale));
                     }
                   if (dt > 0)
-                    set_number(prm, "Time integration", "Time step", dt * scale);
+                    set_number(prm,
+                               "Time integration",
+                               "Time step",
+                               dt * scale);
                   else
-                    set_number(prm, "Time integration", "Steps per contact time", n / scale);
+                    set_number(prm,
+                               "Time integration",
+                               "Steps per contact time",
+                               n / scale);
                   prm.enter_subsection("Output");
                   prm.set("Directory", level_directory);
                   prm.leave_subsection();
                 }
               if (root)
                 log << "verification: level " << level
-                    << (nested ? " (contact refinements " +
-                                   std::to_string(level_refinements) + ", step x " :
-                                 std::string(" (sizes and step x "))
+                    << (nested ?
+                          " (contact refinements " +
+                            std::to_string(level_refinements) + ", step x " :
+                          std::string(" (sizes and step x "))
                     << scale << ") -> " << level_directory << std::endl;
               std::unique_ptr<ImpactProblem> problem;
               try
@@ -248,37 +265,44 @@ namespace impact_fem
                 }
               restore();
             }
-      MPI_Barrier(comm);
-          const nlohmann::json summary = read_json(level_directory + "/summary.json");
-          levels.push_back({{"name", level == 0 ? "fine" : level == 1 ? "medium" : "coarse"},
-                            {"directory", level == 0 ? "." :
-                                                       "verification/level" + std::to_string(level)},
-                            {"scale", scale},
-                            {"contact_element_size", level_hc},
-                            {"maximum_element_size", level_hmax},
-                            {"growth_factor", level_g},
-                            {"time_step", summary["time_step"]},
-                            {"cells", summary["cells"]},
-                            {"dofs", summary["dofs"]},
-                            {"steps", summary["steps"]},
-                            {"wall_time", summary["wall_time"]},
-                            {"summary", summary}});
+          MPI_Barrier(comm);
+          const nlohmann::json summary =
+            read_json(level_directory + "/summary.json");
+          levels.push_back(
+            {{"name",
+              level == 0 ? "fine" :
+              level == 1 ? "medium" :
+                           "coarse"},
+             {"directory",
+              level == 0 ? "." : "verification/level" + std::to_string(level)},
+             {"scale", scale},
+             {"contact_element_size", level_hc},
+             {"maximum_element_size", level_hmax},
+             {"growth_factor", level_g},
+             {"time_step", summary["time_step"]},
+             {"cells", summary["cells"]},
+             {"dofs", summary["dofs"]},
+             {"steps", summary["steps"]},
+             {"wall_time", summary["wall_time"]},
+             {"summary", summary}});
         }
       if (!root)
         return;
 
-      nlohmann::json result = {{"format", "impact-verification"},
-                               {"format_version", 1},
-                               {"refinement_ratio", r},
-                               {"meshes", nested ? "nested" : "remeshed"},
-                               {"formal_order", formal_order},
-                               {"levels", levels}};
+      nlohmann::json     result = {{"format", "impact-verification"},
+                                   {"format_version", 1},
+                                   {"refinement_ratio", r},
+                                   {"meshes", nested ? "nested" : "remeshed"},
+                                   {"formal_order", formal_order},
+                                   {"levels", levels}};
       std::ostringstream table;
-      table << "verification (r = " << r << "; GCI of the fine level, Fs = 1.25):\n"
+      table << "verification (r = " << r
+            << "; GCI of the fine level, Fs = 1.25):\n"
             << std::setw(16) << "quantity" << std::setw(16) << "fine"
             << std::setw(16) << "medium" << std::setw(16) << "coarse"
             << std::setw(8) << "order" << std::setw(16) << "extrapolated"
-            << std::setw(12) << "GCI" << "  convergence\n";
+            << std::setw(12) << "GCI"
+            << "  convergence\n";
       for (const auto &[name, unit] : quantities)
         {
           nlohmann::json entry = {{"unit", unit}};
@@ -295,26 +319,31 @@ namespace impact_fem
           entry["coarse"] = number(finite ? f[2] : NAN);
           if (finite)
             {
-              const GridConvergence c = grid_convergence(f[0], f[1], f[2], r, formal_order);
+              const GridConvergence c =
+                grid_convergence(f[0], f[1], f[2], r, formal_order);
               entry["observed_order"]    = number(c.observed_order);
               entry["extrapolated"]      = number(c.extrapolated);
               entry["gci_fine"]          = number(c.gci_relative);
               entry["gci_fine_absolute"] = number(c.gci_absolute);
               entry["convergence"]       = c.convergence;
-              table << std::setprecision(8) << std::setw(16) << name << std::setw(16)
-                    << f[0] << std::setw(16) << f[1] << std::setw(16) << f[2]
-                    << std::setprecision(3) << std::setw(8) << c.observed_order
-                    << std::setprecision(8) << std::setw(16) << c.extrapolated
-                    << std::setprecision(3) << std::setw(11) << c.gci_relative * 100
-                    << "%  " << c.convergence << "\n";
+              table << std::setprecision(8) << std::setw(16) << name
+                    << std::setw(16) << f[0] << std::setw(16) << f[1]
+                    << std::setw(16) << f[2] << std::setprecision(3)
+                    << std::setw(8) << c.observed_order << std::setprecision(8)
+                    << std::setw(16) << c.extrapolated << std::setprecision(3)
+                    << std::setw(11) << c.gci_relative * 100 << "%  "
+                    << c.convergence << "\n";
             }
           else
             {
-              for (const char *key : {"observed_order", "extrapolated", "gci_fine",
+              for (const char *key : {"observed_order",
+                                      "extrapolated",
+                                      "gci_fine",
                                       "gci_fine_absolute"})
                 entry[key] = nullptr;
               entry["convergence"] = "undefined";
-              table << std::setw(16) << name << "  not defined on every level\n";
+              table << std::setw(16) << name
+                    << "  not defined on every level\n";
             }
           result["quantities"][name] = entry;
         }

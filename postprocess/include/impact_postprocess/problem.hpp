@@ -31,7 +31,7 @@ bool is_warning(ProblemKind kind);
 std::ostream& operator<<(std::ostream& out, ProblemKind kind);
 
 struct Problem {
-  std::string source;  ///< the file, run, directory or model concerned ("" if none)
+  std::string source; ///< the file, run, directory or model concerned ("" if none)
   ProblemKind kind;
   std::string message; ///< a sentence naming the problem
 };

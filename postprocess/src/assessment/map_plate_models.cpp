@@ -50,7 +50,8 @@ void add_plate_models(ValidityMap& map, const Report& report, const MapRowReport
     for (std::size_t r = 0; r < map.rows.size(); ++r) {
       MapModelRow model;
       const Report& row_report = rows.reports[r];
-      if (rows.runs[r].empty()) model.missing = "no run at this value";
+      if (rows.runs[r].empty())
+        model.missing = "no run at this value";
       else if (!std::isfinite(thickest))
         model.missing =
             "the runs do not record 'Scenario/Plate thickness', so the plate is not known";
@@ -58,8 +59,8 @@ void add_plate_models(ValidityMap& map, const Report& report, const MapRowReport
       std::ostringstream parameters;
       for (std::size_t i = 0; i < rows.runs[r].size(); ++i) {
         const ReportRun& run = row_report.runs[i];
-        MapCell cell{run.velocity, run.source, run.fem, std::nullopt,
-                     run.uncertainty, {}, run.yields, ""};
+        MapCell cell{run.velocity,    run.source, run.fem,    std::nullopt,
+                     run.uncertainty, {},         run.yields, ""};
         if (model.missing.empty()) {
           const auto at = std::find_if(reference_damping.begin(), reference_damping.end(),
                                        [&](const auto& entry) {
@@ -74,8 +75,10 @@ void add_plate_models(ValidityMap& map, const Report& report, const MapRowReport
             const ThinPlatePrediction prediction = thin_plate_prediction(rows.runs[r][i], b, rigid);
             cell.judged = prediction.quantities;
             cell.missing = prediction.missing;
-            if (parameters.tellp() == 0) parameters << prediction.parameters << "; b = ";
-            else parameters << ", ";
+            if (parameters.tellp() == 0)
+              parameters << prediction.parameters << "; b = ";
+            else
+              parameters << ", ";
             parameters << short_number(b) << " s/m at " << short_number(run.velocity) << " m/s";
           }
         } else {
@@ -90,8 +93,9 @@ void add_plate_models(ValidityMap& map, const Report& report, const MapRowReport
                            with_unit(map.rows[map.reference_row].value, map.unit) +
                            (r == map.reference_row ? ", this row: its e in sample)" : ")");
         for (double tolerance : report.tolerances) {
-          const ToleranceVerdict verdict = tolerance_verdict(
-              row_report, judged, tolerance, {map_quantities.begin(), map_quantities.end()}, "");
+          const ToleranceVerdict verdict =
+              tolerance_verdict(row_report, judged, tolerance,
+                                {map_quantities.begin(), map_quantities.end()}, "");
           for (std::size_t i = 0; i < model.cells.size(); ++i)
             model.cells[i].decisions.push_back(verdict.decisions[i]);
         }

@@ -19,13 +19,14 @@ std::string rows_words(const ValidityMap& map, std::size_t model, std::size_t ba
     if (row.cells.empty()) continue;
     std::size_t inside = 0;
     for (const auto& cell : row.cells) inside += class_index(cell) <= band ? 1 : 0;
-    if (inside == row.cells.size()) full.push_back(r);
+    if (inside == row.cells.size())
+      full.push_back(r);
     else if (inside > 0) {
       std::vector<double> velocities;
       for (const auto& cell : row.cells)
         if (class_index(cell) <= band) velocities.push_back(cell.velocity);
-      partial.push_back(with_unit(map.rows[r].value, map.unit) + " at V = " +
-                        velocity_list(velocities));
+      partial.push_back(with_unit(map.rows[r].value, map.unit) +
+                        " at V = " + velocity_list(velocities));
     }
   }
   const std::string name = short_name(map.parameter);

@@ -31,7 +31,8 @@ constexpr std::size_t loop_points = 80; // per branch
 double median_mass(const std::vector<ReportRun>& runs) {
   std::vector<double> masses;
   for (const auto& run : runs) masses.push_back(run.mass);
-  std::nth_element(masses.begin(), masses.begin() + std::ptrdiff_t(masses.size() / 2), masses.end());
+  std::nth_element(masses.begin(), masses.begin() + std::ptrdiff_t(masses.size() / 2),
+                   masses.end());
   return masses[masses.size() / 2];
 }
 
@@ -79,8 +80,8 @@ LawEvaluator damped(const ContactModel& model, double stiffness, std::vector<dou
 PlasticLawCurve curve_of(std::string key, std::string label, bool fitted, std::string parameters,
                          const LawEvaluator& law, const std::vector<double>& grid, double mass,
                          const std::vector<ReportRun>& runs) {
-  PlasticLawCurve curve{std::move(key), std::move(label), fitted, std::move(parameters), 0,
-                        {}, {}, {}, {}, {}, {}};
+  PlasticLawCurve curve{
+      std::move(key), std::move(label), fitted, std::move(parameters), 0, {}, {}, {}, {}, {}, {}};
   for (double v : grid) {
     curve.velocity.push_back(v);
     LawAt at;
@@ -132,12 +133,12 @@ void add_damped_laws(PlasticLaws& laws, const Calibration& calibration,
           std::vector<std::string> names{reference.parameter_name}, units{reference.parameter_unit};
           names.insert(names.end(), reference.extra_names.begin(), reference.extra_names.end());
           units.insert(units.end(), reference.extra_units.begin(), reference.extra_units.end());
-          PlasticLawCurve curve = curve_of(
-              reference.key, label, false,
-              parameter_text(reference.stiffness, names, units, reference.dissipation),
-              damped(comparison_model(reference.model, fem_runs), reference.stiffness,
-                     reference.dissipation),
-              grid, mass, runs);
+          PlasticLawCurve curve =
+              curve_of(reference.key, label, false,
+                       parameter_text(reference.stiffness, names, units, reference.dissipation),
+                       damped(comparison_model(reference.model, fem_runs), reference.stiffness,
+                              reference.dissipation),
+                       grid, mass, runs);
           curve.damped = true;
           laws.laws.push_back(std::move(curve));
         } catch (const std::exception&) {
@@ -160,12 +161,13 @@ void add_damped_laws(PlasticLaws& laws, const Calibration& calibration,
             names.push_back(extra.name);
             units.push_back(extra.unit);
           }
-          PlasticLawCurve curve = curve_of(
-              std::string(key), label, true,
-              parameter_text(parameters.stiffness.value, names, units, parameters.dissipation()),
-              damped(comparison_model(std::string(key), fem_runs), parameters.stiffness.value,
-                     parameters.dissipation()),
-              grid, mass, runs);
+          PlasticLawCurve curve =
+              curve_of(std::string(key), label, true,
+                       parameter_text(parameters.stiffness.value, names, units,
+                                      parameters.dissipation()),
+                       damped(comparison_model(std::string(key), fem_runs),
+                              parameters.stiffness.value, parameters.dissipation()),
+                       grid, mass, runs);
           curve.free_parameters = parameters.free_parameters();
           curve.damped = true;
           laws.laws.push_back(std::move(curve));
@@ -187,14 +189,21 @@ PlasticLawCurve jackson_green_marghitu_curve(const reduced::SphereFlatContact& c
       return nan;
     }
   };
-  PlasticLawCurve curve{std::string(model_keys::jackson_green_marghitu_material),
-                        "Jackson–Green–Marghitu (e only, no fit)", false,
-                        "V_c = " + short_number(reduced::jackson_green_marghitu_critical_velocity(
-                                       contact, mass)) +
-                            " m/s, eps_y = C(nu) Y / E* = " +
-                            short_number(reduced::jackson_green_marghitu_yield_strain(contact)) +
-                            "; constants as read in one implementation, unconfirmed",
-                        0, {}, {}, {}, {}, {}, {}};
+  PlasticLawCurve curve{
+      std::string(model_keys::jackson_green_marghitu_material),
+      "Jackson–Green–Marghitu (e only, no fit)",
+      false,
+      "V_c = " + short_number(reduced::jackson_green_marghitu_critical_velocity(contact, mass)) +
+          " m/s, eps_y = C(nu) Y / E* = " +
+          short_number(reduced::jackson_green_marghitu_yield_strain(contact)) +
+          "; constants as read in one implementation, unconfirmed",
+      0,
+      {},
+      {},
+      {},
+      {},
+      {},
+      {}};
   for (double v : grid) {
     curve.velocity.push_back(v);
     curve.restitution.push_back(restitution(v, mass));
@@ -218,19 +227,21 @@ std::vector<double> velocity_grid(const std::vector<ReportRun>& runs, double yie
 }
 
 std::string comparison_text(const PlasticLaws& laws, const std::vector<ReportRun>& runs) {
-  std::string text = "The FEM's restitution against the elastic-plastic laws (law / FEM - 1 in "
-                     "e, per run):";
+  std::string text =
+      "The FEM's restitution against the elastic-plastic laws (law / FEM - 1 in "
+      "e, per run):";
   for (const auto& law : laws.laws) {
     text += " " + law.label + ":";
     for (std::size_t i = 0; i < runs.size(); ++i)
-      text += std::string(i ? "," : "") + " " + percent_cell(law.run_restitution[i] /
-                                                             runs[i].fem.restitution - 1) +
-              " at " + short_number(runs[i].velocity) + " m/s";
+      text += std::string(i ? "," : "") + " " +
+              percent_cell(law.run_restitution[i] / runs[i].fem.restitution - 1) + " at " +
+              short_number(runs[i].velocity) + " m/s";
     text += ";";
   }
   text.back() = '.';
-  text += " Where the FEM records its permanent approach, the dent of each law is drawn beside it "
-          "(figure below).";
+  text +=
+      " Where the FEM records its permanent approach, the dent of each law is drawn beside it "
+      "(figure below).";
   return text;
 }
 
@@ -250,22 +261,24 @@ std::optional<PlasticLaws> plastic_laws(const std::vector<FemRun>& fem_runs,
     return std::nullopt;
   const double mass = median_mass(runs);
   PlasticLaws laws;
-  laws.yield_velocity = thornton_yield_velocity(thornton->yield_approach, mass, thornton->stiffness);
-  laws.jackson_green_yield_velocity = reduced::yield_velocity(
-      reduced::yield_pressure(reduced::YieldCriterion::jackson_green, *scenario->yield_strength,
-                              scenario->poisson_ratio),
-      *scenario->contact_modulus, scenario->radius, mass);
+  laws.yield_velocity =
+      thornton_yield_velocity(thornton->yield_approach, mass, thornton->stiffness);
+  laws.jackson_green_yield_velocity =
+      reduced::yield_velocity(reduced::yield_pressure(reduced::YieldCriterion::jackson_green,
+                                                      *scenario->yield_strength,
+                                                      scenario->poisson_ratio),
+                              *scenario->contact_modulus, scenario->radius, mass);
   laws.yield_basis = "m = " + short_number(mass) + " kg, " + scenario->basis;
   const auto grid = velocity_grid(runs, laws.yield_velocity);
 
   const std::string y = short_number(*scenario->yield_strength / 1e9) + " GPa";
-  laws.laws.push_back(curve_of(std::string(model_keys::thornton_material),
-                               "Thornton (p_y = 1.6 Y, no fit)", false,
-                               "c = " + cell(thornton->stiffness) + " N/m^1.5, x_y = " +
-                                   cell(thornton->yield_approach) + " m (Y = " + y + ")",
-                               rate_independent(plastic_model(std::string(model_keys::thornton)),
-                                                thornton->stiffness, thornton->yield_approach),
-                               grid, mass, runs));
+  laws.laws.push_back(
+      curve_of(std::string(model_keys::thornton_material), "Thornton (p_y = 1.6 Y, no fit)", false,
+               "c = " + cell(thornton->stiffness) +
+                   " N/m^1.5, x_y = " + cell(thornton->yield_approach) + " m (Y = " + y + ")",
+               rate_independent(plastic_model(std::string(model_keys::thornton)),
+                                thornton->stiffness, thornton->yield_approach),
+               grid, mass, runs));
   if (jackson_green)
     laws.laws.push_back(curve_of(std::string(model_keys::jackson_green_material),
                                  "Jackson–Green (Y of the material, no fit)", false,
@@ -273,10 +286,10 @@ std::optional<PlasticLaws> plastic_laws(const std::vector<FemRun>& fem_runs,
                                  rate_independent(jackson_green->model, jackson_green->stiffness,
                                                   jackson_green->yield_strength),
                                  grid, mass, runs));
-  laws.laws.push_back(jackson_green_marghitu_curve(
-      {scenario->radius, *scenario->contact_modulus, *scenario->yield_strength,
-       scenario->poisson_ratio},
-      grid, mass, runs));
+  laws.laws.push_back(
+      jackson_green_marghitu_curve({scenario->radius, *scenario->contact_modulus,
+                                    *scenario->yield_strength, scenario->poisson_ratio},
+                                   grid, mass, runs));
   if (calibration)
     for (const auto& [key, label] :
          {std::pair{model_keys::thornton, "Thornton (fitted)"},
@@ -284,14 +297,14 @@ std::optional<PlasticLaws> plastic_laws(const std::vector<FemRun>& fem_runs,
       if (const CampaignModelFit* fit = calibration->campaign.find(std::string(key)))
         if (fit->fit.converged) try {
             const ModelFit& parameters = fit->fit;
-            PlasticLawCurve curve = curve_of(
-                std::string(key), label, true,
-                "c = " + cell(parameters.stiffness.value) + " N/m^1.5, " +
-                    parameters.parameter_name + " = " + cell(parameters.parameter.value) + " " +
-                    parameters.parameter_unit,
-                rate_independent(comparison_model(std::string(key), fem_runs),
-                                 parameters.stiffness.value, parameters.parameter.value),
-                grid, mass, runs);
+            PlasticLawCurve curve =
+                curve_of(std::string(key), label, true,
+                         "c = " + cell(parameters.stiffness.value) + " N/m^1.5, " +
+                             parameters.parameter_name + " = " + cell(parameters.parameter.value) +
+                             " " + parameters.parameter_unit,
+                         rate_independent(comparison_model(std::string(key), fem_runs),
+                                          parameters.stiffness.value, parameters.parameter.value),
+                         grid, mass, runs);
             curve.free_parameters = parameters.free_parameters();
             laws.laws.push_back(std::move(curve));
           } catch (const std::exception&) {

@@ -38,7 +38,8 @@ public:
 const json& member(const json& object, const std::string& key, const std::string& path) {
   if (!object.is_object()) throw BadResult(path + " is not an object");
   const auto found = object.find(key);
-  if (found == object.end()) throw BadResult((path.empty() ? "" : path + ".") + key + " is missing");
+  if (found == object.end())
+    throw BadResult((path.empty() ? "" : path + ".") + key + " is missing");
   return *found;
 }
 
@@ -82,10 +83,8 @@ SimulatorResult read_result(const fs::path& file) {
       throw BadResult(std::string("is not JSON (") + error.what() + ")");
     }
   }
-  if (!document.is_object() || !document.contains("format") ||
-      document["format"] != result_format)
-    throw BadResult("is not a result file of format '" + result_format +
-                    "' (the key 'format' is " +
+  if (!document.is_object() || !document.contains("format") || document["format"] != result_format)
+    throw BadResult("is not a result file of format '" + result_format + "' (the key 'format' is " +
                     (document.is_object() && document.contains("format") ? document["format"].dump()
                                                                          : std::string("missing")) +
                     ")");
@@ -106,22 +105,26 @@ SimulatorResult read_result(const fs::path& file) {
   if (!runs.is_array() || runs.empty()) throw BadResult("runs is not a non-empty list");
   for (std::size_t i = 0; i < runs.size(); ++i) {
     const std::string path = "runs[" + std::to_string(i) + "]";
-    result.runs.push_back({number(runs[i], "impact_velocity", path), impact_of(runs[i], "tool", path),
-                           impact_of(runs[i], "reduced_model", path), impact_of(runs[i], "fem", path)});
+    result.runs.push_back(
+        {number(runs[i], "impact_velocity", path), impact_of(runs[i], "tool", path),
+         impact_of(runs[i], "reduced_model", path), impact_of(runs[i], "fem", path)});
   }
   std::sort(result.runs.begin(), result.runs.end(),
-            [](const SimulatorRunAt& a, const SimulatorRunAt& b) { return a.velocity < b.velocity; });
+            [](const SimulatorRunAt& a, const SimulatorRunAt& b) {
+              return a.velocity < b.velocity;
+            });
   return result;
 }
-
 
 // Why the file does not belong to this report's campaign, or "".
 std::string other_campaign(const Report& report, const SimulatorResult& result) {
   for (const auto& run : result.runs) {
     const auto index = report_run(report, run.velocity);
     if (!index)
-      return "V = " + short_number(run.velocity) + " m/s is not a velocity of this report's "
-             "campaign (" + report.campaign_source + ")";
+      return "V = " + short_number(run.velocity) +
+             " m/s is not a velocity of this report's "
+             "campaign (" +
+             report.campaign_source + ")";
     const ImpactFigures& fem = report.runs[*index].fem;
     for (Quantity quantity : {Quantity::restitution, Quantity::contact_time, Quantity::force_max}) {
       // The FEM numbers of a result file are the calibration's, passed through JSON files
@@ -165,8 +168,9 @@ void add_simulators(Report& report, const fs::path& directory) {
   };
   std::error_code error;
   if (!fs::is_directory(directory, error)) {
-    problem(directory.string(), "the simulators directory (--simulators) does not exist: the "
-                                "section 'In your simulator' has no results");
+    problem(directory.string(),
+            "the simulators directory (--simulators) does not exist: the "
+            "section 'In your simulator' has no results");
     return;
   }
   std::vector<fs::path> files;
@@ -174,9 +178,10 @@ void add_simulators(Report& report, const fs::path& directory) {
     if (item.is_regular_file() && item.path().extension() == ".json") files.push_back(item.path());
   std::sort(files.begin(), files.end());
   if (files.empty()) {
-    problem(directory.string(), "the simulators directory (--simulators) holds no result file "
-                                "(*.json of format '" + result_format +
-                                "'; tests/consumers/run_in_simulators.sh writes them)");
+    problem(directory.string(),
+            "the simulators directory (--simulators) holds no result file "
+            "(*.json of format '" +
+                result_format + "'; tests/consumers/run_in_simulators.sh writes them)");
     return;
   }
   for (const auto& file : files) {
@@ -189,14 +194,17 @@ void add_simulators(Report& report, const fs::path& directory) {
       continue;
     }
     if (const std::string why = other_campaign(report, result); !why.empty()) {
-      problem(file.string(), "the simulator result was made from another campaign or "
-                             "calibration: " + why + "; left out of 'In your simulator'");
+      problem(file.string(),
+              "the simulator result was made from another campaign or "
+              "calibration: " +
+                  why + "; left out of 'In your simulator'");
       continue;
     }
     std::vector<std::optional<ImpactFigures>> judged(report.runs.size());
     for (const auto& run : result.runs) judged[*report_run(report, run.velocity)] = run.tool;
     for (double tolerance : report.tolerances)
-      result.against_fem.push_back(tolerance_verdict(report, judged, tolerance, simulator_judged_quantities,
+      result.against_fem.push_back(tolerance_verdict(report, judged, tolerance,
+                                                     simulator_judged_quantities,
                                                      " in " + simulator_tool_name(result.tool)));
     report.simulators.push_back(std::move(result));
   }
@@ -205,6 +213,5 @@ void add_simulators(Report& report, const fs::path& directory) {
                      return tool_rank(a.tool) < tool_rank(b.tool);
                    });
 }
-
 
 } // namespace impact::postprocess::detail

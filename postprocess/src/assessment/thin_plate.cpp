@@ -21,14 +21,17 @@ namespace impact::postprocess::detail {
 ThinPlatePrediction thin_plate_prediction(const FemRun& run, double damping, bool rigid) {
   ThinPlatePrediction prediction;
   const ScenarioMaterials materials = scenario_materials({run});
-  const auto youngs_modulus = material_constant(run, fem_format::plate_body, fem_format::youngs_modulus);
-  const auto poisson_ratio = material_constant(run, fem_format::plate_body, fem_format::poissons_ratio);
+  const auto youngs_modulus =
+      material_constant(run, fem_format::plate_body, fem_format::youngs_modulus);
+  const auto poisson_ratio =
+      material_constant(run, fem_format::plate_body, fem_format::poissons_ratio);
   const auto density = material_constant(run, fem_format::plate_body, fem_format::density);
   const auto thickness = text_number(run, fem_format::plate_thickness.path);
   if (!materials.hertz_from_runs || !youngs_modulus || !poisson_ratio || !density || !thickness) {
-    prediction.missing = "the run does not record the plate's material (Plate/<Model>/Young's "
-                         "modulus, Poisson's ratio, Density), its thickness (Scenario/Plate "
-                         "thickness) or the sphere's (Sphere/..., Scenario/Sphere radius)";
+    prediction.missing =
+        "the run does not record the plate's material (Plate/<Model>/Young's "
+        "modulus, Poisson's ratio, Density), its thickness (Scenario/Plate "
+        "thickness) or the sphere's (Sphere/..., Scenario/Sphere radius)";
     return prediction;
   }
   try {
@@ -42,7 +45,8 @@ ThinPlatePrediction thin_plate_prediction(const FemRun& run, double damping, boo
     std::ostringstream text;
     text.precision(4);
     text << "c = " << materials.hertz_stiffness << " N/m^1.5, n = 1.5, ";
-    if (rigid) text << "rigid support";
+    if (rigid)
+      text << "rigid support";
     else
       text << "Z = " << impedance << " N s/m, lambda = " << result.zener_lambda << " at "
            << run.impact_velocity << " m/s";
@@ -71,9 +75,10 @@ std::optional<double> thin_plate_damping(const FemRun& reference, bool rigid) {
     if (high * reference.impact_velocity > 1e3) return std::nullopt;
   }
   std::uintmax_t iterations = 100;
-  const auto root = boost::math::tools::toms748_solve(
-      [&](double b) { return restitution(b) - target; }, 0.0, high, elastic - target,
-      restitution(high) - target, boost::math::tools::eps_tolerance<double>(40), iterations);
+  const auto root =
+      boost::math::tools::toms748_solve([&](double b) { return restitution(b) - target; }, 0.0,
+                                        high, elastic - target, restitution(high) - target,
+                                        boost::math::tools::eps_tolerance<double>(40), iterations);
   return 0.5 * (root.first + root.second);
 }
 

@@ -27,9 +27,12 @@ std::size_t class_index_of(const MapCell& cell) {
   for (std::size_t k = 0; k < bands; ++k)
     if (cell.decisions[k] == Decision::within) return k;
   switch (cell.decisions.back()) {
-  case Decision::outside: return bands;
-  case Decision::undecided: return bands + 1;
-  default: return bands + 2;
+    case Decision::outside:
+      return bands;
+    case Decision::undecided:
+      return bands + 1;
+    default:
+      return bands + 2;
   }
 }
 
@@ -41,7 +44,7 @@ MapModelRow row_model(const Report& row, std::string_view key) {
   const ModelVerdict* verdict = row.verdict(key);
   if (!model || !verdict) {
     result.missing = key == model_keys::best_law ? "the row's calibration has no comparison law"
-                                       : "the row's calibration has no such model";
+                                                 : "the row's calibration has no such model";
   } else if (key == model_keys::calibrated && !row.verdict_available) {
     result.missing = row.cause;
   }
@@ -51,7 +54,8 @@ MapModelRow row_model(const Report& row, std::string_view key) {
   }
   for (std::size_t i = 0; i < row.runs.size(); ++i) {
     const ReportRun& run = row.runs[i];
-    MapCell cell{run.velocity, run.source, run.fem, std::nullopt, run.uncertainty, {}, run.yields, ""};
+    MapCell cell{run.velocity,    run.source, run.fem,    std::nullopt,
+                 run.uncertainty, {},         run.yields, ""};
     if (model && verdict && result.missing.empty()) {
       cell.judged = model->runs[i].judged();
       cell.missing = model->runs[i].missing;
@@ -66,8 +70,9 @@ MapModelRow row_model(const Report& row, std::string_view key) {
     std::vector<std::optional<ImpactFigures>> judged;
     for (const auto& cell : result.cells) judged.push_back(cell.judged);
     for (const auto& band : verdict->tolerances) {
-      const ToleranceVerdict decided = tolerance_verdict(
-          row, judged, band.tolerance, {map_quantities.begin(), map_quantities.end()}, "");
+      const ToleranceVerdict decided =
+          tolerance_verdict(row, judged, band.tolerance,
+                            {map_quantities.begin(), map_quantities.end()}, "");
       for (std::size_t i = 0; i < result.cells.size(); ++i)
         result.cells[i].decisions.push_back(decided.decisions[i]);
     }
@@ -162,8 +167,8 @@ MapRowReports judged_rows(ValidityMap& map, const Report& report,
       ReportOptions row_options;
       row_options.tolerances = report.tolerances;
       row_report = build_report(row_campaign, calibration, {},
-                                report.campaign_source + " (" + runs.name + ")",
-                                "row calibration", row_options);
+                                report.campaign_source + " (" + runs.name + ")", "row calibration",
+                                row_options);
       if (calibration)
         for (const auto& problem : calibration->problems)
           row.calibration_problems +=
@@ -213,7 +218,13 @@ void add_unread_runs(ValidityMap& map, const Campaign& campaign, const MapRowRep
           model.missing = "no FEM run of this value has a result (each run's reason below)";
         FemUncertainty unknown;
         for (auto& u : unknown) u = {std::numeric_limits<double>::quiet_NaN(), "no FEM result"};
-        MapCell cell{v, problem->source, std::nullopt, std::nullopt, unknown, {}, false,
+        MapCell cell{v,
+                     problem->source,
+                     std::nullopt,
+                     std::nullopt,
+                     unknown,
+                     {},
+                     false,
                      "the FEM run has no result: " + problem->message};
         const auto at = std::find_if(model.cells.begin(), model.cells.end(),
                                      [&](const MapCell& c) { return c.velocity > v; });
@@ -224,7 +235,9 @@ void add_unread_runs(ValidityMap& map, const Campaign& campaign, const MapRowRep
 
 } // namespace
 
-std::size_t class_index(const MapCell& cell) { return class_index_of(cell); }
+std::size_t class_index(const MapCell& cell) {
+  return class_index_of(cell);
+}
 
 void add_validity_map(Report& report, const Campaign& campaign, const ReportOptions& options) {
   if (campaign.axes.size() <= 1) return; // a velocity campaign: the report as before
@@ -295,7 +308,9 @@ std::string map_class_name(const MapCell& cell, const std::vector<double>& toler
   return "not evaluated";
 }
 
-std::size_t map_class(const MapCell& cell) { return detail::class_index(cell); }
+std::size_t map_class(const MapCell& cell) {
+  return detail::class_index(cell);
+}
 
 double map_uncertainty(const MapCell& cell) {
   double largest = std::numeric_limits<double>::quiet_NaN();
@@ -311,8 +326,10 @@ std::optional<std::pair<Campaign, std::string>> map_detail_row(const Campaign& c
   const SweepAxis* other = nullptr;
   bool has_velocity = false;
   for (const auto& axis : campaign.axes) {
-    if (axis.parameter == velocity_axis) has_velocity = true;
-    else other = &axis;
+    if (axis.parameter == velocity_axis)
+      has_velocity = true;
+    else
+      other = &axis;
   }
   if (!has_velocity || !other || other->values.empty()) return std::nullopt;
   // The value of the row: that of the run with the thickest plate, else the first.
@@ -334,9 +351,9 @@ std::optional<std::pair<Campaign, std::string>> map_detail_row(const Campaign& c
   }
   for (const auto& problem : campaign.problems) row.problems.push_back(problem);
   const std::string unit(fem_format::parameter_unit(other->parameter));
-  return std::pair<Campaign, std::string>{
-      std::move(row), detail::short_name(other->parameter) + " = " + chosen->text +
-                          (unit.empty() ? "" : " " + unit)};
+  return std::pair<Campaign, std::string>{std::move(row), detail::short_name(other->parameter) +
+                                                              " = " + chosen->text +
+                                                              (unit.empty() ? "" : " " + unit)};
 }
 
 } // namespace impact::postprocess

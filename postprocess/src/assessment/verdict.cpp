@@ -26,13 +26,15 @@ std::string format(double value, int digits = 4) {
 
 } // namespace
 
-std::string band_name(double tolerance) { return format(tolerance * 100) + " %"; }
+std::string band_name(double tolerance) {
+  return format(tolerance * 100) + " %";
+}
 
 // Within when |error| + U <= tolerance for every quantity judged, outside when
 // |error| - U > tolerance for one, not decided in between (U: the FEM's uncertainty of the
 // quantity, 0 where it is not known), unknown without a prediction.
-Decision decide(const std::optional<ImpactFigures>& judged, const ReportRun& run,
-                double tolerance, const std::vector<Quantity>& quantities) {
+Decision decide(const std::optional<ImpactFigures>& judged, const ReportRun& run, double tolerance,
+                const std::vector<Quantity>& quantities) {
   if (!judged) return Decision::unknown;
   bool undecided = false;
   for (Quantity quantity : quantities) {
@@ -84,8 +86,8 @@ ToleranceVerdict tolerance_verdict(const Report& report,
     verdict.range = std::array<double, 2>{low, high};
     text = "Within " + band + ": " + (best_length == count ? "over the whole tested range, " : "") +
            "V = " + (low == high ? format(low) : format(low) + " to " + format(high)) + " m/s" +
-           basis + " (" +
-           std::to_string(best_length) + " of " + std::to_string(count) + " tested velocities).";
+           basis + " (" + std::to_string(best_length) + " of " + std::to_string(count) +
+           " tested velocities).";
   }
   if (!outside.empty())
     text += " Outside " + band + " at V = " + velocity_list(outside) +
@@ -127,9 +129,9 @@ std::string range_words(const Report& report, const ModelVerdict& verdict) {
     if (loose.decisions[i] == Decision::within) within.push_back(report.runs[i].velocity);
     if (loose.decisions[i] == Decision::undecided) undecided.push_back(report.runs[i].velocity);
   }
-  std::string text = "within " + band_name(loose.tolerance) + " " +
-                     (within.empty() ? std::string("at no tested velocity")
-                                     : "at V = " + velocity_list(within));
+  std::string text =
+      "within " + band_name(loose.tolerance) + " " +
+      (within.empty() ? std::string("at no tested velocity") : "at V = " + velocity_list(within));
   if (!undecided.empty()) text += ", not decided at V = " + velocity_list(undecided);
   return text;
 }
@@ -148,17 +150,18 @@ std::string summary_of(const Report& report) {
   std::string text = "Summary: the calibrated Hunt–Crossley model (constant b) is " +
                      range_words(report, *verdict) + " (" +
                      (calibrated.out_of_sample ? "out of sample" : "in sample") +
-                     "); its energy loss is off by " + percent_cell(low) + " to " + percent_cell(high) + ".";
+                     "); its energy loss is off by " + percent_cell(low) + " to " +
+                     percent_cell(high) + ".";
   const auto& ranking = report.calibration->campaign.ranking;
   if (!ranking.empty()) {
     const RankedModel& best = ranking.front();
     const ReportModel* shown = nullptr;
     for (const auto& model : report.models)
       if (model.calibration_key == best.key) shown = &model;
-    text += " Ranked first by " +
-            std::string(best.out_of_sample ? "out-of-sample" : "in-sample") + " error: " +
-            (shown ? shown->label : best.key) + " (" + std::to_string(best.free_parameters) +
-            " free parameters, RMS error " + unsigned_percent(best.score) + ")";
+    text += " Ranked first by " + std::string(best.out_of_sample ? "out-of-sample" : "in-sample") +
+            " error: " + (shown ? shown->label : best.key) + " (" +
+            std::to_string(best.free_parameters) + " free parameters, RMS error " +
+            unsigned_percent(best.score) + ")";
     if (shown && report.verdict(shown->key))
       text += ", " + range_words(report, *report.verdict(shown->key));
     text += ".";
@@ -166,7 +169,8 @@ std::string summary_of(const Report& report) {
   bool undecided = false;
   for (const auto& entry : report.verdicts)
     for (const auto& band : entry.tolerances)
-      for (Decision decision : band.decisions) undecided = undecided || decision == Decision::undecided;
+      for (Decision decision : band.decisions)
+        undecided = undecided || decision == Decision::undecided;
   bool all_verified = !report.runs.empty();
   for (const auto& run : report.runs) all_verified = all_verified && run.record.verification;
   if (undecided)
@@ -188,7 +192,9 @@ std::string summary_of(const Report& report) {
   if (report.plastic_laws) text += " " + report.family_text;
   if (report.plasticity.first_yielding_velocity)
     text += " Above " +
-            format(report.plasticity.onset_estimate.value_or(*report.plasticity.first_yielding_velocity), 3) +
+            format(report.plasticity.onset_estimate.value_or(
+                       *report.plasticity.first_yielding_velocity),
+                   3) +
             " m/s the FEM exceeds the yield strength: there no viscoelastic model, reduced or "
             "FEM, is valid.";
   return text;
@@ -218,8 +224,8 @@ std::string cause_of(const Report& report, const ReportModel& model) {
     cause << "The calibrated Hunt–Crossley model holds within " << band_name(tight)
           << " at every tested velocity (" << basis << "); the largest error is "
           << percent_cell(error(worst_run, worst_quantity)) << " ("
-          << quantity_words(worst_quantity) << " at V = "
-          << format(report.runs[worst_run].velocity) << " m/s).";
+          << quantity_words(worst_quantity) << " at V = " << format(report.runs[worst_run].velocity)
+          << " m/s).";
     return cause.str();
   }
   Quantity first = verdict_quantities[0];
@@ -240,14 +246,14 @@ std::string cause_of(const Report& report, const ReportModel& model) {
     }
   }
   cause << "The " << quantity_words(first) << " (" << quantity_symbol(first)
-        << ") breaks first: " << basis << " it is within " << band_name(tight) << " at "
-        << fewest << " of " << count << " velocities, with errors";
+        << ") breaks first: " << basis << " it is within " << band_name(tight) << " at " << fewest
+        << " of " << count << " velocities, with errors";
   for (std::size_t i = 0; i < count; ++i)
     cause << (i ? "," : "") << " " << percent_cell(error(i, first)) << " at "
           << format(report.runs[i].velocity) << " m/s";
-  cause << ". The largest error of all is " << percent_cell(error(worst_run, worst_quantity)) << " ("
-        << quantity_words(worst_quantity) << " at V = "
-        << format(report.runs[worst_run].velocity) << " m/s).";
+  cause << ". The largest error of all is " << percent_cell(error(worst_run, worst_quantity))
+        << " (" << quantity_words(worst_quantity)
+        << " at V = " << format(report.runs[worst_run].velocity) << " m/s).";
   const bool low_end = worst_run == 0, high_end = worst_run + 1 == count;
   if (low_end || high_end)
     cause << " The errors grow towards the " << (low_end ? "lowest" : "highest")
@@ -280,11 +286,10 @@ std::string damping_trend(const std::vector<ReportRun>& runs) {
   const double change = slope * (v.back() - v.front()) / mb;
   const auto [low, high] = std::minmax_element(b.begin(), b.end());
   std::ostringstream text;
-  text << "Per-run b from the restitution: " << format(b.front()) << " s/m at "
-       << format(v.front()) << " m/s to " << format(b.back()) << " s/m at " << format(v.back())
-       << " m/s (range " << format(*low) << " to " << format(*high)
-       << " s/m); the least-squares line changes by " << percent_cell(change)
-       << " of the mean over the tested range. ";
+  text << "Per-run b from the restitution: " << format(b.front()) << " s/m at " << format(v.front())
+       << " m/s to " << format(b.back()) << " s/m at " << format(v.back()) << " m/s (range "
+       << format(*low) << " to " << format(*high) << " s/m); the least-squares line changes by "
+       << percent_cell(change) << " of the mean over the tested range. ";
   if (std::abs(change) <= 0.02 && (*high - *low) <= 0.04 * mb)
     text << "b is constant within 2 %: the dissipation has the velocity dependence of "
             "Hunt–Crossley (constant b).";
@@ -292,8 +297,9 @@ std::string damping_trend(const std::vector<ReportRun>& runs) {
     text << "b " << (change > 0 ? "rises" : "falls")
          << " with V: one constant b cannot give the FEM restitution at every velocity, so the "
             "FEM dissipation is not of Hunt–Crossley's form over this range"
-         << (change > 0 ? "" : " (a falling b means e decreases more slowly with V than "
-                               "Hunt–Crossley predicts)")
+         << (change > 0 ? ""
+                        : " (a falling b means e decreases more slowly with V than "
+                          "Hunt–Crossley predicts)")
          << ".";
   return text.str();
 }
@@ -307,22 +313,23 @@ std::string hertz_offsets(const Report& report) {
     return fit.converged ? std::string() : std::string(" (not converged)");
   };
   const double c = hc.stiffness.value, n = hc.exponent.value, hertz = report.hertz_stiffness;
-  std::string note = "Offsets of the calibrated elastic part from Hertz (c_Hertz = " +
-                     format(hertz, 5) + " N/m^1.5): n - 3/2 = " + (n >= 1.5 ? "+" : "") +
-                     format(n - 1.5, 3) + " (free fit of c, n, b: n = " + format(n, 6) +
-                     not_converged(hc) + ")";
+  std::string note =
+      "Offsets of the calibrated elastic part from Hertz (c_Hertz = " + format(hertz, 5) +
+      " N/m^1.5): n - 3/2 = " + (n >= 1.5 ? "+" : "") + format(n - 1.5, 3) +
+      " (free fit of c, n, b: n = " + format(n, 6) + not_converged(hc) + ")";
   if (campaign.hunt_crossley_hertz_exponent) {
     const ModelFit& fixed = campaign.hunt_crossley_hertz_exponent->fit;
     const double c_fixed = fixed.stiffness.value;
     note += "; c / c_Hertz - 1 = " + percent_cell(c_fixed / hertz - 1) +
             " (fit with n fixed at 3/2, c and b free: c = " + format(c_fixed, 6) + " N/m^1.5" +
-            not_converged(fixed) + "); for information, the free fit's c / c_Hertz - 1 = " +
-            percent_cell(c / hertz - 1) + " (c = " + format(c, 6) +
+            not_converged(fixed) +
+            "); for information, the free fit's c / c_Hertz - 1 = " + percent_cell(c / hertz - 1) +
+            " (c = " + format(c, 6) +
             " N/m^n at the fitted n: its unit depends on n, so it is not comparable with "
             "c_Hertz).";
   } else {
-    note += "; the free fit's c / c_Hertz - 1 = " + percent_cell(c / hertz - 1) + " (c = " +
-            format(c, 6) +
+    note += "; the free fit's c / c_Hertz - 1 = " + percent_cell(c / hertz - 1) +
+            " (c = " + format(c, 6) +
             " N/m^n: its unit depends on n, so this offset means most when n is close to 3/2; "
             "the calibration has no fit with n fixed at 3/2).";
   }
@@ -339,17 +346,19 @@ PlasticityCheck plastic_material_check(const std::vector<ReportRun>& runs,
     check.recorded = check.recorded || (run.record.yield_strength && run.record.max_von_mises);
     if (!first_yielding && run.record.yields.value_or(false)) first_yielding = &run;
   }
-  std::string text = "The FEM's material is elastic-plastic (a body with 'Material model = "
-                     "elastic-plastic', J2 plasticity): the FEM itself yields";
+  std::string text =
+      "The FEM's material is elastic-plastic (a body with 'Material model = "
+      "elastic-plastic', J2 plasticity): the FEM itself yields";
   if (first_yielding)
     text += " (from V = " + format(first_yielding->velocity) + " m/s on, by its own record)";
   if (laws)
     text += "; the material's yield velocity is V_y = " + format(laws->yield_velocity, 4) +
             " m/s (Johnson's p_y = 1.6 Y; " + format(laws->jackson_green_yield_velocity, 4) +
             " m/s with Jackson–Green's p_y = C(nu) Y)";
-  text += ". It stays valid above yield, so no velocity is flagged: there the viscoelastic "
-          "laws are compared with a plastic FEM, and the elastic-plastic laws (Thornton, "
-          "Jackson–Green; section Elastic-plastic laws) are the ones built for it.";
+  text +=
+      ". It stays valid above yield, so no velocity is flagged: there the viscoelastic "
+      "laws are compared with a plastic FEM, and the elastic-plastic laws (Thornton, "
+      "Jackson–Green; section Elastic-plastic laws) are the ones built for it.";
   check.text = text;
   return check;
 }
@@ -368,17 +377,19 @@ PlasticityCheck plasticity_check(const std::vector<ReportRun>& runs) {
     }
   }
   if (!check.recorded) {
-    check.text = "No yield strength is recorded with the stresses (Sphere/Yield strength, "
-                 "Plate/Yield strength of impact-fem): whether the viscoelastic model itself "
-                 "holds (no plasticity) is not checked.";
+    check.text =
+        "No yield strength is recorded with the stresses (Sphere/Yield strength, "
+        "Plate/Yield strength of impact-fem): whether the viscoelastic model itself "
+        "holds (no plasticity) is not checked.";
     return check;
   }
   if (!first_yielding) {
-    check.text = "The FEM stays below the yield strength at every tested velocity (largest von "
-                 "Mises stress " +
-                 format(runs.back().record.max_von_mises.value_or(nan) / 1e9, 3) +
-                 " GPa against " + format(runs.back().record.yield_strength.value_or(nan) / 1e9, 3) +
-                 " GPa): the viscoelastic model holds over the whole range.";
+    check.text =
+        "The FEM stays below the yield strength at every tested velocity (largest von "
+        "Mises stress " +
+        format(runs.back().record.max_von_mises.value_or(nan) / 1e9, 3) + " GPa against " +
+        format(runs.back().record.yield_strength.value_or(nan) / 1e9, 3) +
+        " GPa): the viscoelastic model holds over the whole range.";
     return check;
   }
   check.first_yielding_velocity = first_yielding->velocity;
@@ -396,14 +407,15 @@ PlasticityCheck plasticity_check(const std::vector<ReportRun>& runs) {
   } else {
     // Hertz: the peak pressure, and with it the von Mises stress, grows as V^(2/5).
     check.onset_estimate = first_yielding->velocity * std::pow(yield / stress, 2.5);
-    onset = "; every tested velocity yields, and by the Hertz scaling of the stress "
-            "(sigma ~ V^(2/5)) the onset lies near " +
-            format(*check.onset_estimate, 3) + " m/s";
+    onset =
+        "; every tested velocity yields, and by the Hertz scaling of the stress "
+        "(sigma ~ V^(2/5)) the onset lies near " +
+        format(*check.onset_estimate, 3) + " m/s";
   }
   check.text = "The FEM exceeds the yield strength (" + format(yield / 1e9, 3) + " GPa, " +
-               first_yielding->record.yield_source + ") from V = " +
-               format(first_yielding->velocity) + " m/s on (peak von Mises stress " +
-               format(stress / 1e9, 3) + " GPa there" + onset +
+               first_yielding->record.yield_source +
+               ") from V = " + format(first_yielding->velocity) +
+               " m/s on (peak von Mises stress " + format(stress / 1e9, 3) + " GPa there" + onset +
                "): from there on the bodies would yield and the viscoelastic model itself is "
                "not valid, so no reduced model may be trusted there whatever its agreement with "
                "this FEM. Those velocities are marked (yields) in every table.";
@@ -421,10 +433,11 @@ std::string uncertainty_summary(const std::vector<ReportRun>& runs) {
       oscillation_high = std::max(oscillation_high, oscillation);
     }
   }
-  std::string text = "The FEM's numerical uncertainty enters every decision: a velocity is "
-                     "within a band only if each error plus the FEM's uncertainty of that "
-                     "quantity is, outside only if an error minus it is beyond the band, and "
-                     "not decided otherwise. ";
+  std::string text =
+      "The FEM's numerical uncertainty enters every decision: a velocity is "
+      "within a band only if each error plus the FEM's uncertainty of that "
+      "quantity is, outside only if an error minus it is beyond the band, and "
+      "not decided otherwise. ";
   if (verified)
     text += "Verified runs (verification.json) use the grid convergence index of each quantity. ";
   if (unverified) {
@@ -451,39 +464,43 @@ void add_verdict(Report& report) {
     velocities.push_back(run.velocity);
     restitutions.push_back(run.fem.restitution);
   }
-  report.trend = fit_restitution_trend(velocities, restitutions,
-                                       report.calibration ? report.calibration->confidence_level
-                                                          : 0.95);
+  report.trend =
+      fit_restitution_trend(velocities, restitutions,
+                            report.calibration ? report.calibration->confidence_level : 0.95);
   if (report.trend)
     report.trend_text =
         "Velocity trend of the FEM's energy loss: 1 - e ∝ V^p with p = " +
         format(report.trend->exponent, 3) + " [" + format(report.trend->lower, 3) + ", " +
         format(report.trend->upper, 3) + "] (" + format(report.trend->level * 100, 3) +
-        " % interval, " + std::to_string(report.trend->points) + " runs): " +
-        trend_family(*report.trend) + "." +
+        " % interval, " + std::to_string(report.trend->points) +
+        " runs): " + trend_family(*report.trend) + "." +
         (report.plastic_laws ? " For an elastic-plastic FEM this one slope over every run mixes "
                                "the elastic and the plastic range; the family ranges (\"Which "
                                "family the FEM follows\") say which family holds where."
                              : "");
   else
-    report.trend_text = "Velocity trend of the FEM's energy loss: not fitted (it needs three "
-                        "runs with 0 < e < 1 at two or more velocities).";
-  const bool plastic_material = std::any_of(report.runs.begin(), report.runs.end(),
-                                            [](const ReportRun& run) { return run.record.plastic_material; });
+    report.trend_text =
+        "Velocity trend of the FEM's energy loss: not fitted (it needs three "
+        "runs with 0 < e < 1 at two or more velocities).";
+  const bool plastic_material =
+      std::any_of(report.runs.begin(), report.runs.end(),
+                  [](const ReportRun& run) { return run.record.plastic_material; });
   report.plasticity = plastic_material ? plastic_material_check(report.runs, report.plastic_laws)
                                        : plasticity_check(report.runs);
   const std::optional<double> yield_velocity =
-      report.plastic_laws ? std::optional<double>(report.plastic_laws->yield_velocity) : std::nullopt;
+      report.plastic_laws ? std::optional<double>(report.plastic_laws->yield_velocity)
+                          : std::nullopt;
   // The plastic family's reference over the tested range: the laws from the material (the
   // fitted ones are fits to this FEM).
   std::vector<PlasticReference> plastic_references;
   if (report.plastic_laws)
     for (const auto& law : report.plastic_laws->laws)
-      if (!law.fitted && !law.damped) plastic_references.push_back({law.label, law.run_restitution});
-  report.family_ranges = family_ranges(velocities, restitutions, yield_velocity,
-                                       report.calibration ? report.calibration->confidence_level
-                                                          : 0.95,
-                                       plastic_references);
+      if (!law.fitted && !law.damped)
+        plastic_references.push_back({law.label, law.run_restitution});
+  report.family_ranges =
+      family_ranges(velocities, restitutions, yield_velocity,
+                    report.calibration ? report.calibration->confidence_level : 0.95,
+                    plastic_references);
   report.family_text = family_ranges_text(report.family_ranges, yield_velocity);
   report.alpha_text = effective_alpha_text(report.runs);
   report.uncertainty_text = uncertainty_summary(report.runs);
@@ -509,9 +526,10 @@ void add_verdict(Report& report) {
     return;
   }
   if (!calibrated.converged) {
-    report.cause = "No verdict: the campaign fit of Hunt–Crossley did not converge, so its "
-                   "predictions (shown, marked 'not converged') cannot decide where the model "
-                   "holds. Rerun the calibration with more iterations or check the runs.";
+    report.cause =
+        "No verdict: the campaign fit of Hunt–Crossley did not converge, so its "
+        "predictions (shown, marked 'not converged') cannot decide where the model "
+        "holds. Rerun the calibration with more iterations or check the runs.";
     return;
   }
   report.verdict_available = true;
@@ -527,8 +545,9 @@ void add_verdict(Report& report) {
                     std::string(ranking.front().out_of_sample ? "out-of-sample" : "in-sample") +
                     " error is " + ranking.front().key + " (RMS error " +
                     unsigned_percent(ranking.front().score) + " in 1 - e^2, t_c, F_max and x_max" +
-                    (own ? " against " + unsigned_percent(own->score) + " for the calibrated "
-                                                                    "Hunt–Crossley"
+                    (own ? " against " + unsigned_percent(own->score) +
+                               " for the calibrated "
+                               "Hunt–Crossley"
                          : std::string()) +
                     ").";
   }

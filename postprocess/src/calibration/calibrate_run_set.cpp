@@ -69,13 +69,13 @@ std::string calibration_summary(const Calibration& calibration) {
   std::ostringstream out;
   out.precision(6);
   if (const auto& hc = calibration.campaign.hunt_crossley)
-    out << "Hunt-Crossley over " << calibration.runs.size() << " runs: c = "
-        << hc->fit.stiffness.value << " N/m^n, n = " << hc->fit.exponent.value
+    out << "Hunt-Crossley over " << calibration.runs.size()
+        << " runs: c = " << hc->fit.stiffness.value << " N/m^n, n = " << hc->fit.exponent.value
         << ", b = " << hc->fit.parameter.value << " s/m (RMS residual "
         << hc->fit.quality.rms_residual * 100 << " % of the peak force)\n";
   if (const auto& fixed = calibration.campaign.hunt_crossley_hertz_exponent)
-    out << "Hunt-Crossley with n = " << hertz_exponent << " fixed: c = "
-        << fixed->fit.stiffness.value << " N/m^" << hertz_exponent
+    out << "Hunt-Crossley with n = " << hertz_exponent
+        << " fixed: c = " << fixed->fit.stiffness.value << " N/m^" << hertz_exponent
         << ", b = " << fixed->fit.parameter.value << " s/m (RMS residual "
         << fixed->fit.quality.rms_residual * 100 << " % of the peak force)\n";
   if (const auto& energy = calibration.campaign.hunt_crossley_energy)

@@ -80,7 +80,6 @@ const CampaignModelFit* CampaignCalibration::find(const std::string& key) const 
   return nullptr;
 }
 
-
 namespace {
 
 void check_options(const CalibrationOptions& options) {
@@ -143,9 +142,10 @@ CampaignFitRequest damped_plastic_request(const ContactModel& law, const std::ve
                                           const CampaignStart& start,
                                           const CalibrationOptions& options) {
   const ScenarioMaterials materials = scenario_materials(runs);
-  CampaignFitRequest request{law.name, law.name, std::nullopt, options.energy_weight, nan, {}, std::nullopt};
-  request.label += options.energy_weight > 0 ? ", force histories and energy loss"
-                                             : ", force histories";
+  CampaignFitRequest request{law.name, law.name, std::nullopt, options.energy_weight,
+                             nan,      {},       std::nullopt};
+  request.label +=
+      options.energy_weight > 0 ? ", force histories and energy loss" : ", force histories";
   if (materials.hertz_from_runs && options.damped_plastic_hertz_stiffness) {
     request.stiffness = materials.hertz_stiffness;
     request.label += ", c at Hertz";
@@ -155,7 +155,8 @@ CampaignFitRequest damped_plastic_request(const ContactModel& law, const std::ve
   if (const CampaignModelFit* fitted = campaign.find(twin); fitted && fitted->fit.converged) {
     request.initial_damping = fitted->fit.parameter.value;
   } else if (thornton_spring) {
-    if (const auto material = material_thornton(runs)) request.initial_damping = material->yield_approach;
+    if (const auto material = material_thornton(runs))
+      request.initial_damping = material->yield_approach;
   } else if (const auto material = material_jackson_green(runs)) {
     request.initial_damping = material->yield_strength;
   }
@@ -183,7 +184,8 @@ Calibration calibrate(const std::vector<FemRun>& runs, const CalibrationOptions&
   calibration.confidence_level = options.confidence_level;
   Progress progress(options.progress);
   for (const auto& name : left_out)
-    progress("law " + name + " left out: the runs do not record the sphere radius and Poisson "
+    progress("law " + name +
+             " left out: the runs do not record the sphere radius and Poisson "
              "ratio it needs");
 
   std::vector<PreparedRun> prepared;
@@ -191,9 +193,11 @@ Calibration calibrate(const std::vector<FemRun>& runs, const CalibrationOptions&
   for (std::size_t i = 0; i < prepared.size(); ++i) {
     progress.start();
     calibration.runs.push_back(calibrate_run(prepared[i], options, calibration.problems));
-    progress("run " + std::to_string(i + 1) + "/" + std::to_string(runs.size()) + " (V = " +
-             format_number(runs[i].impact_velocity) + " m/s): restitution, loading and "
-             "force-history fits done in " + progress.elapsed());
+    progress("run " + std::to_string(i + 1) + "/" + std::to_string(runs.size()) +
+             " (V = " + format_number(runs[i].impact_velocity) +
+             " m/s): restitution, loading and "
+             "force-history fits done in " +
+             progress.elapsed());
   }
 
   // The campaign needs two distinct velocities to tell a constant b from a constant e.
@@ -207,12 +211,12 @@ Calibration calibrate(const std::vector<FemRun>& runs, const CalibrationOptions&
   }
   std::sort(campaign.velocities.begin(), campaign.velocities.end());
   if (campaign.velocities.size() < 2) {
-    campaign.reason =
-        runs.empty() ? "no usable run"
-                     : "the runs have a single impact velocity (" +
-                           format_number(campaign.velocities.front()) +
-                           " m/s); a campaign fit needs at least two distinct velocities to "
-                           "tell how the damping depends on the velocity";
+    campaign.reason = runs.empty()
+                          ? "no usable run"
+                          : "the runs have a single impact velocity (" +
+                                format_number(campaign.velocities.front()) +
+                                " m/s); a campaign fit needs at least two distinct velocities to "
+                                "tell how the damping depends on the velocity";
     return calibration;
   }
 
@@ -223,8 +227,7 @@ Calibration calibrate(const std::vector<FemRun>& runs, const CalibrationOptions&
     progress.start();
     CampaignModelFit result = fit_campaign_model(model, request, prepared, campaign.velocities,
                                                  start, options, calibration.problems);
-    progress("campaign: " + request.key + " fitted to " + std::to_string(runs.size()) +
-             " runs" +
+    progress("campaign: " + request.key + " fitted to " + std::to_string(runs.size()) + " runs" +
              (result.held_out.empty()
                   ? std::string()
                   : " and once without each of the " + std::to_string(result.held_out.size()) +
@@ -233,8 +236,13 @@ Calibration calibrate(const std::vector<FemRun>& runs, const CalibrationOptions&
     return result;
   };
   const ContactModel hunt_crossley = hunt_crossley_model();
-  campaign.hunt_crossley = fit(hunt_crossley, {std::string(model_keys::hunt_crossley), "Hunt–Crossley, force histories",
-                                               std::nullopt, 0, damping, {}, std::nullopt});
+  campaign.hunt_crossley = fit(hunt_crossley, {std::string(model_keys::hunt_crossley),
+                                               "Hunt–Crossley, force histories",
+                                               std::nullopt,
+                                               0,
+                                               damping,
+                                               {},
+                                               std::nullopt});
   // The other fits start from the Hunt–Crossley elastic part and damping.
   const ModelFit& hc = campaign.hunt_crossley->fit;
   const double hc_damping = hc.parameter.value;
@@ -246,28 +254,45 @@ Calibration calibrate(const std::vector<FemRun>& runs, const CalibrationOptions&
   if (options.energy_weight > 0)
     campaign.hunt_crossley_energy =
         fit(hunt_crossley, {std::string(model_keys::hunt_crossley_energy),
-                            "Hunt–Crossley, force histories and energy loss", std::nullopt,
-                            options.energy_weight, hc_damping, {}, std::nullopt});
+                            "Hunt–Crossley, force histories and energy loss",
+                            std::nullopt,
+                            options.energy_weight,
+                            hc_damping,
+                            {},
+                            std::nullopt});
   // Hunt–Crossley with n at the Hertz value: its c (N/m^1.5) is the one to compare with the
   // Hertz stiffness.
   campaign.hunt_crossley_hertz_exponent =
       fit(hunt_crossley, {std::string(model_keys::hunt_crossley_hertz_exponent),
-                          "Hunt–Crossley with n = 3/2, force histories", hertz_exponent, 0,
-                          hc_damping, {}, std::nullopt});
+                          "Hunt–Crossley with n = 3/2, force histories",
+                          hertz_exponent,
+                          0,
+                          hc_damping,
+                          {},
+                          std::nullopt});
   campaign.hunt_crossley_velocity_damping =
       fit(velocity_damped_hunt_crossley_model(),
           {std::string(model_keys::hunt_crossley_velocity_damping),
            options.energy_weight > 0 ? "Hunt–Crossley with b(V), force histories and energy loss"
                                      : "Hunt–Crossley with b(V), force histories",
-           std::nullopt, options.energy_weight, hc_damping, {0.0}, std::nullopt});
+           std::nullopt,
+           options.energy_weight,
+           hc_damping,
+           {0.0},
+           std::nullopt});
   for (const auto& law : laws) {
     try {
-      CampaignFitRequest request{law.name, law.name + ", force histories", std::nullopt, 0, nan, {}, std::nullopt};
-      if (law.damped_plastic()) request = damped_plastic_request(law, runs, campaign, start, options);
+      CampaignFitRequest request{law.name,     law.name + ", force histories",
+                                 std::nullopt, 0,
+                                 nan,          {},
+                                 std::nullopt};
+      if (law.damped_plastic())
+        request = damped_plastic_request(law, runs, campaign, start, options);
       campaign.comparison_laws.push_back(fit(law, request));
     } catch (const std::exception& error) {
       calibration.problems.push_back(
-          {law.name, ProblemKind::convergence, "the campaign fit of " + law.name + " failed: " + error.what()});
+          {law.name, ProblemKind::convergence,
+           "the campaign fit of " + law.name + " failed: " + error.what()});
     }
   }
   campaign.ranking = rank_campaign(campaign, calibration.runs);

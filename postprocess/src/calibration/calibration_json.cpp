@@ -17,7 +17,9 @@ constexpr double nan = std::numeric_limits<double>::quiet_NaN();
 
 // ---- Writing ----------------------------------------------------------------------------
 
-json number(double value) { return std::isfinite(value) ? json(value) : json(nullptr); }
+json number(double value) {
+  return std::isfinite(value) ? json(value) : json(nullptr);
+}
 
 json estimate_json(const Estimate& estimate, const std::string& unit, bool fixed) {
   return {{"value", number(estimate.value)},
@@ -116,7 +118,8 @@ json campaign_fit_json(const CampaignModelFit& campaign_fit) {
     json entry = {{"source", run.source}, {"impact_velocity", number(run.velocity)}};
     entry.update(quality_json(run.quality));
     entry["prediction"] = prediction_json(run.prediction);
-    entry["out_of_sample"] = run.out_of_sample ? prediction_json(*run.out_of_sample) : json(nullptr);
+    entry["out_of_sample"] =
+        run.out_of_sample ? prediction_json(*run.out_of_sample) : json(nullptr);
     runs.push_back(entry);
   }
   result["runs"] = runs;
@@ -177,8 +180,9 @@ json run_json(const RunCalibration& run) {
           {"restitution_fit",
            {{"b", {{"value", number(run.damping_from_restitution)}, {"unit", "s/m"}}},
             {"beta", number(run.impact_parameter)},
-            {"method", "exact inverse of k(beta) (impact_parameter_from_restitution), b = beta / V; "
-                       "no interval: exact for the measured restitution"}}},
+            {"method",
+             "exact inverse of k(beta) (impact_parameter_from_restitution), b = beta / V; "
+             "no interval: exact for the measured restitution"}}},
           {"loading_fit", run.loading ? fit_json(*run.loading) : json(nullptr)},
           {"history_fit", run.history ? fit_json(*run.history) : json(nullptr)},
           {"history_prediction",
@@ -196,8 +200,8 @@ json ranking_json(const CampaignCalibration& campaign) {
     for (const auto& reference : campaign.reference_models)
       if (reference.key == entry.key)
         parameter = {{"name", reference.parameter_name},
-                     {"value", number(reference.dissipation.empty() ? nan
-                                                                     : reference.dissipation[0])},
+                     {"value",
+                      number(reference.dissipation.empty() ? nan : reference.dissipation[0])},
                      {"unit", reference.parameter_unit}};
     ranking.push_back({{"model", entry.key},
                        {"free_parameters", entry.free_parameters},
@@ -235,8 +239,9 @@ json velocity_damping_json(const CampaignCalibration& campaign) {
   if (const auto& fit = campaign.hunt_crossley_velocity_damping)
     velocity_damping = {
         {"model", std::string(model_keys::hunt_crossley_velocity_damping)},
-        {"force_law", "F = c x^n (1 + b dx/dt) for approach x > 0, else F = 0, with "
-                      "b = b_1 (V_0 / 1 m/s)^(-q), V_0 the approach speed at first contact"},
+        {"force_law",
+         "F = c x^n (1 + b dx/dt) for approach x > 0, else F = 0, with "
+         "b = b_1 (V_0 / 1 m/s)^(-q), V_0 the approach speed at first contact"},
         {"c", number(fit->fit.stiffness.value)},
         {"n", number(fit->fit.exponent.value)},
         {"b_1", number(fit->fit.parameter.value)},
@@ -264,22 +269,22 @@ json restitution_maps_json(const CampaignCalibration& campaign) {
 
 json units_json() {
   return {{"c", "N/m^n"},
-        {"n", "1"},
-        {"b", "s/m"},
-        {"b_1", "s/m (b at V = 1 m/s)"},
-        {"q", "1"},
-        {"A", "s"},
-        {"e", "1"},
-        {"impact_velocity", "m/s"},
-        {"mass", "kg"},
-        {"restitution", "1"},
-        {"contact_time", "s"},
-        {"force_max", "N"},
-        {"time_force_max", "s (from first contact)"},
-        {"approach_max", "m"},
-        {"rms_residual", "1 (RMS of (F_model - F_FEM) / peak FEM force of the run)"},
-        {"r_squared", "1"},
-        {"score", "1 (RMS of the relative errors of 1 - e^2, t_c, F_max, x_max over the runs)"}};
+          {"n", "1"},
+          {"b", "s/m"},
+          {"b_1", "s/m (b at V = 1 m/s)"},
+          {"q", "1"},
+          {"A", "s"},
+          {"e", "1"},
+          {"impact_velocity", "m/s"},
+          {"mass", "kg"},
+          {"restitution", "1"},
+          {"contact_time", "s"},
+          {"force_max", "N"},
+          {"time_force_max", "s (from first contact)"},
+          {"approach_max", "m"},
+          {"rms_residual", "1 (RMS of (F_model - F_FEM) / peak FEM force of the run)"},
+          {"r_squared", "1"},
+          {"score", "1 (RMS of the relative errors of 1 - e^2, t_c, F_max, x_max over the runs)"}};
 }
 
 json campaign_json(const CampaignCalibration& campaign) {
@@ -289,28 +294,31 @@ json campaign_json(const CampaignCalibration& campaign) {
   json laws = json::array();
   for (const auto& law : campaign.comparison_laws) laws.push_back(campaign_fit_json(law));
   json references = json::array();
-  for (const auto& reference : campaign.reference_models) references.push_back(reference_json(reference));
+  for (const auto& reference : campaign.reference_models)
+    references.push_back(reference_json(reference));
   return {{"fitted", campaign.fitted},
           {"reason", campaign.reason.empty() ? json(nullptr) : json(campaign.reason)},
-        {"velocities", campaign.velocities},
-        {"energy_weight", campaign.energy_weight},
-        {"published_damping", number(campaign.published_damping)},
-        {"hertz_stiffness", {{"value", number(campaign.hertz_stiffness)}, {"unit", "N/m^1.5"},
-                             {"basis", campaign.hertz_basis}}},
-        {"material_dissipative_constant",
-         {{"value", campaign.material_dissipative_constant
-                        ? number(*campaign.material_dissipative_constant)
-                        : json(nullptr)},
-          {"unit", "s"},
-          {"basis", campaign.material_basis}}},
-        {"hunt_crossley", optional_fit(campaign.hunt_crossley)},
-        {"hunt_crossley_energy", optional_fit(campaign.hunt_crossley_energy)},
-        {"hunt_crossley_hertz_exponent", optional_fit(campaign.hunt_crossley_hertz_exponent)},
-        {"hunt_crossley_velocity_damping", optional_fit(campaign.hunt_crossley_velocity_damping)},
-        {"comparison_laws", laws},
-        {"reference_models", references},
-        {"restitution_maps", restitution_maps_json(campaign)},
-        {"ranking", ranking_json(campaign)}};
+          {"velocities", campaign.velocities},
+          {"energy_weight", campaign.energy_weight},
+          {"published_damping", number(campaign.published_damping)},
+          {"hertz_stiffness",
+           {{"value", number(campaign.hertz_stiffness)},
+            {"unit", "N/m^1.5"},
+            {"basis", campaign.hertz_basis}}},
+          {"material_dissipative_constant",
+           {{"value", campaign.material_dissipative_constant
+                          ? number(*campaign.material_dissipative_constant)
+                          : json(nullptr)},
+            {"unit", "s"},
+            {"basis", campaign.material_basis}}},
+          {"hunt_crossley", optional_fit(campaign.hunt_crossley)},
+          {"hunt_crossley_energy", optional_fit(campaign.hunt_crossley_energy)},
+          {"hunt_crossley_hertz_exponent", optional_fit(campaign.hunt_crossley_hertz_exponent)},
+          {"hunt_crossley_velocity_damping", optional_fit(campaign.hunt_crossley_velocity_damping)},
+          {"comparison_laws", laws},
+          {"reference_models", references},
+          {"restitution_maps", restitution_maps_json(campaign)},
+          {"ranking", ranking_json(campaign)}};
 }
 
 } // namespace

@@ -22,7 +22,9 @@ public:
     if (!node_.is_object() || !node_.contains(key)) fail(key, "is missing");
     return {node_[key], path_ + "." + key};
   }
-  Reader at(std::size_t index) const { return {node_.at(index), path_ + "[" + std::to_string(index) + "]"}; }
+  Reader at(std::size_t index) const {
+    return {node_.at(index), path_ + "[" + std::to_string(index) + "]"};
+  }
   bool has(const std::string& key) const {
     return node_.is_object() && node_.contains(key) && !node_[key].is_null();
   }
@@ -128,8 +130,8 @@ ModelFit read_fit(const Reader& node) {
   fit.parameter = read_estimate(parameters.at(names[2]));
   fit.parameter_fixed = parameters.at(names[2]).flag("fixed");
   for (std::size_t i = 3; i < names.size(); ++i)
-    fit.extra.push_back({names[i], parameters.at(names[i]).text("unit"),
-                         read_estimate(parameters.at(names[i]))});
+    fit.extra.push_back(
+        {names[i], parameters.at(names[i]).text("unit"), read_estimate(parameters.at(names[i]))});
   const std::size_t k = names.size();
   fit.covariance = read_matrix(node.at("covariance").at("matrix"), k);
   fit.correlation.assign(k * k, nan);
@@ -182,7 +184,8 @@ CampaignModelFit read_campaign_fit(const Reader& node) {
                             entry.flag("converged")});
   }
   if (node.has("jackknife"))
-    for (const auto& name : names) fit.jackknife.push_back(read_estimate(node.at("jackknife").at(name)));
+    for (const auto& name : names)
+      fit.jackknife.push_back(read_estimate(node.at("jackknife").at(name)));
   return fit;
 }
 
@@ -213,8 +216,8 @@ ReferenceModel read_reference(const Reader& node) {
   for (std::size_t i = 0; i < runs.size(); ++i) {
     const Reader run = runs.at(i);
     const ImpactPrediction prediction = read_prediction(run.at("prediction"));
-    reference.runs.push_back({run.text("source"), run.number("impact_velocity"),
-                              read_quality(run), prediction, prediction});
+    reference.runs.push_back({run.text("source"), run.number("impact_velocity"), read_quality(run),
+                              prediction, prediction});
   }
   return reference;
 }
@@ -231,8 +234,9 @@ std::optional<CampaignModelFit> read_optional_fit(const Reader& campaign, const 
 Calibration calibration_from_json(const json& document) {
   const Reader root(document, "top level");
   if (!document.is_object() || root.text_or("format", "") != "impact-calibration")
-    throw CalibrationFormatError("it is not a calibration of impact-calibrate (no \"format\": "
-                                 "\"impact-calibration\")");
+    throw CalibrationFormatError(
+        "it is not a calibration of impact-calibrate (no \"format\": "
+        "\"impact-calibration\")");
   const double version = root.number("format_version");
   if (version != calibration_format_version)
     throw CalibrationFormatError(
@@ -308,11 +312,10 @@ Calibration calibration_from_json(const json& document) {
   const Reader ranking = node.at("ranking");
   for (std::size_t i = 0; i < ranking.size(); ++i) {
     const Reader entry = ranking.at(i);
-    campaign.ranking.push_back({entry.text("model"), entry.count("free_parameters"),
-                                entry.number("score"), entry.flag("out_of_sample"),
-                                entry.number("worst_error"), entry.number("in_sample_score"),
-                                entry.number("rms_residual"), entry.flag("converged"),
-                                entry.texts("family")});
+    campaign.ranking.push_back(
+        {entry.text("model"), entry.count("free_parameters"), entry.number("score"),
+         entry.flag("out_of_sample"), entry.number("worst_error"), entry.number("in_sample_score"),
+         entry.number("rms_residual"), entry.flag("converged"), entry.texts("family")});
   }
   return calibration;
 }

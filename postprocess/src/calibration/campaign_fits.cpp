@@ -13,7 +13,7 @@ namespace {
 
 // The residual blocks of `runs` for parameters mapped by `setup`.
 std::vector<ResidualBlock> residual_blocks(const std::vector<HistoryEvaluator>& evaluators,
-                                                   double energy_weight) {
+                                           double energy_weight) {
   std::vector<ResidualBlock> blocks;
   for (const auto& evaluator : evaluators) {
     blocks.push_back({evaluator.run->times.size(), [evaluator](const double* theta, double* r) {
@@ -68,16 +68,17 @@ FitSetup campaign_fit_setup(const ContactModel& model, const CampaignFitRequest&
                                           reference_setup);
     p0 = std::isfinite(request.initial_damping)
              ? request.initial_damping
-             : (start.restitution < 1 ? model.damping_for_restitution(
-                                            start.restitution, start.velocity, reference_setup)
-                                      : 0.0);
+             : (start.restitution < 1
+                    ? model.damping_for_restitution(start.restitution, start.velocity,
+                                                    reference_setup)
+                    : 0.0);
   }
   FitSetup setup{&model, {start.reference_approach, {scale}}, {}};
-  setup.parameters = {{start.log_reference_force}, exponent_parameter(n0, fixed_exponent),
+  setup.parameters = {{start.log_reference_force},
+                      exponent_parameter(n0, fixed_exponent),
                       {p0 / scale}};
   if (request.stiffness) {
-    setup.parameters[0].initial =
-        setup.parametrisation.log_reference_force(*request.stiffness, n0);
+    setup.parameters[0].initial = setup.parametrisation.log_reference_force(*request.stiffness, n0);
     setup.parameters[0].fixed = true;
   }
   if (model.parameter == DissipationParameter::damping) {
@@ -90,9 +91,8 @@ FitSetup campaign_fit_setup(const ContactModel& model, const CampaignFitRequest&
   for (std::size_t i = 0; i < model.extra_parameters.size(); ++i) {
     const auto& spec = model.extra_parameters[i];
     setup.parametrisation.scales.push_back(spec.scale);
-    FitParameter parameter{(i < request.initial_extra.size() ? request.initial_extra[i]
-                                                             : spec.initial) /
-                           spec.scale};
+    FitParameter parameter{
+        (i < request.initial_extra.size() ? request.initial_extra[i] : spec.initial) / spec.scale};
     parameter.lower = spec.lower / spec.scale;
     parameter.upper = spec.upper / spec.scale;
     setup.parameters.push_back(parameter);
@@ -119,17 +119,16 @@ void add_held_out_fits(CampaignModelFit& campaign_fit, const ContactModel& model
                        const std::vector<double>& theta, const std::vector<PreparedRun>& runs,
                        const std::vector<double>& velocities, const CalibrationOptions& options,
                        std::vector<Problem>& problems) {
-  const std::string what =
-      "the campaign fit of " + request.label + " (" + request.key + ")";
+  const std::string what = "the campaign fit of " + request.label + " (" + request.key + ")";
   std::vector<FitParameter> restart = setup.parameters;
   for (std::size_t j = 0; j < restart.size(); ++j) restart[j].initial = theta[j];
   for (double left_out : velocities) {
-    const auto others = evaluators_of(model, setup, runs, options, [left_out](const PreparedRun& run) {
-      return !same_velocity(run.run->impact_velocity, left_out);
-    });
-    const auto held = solve_least_squares(
-        restart, residual_blocks(others, request.energy_weight),
-        {options.max_iterations, options.threads});
+    const auto others =
+        evaluators_of(model, setup, runs, options, [left_out](const PreparedRun& run) {
+          return !same_velocity(run.run->impact_velocity, left_out);
+        });
+    const auto held = solve_least_squares(restart, residual_blocks(others, request.energy_weight),
+                                          {options.max_iterations, options.threads});
     const ModelFit held_fit = to_model_fit(setup, held, options.confidence_level);
     campaign_fit.held_out.push_back({left_out, held_fit.parameter_values(), held.converged});
     if (!held.converged)
@@ -163,7 +162,7 @@ CampaignModelFit fit_campaign_model(const ContactModel& model, const CampaignFit
       evaluators_of(model, setup, runs, options, [](const PreparedRun&) { return true; });
   const auto result =
       solve_least_squares(setup.parameters, residual_blocks(evaluators, request.energy_weight),
-                                  {options.max_iterations, options.threads});
+                          {options.max_iterations, options.threads});
   CampaignModelFit campaign_fit;
   campaign_fit.key = request.key;
   campaign_fit.label = request.label;
@@ -187,11 +186,10 @@ CampaignModelFit fit_campaign_model(const ContactModel& model, const CampaignFit
     campaign_fit.runs.push_back(residual);
   }
   campaign_fit.fit.quality = combine(parts);
-  const std::string what =
-      "the campaign fit of " + request.label + " (" + request.key + ")";
+  const std::string what = "the campaign fit of " + request.label + " (" + request.key + ")";
   if (!fit.converged)
-    problems.push_back({request.key, ProblemKind::convergence, what + " did not converge: " +
-                                                        fit.solver_message});
+    problems.push_back(
+        {request.key, ProblemKind::convergence, what + " did not converge: " + fit.solver_message});
 
   if (velocities.size() >= 3)
     add_held_out_fits(campaign_fit, model, request, setup, result.theta, runs, velocities, options,

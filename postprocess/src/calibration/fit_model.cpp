@@ -11,8 +11,8 @@
 namespace impact::postprocess::detail {
 
 PreparedRun prepare(const FemRun& run) {
-  PreparedRun prepared{&run, {}, {}, run.force_max, {}, {}, 0,
-                       1 - run.restitution * run.restitution};
+  PreparedRun prepared{&run, {}, {}, run.force_max,
+                       {},   {}, 0,  1 - run.restitution * run.restitution};
   const double t0 = run.first_contact_time;
   const double tc = run.contact_time;
   std::size_t in_contact = 0;
@@ -125,7 +125,6 @@ FitQuality quality_of(const std::vector<double>& model, const std::vector<double
   }
   return {std::sqrt(residual / double(n)) / scale, total > 0 ? 1 - residual / total : nan, n};
 }
-
 
 std::string format_number(double value) {
   std::ostringstream text;

@@ -26,13 +26,13 @@ inline constexpr double nan = std::numeric_limits<double>::quiet_NaN();
 // The samples of a run that the fits use.
 struct PreparedRun {
   const FemRun* run;
-  std::vector<double> times;   // s since first contact: from just before contact to 1.25 t_c
-  std::vector<double> forces;  // N
-  double force_scale;          // N, the run's peak force: residuals are relative to it
+  std::vector<double> times;  // s since first contact: from just before contact to 1.25 t_c
+  std::vector<double> forces; // N
+  double force_scale;         // N, the run's peak force: residuals are relative to it
   std::vector<double> loading_approach; // m, first contact to peak approach
   std::vector<double> loading_force;    // N
-  std::size_t points;          // samples of the simulated impact
-  double energy_loss;          // 1 - e^2 of the FEM
+  std::size_t points;                   // samples of the simulated impact
+  double energy_loss;                   // 1 - e^2 of the FEM
 };
 
 PreparedRun prepare(const FemRun& run);
@@ -90,10 +90,10 @@ struct HistoryEvaluator {
       if (!std::isfinite(p)) return false;
     const reduced::ContactSetup setup{run->run->mass, c, n};
     if (model->damped_plastic()) try {
-        return simulate_damped_plastic_force(
-            *damped_plastic_impact(*model, run->run->mass, run->run->impact_velocity, c,
-                                   dissipation),
-            run->run->mass, run->times, run->points, force);
+        return simulate_damped_plastic_force(*damped_plastic_impact(*model, run->run->mass,
+                                                                    run->run->impact_velocity, c,
+                                                                    dissipation),
+                                             run->run->mass, run->times, run->points, force);
       } catch (const std::exception&) {
         return false;
       }
@@ -104,19 +104,19 @@ struct HistoryEvaluator {
       return false;
     }
     if (model->plastic_contact) try {
-        return simulate_plastic_force(*model->plastic_contact(damping, setup),
-                                              run->run->mass, run->run->impact_velocity,
-                                              run->times, run->points, tolerance, force);
+        return simulate_plastic_force(*model->plastic_contact(damping, setup), run->run->mass,
+                                      run->run->impact_velocity, run->times, run->points, tolerance,
+                                      force);
       } catch (const std::exception&) {
         return false;
       }
     if (model->hunt_crossley_force())
       return simulate_hunt_crossley_force(model->force_law(damping, setup), setup, damping,
-                                                  run->run->impact_velocity, run->times,
-                                                  run->points, force);
+                                          run->run->impact_velocity, run->times, run->points,
+                                          force);
     return simulate_force(model->force_law(damping, setup), run->run->mass,
-                                  run->run->impact_velocity, run->times, run->points, tolerance,
-                                  model->contact_end, force);
+                          run->run->impact_velocity, run->times, run->points, tolerance,
+                          model->contact_end, force);
   }
 
   bool residuals(const double* theta, double* residual) const {
@@ -136,9 +136,8 @@ struct HistoryEvaluator {
   // counts against the run's N force residuals as a relative error against their RMS.
   bool energy_residual(const double* theta, double weight, double* residual) const {
     const double restitution =
-        predict_restitution(*model, run->run->mass, run->run->impact_velocity,
-                            map.stiffness(theta), map.exponent(theta), map.dissipation(theta),
-                            tolerance);
+        predict_restitution(*model, run->run->mass, run->run->impact_velocity, map.stiffness(theta),
+                            map.exponent(theta), map.dissipation(theta), tolerance);
     if (!std::isfinite(restitution)) return false;
     const double loss = 1 - restitution * restitution;
     *residual = weight * std::sqrt(double(run->times.size())) * (loss - run->energy_loss) /
@@ -172,24 +171,26 @@ FitParameter exponent_parameter(double initial, bool fixed);
 
 double median(std::vector<double> values);
 double geometric_mean(const std::vector<double>& values);
-inline bool same_velocity(double a, double b) { return same_value(a, b); }
+inline bool same_velocity(double a, double b) {
+  return same_value(a, b);
+}
 
 struct CampaignStart {
   double reference_approach;
   double log_reference_force;
   double exponent;
-  double restitution;  // median measured
-  double velocity;     // geometric mean
-  double mass;         // median
+  double restitution; // median measured
+  double velocity;    // geometric mean
+  double mass;        // median
 };
 
 // What distinguishes the campaign fits of one model.
 struct CampaignFitRequest {
   std::string key;
   std::string label;
-  std::optional<double> exponent;  // n held here (else the model's required one, else free)
+  std::optional<double> exponent; // n held here (else the model's required one, else free)
   double energy_weight = 0;
-  double initial_damping = nan;    // else from the median restitution
+  double initial_damping = nan; // else from the median restitution
   std::vector<double> initial_extra;
   std::optional<double> stiffness; // c held here [N/m^n] (else free)
 };
@@ -207,7 +208,6 @@ CampaignModelFit fit_campaign_model(const ContactModel& model, const CampaignFit
 
 /// The models that fit nothing (reference_models.cpp).
 void add_reference_models(CampaignCalibration& campaign, const std::vector<FemRun>& fem_runs,
-                          const std::vector<PreparedRun>& runs,
-                          const CalibrationOptions& options);
+                          const std::vector<PreparedRun>& runs, const CalibrationOptions& options);
 
 } // namespace impact::postprocess::detail

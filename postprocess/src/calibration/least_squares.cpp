@@ -14,8 +14,7 @@ namespace {
 // central differences, forward where the model cannot be evaluated below the parameter.
 class CentralDifferenceCost final : public ceres::CostFunction {
 public:
-  CentralDifferenceCost(ResidualFunction function, std::size_t residuals,
-                        std::vector<double> steps)
+  CentralDifferenceCost(ResidualFunction function, std::size_t residuals, std::vector<double> steps)
       : function_(std::move(function)), steps_(std::move(steps)) {
     set_num_residuals(int(residuals));
     for (std::size_t j = 0; j < steps_.size(); ++j) mutable_parameter_block_sizes()->push_back(1);
@@ -72,8 +71,8 @@ LeastSquaresResult solve_least_squares(const std::vector<FitParameter>& paramete
   ceres::Problem problem;
   for (const auto& block : blocks) {
     result.residual_count += block.size;
-    problem.AddResidualBlock(new CentralDifferenceCost(block.residuals, block.size, steps),
-                             nullptr, blocks_of_theta);
+    problem.AddResidualBlock(new CentralDifferenceCost(block.residuals, block.size, steps), nullptr,
+                             blocks_of_theta);
   }
   for (std::size_t j = 0; j < p; ++j) {
     if (parameters[j].fixed) {
@@ -104,9 +103,9 @@ LeastSquaresResult solve_least_squares(const std::vector<FitParameter>& paramete
 
   // Covariance of the free parameters, scaled by the residual variance.
   result.covariance.assign(p * p, 0.0);
-  const std::size_t degrees_of_freedom =
-      result.residual_count > result.free_parameters ? result.residual_count - result.free_parameters
-                                                     : 0;
+  const std::size_t degrees_of_freedom = result.residual_count > result.free_parameters
+                                             ? result.residual_count - result.free_parameters
+                                             : 0;
   ceres::Covariance::Options covariance_options;
   covariance_options.algorithm_type = ceres::DENSE_SVD;
   covariance_options.num_threads = settings.threads;

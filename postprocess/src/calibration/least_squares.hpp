@@ -39,7 +39,7 @@ struct LeastSquaresResult {
   /// zero for fixed parameters; empty if J^T J is singular.
   std::vector<double> covariance;
   bool converged = false;
-  std::string message;      ///< the solver's termination message
+  std::string message; ///< the solver's termination message
   int iterations = 0;
   std::size_t residual_count = 0;
   std::size_t free_parameters = 0;

@@ -30,14 +30,16 @@ RankedModel ranked(const std::string& key, const std::vector<RunResidual>& resid
     if (run == runs.end()) continue;
     measured.push_back(run->measured);
     in_sample.push_back(residual.prediction);
-    if (residual.out_of_sample) out_of_sample.push_back(*residual.out_of_sample);
-    else all_out_of_sample = false;
+    if (residual.out_of_sample)
+      out_of_sample.push_back(*residual.out_of_sample);
+    else
+      all_out_of_sample = false;
   }
   all_out_of_sample = all_out_of_sample && !out_of_sample.empty();
   const RankingScore inside = ranking_score(in_sample, measured);
   const RankingScore outside = all_out_of_sample ? ranking_score(out_of_sample, measured) : inside;
-  return {key, free_parameters, outside.rms, all_out_of_sample, outside.worst, inside.rms,
-          rms_residual, converged, {}};
+  return {key,          free_parameters, outside.rms, all_out_of_sample, outside.worst, inside.rms,
+          rms_residual, converged,       {}};
 }
 
 } // namespace

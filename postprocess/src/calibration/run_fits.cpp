@@ -53,8 +53,8 @@ std::optional<ModelFit> fit_loading(const PreparedRun& run, double damping,
   static const ContactModel model = hunt_crossley_model();
   FitSetup setup{&model, {fem.approach_max, {damping > 0 ? damping : 1.0}}, {}};
   setup.parameters = {{setup.parametrisation.log_reference_force(
-                           std::isfinite(c0) ? c0 : fem.force_max / std::pow(fem.approach_max, n0),
-                           n0)},
+                          std::isfinite(c0) ? c0 : fem.force_max / std::pow(fem.approach_max, n0),
+                          n0)},
                       exponent_parameter(n0, false),
                       {damping > 0 ? 1.0 : 0.0}};
   setup.parameters[0].step = 1e-6;
@@ -80,16 +80,14 @@ std::optional<ModelFit> fit_loading(const PreparedRun& run, double damping,
     }
     return true;
   };
-  ResidualBlock block{run.loading_force.size(), [&run, force](const double* theta,
-                                                                      double* residual) {
-                                if (!force(theta, residual)) return false;
-                                for (std::size_t i = 0; i < run.loading_force.size(); ++i)
-                                  residual[i] =
-                                      (residual[i] - run.loading_force[i]) / run.force_scale;
-                                return true;
-                              }};
-  const auto result = solve_least_squares(setup.parameters, {block},
-                                                  {options.max_iterations, 1});
+  ResidualBlock block{run.loading_force.size(),
+                      [&run, force](const double* theta, double* residual) {
+                        if (!force(theta, residual)) return false;
+                        for (std::size_t i = 0; i < run.loading_force.size(); ++i)
+                          residual[i] = (residual[i] - run.loading_force[i]) / run.force_scale;
+                        return true;
+                      }};
+  const auto result = solve_least_squares(setup.parameters, {block}, {options.max_iterations, 1});
   ModelFit fit = to_model_fit(setup, result, options.confidence_level);
   std::vector<double> model_force(run.loading_force.size());
   fit.quality = force(result.theta.data(), model_force.data())
@@ -115,10 +113,9 @@ std::optional<ModelFit> fit_history(const PreparedRun& run, double c0, double n0
   setup.parameters[2].lower = 0;
   const HistoryEvaluator evaluator{&model, &run, setup.parametrisation, options.ode_tolerance};
   ResidualBlock block{run.times.size(), [evaluator](const double* theta, double* r) {
-                                return evaluator.residuals(theta, r);
-                              }};
-  const auto result = solve_least_squares(setup.parameters, {block},
-                                                  {options.max_iterations, 1});
+                        return evaluator.residuals(theta, r);
+                      }};
+  const auto result = solve_least_squares(setup.parameters, {block}, {options.max_iterations, 1});
   ModelFit fit = to_model_fit(setup, result, options.confidence_level);
   fit.quality = evaluator.quality(result.theta.data());
   if (!fit.converged)

@@ -63,7 +63,8 @@ ExportCampaign read_export_campaign(const nlohmann::json& json, const std::strin
     const RunCalibration& run = calibration.runs[i];
     const std::string where = "runs[" + std::to_string(i) + "]";
     if (!(std::isfinite(run.mass) && run.mass > 0)) fail(file, where + ".mass is not positive");
-    if (i == 0) campaign.mass = run.mass;
+    if (i == 0)
+      campaign.mass = run.mass;
     else if (!same_value(run.mass, campaign.mass))
       fail(file, where + ".mass = " + std::to_string(run.mass) +
                      " kg differs from runs[0].mass = " + std::to_string(campaign.mass) +
@@ -88,10 +89,12 @@ ExportCampaign read_export_campaign(const nlohmann::json& json, const std::strin
 
   const auto hunt_crossley =
       hertz_law(fits.hunt_crossley_hertz_exponent ? &*fits.hunt_crossley_hertz_exponent : nullptr,
-                std::string(model_keys::hunt_crossley), file, "campaign.hunt_crossley_hertz_exponent");
+                std::string(model_keys::hunt_crossley), file,
+                "campaign.hunt_crossley_hertz_exponent");
   if (!hunt_crossley)
-    fail(file, "campaign.hunt_crossley_hertz_exponent is null (Simbody needs n = 3/2): "
-               "recalibrate with the current impact-calibrate");
+    fail(file,
+         "campaign.hunt_crossley_hertz_exponent is null (Simbody needs n = 3/2): "
+         "recalibrate with the current impact-calibrate");
   campaign.hunt_crossley = *hunt_crossley;
   campaign.kuwabara_kono = hertz_law(fits.find("kuwabara-kono"), "kuwabara-kono", file,
                                      "campaign.comparison_laws[kuwabara-kono]");
@@ -100,7 +103,8 @@ ExportCampaign read_export_campaign(const nlohmann::json& json, const std::strin
   // E* = 3 c / (4 sqrt(R)), p_y = 3 c sqrt(x_y) / (2 pi R) (plastic_models.hpp). The fit does
   // not split E* into the two bodies: the plate is given as rigid, the sphere E* with nu = 0
   // (nu enters only LIGGGHTS' tangential stiffness, unused by a normal impact).
-  if (const CampaignModelFit* thornton = fits.find("thornton"); thornton && thornton->fit.converged) {
+  if (const CampaignModelFit* thornton = fits.find("thornton");
+      thornton && thornton->fit.converged) {
     const double c = thornton->fit.stiffness.value, x_y = thornton->fit.parameter.value;
     if (std::isfinite(c) && c > 0 && std::isfinite(x_y) && x_y > 0) {
       PlasticContact plastic;
@@ -108,16 +112,19 @@ ExportCampaign read_export_campaign(const nlohmann::json& json, const std::strin
       plastic.sphere_youngs_modulus = plastic.contact_modulus;
       plastic.sphere_poisson_ratio = 0;
       plastic.yield_pressure = thornton_yield_pressure(c, x_y, radius);
-      plastic.yield_basis = "the calibration's Thornton fit (campaign.comparison_laws[thornton]: "
-                            "c = " + export_text::rounded(c) + " N/m^1.5, x_y = " +
-                            export_text::rounded(x_y) + " m; p_y = 3 c sqrt(x_y) / (2 pi R))";
+      plastic.yield_basis =
+          "the calibration's Thornton fit (campaign.comparison_laws[thornton]: "
+          "c = " +
+          export_text::rounded(c) + " N/m^1.5, x_y = " + export_text::rounded(x_y) +
+          " m; p_y = 3 c sqrt(x_y) / (2 pi R))";
       campaign.plastic = plastic;
     }
   }
   if (!campaign.kuwabara_kono && !campaign.tsuji)
-    fail(file, "the calibration has no campaign fit of kuwabara-kono or tsuji, the laws that "
-               "LAMMPS's granular damping can represent: calibrate with --laws all (or a list "
-               "holding kuwabara-kono or tsuji)");
+    fail(file,
+         "the calibration has no campaign fit of kuwabara-kono or tsuji, the laws that "
+         "LAMMPS's granular damping can represent: calibrate with --laws all (or a list "
+         "holding kuwabara-kono or tsuji)");
   return campaign;
 }
 
@@ -128,8 +135,10 @@ ImpactFigures hertz_law_impact(const HertzLawFit& law, double mass, double veloc
     return response.figures();
   }
   const reduced::ContactSetup setup{mass, law.stiffness, 1.5};
-  const auto result = reduced::integrate_impact(
-      mass, velocity, reduced::comparison_law(law.model).force_law(law.damping, setup), 1e-12);
+  const auto result =
+      reduced::integrate_impact(mass, velocity,
+                                reduced::comparison_law(law.model).force_law(law.damping, setup),
+                                1e-12);
   return result.figures();
 }
 

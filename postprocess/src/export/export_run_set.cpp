@@ -34,8 +34,10 @@ double sphere_radius(const Campaign& input) {
   for (const auto& run : input.runs) {
     const auto found = run.text_attributes.find(key);
     if (found == run.text_attributes.end())
-      throw ExportInputError(run.source + ": the run does not record the sphere radius "
-                             "(text attribute '" + key + "')");
+      throw ExportInputError(run.source +
+                             ": the run does not record the sphere radius "
+                             "(text attribute '" +
+                             key + "')");
     double value = NAN;
     try {
       value = std::stod(found->second);

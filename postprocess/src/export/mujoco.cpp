@@ -59,7 +59,8 @@ Oscillator oscillator(double stiffness, double damping) {
 double restitution_at_damping_ratio(double zeta) {
   const Oscillator o = oscillator(1, 2 * zeta);
   const double t = (pi - o.phi) / o.omega_d;
-  return -std::exp(-o.sigma * t) * (std::cos(o.omega_d * t) - o.sigma / o.omega_d * std::sin(o.omega_d * t));
+  return -std::exp(-o.sigma * t) *
+         (std::cos(o.omega_d * t) - o.sigma / o.omega_d * std::sin(o.omega_d * t));
 }
 
 } // namespace
@@ -96,17 +97,18 @@ MujocoContact mujoco_contact(double restitution, double contact_time, double vel
   const auto gap = [=](double zeta) { return restitution_at_damping_ratio(zeta) - restitution; };
   std::uintmax_t iterations = 200;
   const double upper = 1 - 1e-12;
-  const auto root = boost::math::tools::toms748_solve(
-      gap, 0.0, upper, 1 - restitution, gap(upper), boost::math::tools::eps_tolerance<double>(52),
-      iterations);
+  const auto root =
+      boost::math::tools::toms748_solve(gap, 0.0, upper, 1 - restitution, gap(upper),
+                                        boost::math::tools::eps_tolerance<double>(52), iterations);
   const double zeta = 0.5 * (root.first + root.second);
   const Oscillator unit = oscillator(1, 2 * zeta);
   const double omega = (pi - unit.phi) / (unit.omega_d * contact_time);
   // A round step, at most contact_time / steps_per_contact.
   const double step = contact_time / steps_per_contact;
   const double decade = std::pow(10.0, std::floor(std::log10(step)) - 2);
-  return {omega * omega, 2 * zeta * omega, zeta, contact_impedance,
-          std::floor(step / decade) * decade, velocity};
+  return {
+      omega * omega, 2 * zeta * omega, zeta, contact_impedance, std::floor(step / decade) * decade,
+      velocity};
 }
 
 namespace export_text {
@@ -114,7 +116,8 @@ namespace export_text {
 std::string mujoco_file(const ExportCampaign& campaign, const MujocoContact& contact,
                         const std::vector<ImpactFigures>& model) {
   const std::string d = as_written(contact.impedance);
-  const std::string solref = "-" + as_written(contact.stiffness) + " -" + as_written(contact.damping);
+  const std::string solref =
+      "-" + as_written(contact.stiffness) + " -" + as_written(contact.damping);
   const std::string solimp = d + " " + d + " 0.001 0.5 2";
   std::ostringstream out;
   out << "<!--\n"
@@ -140,8 +143,7 @@ std::string mujoco_file(const ExportCampaign& campaign, const MujocoContact& con
       << rounded(campaign.runs.front().velocity) << " to " << rounded(campaign.runs.back().velocity)
       << " m/s.\n"
       << "  The linear model against the FEM:\n"
-      << error_table("   ", campaign, model)
-      << "-->\n"
+      << error_table("   ", campaign, model) << "-->\n"
       << "<mujoco model=\"impact_drop\">\n"
       << "  <!-- no gravity, as in the FEM: the sphere arrives with the impact velocity -->\n"
       << "  <option timestep=\"" << as_written(contact.timestep)
@@ -153,7 +155,8 @@ std::string mujoco_file(const ExportCampaign& campaign, const MujocoContact& con
       << "    </default>\n"
       << "  </default>\n"
       << "  <worldbody>\n"
-      << "    <geom name=\"plate\" class=\"impact_contact\" type=\"plane\" size=\"0.1 0.1 0.01\"/>\n"
+      << "    <geom name=\"plate\" class=\"impact_contact\" type=\"plane\" size=\"0.1 0.1 "
+         "0.01\"/>\n"
       << "    <body name=\"sphere\" pos=\"0 0 " << as_written(campaign.radius) << "\">\n"
       << "      <freejoint name=\"sphere\"/>\n"
       << "      <geom name=\"sphere\" class=\"impact_contact\" type=\"sphere\" size=\""
@@ -171,14 +174,14 @@ using json = nlohmann::json;
 
 std::vector<ExportedFile> mujoco(const ExportCampaign& campaign, const CampaignImpact& reference) {
   ExportList list;
-  const MujocoContact mujoco = mujoco_contact(reference.fem.restitution,
-                                              reference.fem.contact_time, reference.velocity);
+  const MujocoContact mujoco =
+      mujoco_contact(reference.fem.restitution, reference.fem.contact_time, reference.velocity);
   std::vector<ImpactFigures> linear;
   for (const auto& run : campaign.runs)
     linear.push_back(
         linear_contact_impact(mujoco.stiffness, mujoco.damping, campaign.mass, run.velocity));
   list.files.emplace_back("mujoco/impact_contact.xml",
-                     export_text::mujoco_file(campaign, mujoco, linear));
+                          export_text::mujoco_file(campaign, mujoco, linear));
   list.exports.push_back(
       {{"tool", "mujoco"},
        {"tool_version", "2.2.2"},
@@ -186,15 +189,18 @@ std::vector<ExportedFile> mujoco(const ExportCampaign& campaign, const CampaignI
        {"model", "linear-spring-damper"},
        {"basis", "the FEM restitution and contact time at the reference velocity"},
        {"force_law", "F = m (K x + B dx/dt) while positive, else 0"},
-       {"calibrated", {{"K", value_unit(mujoco.stiffness, "1/s^2")},
-                       {"B", value_unit(mujoco.damping, "1/s")},
-                       {"damping_ratio", value_unit(mujoco.damping_ratio, "1")}}},
-       {"parameters", {{"solref", {-mujoco.stiffness, -mujoco.damping}},
-                       {"solimp", {mujoco.impedance, mujoco.impedance, 0.001, 0.5, 2}},
-                       {"condim", 1},
-                       {"timestep", value_unit(mujoco.timestep, "s")}}},
-       {"mapping", "direct solref (-K, -B) with flat solimp d: MuJoCo uses K / d^2, B / d and "
-                   "the impedance d, so one free body obeys x'' = -(K x + B dx/dt), no pull"},
+       {"calibrated",
+        {{"K", value_unit(mujoco.stiffness, "1/s^2")},
+         {"B", value_unit(mujoco.damping, "1/s")},
+         {"damping_ratio", value_unit(mujoco.damping_ratio, "1")}}},
+       {"parameters",
+        {{"solref", {-mujoco.stiffness, -mujoco.damping}},
+         {"solimp", {mujoco.impedance, mujoco.impedance, 0.001, 0.5, 2}},
+         {"condim", 1},
+         {"timestep", value_unit(mujoco.timestep, "s")}}},
+       {"mapping",
+        "direct solref (-K, -B) with flat solimp d: MuJoCo uses K / d^2, B / d and "
+        "the impedance d, so one free body obeys x'' = -(K x + B dx/dt), no pull"},
        {"same_law", true},
        {"note", "a linear contact: restitution and contact time do not depend on the velocity"},
        {"reference_velocity", reference.velocity},

@@ -43,14 +43,15 @@ std::string simbody_file(const ExportCampaign& campaign, const SimbodyContact& c
       << " %); the n = 3/2 fit is the closest law Simbody has, and\n"
       << "// the errors below are those of the n = 3/2 law itself.\n"
       << "//\n"
-      << "// Simbody's law (HuntCrossleyForceImpl): f = (4/3) sqrt(R) E x^(3/2) (1 + (3/2) c_s v),\n"
-      << "// E = (k1' k2' / (k1' + k2'))^(3/2), k' = k^(2/3), c_s = (c1 k2' + c2 k1') / (k1' + k2').\n"
+      << "// Simbody's law (HuntCrossleyForceImpl): f = (4/3) sqrt(R) E x^(3/2) (1 + (3/2) c_s "
+         "v),\n"
+      << "// E = (k1' k2' / (k1' + k2'))^(3/2), k' = k^(2/3), c_s = (c1 k2' + c2 k1') / (k1' + "
+         "k2').\n"
       << "// Both surfaces get the same k and c_s: k = 3 c / sqrt(2 R), c_s = 2 b / 3, R = the\n"
       << "// sphere radius (ContactGeometry::Sphere) against a ContactGeometry::HalfSpace.\n"
       << "// Velocities of the campaign: " << rounded(campaign.runs.front().velocity) << " to "
       << rounded(campaign.runs.back().velocity) << " m/s. The law against the FEM:\n"
-      << error_table("//", campaign, model)
-      << "\n"
+      << error_table("//", campaign, model) << "\n"
       << "#pragma once\n\n"
       << "#include <Simbody.h>\n\n"
       << "namespace impact_contact {\n\n"
@@ -84,7 +85,7 @@ std::vector<ExportedFile> simbody(const ExportCampaign& campaign, const Campaign
   const SimbodyContact simbody = simbody_contact(hc.stiffness, hc.damping, campaign.radius);
   const auto hc_figures = law_on_campaign(campaign, hc);
   list.files.emplace_back("simbody/impact_contact.hpp",
-                     export_text::simbody_file(campaign, simbody, hc_figures));
+                          export_text::simbody_file(campaign, simbody, hc_figures));
   list.exports.push_back(
       {{"tool", "simbody"},
        {"tool_version", "3.7"},
@@ -92,13 +93,17 @@ std::vector<ExportedFile> simbody(const ExportCampaign& campaign, const Campaign
        {"model", std::string(model_keys::hunt_crossley)},
        {"basis", "campaign.hunt_crossley_hertz_exponent"},
        {"force_law", "F = c x^(3/2) (1 + b dx/dt)"},
-       {"calibrated", {{"c", value_unit(hc.stiffness, "N/m^1.5")}, {"n", value_unit(1.5, "1")},
-                       {"b", value_unit(hc.damping, "s/m")}}},
-       {"parameters", {{"stiffness", value_unit(simbody.surface_stiffness, "Pa")},
-                       {"dissipation", value_unit(simbody.surface_dissipation, "s/m")}}},
-       {"mapping", "HuntCrossleyForce::setBodyParameters on both surfaces: stiffness = 3 c / "
-                   "sqrt(2 R), dissipation = 2 b / 3 (Simbody: f = (4/3) sqrt(R) E x^(3/2) "
-                   "(1 + (3/2) c_s v))"},
+       {"calibrated",
+        {{"c", value_unit(hc.stiffness, "N/m^1.5")},
+         {"n", value_unit(1.5, "1")},
+         {"b", value_unit(hc.damping, "s/m")}}},
+       {"parameters",
+        {{"stiffness", value_unit(simbody.surface_stiffness, "Pa")},
+         {"dissipation", value_unit(simbody.surface_dissipation, "s/m")}}},
+       {"mapping",
+        "HuntCrossleyForce::setBodyParameters on both surfaces: stiffness = 3 c / "
+        "sqrt(2 R), dissipation = 2 b / 3 (Simbody: f = (4/3) sqrt(R) E x^(3/2) "
+        "(1 + (3/2) c_s v))"},
        {"same_law", true},
        {"note", "Simbody's law has n = 3/2; the free campaign fit has n = " +
                     export_text::rounded(campaign.free_exponent, 5) +

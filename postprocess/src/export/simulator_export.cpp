@@ -69,8 +69,10 @@ json predictions_json(const ExportCampaign& campaign, const std::vector<ImpactFi
 }
 
 const std::vector<std::pair<std::string, Exporter>>& registered_exporters() {
-  static const std::vector<std::pair<std::string, Exporter>> exporters = {
-      {"simbody", simbody}, {"mujoco", mujoco}, {"lammps", lammps}, {"liggghts", liggghts}};
+  static const std::vector<std::pair<std::string, Exporter>> exporters = {{"simbody", simbody},
+                                                                          {"mujoco", mujoco},
+                                                                          {"lammps", lammps},
+                                                                          {"liggghts", liggghts}};
   return exporters;
 }
 
@@ -96,18 +98,22 @@ json write_exports(const ExportCampaign& campaign, std::optional<double> referen
       exports.push_back(std::move(exported.entry));
     }
 
-  const json manifest = {
-      {"format", "impact-export"},
-      {"format_version", 1},
-      {"generated_by", "impact-export"},
-      {"calibration", campaign.calibration_file},
-      {"sphere", {{"mass", campaign.mass}, {"radius", campaign.radius},
-                  {"units", {{"mass", "kg"}, {"radius", "m"}}}}},
-      {"reference_velocity", reference.velocity},
-      {"units", {{"impact_velocity", "m/s"}, {"restitution", "1"}, {"contact_time", "s"},
-                 {"force_max", "N"}}},
-      {"fem", fem},
-      {"exports", exports}};
+  const json manifest = {{"format", "impact-export"},
+                         {"format_version", 1},
+                         {"generated_by", "impact-export"},
+                         {"calibration", campaign.calibration_file},
+                         {"sphere",
+                          {{"mass", campaign.mass},
+                           {"radius", campaign.radius},
+                           {"units", {{"mass", "kg"}, {"radius", "m"}}}}},
+                         {"reference_velocity", reference.velocity},
+                         {"units",
+                          {{"impact_velocity", "m/s"},
+                           {"restitution", "1"},
+                           {"contact_time", "s"},
+                           {"force_max", "N"}}},
+                         {"fem", fem},
+                         {"exports", exports}};
   files.emplace_back("export.json", manifest.dump(2) + "\n");
 
   // Written beside the target and moved into place, so a failure leaves no half directory.

@@ -24,12 +24,15 @@ std::string error(double model, double fem) {
 
 } // namespace
 
-std::string rounded(double value, int digits) { return format("%.*g", value, digits); }
+std::string rounded(double value, int digits) {
+  return format("%.*g", value, digits);
+}
 
 std::string error_table(const std::string& comment, const ExportCampaign& campaign,
                         const std::vector<ImpactFigures>& model) {
   std::ostringstream out;
-  out << comment << "   V [m/s]   e (vs FEM)            t_c [s] (vs FEM)          F_max [N] (vs FEM)\n";
+  out << comment
+      << "   V [m/s]   e (vs FEM)            t_c [s] (vs FEM)          F_max [N] (vs FEM)\n";
   for (std::size_t i = 0; i < campaign.runs.size(); ++i) {
     const auto& fem = campaign.runs[i].fem;
     char line[256];

@@ -114,8 +114,8 @@ std::vector<double> velocity_grid(const std::vector<ReportRun>& runs) {
 
 // Values of every quantity along the grid for parameters (c, n, dissipation...).
 std::array<std::vector<double>, quantity_count> along(const ContactModel& model, double mass,
-                                                     const std::vector<double>& grid,
-                                                     const std::vector<double>& parameters) {
+                                                      const std::vector<double>& grid,
+                                                      const std::vector<double>& parameters) {
   std::array<std::vector<double>, quantity_count> values;
   const std::vector<double> dissipation(parameters.begin() + 2, parameters.end());
   for (double velocity : grid) {
@@ -137,13 +137,14 @@ PredictionBand curve_of(const ContactModel& model, double mass, const std::vecto
 
 // Jackknife band: +- t_{g-1} sqrt((g-1)/g sum (y_i - mean)^2) about the full fit's curve.
 std::optional<PredictionBand> band_of(const ContactModel& model, double mass,
-                                      const std::vector<double>& grid,
-                                      const CampaignModelFit& fit, double level) {
+                                      const std::vector<double>& grid, const CampaignModelFit& fit,
+                                      double level) {
   const std::size_t g = fit.held_out.size();
   if (g < 3 || grid.empty()) return std::nullopt;
   PredictionBand band = curve_of(model, mass, grid, fit.fit.parameter_values());
   std::vector<std::array<std::vector<double>, quantity_count>> held;
-  for (const auto& held_out : fit.held_out) held.push_back(along(model, mass, grid, held_out.parameters));
+  for (const auto& held_out : fit.held_out)
+    held.push_back(along(model, mass, grid, held_out.parameters));
   const boost::math::students_t distribution{double(g - 1)};
   const double t = boost::math::quantile(distribution, 0.5 + level / 2);
   for (std::size_t q = 0; q < quantity_count; ++q)
@@ -182,8 +183,8 @@ ContactModel model_named(const std::string& name, const std::vector<FemRun>& fem
 }
 
 ReportModel fitted_model(const std::vector<ReportRun>& runs, const std::vector<FemRun>& fem_runs,
-                         const CampaignModelFit& fit,
-                         std::string key, std::string label, std::string basis, double level) {
+                         const CampaignModelFit& fit, std::string key, std::string label,
+                         std::string basis, double level) {
   const ModelFit& parameters = fit.fit;
   std::vector<std::string> units{"N/m^n", "1", parameters.parameter_unit};
   for (const auto& extra : parameters.extra) units.push_back(extra.unit);
@@ -202,8 +203,10 @@ ReportModel fitted_model(const std::vector<ReportRun>& runs, const std::vector<F
     if (const auto index = matching(fit.runs, run.source, run.velocity)) {
       const RunResidual& residual = fit.runs[*index];
       const ImpactFigures in = residual.prediction;
-      if (std::isfinite(in.restitution)) at.in_sample = in;
-      else at.missing = "the calibration's prediction of " + fit.key + " is incomplete";
+      if (std::isfinite(in.restitution))
+        at.in_sample = in;
+      else
+        at.missing = "the calibration's prediction of " + fit.key + " is incomplete";
       if (residual.out_of_sample) at.out_of_sample = *residual.out_of_sample;
     } else {
       at.missing = "the calibration has no prediction of " + fit.key + " for this run";
@@ -226,8 +229,7 @@ ReportModel fitted_model(const std::vector<ReportRun>& runs, const std::vector<F
 }
 
 ReportModel reference_model(const std::vector<ReportRun>& runs, const std::vector<FemRun>& fem_runs,
-                            const ReferenceModel& reference,
-                            std::string label) {
+                            const ReferenceModel& reference, std::string label) {
   ReportModel model;
   model.key = reference.key;
   model.label = std::move(label);
@@ -245,8 +247,10 @@ ReportModel reference_model(const std::vector<ReportRun>& runs, const std::vecto
     ModelAtRun at;
     if (const auto index = matching(reference.runs, run.source, run.velocity)) {
       const ImpactFigures impact = reference.runs[*index].prediction;
-      if (std::isfinite(impact.restitution)) at.in_sample = at.out_of_sample = impact;
-      else at.missing = "the model cannot be evaluated at this run";
+      if (std::isfinite(impact.restitution))
+        at.in_sample = at.out_of_sample = impact;
+      else
+        at.missing = "the model cannot be evaluated at this run";
     } else {
       at.missing = "the calibration has no prediction of " + reference.key + " for this run";
     }
@@ -271,7 +275,8 @@ ReportModel per_run_model(const std::vector<ReportRun>& runs, const Calibration&
   model.key = std::string(model_keys::calibrated);
   model.label = "Hunt–Crossley (per-run fit)";
   model.parameters = "c, n, b of each run's force-history fit (table of runs)";
-  model.basis = "no campaign fit (" + reason + "): each run is compared with its own "
+  model.basis = "no campaign fit (" + reason +
+                "): each run is compared with its own "
                 "force-history fit, which says nothing about other velocities";
   model.free_parameters = 3;
   const ContactModel law = hunt_crossley_model();
@@ -285,13 +290,15 @@ ReportModel per_run_model(const std::vector<ReportRun>& runs, const Calibration&
       continue;
     }
     if (!entry->history->converged) model.converged = false;
-    if (entry->history_prediction) at.in_sample = *entry->history_prediction;
-    else at.missing = "the calibration has no prediction of this run's fit";
+    if (entry->history_prediction)
+      at.in_sample = *entry->history_prediction;
+    else
+      at.missing = "the calibration has no prediction of this run's fit";
     try {
       const ModelFit& fit = *entry->history;
-      at.history = history_of(predict_history(law, run.mass, run.velocity, fit.stiffness.value,
-                                              fit.exponent.value, fit.dissipation(),
-                                              model_history_points));
+      at.history =
+          history_of(predict_history(law, run.mass, run.velocity, fit.stiffness.value,
+                                     fit.exponent.value, fit.dissipation(), model_history_points));
       at.residual = residual_of(at.history, run);
     } catch (const std::exception& error) {
       if (at.missing.empty()) at.missing = std::string("no history: ") + error.what();
@@ -339,7 +346,9 @@ bool same_source(const std::string& a, const std::string& b) {
   return !error && pa == pb;
 }
 
-bool same_velocity(double a, double b) { return same_value(a, b); }
+bool same_velocity(double a, double b) {
+  return same_value(a, b);
+}
 
 std::vector<ReportModel> report_models(const std::vector<ReportRun>& runs,
                                        const std::vector<FemRun>& fem_runs,
@@ -347,22 +356,23 @@ std::vector<ReportModel> report_models(const std::vector<ReportRun>& runs,
                                        std::vector<Problem>& problems) {
   std::vector<ReportModel> models;
   if (!calibration) {
-    models.push_back(missing_model(runs, std::string(model_keys::calibrated), "Hunt–Crossley (calibrated)",
-                                   "no calibration"));
+    models.push_back(missing_model(runs, std::string(model_keys::calibrated),
+                                   "Hunt–Crossley (calibrated)", "no calibration"));
     return models;
   }
   const CampaignCalibration& campaign = calibration->campaign;
   const double level = calibration->confidence_level;
   if (campaign.fitted && campaign.hunt_crossley)
-    models.push_back(fitted_model(runs, fem_runs, *campaign.hunt_crossley, std::string(model_keys::calibrated),
-                                  "Hunt–Crossley (calibrated)",
+    models.push_back(fitted_model(runs, fem_runs, *campaign.hunt_crossley,
+                                  std::string(model_keys::calibrated), "Hunt–Crossley (calibrated)",
                                   "campaign fit of the calibration to the force histories of "
                                   "all runs: one (c, n, b) for all runs",
                                   level));
   else
     models.push_back(per_run_model(runs, *calibration,
-                                   campaign.reason.empty() ? std::string("the campaign was not fitted")
-                                                           : campaign.reason));
+                                   campaign.reason.empty()
+                                       ? std::string("the campaign was not fitted")
+                                       : campaign.reason));
   if (campaign.fitted && campaign.hunt_crossley_energy)
     models.push_back(fitted_model(
         runs, fem_runs, *campaign.hunt_crossley_energy, campaign.hunt_crossley_energy->key,
@@ -371,12 +381,11 @@ std::vector<ReportModel> report_models(const std::vector<ReportRun>& runs,
             short_number(campaign.hunt_crossley_energy->energy_weight) + ")",
         level));
   if (campaign.fitted && campaign.hunt_crossley_velocity_damping)
-    models.push_back(fitted_model(runs, fem_runs, *campaign.hunt_crossley_velocity_damping,
-                                  campaign.hunt_crossley_velocity_damping->key,
-                                  "Hunt–Crossley b(V)",
-                                  "b(V) = b_1 (V / 1 m/s)^-q, " +
-                                      campaign.hunt_crossley_velocity_damping->label,
-                                  level));
+    models.push_back(
+        fitted_model(runs, fem_runs, *campaign.hunt_crossley_velocity_damping,
+                     campaign.hunt_crossley_velocity_damping->key, "Hunt–Crossley b(V)",
+                     "b(V) = b_1 (V / 1 m/s)^-q, " + campaign.hunt_crossley_velocity_damping->label,
+                     level));
   if (campaign.fitted) {
     const CampaignModelFit* best = nullptr;
     for (const auto& entry : campaign.ranking) {
@@ -408,23 +417,25 @@ std::vector<ReportModel> report_models(const std::vector<ReportRun>& runs,
     for (const auto& key : damped_plastic_model_names()) {
       const CampaignModelFit* fit = campaign.find(key);
       if (fit && best_key != key)
-        models.push_back(fitted_model(runs, fem_runs, *fit, fit->key, *damped_label(key) + " (fitted)",
+        models.push_back(fitted_model(runs, fem_runs, *fit, fit->key,
+                                      *damped_label(key) + " (fitted)",
                                       fit->label + ": the spring's yield parameter and b fitted "
                                                    "to all runs",
                                       level));
     }
   if (const auto* material = reference(std::string(model_keys::kuwabara_kono_material)))
-    models.push_back(reference_model(runs, fem_runs, *material, "Kuwabara–Kono (A from the material)"));
+    models.push_back(
+        reference_model(runs, fem_runs, *material, "Kuwabara–Kono (A from the material)"));
   if (const auto* damped = reference(std::string(model_keys::hunt_crossley_thornton_material)))
     models.push_back(
         reference_model(runs, fem_runs, *damped, "Hunt–Crossley on Thornton (from the material)"));
-  if (const auto* damped =
-          reference(std::string(model_keys::hunt_crossley_jackson_green_material)))
+  if (const auto* damped = reference(std::string(model_keys::hunt_crossley_jackson_green_material)))
     models.push_back(reference_model(runs, fem_runs, *damped,
                                      "Hunt–Crossley on Jackson–Green (from the material)"));
   if (const auto* published = reference(std::string(model_keys::hunt_crossley_published)))
     models.push_back(reference_model(runs, fem_runs, *published, published->label));
-  if (const auto* hertz = reference(std::string(model_keys::hertz))) models.push_back(reference_model(runs, fem_runs, *hertz, hertz->label));
+  if (const auto* hertz = reference(std::string(model_keys::hertz)))
+    models.push_back(reference_model(runs, fem_runs, *hertz, hertz->label));
   for (const auto& model : models)
     if (!model.converged)
       problems.push_back({model.label, ProblemKind::convergence,

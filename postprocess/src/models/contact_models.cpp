@@ -72,10 +72,12 @@ ContactModel hunt_crossley_model() {
 ContactModel velocity_damped_hunt_crossley_model() {
   ContactModel model = hunt_crossley_model();
   model.name = std::string(model_keys::hunt_crossley_velocity_damping);
-  model.formula = "F = c x^n (1 + b(V) x'), b(V) = b_1 (V / 1 m/s)^(-q), V the speed at first "
-                  "contact; q = 0 is Hunt-Crossley, q = 1 a constant restitution";
-  model.reference = "Hunt and Crossley (1975); velocity-dependent damping as in the "
-                    "restitution-based maps (b ~ 1/V, e.g. Lankarani and Nikravesh 1990)";
+  model.formula =
+      "F = c x^n (1 + b(V) x'), b(V) = b_1 (V / 1 m/s)^(-q), V the speed at first "
+      "contact; q = 0 is Hunt-Crossley, q = 1 a constant restitution";
+  model.reference =
+      "Hunt and Crossley (1975); velocity-dependent damping as in the "
+      "restitution-based maps (b ~ 1/V, e.g. Lankarani and Nikravesh 1990)";
   model.damping_name = "b_1";
   // q in [-1, 3]: from a b growing with V to faster than any published map falls.
   model.extra_parameters = {{"q", "1", 0.0, -1.0, 3.0}};
@@ -98,10 +100,10 @@ ContactModel comparison_model(const std::string& name) {
   model.required_exponent = law.required_exponent;
   model.contact_end = law.contact_end;
   const auto& by_restitution = restitution_parametrised_laws();
-  model.parameter = std::find(by_restitution.begin(), by_restitution.end(), name) !=
-                            by_restitution.end()
-                        ? DissipationParameter::restitution
-                        : DissipationParameter::damping;
+  model.parameter =
+      std::find(by_restitution.begin(), by_restitution.end(), name) != by_restitution.end()
+          ? DissipationParameter::restitution
+          : DissipationParameter::damping;
   model.damping_for_restitution = law.damping_for_restitution;
   if (model.parameter == DissipationParameter::restitution)
     model.damping = [map = law.damping_for_restitution](const std::vector<double>& p,
@@ -119,7 +121,8 @@ ContactModel comparison_model(const std::string& name) {
 
 ContactModel contact_model(const std::string& name) {
   if (name == model_keys::hunt_crossley) return hunt_crossley_model();
-  if (name == model_keys::hunt_crossley_velocity_damping) return velocity_damped_hunt_crossley_model();
+  if (name == model_keys::hunt_crossley_velocity_damping)
+    return velocity_damped_hunt_crossley_model();
   return comparison_model(name);
 }
 
@@ -147,9 +150,10 @@ ImpactPrediction predict_impact(const ContactModel& model, double mass, double v
       const auto response = impact.response();
       static_cast<ImpactFigures&>(prediction) = response.figures();
     } else {
-      const auto impact = reduced::integrate_impact(
-          mass, velocity, model.force_law(prediction.damping, {mass, stiffness, exponent}),
-          tolerance, model.contact_end);
+      const auto impact = reduced::integrate_impact(mass, velocity,
+                                                    model.force_law(prediction.damping,
+                                                                    {mass, stiffness, exponent}),
+                                                    tolerance, model.contact_end);
       static_cast<ImpactFigures&>(prediction) = impact.figures();
     }
   } catch (const std::exception&) {
@@ -165,8 +169,9 @@ double predict_restitution(const ContactModel& model, double mass, double veloci
       return damped_plastic_impact(model, mass, velocity, stiffness, dissipation)->restitution();
     const double damping = damping_at(model, mass, velocity, stiffness, exponent, dissipation);
     if (model.plastic_contact)
-      return reduced::elastic_plastic_impact(
-                 mass, velocity, *model.plastic_contact(damping, {mass, stiffness, exponent}))
+      return reduced::elastic_plastic_impact(mass, velocity,
+                                             *model.plastic_contact(damping,
+                                                                    {mass, stiffness, exponent}))
           .restitution;
     if (model.hunt_crossley_force()) {
       if (!(damping >= 0 && std::isfinite(damping))) return nan;
@@ -190,9 +195,10 @@ std::vector<reduced::ImpactSample> predict_history(const ContactModel& model, do
     return damped_plastic_impact(model, mass, velocity, stiffness, dissipation)->history(points);
   const double damping = damping_at(model, mass, velocity, stiffness, exponent, dissipation);
   if (model.plastic_contact)
-    return reduced::elastic_plastic_impact_loop(
-        mass, velocity, *model.plastic_contact(damping, {mass, stiffness, exponent}),
-        std::max<std::size_t>(2, (points + 1) / 2));
+    return reduced::elastic_plastic_impact_loop(mass, velocity,
+                                                *model.plastic_contact(damping,
+                                                                       {mass, stiffness, exponent}),
+                                                std::max<std::size_t>(2, (points + 1) / 2));
   if (model.hunt_crossley_force()) {
     std::vector<reduced::ImpactSample> samples;
     for (const auto& state :
@@ -200,9 +206,9 @@ std::vector<reduced::ImpactSample> predict_history(const ContactModel& model, do
       samples.push_back({state.time, state.approach, state.approach_rate, state.force});
     return samples;
   }
-  return reduced::integrate_impact_history(
-      mass, velocity, model.force_law(damping, {mass, stiffness, exponent}), points, 1e-10,
-      model.contact_end);
+  return reduced::integrate_impact_history(mass, velocity,
+                                           model.force_law(damping, {mass, stiffness, exponent}),
+                                           points, 1e-10, model.contact_end);
 }
 
 } // namespace impact::postprocess

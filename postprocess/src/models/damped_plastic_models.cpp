@@ -42,9 +42,10 @@ bool from_dissipative_constant(const std::string& name) {
 
 class HuntCrossleyPlasticImpact final : public DampedPlasticImpact {
 public:
-  HuntCrossleyPlasticImpact(double mass, std::shared_ptr<const reduced::ElasticPlasticContact> spring,
+  HuntCrossleyPlasticImpact(double mass,
+                            std::shared_ptr<const reduced::ElasticPlasticContact> spring,
                             double damping, double velocity)
-    : impact_(mass, std::move(spring), damping, velocity) {}
+      : impact_(mass, std::move(spring), damping, velocity) {}
 
   reduced::ImpactFigures figures() const override { return impact_.response().figures(); }
   double restitution() const override { return impact_.restitution(); }
@@ -71,19 +72,20 @@ public:
       return spring.loading_force(std::max(x, 0.0)) * (1 + b * rate);
     };
     const reduced::HertzianUnloading branch = impact_.unloading();
-    if (!(branch.stiffness > 0))  // elastic: the whole impact on the loading branch
+    if (!(branch.stiffness > 0)) // elastic: the whole impact on the loading branch
       return reduced::integrate_impact_history(mass, velocity, loading, points, tolerance);
     // The compression's samples (rate > 0) and its end, where the rate crosses 0 between two
     // samples: linear in the rate there (error ~ h^2 b F / (8 m) in time, 1e-7 of t_c for the
     // FEM's sampling), one integration instead of a second one for the event.
-    const auto loaded = reduced::integrate_impact_history(mass, velocity, loading, points, tolerance);
+    const auto loaded =
+        reduced::integrate_impact_history(mass, velocity, loading, points, tolerance);
     double compression = loaded.back().time;
     for (std::size_t k = 0; k < loaded.size(); ++k) {
       if (loaded[k].approach_rate > 0) {
         samples.push_back(loaded[k]);
         continue;
       }
-      const auto& before = loaded[k - 1];  // k > 0: the first sample is at the impact velocity
+      const auto& before = loaded[k - 1]; // k > 0: the first sample is at the impact velocity
       compression = before.time + (loaded[k].time - before.time) * before.approach_rate /
                                       (before.approach_rate - loaded[k].approach_rate);
       break;
@@ -98,15 +100,14 @@ public:
     for (const auto& state : unloading.history(points)) {
       if (!(state.time > unloading.compression_time())) continue;
       const double approach = state.approach + branch.residual_approach;
-      if (approach < 0) break;  // x_r < 0: the surfaces part at x = 0 (appended below)
+      if (approach < 0) break; // x_r < 0: the surfaces part at x = 0 (appended below)
       samples.push_back({state.time + shift, approach, state.approach_rate, state.force});
     }
     if (branch.residual_approach < 0) {
       const double rate = impact_.rebound_velocity();
-      samples.push_back(
-          {shift + unloading.time_at_approach(-branch.residual_approach,
-                                              reduced::ImpactPhase::restitution),
-           0.0, rate, impact_.force(0.0, rate, reduced::ImpactPhase::restitution)});
+      samples.push_back({shift + unloading.time_at_approach(-branch.residual_approach,
+                                                            reduced::ImpactPhase::restitution),
+                         0.0, rate, impact_.force(0.0, rate, reduced::ImpactPhase::restitution)});
     }
     return samples;
   }
@@ -191,10 +192,12 @@ bool damped_plastic_needs_scenario(const std::string& name) {
 
 ContactModel damped_plastic_model(const std::string& name, const ContactModel& spring) {
   if (!is_damped_plastic_model(name))
-    throw reduced::InvalidInput("model", "model must be one of the damped elastic-plastic models "
-                                         "(hunt-crossley-thornton, hunt-crossley-jackson-green, "
-                                         "hunt-crossley-thornton-from-a, "
-                                         "hunt-crossley-jackson-green-from-a), got '" + name + "'");
+    throw reduced::InvalidInput("model",
+                                "model must be one of the damped elastic-plastic models "
+                                "(hunt-crossley-thornton, hunt-crossley-jackson-green, "
+                                "hunt-crossley-thornton-from-a, "
+                                "hunt-crossley-jackson-green-from-a), got '" +
+                                    name + "'");
   if (!spring.plastic_contact || spring.damped_plastic())
     throw reduced::InvalidInput("spring", "the spring of " + name +
                                               " must be a rate-independent plastic model, got '" +
@@ -229,9 +232,10 @@ ContactModel damped_plastic_model(const std::string& name, const ContactModel& s
 
 ContactModel damped_plastic_model(const std::string& name) {
   if (damped_plastic_needs_scenario(name))
-    throw reduced::InvalidInput("model", "the model " + name + " needs the scenario's sphere "
-                                         "radius and Poisson ratio: build it from the runs "
-                                         "(comparison_model(name, runs))");
+    throw reduced::InvalidInput("model", "the model " + name +
+                                             " needs the scenario's sphere "
+                                             "radius and Poisson ratio: build it from the runs "
+                                             "(comparison_model(name, runs))");
   return damped_plastic_model(name, plastic_model(std::string(model_keys::thornton)));
 }
 
@@ -252,21 +256,24 @@ std::unique_ptr<const DampedPlasticImpact> damped_plastic_impact(
   const double yield_parameter = model.damping(dissipation, velocity, setup);
   const double damping = model.spring_damping_constant(dissipation, velocity, setup);
   switch (model.spring_damping) {
-  case SpringDamping::hunt_crossley:
-    return std::make_unique<HuntCrossleyPlasticImpact>(
-        mass, model.plastic_contact(yield_parameter, setup), damping, velocity);
-  case SpringDamping::kuwabara_kono:
-    throw reduced::InvalidInput("model", "Kuwabara-Kono damping on an elastic-plastic spring ("
-                                         + model.name + ") is not available yet: it waits for "
-                                         "the reduced library's law "
-                                         "(kuwabara_kono_elastic_plastic.hpp)");
-  case SpringDamping::none: break;
+    case SpringDamping::hunt_crossley:
+      return std::make_unique<HuntCrossleyPlasticImpact>(
+          mass, model.plastic_contact(yield_parameter, setup), damping, velocity);
+    case SpringDamping::kuwabara_kono:
+      throw reduced::InvalidInput("model", "Kuwabara-Kono damping on an elastic-plastic spring (" +
+                                               model.name +
+                                               ") is not available yet: it waits for "
+                                               "the reduced library's law "
+                                               "(kuwabara_kono_elastic_plastic.hpp)");
+    case SpringDamping::none:
+      break;
   }
-  throw reduced::InvalidInput("model", "the model " + model.name +
-                                           " is not a damped elastic-plastic model");
+  throw reduced::InvalidInput("model",
+                              "the model " + model.name + " is not a damped elastic-plastic model");
 }
 
-std::optional<MaterialDampedPlastic> material_hunt_crossley_thornton(const std::vector<FemRun>& runs) {
+std::optional<MaterialDampedPlastic> material_hunt_crossley_thornton(
+    const std::vector<FemRun>& runs) {
   const auto thornton = material_thornton(runs);
   if (!thornton) return std::nullopt;
   std::string source;

@@ -47,13 +47,22 @@ std::string slope_words(const std::string& of, double slope,
 FamilyRange judge(const std::vector<double>& v, const std::vector<double>& e, bool above_yield,
                   bool plastic_possible, std::optional<double> yield_velocity, double level,
                   const std::vector<PlasticReference>& laws) {
-  FamilyRange range{v.front(), v.back(), v.size(), above_yield, "", nan, "", std::nullopt,
-                    plastic_restitution_slope, plastic_restitution_slope, ""};
+  FamilyRange range{v.front(),
+                    v.back(),
+                    v.size(),
+                    above_yield,
+                    "",
+                    nan,
+                    "",
+                    std::nullopt,
+                    plastic_restitution_slope,
+                    plastic_restitution_slope,
+                    ""};
   std::string where = "V = " + format(range.low) +
                       (range.high > range.low ? " to " + format(range.high) : "") + " m/s";
   if (yield_velocity)
-    where += " (" + std::string(above_yield ? "above" : "at or below") + " V_y, V/V_y = " +
-             format(range.low / *yield_velocity) +
+    where += " (" + std::string(above_yield ? "above" : "at or below") +
+             " V_y, V/V_y = " + format(range.low / *yield_velocity) +
              (range.high > range.low ? " to " + format(range.high / *yield_velocity) : "") + ", " +
              std::to_string(v.size()) + (v.size() == 1 ? " run)" : " runs)");
   else
@@ -89,13 +98,16 @@ FamilyRange judge(const std::vector<double>& v, const std::vector<double>& e, bo
       laws_words += (laws_words.empty() ? "" : ", ") + law.law + " " + format(slope);
     }
     // Distance to the plastic band and to a constant e (slope 0).
-    const double to_plastic =
-        s < range.plastic_low ? range.plastic_low - s : (s > range.plastic_high ? s - range.plastic_high : 0.0);
+    const double to_plastic = s < range.plastic_low
+                                  ? range.plastic_low - s
+                                  : (s > range.plastic_high ? s - range.plastic_high : 0.0);
     const bool plastic = to_plastic < std::abs(s);
     const std::string reference =
-        laws_words.empty() ? "the plastic family (reference slope -1/4 far above V_y, Thornton 1997)"
-                           : "the plastic family (the plastic laws' own slopes over these "
-                             "velocities: " + laws_words + "; -1/4 far above V_y)";
+        laws_words.empty()
+            ? "the plastic family (reference slope -1/4 far above V_y, Thornton 1997)"
+            : "the plastic family (the plastic laws' own slopes over these "
+              "velocities: " +
+                  laws_words + "; -1/4 far above V_y)";
     range.family = plastic ? "plastic" : "constant restitution";
     range.text = where + ": " + slope_words("e", s, restitution_trend) + ": " +
                  (plastic ? reference + ", not a constant e (slope 0)"
@@ -111,10 +123,12 @@ FamilyRange judge(const std::vector<double>& v, const std::vector<double>& e, bo
     if (!nearest || std::abs(reference.slope - p) < std::abs(nearest->slope - p))
       nearest = &reference;
   range.family = nearest->family;
-  range.text = where + ": " + slope_words("1 - e", p, loss_trend) + ", nearest " +
-               nearest->family + " (slope " + format(nearest->slope) + ")" +
-               (plastic_possible ? "" : "; the plastic family does not apply (the FEM's "
-                                        "material does not yield)") + ".";
+  range.text = where + ": " + slope_words("1 - e", p, loss_trend) + ", nearest " + nearest->family +
+               " (slope " + format(nearest->slope) + ")" +
+               (plastic_possible ? ""
+                                 : "; the plastic family does not apply (the FEM's "
+                                   "material does not yield)") +
+               ".";
   return range;
 }
 
@@ -153,9 +167,10 @@ std::string family_ranges_text(const std::vector<FamilyRange>& ranges,
                                std::optional<double> yield_velocity) {
   if (ranges.empty()) return "";
   std::string text = "Which family the FEM follows";
-  text += yield_velocity ? " (split at the yield velocity V_y = " + format(*yield_velocity, "%.4g") +
-                               " m/s of the material, Johnson's p_y = 1.6 Y):"
-                         : ":";
+  text += yield_velocity
+              ? " (split at the yield velocity V_y = " + format(*yield_velocity, "%.4g") +
+                    " m/s of the material, Johnson's p_y = 1.6 Y):"
+              : ":";
   for (const auto& range : ranges) text += " " + range.text;
   return text;
 }

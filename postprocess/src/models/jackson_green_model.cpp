@@ -17,7 +17,9 @@ namespace impact::postprocess {
 
 namespace {
 
-std::string format(double value) { return six_digits(value); }
+std::string format(double value) {
+  return six_digits(value);
+}
 
 // E* of the law for stiffness c: c = (4/3) E* sqrt(R).
 double contact_modulus_of(double stiffness, double radius) {
@@ -61,7 +63,8 @@ double yield_strength_for_restitution(double restitution, double velocity, doubl
 
 } // namespace
 
-std::string jackson_green_formula(std::optional<double> radius, std::optional<double> poisson_ratio) {
+std::string jackson_green_formula(std::optional<double> radius,
+                                  std::optional<double> poisson_ratio) {
   const std::string scenario =
       radius && poisson_ratio
           ? "R = " + format(*radius) + " m and nu = " + format(*poisson_ratio) + " of the scenario"
@@ -69,7 +72,8 @@ std::string jackson_green_formula(std::optional<double> radius, std::optional<do
   return "F = c x^(3/2) up to 1.9 omega_c, then Jackson & Green's fit P/P_c = "
          "exp(-w^(5/12)/4) w^(3/2) + (4 H_G/(C Y)) (1 - exp(-w^(5/9)/25)) w, w = x/omega_c, "
          "P_c = c omega_c^(3/2), H_G/Y = 2.84 (1 - exp(-0.82 (a/R)^-0.7)), E* = 3 c/(4 sqrt R), "
-         "omega_c = (pi C Y/(2 E*))^2 R, C = 1.295 exp(0.736 nu), with " + scenario +
+         "omega_c = (pi C Y/(2 E*))^2 R, C = 1.295 exp(0.736 nu), with " +
+         scenario +
          "; unloading Hertzian on the radius that keeps the contact radius of the maximum; "
          "no rate dependence, no hardening";
 }
@@ -90,8 +94,9 @@ ContactModel jackson_green_model(double radius, double poisson_ratio) {
   };
   model.plastic_contact = [radius, poisson_ratio](double yield_strength,
                                                   const reduced::ContactSetup& setup) {
-    return std::make_shared<reduced::JacksonGreenContact>(reduced::SphereFlatContact{
-        radius, contact_modulus_of(setup.stiffness, radius), yield_strength, poisson_ratio});
+    return std::make_shared<reduced::JacksonGreenContact>(
+        reduced::SphereFlatContact{radius, contact_modulus_of(setup.stiffness, radius),
+                                   yield_strength, poisson_ratio});
   };
   return model;
 }
@@ -110,11 +115,14 @@ std::optional<SphereFlatScenario> sphere_flat_scenario(const std::vector<FemRun>
     return SphereFlatScenario{*radius, contact->yield_poisson_ratio, contact->contact_modulus,
                               contact->yield_strength,
                               "R = " + format(*radius) + " m ('Scenario/Sphere radius'), E* = " +
-                                  format(contact->contact_modulus) + " Pa, nu = " +
-                                  format(contact->yield_poisson_ratio) + " and Y = " +
-                                  format(contact->yield_strength) + " Pa of the body that "
-                                  "yields first (" + contact->yield_basis + ")"};
-  const auto nu = material_constant(runs.front(), fem_format::sphere_body, fem_format::poissons_ratio);
+                                  format(contact->contact_modulus) +
+                                  " Pa, nu = " + format(contact->yield_poisson_ratio) +
+                                  " and Y = " + format(contact->yield_strength) +
+                                  " Pa of the body that "
+                                  "yields first (" +
+                                  contact->yield_basis + ")"};
+  const auto nu =
+      material_constant(runs.front(), fem_format::sphere_body, fem_format::poissons_ratio);
   if (!nu || !(*nu > -1 && *nu < 0.5)) return std::nullopt;
   return SphereFlatScenario{*radius, *nu, std::nullopt, std::nullopt,
                             "R = " + format(*radius) + " m ('Scenario/Sphere radius'), nu = " +
@@ -124,11 +132,11 @@ std::optional<SphereFlatScenario> sphere_flat_scenario(const std::vector<FemRun>
 std::optional<MaterialJacksonGreen> material_jackson_green(const std::vector<FemRun>& runs) {
   const auto scenario = sphere_flat_scenario(runs);
   if (!scenario || !scenario->yield_strength || !scenario->contact_modulus) return std::nullopt;
-  return MaterialJacksonGreen{
-      4.0 / 3.0 * *scenario->contact_modulus * std::sqrt(scenario->radius),
-      *scenario->yield_strength, jackson_green_model(scenario->radius, scenario->poisson_ratio),
-      "no fit: " + scenario->basis + "; c = (4/3) E* sqrt(R); " +
-          hardening_note(runs.front())};
+  return MaterialJacksonGreen{4.0 / 3.0 * *scenario->contact_modulus * std::sqrt(scenario->radius),
+                              *scenario->yield_strength,
+                              jackson_green_model(scenario->radius, scenario->poisson_ratio),
+                              "no fit: " + scenario->basis + "; c = (4/3) E* sqrt(R); " +
+                                  hardening_note(runs.front())};
 }
 
 } // namespace impact::postprocess

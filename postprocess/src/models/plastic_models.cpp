@@ -24,11 +24,12 @@ constexpr double pi = 3.14159265358979323846;
 
 // Thornton's law for c and x_y: any radius gives the same law (plastic_models.hpp); R = 1 m,
 // E* = 3 c / 4, p_y = 3 c sqrt(x_y) / (2 pi).
-std::shared_ptr<const reduced::ElasticPlasticContact> thornton_contact(double yield_approach,
-                                                                       const reduced::ContactSetup& setup) {
+std::shared_ptr<const reduced::ElasticPlasticContact> thornton_contact(
+    double yield_approach, const reduced::ContactSetup& setup) {
   const double c = setup.stiffness;
-  return std::make_shared<reduced::ThorntonContact>(
-      1.0, 0.75 * c, thornton_yield_pressure(c, yield_approach, 1.0));
+  return std::make_shared<reduced::ThorntonContact>(1.0, 0.75 * c,
+                                                    thornton_yield_pressure(c, yield_approach,
+                                                                            1.0));
 }
 
 // V_y / V that gives restitution e under Thornton's law (e rises from 0 to 1 with V_y / V).
@@ -82,7 +83,7 @@ ContactModel plastic_model_base(std::string name, std::string formula, std::stri
 
 const std::vector<std::string>& plastic_model_names() {
   static const std::vector<std::string> names = {std::string(model_keys::thornton),
-                                                  std::string(model_keys::jackson_green)};
+                                                 std::string(model_keys::jackson_green)};
   return names;
 }
 
@@ -94,11 +95,14 @@ bool is_plastic_model(const std::string& name) {
 ContactModel plastic_model(const std::string& name) {
   if (name == model_keys::thornton) return thornton_model();
   if (name == model_keys::jackson_green)
-    throw reduced::InvalidInput("model", "the model jackson-green needs the scenario's sphere "
-                                         "radius and Poisson ratio: build it from the runs "
-                                         "(comparison_model(name, runs))");
-  throw reduced::InvalidInput("model", "model must be one of the plastic models (thornton, "
-                                       "jackson-green), got '" + name + "'");
+    throw reduced::InvalidInput("model",
+                                "the model jackson-green needs the scenario's sphere "
+                                "radius and Poisson ratio: build it from the runs "
+                                "(comparison_model(name, runs))");
+  throw reduced::InvalidInput("model",
+                              "model must be one of the plastic models (thornton, "
+                              "jackson-green), got '" +
+                                  name + "'");
 }
 
 std::string model_formula(const std::string& name) {
@@ -120,9 +124,11 @@ ContactModel comparison_model(const std::string& name, const std::vector<FemRun>
   if (!needs_scenario(name)) return comparison_model(name);
   const auto scenario = sphere_flat_scenario(runs);
   if (!scenario)
-    throw reduced::InvalidInput("model", "the model " + name + " needs the sphere radius "
-                                "('Scenario/Sphere radius') and the Poisson ratio of the "
-                                "yielding body, which the runs do not record");
+    throw reduced::InvalidInput("model",
+                                "the model " + name +
+                                    " needs the sphere radius "
+                                    "('Scenario/Sphere radius') and the Poisson ratio of the "
+                                    "yielding body, which the runs do not record");
   const ContactModel spring = jackson_green_model(scenario->radius, scenario->poisson_ratio);
   return damped_plastic_needs_scenario(name) ? damped_plastic_model(name, spring) : spring;
 }
@@ -184,8 +190,8 @@ std::optional<MaterialThornton> material_thornton(const std::vector<FemRun>& run
   const double ratio = pi * contact->yield_pressure / (2 * e_star);
   std::ostringstream basis;
   basis.precision(6);
-  basis << "no fit: E* = " << e_star << " Pa, R = " << *radius << " m, p_y = "
-        << contact->yield_pressure << " Pa from " << contact->yield_basis
+  basis << "no fit: E* = " << e_star << " Pa, R = " << *radius
+        << " m, p_y = " << contact->yield_pressure << " Pa from " << contact->yield_basis
         << "; c = (4/3) E* sqrt(R), x_y = R (pi p_y / (2 E*))^2; " << hardening_note(runs.front());
   return MaterialThornton{4.0 / 3.0 * e_star * std::sqrt(*radius), *radius * ratio * ratio,
                           basis.str()};

@@ -61,8 +61,8 @@ bool simulate_hunt_crossley_force(const reduced::ContactForceLaw& law,
                                   std::size_t points, double* force) {
   std::vector<reduced::ImpactSample> samples;
   try {
-    const reduced::HuntCrossleyImpact impact(setup.mass, setup.stiffness, setup.exponent,
-                                             damping, velocity);
+    const reduced::HuntCrossleyImpact impact(setup.mass, setup.stiffness, setup.exponent, damping,
+                                             velocity);
     for (const auto& state : impact.history(points))
       samples.push_back({state.time, state.approach, state.approach_rate, state.force});
   } catch (const std::exception&) {
@@ -82,16 +82,16 @@ bool simulate_plastic_force(const reduced::ElasticPlasticContact& contact, doubl
     const reduced::ContactForceLaw loading = [&contact](double x, double) {
       return contact.loading_force(std::max(x, 0.0));
     };
-    for (const auto& sample : reduced::integrate_impact_history(mass, velocity, loading, points,
-                                                                tolerance))
+    for (const auto& sample :
+         reduced::integrate_impact_history(mass, velocity, loading, points, tolerance))
       if (sample.time < response.compression_time) samples.push_back(sample);
     samples.push_back({response.compression_time, response.approach_max, 0.0, response.force_max});
     const double stiffness = unloading.stiffness;
     const reduced::ContactForceLaw hertz = [stiffness](double x, double) {
       return stiffness * std::pow(std::max(x, 0.0), 1.5);
     };
-    const auto rebound = reduced::integrate_impact_history(
-        mass, -response.rebound_velocity, hertz, points, tolerance);
+    const auto rebound = reduced::integrate_impact_history(mass, -response.rebound_velocity, hertz,
+                                                           points, tolerance);
     const double peak = 0.5 * rebound.back().time;
     for (const auto& sample : rebound)
       if (sample.time > peak)

@@ -48,8 +48,8 @@ std::optional<PowerLawTrend> log_log_fit(const std::vector<double>& velocity,
   const double error = std::sqrt(squares / double(n - 2) / sxx);
   const boost::math::students_t distribution{double(n - 2)};
   const double t = boost::math::quantile(distribution, 0.5 + level / 2);
-  return PowerLawTrend{slope, error, slope - t * error, slope + t * error, std::exp(intercept), n,
-                       level};
+  return PowerLawTrend{slope, error, slope - t * error, slope + t * error, std::exp(intercept),
+                       n,     level};
 }
 
 } // namespace
@@ -94,14 +94,14 @@ std::string trend_family(const PowerLawTrend& trend) {
   const auto inside = [&](const ReferenceSlope& reference) {
     return reference.slope >= trend.lower && reference.slope <= trend.upper;
   };
-  std::string text = "the FEM follows " + nearest->family + " (reference slope " +
-                     format(nearest->slope) + ")";
+  std::string text =
+      "the FEM follows " + nearest->family + " (reference slope " + format(nearest->slope) + ")";
   if (inside(*nearest))
     text += ", which lies inside the interval";
   else
-    text += ": the nearest reference, " + format(std::abs(nearest->slope - trend.exponent), "%.2g") +
-            " from p (" + format(std::abs(nearest->slope - trend.exponent) / trend.standard_error,
-                                 "%.2g") +
+    text += ": the nearest reference, " +
+            format(std::abs(nearest->slope - trend.exponent), "%.2g") + " from p (" +
+            format(std::abs(nearest->slope - trend.exponent) / trend.standard_error, "%.2g") +
             " standard errors; the reference slopes are the small-dissipation limits, and a "
             "loss with two mechanisms, e.g. viscosity and wave radiation, lies between theirs)";
   std::string excluded, consistent;

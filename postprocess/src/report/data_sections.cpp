@@ -15,14 +15,15 @@ namespace fs = std::filesystem;
 
 void quality_section(Document& doc, const Report& report) {
   doc.heading("FEM quality per run");
-  doc.paragraph("The numerical uncertainty of each FEM quantity, as the verdict uses it "
-                "(relative to the value): the grid convergence index of the run's verification "
-                "(verification.json) where there is one, else what the force history shows. "
-                "Step-to-step oscillation: max |F_i - (F_(i-1) + F_(i+1))/2| / F_max inside the "
-                "contact (5 steps at each end excluded); a warning above " +
-                unsigned_percent(force_oscillation_warning) +
-                ". Force after release: the largest force after the first zero that follows "
-                "the peak, / F_max.");
+  doc.paragraph(
+      "The numerical uncertainty of each FEM quantity, as the verdict uses it "
+      "(relative to the value): the grid convergence index of the run's verification "
+      "(verification.json) where there is one, else what the force history shows. "
+      "Step-to-step oscillation: max |F_i - (F_(i-1) + F_(i+1))/2| / F_max inside the "
+      "contact (5 steps at each end excluded); a warning above " +
+      unsigned_percent(force_oscillation_warning) +
+      ". Force after release: the largest force after the first zero that follows "
+      "the peak, / F_max.");
   Table table{{"V [m/s]", "force oscillation [%]", "force after release [%]", "time step [µs]",
                "verification"},
               {}};
@@ -35,9 +36,10 @@ void quality_section(Document& doc, const Report& report) {
     std::vector<std::string> row{velocity_cell(run), cell(record.smoothness.oscillation * 100),
                                  cell(record.smoothness.after_release * 100),
                                  cell(record.time_step * 1e6),
-                                 record.verification ? "yes (ratio " +
-                                                           short_number(record.verification->refinement_ratio) + ")"
-                                                     : "none"};
+                                 record.verification
+                                     ? "yes (ratio " +
+                                           short_number(record.verification->refinement_ratio) + ")"
+                                     : "none"};
     for (Quantity quantity : {Quantity::energy_loss, Quantity::contact_time, Quantity::force_max,
                               Quantity::time_force_max, Quantity::approach_max})
       row.push_back(unsigned_percent(run.uncertainty[std::size_t(quantity)].relative));
@@ -71,12 +73,13 @@ void quality_section(Document& doc, const Report& report) {
 
 void runs_section(Document& doc, const Report& report) {
   doc.heading("Runs");
-  doc.paragraph("FEM quantities (the calibration's 'measured' numbers) and the per-run "
-                "calibration: b from the restitution through the exact inverse of k(bV), and "
-                "c, n, b of the run's force-history fit with its interval.");
-  Table table{{"V [m/s]", "mass [kg]", "e [1]", "(1 - e)/V [s/m]", "t_c [µs]", "F_max [kN]", "x_max [µm]",
-               "b from e [s/m]", "b history fit [s/m]", "b interval [s/m]", "n history fit",
-               "c history fit [N/m^n]", "source"},
+  doc.paragraph(
+      "FEM quantities (the calibration's 'measured' numbers) and the per-run "
+      "calibration: b from the restitution through the exact inverse of k(bV), and "
+      "c, n, b of the run's force-history fit with its interval.");
+  Table table{{"V [m/s]", "mass [kg]", "e [1]", "(1 - e)/V [s/m]", "t_c [µs]", "F_max [kN]",
+               "x_max [µm]", "b from e [s/m]", "b history fit [s/m]", "b interval [s/m]",
+               "n history fit", "c history fit [N/m^n]", "source"},
               {}};
   const auto shown_source = [&](const std::string& source) {
     if (report.campaign_source.empty()) return source;
@@ -86,8 +89,8 @@ void runs_section(Document& doc, const Report& report) {
   };
   for (const auto& run : report.runs)
     table.rows.push_back(
-        {velocity_cell(run), cell(run.mass), cell(run.fem.restitution),
-         cell(effective_alpha(run)), cell(run.fem.contact_time * 1e6), cell(run.fem.force_max * 1e-3),
+        {velocity_cell(run), cell(run.mass), cell(run.fem.restitution), cell(effective_alpha(run)),
+         cell(run.fem.contact_time * 1e6), cell(run.fem.force_max * 1e-3),
          cell(run.fem.approach_max * 1e6), cell(run.damping_from_restitution),
          cell(run.history_damping.value),
          std::isfinite(run.history_damping.lower)
@@ -112,9 +115,10 @@ void models_section(Document& doc, const Report& report) {
 void quantities_section(Document& doc, const Report& report,
                         const std::function<void(FigureId)>& figure) {
   doc.heading("Restitution, energy loss, contact time, peak force and peak approach against V");
-  doc.paragraph("FEM (with its numerical uncertainty where known) and the models; the shaded "
-                "bands are the jackknife prediction bands of the fitted models. The tables hold "
-                "each model's prediction by its fit to all runs (in sample).");
+  doc.paragraph(
+      "FEM (with its numerical uncertainty where known) and the models; the shaded "
+      "bands are the jackknife prediction bands of the fitted models. The tables hold "
+      "each model's prediction by its fit to all runs (in sample).");
   figure(FigureId::quantities);
   for (Quantity quantity : all_quantities) {
     if (quantity == Quantity::restitution_deficit) continue;
@@ -138,10 +142,11 @@ void quantities_section(Document& doc, const Report& report,
 
 void errors_section(Document& doc, const Report& report) {
   doc.heading("Errors of the reduced models against the FEM");
-  doc.paragraph("Relative error (model - FEM) / |FEM| of each quantity at each velocity: out of "
-                "sample, with the in-sample error in brackets, for the fitted models; once for "
-                "the models that fit nothing. The figure at the top of the page shows the "
-                "errors the verdict judges.");
+  doc.paragraph(
+      "Relative error (model - FEM) / |FEM| of each quantity at each velocity: out of "
+      "sample, with the in-sample error in brackets, for the fitted models; once for "
+      "the models that fit nothing. The figure at the top of the page shows the "
+      "errors the verdict judges.");
   Table table{{"model", "quantity"}, {}};
   for (const auto& run : report.runs)
     table.header.push_back(velocity_label(run.velocity) + (run.yields ? " (yields)" : ""));
@@ -172,10 +177,11 @@ void errors_section(Document& doc, const Report& report) {
 
 void energy_section(Document& doc, const Report& report) {
   doc.heading("Energy balance and yield check");
-  doc.paragraph("energy error: the largest |energy balance error| / initial energy of the run "
-                "(energy_error of summary.json). Lost: 1 - e^2 of the FEM restitution. Yield: the "
-                "largest von Mises stress against a yield strength recorded by the run. " +
-                report.plasticity.text);
+  doc.paragraph(
+      "energy error: the largest |energy balance error| / initial energy of the run "
+      "(energy_error of summary.json). Lost: 1 - e^2 of the FEM restitution. Yield: the "
+      "largest von Mises stress against a yield strength recorded by the run. " +
+      report.plasticity.text);
   Table table{{"V [m/s]", "energy error [%]", "lost 1-e^2 [%]", "dissipated [%]", "radiated [%]",
                "max von Mises [MPa]", "yield strength [MPa]", "yield check"},
               {}};
@@ -185,14 +191,17 @@ void energy_section(Document& doc, const Report& report) {
   for (const auto& run : report.runs) {
     const auto& record = run.record;
     std::string check;
-    if (!record.max_von_mises) check = "not recorded (no max_von_mises)";
-    else if (!record.yield_strength) check = "yield strength not recorded";
+    if (!record.max_von_mises)
+      check = "not recorded (no max_von_mises)";
+    else if (!record.yield_strength)
+      check = "yield strength not recorded";
     else {
       const double ratio = *record.max_von_mises / *record.yield_strength;
-      const std::string state = record.plastic_material
-                                    ? (record.yields.value_or(false) ? "yields (elastic-plastic material, valid): "
-                                                                     : "below yield: ")
-                                    : (run.yields ? "YIELDS: " : "elastic: ");
+      const std::string state =
+          record.plastic_material
+              ? (record.yields.value_or(false) ? "yields (elastic-plastic material, valid): "
+                                               : "below yield: ")
+              : (run.yields ? "YIELDS: " : "elastic: ");
       check = state + short_number(ratio * 100) + " % of the yield strength (" +
               record.yield_source + ")";
     }

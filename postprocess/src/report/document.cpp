@@ -12,17 +12,24 @@ namespace impact::postprocess::detail {
 namespace fs = std::filesystem;
 
 const std::array<double, quantity_count> page_scale = {1, 1, 1, 1e6, 1e-3, 1e6, 1e6};
-const std::array<const char*, quantity_count> page_name = {
-    "energy loss 1 - e^2 [1]", "1 - e [1]",           "restitution e [1]",
-    "contact time t_c [µs]",   "peak force F_max [kN]", "time of peak force t(F_max) [µs]",
-    "peak approach x_max [µm]"};
+const std::array<const char*, quantity_count> page_name = {"energy loss 1 - e^2 [1]",
+                                                           "1 - e [1]",
+                                                           "restitution e [1]",
+                                                           "contact time t_c [µs]",
+                                                           "peak force F_max [kN]",
+                                                           "time of peak force t(F_max) [µs]",
+                                                           "peak approach x_max [µm]"};
 
 std::string decision_word(Decision decision) {
   switch (decision) {
-  case Decision::within: return "yes";
-  case Decision::outside: return "no";
-  case Decision::undecided: return "not decided";
-  case Decision::unknown: return "unknown";
+    case Decision::within:
+      return "yes";
+    case Decision::outside:
+      return "no";
+    case Decision::undecided:
+      return "not decided";
+    case Decision::unknown:
+      return "unknown";
   }
   return "?";
 }
@@ -44,8 +51,9 @@ Document build_document(const Report& report, const fs::path& figures_directory)
   for (const auto& problem : report.problems) incomplete = incomplete || !is_warning(problem.kind);
   if (incomplete || report.runs.empty()) status_section(doc, report);
   if (report.runs.empty()) {
-    doc.paragraph("No FEM run could be read: there is nothing to compare. Fix the problems "
-                  "above and run impact-report again.");
+    doc.paragraph(
+        "No FEM run could be read: there is nothing to compare. Fix the problems "
+        "above and run impact-report again.");
     return doc;
   }
   const auto figures = report_figures(report);
@@ -59,11 +67,11 @@ Document build_document(const Report& report, const fs::path& figures_directory)
   };
   const auto figure = [&](FigureId id) { place(id, ""); };
   glance_section(doc, report, place);
-  doc.paragraph("Campaign: " + report.campaign_source + ". Calibration: " +
-                (report.calibration_source.empty() ? std::string("none")
-                                                   : report.calibration_source) +
-                ". Every number below is computed by impact-report (C++, impact::reduced and "
-                "the calibration JSON); the figures are drawn from them by report_figures.py.");
+  doc.paragraph(
+      "Campaign: " + report.campaign_source + ". Calibration: " +
+      (report.calibration_source.empty() ? std::string("none") : report.calibration_source) +
+      ". Every number below is computed by impact-report (C++, impact::reduced and "
+      "the calibration JSON); the figures are drawn from them by report_figures.py.");
   doc.fold_from_here();
   if (!incomplete) status_section(doc, report);
   map_section(doc, report, place);

@@ -24,12 +24,12 @@ json scaled(const std::vector<double>& values, double scale) {
 
 json series(const std::string& label, json x, json y, const std::string& color,
             const std::string& linestyle, const std::string& marker) {
-  return json{{"label", label}, {"x", std::move(x)}, {"y", std::move(y)}, {"color", color},
-              {"linestyle", linestyle}, {"marker", marker}};
+  return json{{"label", label}, {"x", std::move(x)},      {"y", std::move(y)},
+              {"color", color}, {"linestyle", linestyle}, {"marker", marker}};
 }
 
 json fill(const std::string& label, json x, json y0, json y1, const std::string& color) {
-  return json{{"label", label}, {"fill", true}, {"x", std::move(x)}, {"y0", std::move(y0)},
+  return json{{"label", label},      {"fill", true},   {"x", std::move(x)}, {"y0", std::move(y0)},
               {"y1", std::move(y1)}, {"color", color}, {"alpha", 0.18}};
 }
 
@@ -70,23 +70,33 @@ std::vector<const ReportModel*> featured(const Report& report) {
 // x_max [um].
 double display_scale(Quantity quantity) {
   switch (quantity) {
-  case Quantity::contact_time:
-  case Quantity::time_force_max:
-  case Quantity::approach_max: return 1e6;
-  case Quantity::force_max: return 1e-3;
-  default: return 1;
+    case Quantity::contact_time:
+    case Quantity::time_force_max:
+    case Quantity::approach_max:
+      return 1e6;
+    case Quantity::force_max:
+      return 1e-3;
+    default:
+      return 1;
   }
 }
 
 std::string display_name(Quantity quantity) {
   switch (quantity) {
-  case Quantity::energy_loss: return "energy loss 1 - e² [1]";
-  case Quantity::restitution_deficit: return "1 - e [1]";
-  case Quantity::restitution: return "restitution e [1]";
-  case Quantity::contact_time: return "contact time t_c [µs]";
-  case Quantity::force_max: return "peak force F_max [kN]";
-  case Quantity::time_force_max: return "time of peak force [µs]";
-  case Quantity::approach_max: return "peak approach x_max [µm]";
+    case Quantity::energy_loss:
+      return "energy loss 1 - e² [1]";
+    case Quantity::restitution_deficit:
+      return "1 - e [1]";
+    case Quantity::restitution:
+      return "restitution e [1]";
+    case Quantity::contact_time:
+      return "contact time t_c [µs]";
+    case Quantity::force_max:
+      return "peak force F_max [kN]";
+    case Quantity::time_force_max:
+      return "time of peak force [µs]";
+    case Quantity::approach_max:
+      return "peak approach x_max [µm]";
   }
   return "";
 }
@@ -103,7 +113,9 @@ PerRunFigures per_run_figures(const Report& report) {
     const auto& run = report.runs[i];
     const std::string title = velocity_label(run.velocity) + (run.yields ? " (yields)" : "");
     const auto panel = [&](const std::string& xlabel, const std::string& ylabel) {
-      return json{{"title", title}, {"xlabel", xlabel}, {"ylabel", ylabel},
+      return json{{"title", title},
+                  {"xlabel", xlabel},
+                  {"ylabel", ylabel},
                   {"series", json::array()}};
     };
     json loop = panel("approach x [µm]", "contact force F [kN]");
@@ -126,10 +138,11 @@ PerRunFigures per_run_figures(const Report& report) {
       loop["series"].push_back(series(model->label, scaled(at.history.approach, 1e6),
                                       scaled(at.history.force, 1e-3), color_of(*model), style, ""));
       approach["series"].push_back(series(model->label, scaled(at.history.time, 1e6),
-                                          scaled(at.history.approach, 1e6), color_of(*model),
-                                          style, ""));
+                                          scaled(at.history.approach, 1e6), color_of(*model), style,
+                                          ""));
       force["series"].push_back(series(model->label, scaled(at.history.time, 1e6),
-                                       scaled(at.history.force, 1e-3), color_of(*model), style, ""));
+                                       scaled(at.history.force, 1e-3), color_of(*model), style,
+                                       ""));
       residual["series"].push_back(series(model->label, scaled(run.fem_history.time, 1e6),
                                           scaled(at.residual, 100), color_of(*model), "-", ""));
     }
@@ -152,7 +165,8 @@ void add_model_curve(json& panel, const ReportModel& model, Quantity quantity, d
   const std::string style =
       model.key == model_keys::calibrated ? "-" : (model.free_parameters == 0 ? ":" : "--");
   if (with_band && model.band) {
-    panel["series"].push_back(fill(model.label + " (jackknife band)", scaled(model.band->velocity, 1),
+    panel["series"].push_back(fill(model.label + " (jackknife band)",
+                                   scaled(model.band->velocity, 1),
                                    scaled(model.band->lower[q], scale),
                                    scaled(model.band->upper[q], scale), color_of(model)));
   }
@@ -172,8 +186,9 @@ void add_yield_band(json& panel, const Report& report) {
                                   {"color", "0.9"},
                                   {"alpha", 0.3},
                                   {"hatch", "//"},
-                                  {"label", "FEM above the yield strength: viscoelastic model "
-                                            "not valid"}}});
+                                  {"label",
+                                   "FEM above the yield strength: viscoelastic model "
+                                   "not valid"}}});
 }
 
 json fem_points(const Report& report, Quantity quantity, double scale) {
@@ -195,8 +210,10 @@ json quantities_figure(const Report& report) {
   for (Quantity quantity : {Quantity::restitution, Quantity::energy_loss, Quantity::contact_time,
                             Quantity::force_max, Quantity::approach_max}) {
     const double scale = display_scale(quantity);
-    json panel = {{"title", display_name(quantity)}, {"xlabel", "impact velocity V [m/s]"},
-                  {"ylabel", display_name(quantity)}, {"series", json::array()}};
+    json panel = {{"title", display_name(quantity)},
+                  {"xlabel", "impact velocity V [m/s]"},
+                  {"ylabel", display_name(quantity)},
+                  {"series", json::array()}};
     for (const auto& model : report.models)
       add_model_curve(panel, model, quantity, scale,
                       model.key == model_keys::calibrated || model.key == model_keys::best_law);
@@ -204,8 +221,10 @@ json quantities_figure(const Report& report) {
     add_yield_band(panel, report);
     panels.push_back(panel);
   }
-  return {{"title", "Impact quantities against V"}, {"columns", 2},
-          {"shared_legend", true}, {"panels", panels}};
+  return {{"title", "Impact quantities against V"},
+          {"columns", 2},
+          {"shared_legend", true},
+          {"panels", panels}};
 }
 
 json energy_loss_figure(const Report& report) {
@@ -243,18 +262,21 @@ json energy_loss_figure(const Report& report) {
     for (std::size_t k = 0; k < reference_slopes().size(); ++k) {
       const auto& reference = reference_slopes()[k];
       std::vector<double> y;
-      for (double v : ends) y.push_back(std::exp(mean_y + reference.slope * (std::log(v) - mean_v)));
+      for (double v : ends)
+        y.push_back(std::exp(mean_y + reference.slope * (std::log(v) - mean_v)));
       panel["series"].push_back(series("reference slope " + detail::short_number(reference.slope) +
                                            " (" + reference.family + ")",
                                        scaled(ends, 1), scaled(y, 1), "0.55", dashes[k % 3], ""));
     }
     if (report.trend) {
       std::vector<double> y;
-      for (double v : ends) y.push_back(report.trend->prefactor * std::pow(v, report.trend->exponent));
-      panel["series"].push_back(series("FEM fit: p = " + detail::short_number(report.trend->exponent) +
-                                           " [" + detail::short_number(report.trend->lower) + ", " +
-                                           detail::short_number(report.trend->upper) + "]",
-                                       scaled(ends, 1), scaled(y, 1), "black", "-", ""));
+      for (double v : ends)
+        y.push_back(report.trend->prefactor * std::pow(v, report.trend->exponent));
+      panel["series"].push_back(
+          series("FEM fit: p = " + detail::short_number(report.trend->exponent) + " [" +
+                     detail::short_number(report.trend->lower) + ", " +
+                     detail::short_number(report.trend->upper) + "]",
+                 scaled(ends, 1), scaled(y, 1), "black", "-", ""));
     }
   }
   json fem = fem_points(report, Quantity::restitution_deficit, 1);
@@ -272,8 +294,10 @@ json energy_loss_figure(const Report& report) {
         if (entry.contains(key))
           for (auto& y : entry[key])
             if (y.is_number() && y.get<double>() < 1e-2 * smallest) y = nullptr;
-  return {{"title", "Energy loss against V"}, {"columns", 1},
-          {"shared_legend", true}, {"panels", json::array({panel})}};
+  return {{"title", "Energy loss against V"},
+          {"columns", 1},
+          {"shared_legend", true},
+          {"panels", json::array({panel})}};
 }
 
 json damping_figure(const Report& report) {
@@ -286,7 +310,8 @@ json damping_figure(const Report& report) {
     b_high.push_back(run.history_damping.upper - run.history_damping.value);
   }
   json damping = {{"title", "per-run b (constant only where Hunt–Crossley is the right law)"},
-                  {"xlabel", "impact velocity V [m/s]"}, {"ylabel", "damping b [s/m]"},
+                  {"xlabel", "impact velocity V [m/s]"},
+                  {"ylabel", "damping b [s/m]"},
                   {"series", json::array({series("b from the restitution", scaled(velocities, 1),
                                                  scaled(b_restitution, 1), "black", "-", "o")})},
                   {"hlines", json::array()},
@@ -297,27 +322,33 @@ json damping_figure(const Report& report) {
   damping["series"].push_back(history_series);
   if (!report.calibration) return {};
   const CampaignCalibration& campaign = report.calibration->campaign;
-  damping["hlines"].push_back({{"y", campaign.published_damping},
-                               {"label", "published b = " +
-                                             detail::short_number(campaign.published_damping) +
-                                             " s/m"},
-                               {"color", "tab:blue"}, {"linestyle", ":"}});
+  damping["hlines"].push_back(
+      {{"y", campaign.published_damping},
+       {"label", "published b = " + detail::short_number(campaign.published_damping) + " s/m"},
+       {"color", "tab:blue"},
+       {"linestyle", ":"}});
   if (campaign.hunt_crossley) {
     const Estimate& b = campaign.hunt_crossley->fit.parameter;
-    damping["hlines"].push_back({{"y", b.value}, {"label", "campaign b (calibrated)"},
-                                 {"color", "tab:red"}, {"linestyle", "--"}});
+    damping["hlines"].push_back({{"y", b.value},
+                                 {"label", "campaign b (calibrated)"},
+                                 {"color", "tab:red"},
+                                 {"linestyle", "--"}});
     const auto& jackknife = campaign.hunt_crossley->jackknife;
     const Estimate interval = jackknife.size() > 2 ? jackknife[2] : b;
     if (std::isfinite(interval.lower) && std::isfinite(interval.upper))
       damping["bands"].push_back(
-          {{"y0", interval.lower}, {"y1", interval.upper}, {"color", "tab:red"}, {"alpha", 0.15},
+          {{"y0", interval.lower},
+           {"y1", interval.upper},
+           {"color", "tab:red"},
+           {"alpha", 0.15},
            {"label", std::string("campaign b interval (") +
                          (jackknife.size() > 2 ? "jackknife" : "conditional on the model") + ")"}});
   }
   if (campaign.hunt_crossley_energy)
     damping["hlines"].push_back({{"y", campaign.hunt_crossley_energy->fit.parameter.value},
                                  {"label", "campaign b (force + energy)"},
-                                 {"color", "tab:orange"}, {"linestyle", "-."}});
+                                 {"color", "tab:orange"},
+                                 {"linestyle", "-."}});
   if (campaign.hunt_crossley_velocity_damping && velocities.size() >= 2) {
     const ModelFit& fit = campaign.hunt_crossley_velocity_damping->fit;
     std::vector<double> grid, b;
@@ -329,8 +360,7 @@ json damping_figure(const Report& report) {
     damping["series"].push_back(series("b(V) = b_1 V^-q of the b(V) fit", scaled(grid, 1),
                                        scaled(b, 1), "tab:brown", "--", ""));
   }
-  return {{"title", "Per-run damping"}, {"columns", 1},
-          {"panels", json::array({damping})}};
+  return {{"title", "Per-run damping"}, {"columns", 1}, {"panels", json::array({damping})}};
 }
 
 // The page's first figure: every model's judged error (out of sample where it is) in the
@@ -348,19 +378,24 @@ json errors_figure(const Report& report) {
     json bands = json::array();
     const std::array<const char*, 3> colors = {"tab:green", "tab:orange", "tab:red"};
     for (std::size_t k = report.tolerances.size(); k-- > 0;)
-      bands.push_back({{"y0", -report.tolerances[k] * 100}, {"y1", report.tolerances[k] * 100},
-                       {"color", colors[std::min<std::size_t>(k, 2)]}, {"alpha", 0.12 + 0.06 * double(k == 0)},
+      bands.push_back({{"y0", -report.tolerances[k] * 100},
+                       {"y1", report.tolerances[k] * 100},
+                       {"color", colors[std::min<std::size_t>(k, 2)]},
+                       {"alpha", 0.12 + 0.06 * double(k == 0)},
                        {"label", "±" + detail::short_number(report.tolerances[k] * 100) + " %"}});
-    json panel = {{"title", std::string(quantity_words(quantity)) + " " + quantity_symbol(quantity)},
-                  {"xlabel", "impact velocity V [m/s]"}, {"ylabel", "(model - FEM) / FEM [%]"},
-                  {"series", json::array()}, {"bands", bands}};
+    json panel = {{"title",
+                   std::string(quantity_words(quantity)) + " " + quantity_symbol(quantity)},
+                  {"xlabel", "impact velocity V [m/s]"},
+                  {"ylabel", "(model - FEM) / FEM [%]"},
+                  {"series", json::array()},
+                  {"bands", bands}};
     std::vector<double> zero(velocities.size(), 0.0), uncertainty;
     for (const auto& run : report.runs) {
       const double u = run.uncertainty[std::size_t(quantity)].relative;
       uncertainty.push_back(std::isfinite(u) ? u : 0.0);
     }
-    json fem = series("FEM uncertainty", scaled(velocities, 1), scaled(zero, 100), "black",
-                      "none", "_");
+    json fem =
+        series("FEM uncertainty", scaled(velocities, 1), scaled(zero, 100), "black", "none", "_");
     fem["yerr"] = {scaled(uncertainty, 100), scaled(uncertainty, 100)};
     panel["series"].push_back(fem);
     double largest = 0; // [%]
@@ -369,13 +404,14 @@ json errors_figure(const Report& report) {
       for (std::size_t i = 0; i < report.runs.size(); ++i) {
         const auto& judged = model.runs[i].judged();
         errors.push_back(judged ? relative_error(*judged, report.runs[i].fem, quantity) : nan);
-        if (std::isfinite(errors.back())) largest = std::max(largest, std::abs(errors.back()) * 100);
+        if (std::isfinite(errors.back()))
+          largest = std::max(largest, std::abs(errors.back()) * 100);
       }
       const std::string style =
           model.key == model_keys::calibrated ? "-" : (model.free_parameters == 0 ? ":" : "--");
       panel["series"].push_back(series(model.label + detail::not_converged(model),
-                                       scaled(velocities, 1), scaled(errors, 100),
-                                       color_of(model), style, "o"));
+                                       scaled(velocities, 1), scaled(errors, 100), color_of(model),
+                                       style, "o"));
     }
     if (largest > linear_limit) {
       panel["yscale"] = "symlog";
@@ -395,8 +431,8 @@ json errors_figure(const Report& report) {
     add_yield_band(panel, report);
     panels.push_back(panel);
   }
-  return {{"title", ""}, {"columns", panels.size()}, {"width", 13.0}, {"row_height", 3.2},
-          {"legend_columns", 4}, {"shared_legend", true}, {"panels", panels}};
+  return {{"title", ""},         {"columns", panels.size()}, {"width", 13.0},   {"row_height", 3.2},
+          {"legend_columns", 4}, {"shared_legend", true},    {"panels", panels}};
 }
 
 // One validity map per model: a grid of cells (velocity on x, the other axis on y), coloured
@@ -411,8 +447,8 @@ std::vector<std::pair<const MapModel*, json>> map_figures(const Report& report) 
   for (std::size_t k = 0; k < bands; ++k)
     classes.push_back({{"name", "within " + detail::band_name(report.tolerances[k])},
                        {"color", within_colors[std::min(k, within_colors.size() - 1)]}});
-  classes.push_back({{"name", "outside " + detail::band_name(report.tolerances.back())},
-                     {"color", "#e66a5c"}});
+  classes.push_back(
+      {{"name", "outside " + detail::band_name(report.tolerances.back())}, {"color", "#e66a5c"}});
   classes.push_back({{"name", "not decided (FEM uncertainty)"}, {"color", "#bdbdbd"}});
   classes.push_back({{"name", "not evaluated"}, {"color", "#ffffff"}});
   const auto slash = map.parameter.rfind('/');
@@ -436,24 +472,25 @@ std::vector<std::pair<const MapModel*, json>> map_figures(const Report& report) 
           text = "n/a";
         text += "\nU " + detail::unsigned_percent(map_uncertainty(cell));
         if (cell.yields) text += "\n(yields)";
-        cells.push_back({{"column", column}, {"row", r}, {"class", map_class(cell)},
-                         {"text", text}});
+        cells.push_back(
+            {{"column", column}, {"row", r}, {"class", map_class(cell)}, {"text", text}});
       }
     }
     figures.emplace_back(
         &map.models[m],
         json{{"kind", "map"},
-         {"title", "Validity map: " + map.models[m].label},
-         {"xlabel", "impact velocity V [m/s]"},
-         {"ylabel", name + (map.unit.empty() ? "" : " [" + map.unit + "]")},
-         {"yscale", map.logarithmic ? "log" : "linear"},
-         {"columns_values", scaled(map.velocities, 1)},
-         {"rows_values", rows},
-         {"rows_labels", labels},
-         {"classes", classes},
-         {"cells", cells},
-         {"note", "cell: the largest out-of-sample error of 1 - e², t_c, F_max (which), "
-                  "U = the FEM's largest uncertainty there"}});
+             {"title", "Validity map: " + map.models[m].label},
+             {"xlabel", "impact velocity V [m/s]"},
+             {"ylabel", name + (map.unit.empty() ? "" : " [" + map.unit + "]")},
+             {"yscale", map.logarithmic ? "log" : "linear"},
+             {"columns_values", scaled(map.velocities, 1)},
+             {"rows_values", rows},
+             {"rows_labels", labels},
+             {"classes", classes},
+             {"cells", cells},
+             {"note",
+              "cell: the largest out-of-sample error of 1 - e², t_c, F_max (which), "
+              "U = the FEM's largest uncertainty there"}});
   }
   return figures;
 }

@@ -62,9 +62,9 @@ std::string recommendation_line(const Report& report, const RankedModel& best) {
     for (const auto& law : report.plastic_laws->laws)
       if (law.key == best.key) label = law.label;
   std::string text = "Use " + (label.empty() ? best.key : label + " (" + best.key + ")") +
-                     ": ranked first by " +
-                     (best.out_of_sample ? "out-of-sample" : "in-sample") + " error (RMS " +
-                     unsigned_percent(best.score) + " over 1 - e^2, t_c, F_max and x_max, " +
+                     ": ranked first by " + (best.out_of_sample ? "out-of-sample" : "in-sample") +
+                     " error (RMS " + unsigned_percent(best.score) +
+                     " over 1 - e^2, t_c, F_max and x_max, " +
                      std::to_string(best.free_parameters) + " free parameters)";
   if (shown)
     if (const ModelVerdict* verdict = report.verdict(shown->key))
@@ -84,19 +84,20 @@ std::string comparison_line(const Report& report, const RankedModel& best) {
   const ModelVerdict* verdict = report.verdict(other->key);
   if (!verdict) return "";
   const auto [low, high] = error_range(report, *other, Quantity::energy_loss);
-  std::string text = other->label + ": " + ranges(report, *verdict) + "; its energy loss is off by " +
-                     percent_cell(low) + " to " + percent_cell(high) + ".";
+  std::string text = other->label + ": " + ranges(report, *verdict) +
+                     "; its energy loss is off by " + percent_cell(low) + " to " +
+                     percent_cell(high) + ".";
   if (other == &calibrated && report.plastic_laws && !report.family_ranges.empty()) {
     // An elastic-plastic FEM: the family of each velocity range, not one loss trend.
     text += " The FEM follows:";
     for (const auto& range : report.family_ranges)
       text += std::string(&range == &report.family_ranges.front() ? " " : "; ") +
-              (range.family.empty() ? "no trend" : range.family) + " at V = " +
-              short_number(range.low) +
+              (range.family.empty() ? "no trend" : range.family) +
+              " at V = " + short_number(range.low) +
               (range.high > range.low ? " to " + short_number(range.high) : "") + " m/s" +
-              (std::isfinite(range.slope) ? " (" + range.slope_of + " ∝ V^" +
-                                                three_digits(range.slope) + ")"
-                                          : "");
+              (std::isfinite(range.slope)
+                   ? " (" + range.slope_of + " ∝ V^" + three_digits(range.slope) + ")"
+                   : "");
     text += ".";
   } else if (other == &calibrated && report.trend) {
     const ReferenceSlope& nearest = nearest_reference(*report.trend);
@@ -119,9 +120,9 @@ std::string limits_line(const Report& report) {
            "valid there.";
   else if (report.plasticity.plastic_material)
     text = "The FEM's material is elastic-plastic: it stays valid above the yield velocity" +
-           (report.plastic_laws ? " (V_y = " + three_digits(report.plastic_laws->yield_velocity) +
-                                      " m/s)"
-                                : std::string()) +
+           (report.plastic_laws
+                ? " (V_y = " + three_digits(report.plastic_laws->yield_velocity) + " m/s)"
+                : std::string()) +
            ", where the elastic-plastic laws are compared (section Elastic-plastic laws).";
   else if (report.plasticity.recorded)
     text = "The FEM stays below the yield strength at every tested velocity.";
@@ -171,9 +172,9 @@ std::string recommended_block(const Report& report, const RankedModel& best) {
     const ModelFit& parameters = fit->fit;
     const std::vector<std::string> names = parameters.parameter_names();
     const std::vector<double> values = parameters.parameter_values();
-    std::vector<std::string> units{
-        stiffness_unit(parameters.exponent.value, parameters.exponent_fixed), "1",
-        parameters.parameter_unit};
+    std::vector<std::string> units{stiffness_unit(parameters.exponent.value,
+                                                  parameters.exponent_fixed),
+                                   "1", parameters.parameter_unit};
     for (const auto& extra : parameters.extra) units.push_back(extra.unit);
     std::vector<Parameter> list;
     for (std::size_t i = 0; i < names.size() && i < values.size() && i < units.size(); ++i)
@@ -184,16 +185,18 @@ std::string recommended_block(const Report& report, const RankedModel& best) {
   }
   for (const auto& reference : campaign.reference_models)
     if (reference.key == best.key) {
-      std::vector<Parameter> list{{"c", reference.stiffness, stiffness_unit(reference.exponent, true)},
+      std::vector<Parameter> list{{"c", reference.stiffness,
+                                   stiffness_unit(reference.exponent, true)},
                                   {"n", reference.exponent, "1"}};
       if (!reference.dissipation.empty())
-        list.push_back({reference.parameter_name, reference.dissipation.front(),
-                        reference.parameter_unit});
-      for (std::size_t i = 0; i < reference.extra_names.size() && i + 1 < reference.dissipation.size();
-           ++i)
+        list.push_back(
+            {reference.parameter_name, reference.dissipation.front(), reference.parameter_unit});
+      for (std::size_t i = 0;
+           i < reference.extra_names.size() && i + 1 < reference.dissipation.size(); ++i)
         list.push_back({reference.extra_names[i], reference.dissipation[i + 1],
                         i < reference.extra_units.size() ? reference.extra_units[i] : ""});
-      return parameter_block(heading + reference.label + " (nothing fitted: " + reference.basis + ")",
+      return parameter_block(heading + reference.label + " (nothing fitted: " + reference.basis +
+                                 ")",
                              force_law(model_formula(reference.model)), list);
     }
   return "";

@@ -15,17 +15,21 @@ void map_section(Document& doc, const Report& report, const FigurePlacer& figure
   }
   const std::string name = short_name(map.parameter);
   doc.paragraph(
-      "The campaign has two axes, the impact velocity and " + map.parameter +
-      ". Each value of " + name + " is a row: the velocity campaign at that value, calibrated "
+      "The campaign has two axes, the impact velocity and " + map.parameter + ". Each value of " +
+      name +
+      " is a row: the velocity campaign at that value, calibrated "
       "on its own (every law, as impact-calibrate does) and judged as the verdict judges a "
-      "velocity campaign: a cell (one run: a value of " + name + ", a velocity) is within a band "
+      "velocity campaign: a cell (one run: a value of " +
+      name +
+      ", a velocity) is within a band "
       "when every |error| + U of 1 - e^2, t_c and F_max is within it, outside when one "
       "|error| - U exceeds it, not decided in between (U: the FEM's numerical uncertainty of "
       "the run, its GCI from verification.json where it was verified). Errors are out of "
       "sample: each velocity predicted by the row's fit without it. " +
       (report.detail_row.empty()
            ? "The sections after this one treat all runs as one velocity campaign (one "
-             "calibration for every " + name + ")."
+             "calibration for every " +
+                 name + ")."
            : "The sections after this one detail the row " + report.detail_row +
                  " as a velocity campaign (its calibration, verdict, figures and runs)."));
   std::vector<std::string> items;
@@ -40,8 +44,13 @@ void map_section(Document& doc, const Report& report, const FigurePlacer& figure
     doc.heading("Map: " + model.label, 3);
     figure(FigureId::validity_map, model.key);
     Table table;
-    table.header = {name + (map.unit.empty() ? "" : " [" + map.unit + "]"), "V [m/s]",
-                    "FEM U (largest)", "error 1 - e^2", "error t_c", "error F_max", "class"};
+    table.header = {name + (map.unit.empty() ? "" : " [" + map.unit + "]"),
+                    "V [m/s]",
+                    "FEM U (largest)",
+                    "error 1 - e^2",
+                    "error t_c",
+                    "error F_max",
+                    "class"};
     std::vector<std::string> notes;
     for (const auto& row : map.rows) {
       const MapModelRow& at = row.models[m];
@@ -59,14 +68,15 @@ void map_section(Document& doc, const Report& report, const FigurePlacer& figure
         table.rows.push_back({row.value.text, "-", "-", "-", "-", "-", "not evaluated"});
       for (const auto& cell : at.cells) {
         const auto error = [&](Quantity quantity) {
-          return cell.judged && cell.fem ? percent_cell(relative_error(*cell.judged, *cell.fem, quantity))
-                                         : std::string("n/a");
+          return cell.judged && cell.fem
+                     ? percent_cell(relative_error(*cell.judged, *cell.fem, quantity))
+                     : std::string("n/a");
         };
         table.rows.push_back({row.value.text,
                               short_number(cell.velocity) + (cell.yields ? " (yields)" : ""),
-                              unsigned_percent(map_uncertainty(cell)),
-                              error(Quantity::energy_loss), error(Quantity::contact_time),
-                              error(Quantity::force_max), map_class_name(cell, report.tolerances)});
+                              unsigned_percent(map_uncertainty(cell)), error(Quantity::energy_loss),
+                              error(Quantity::contact_time), error(Quantity::force_max),
+                              map_class_name(cell, report.tolerances)});
       }
     }
     doc.table(table);

@@ -12,11 +12,11 @@ std::string velocity_cell(const ReportRun& run) {
 }
 
 std::string range_text(const ToleranceVerdict& verdict, const Report& report) {
-  std::string text = !verdict.range ? std::string("none")
-                     : (*verdict.range)[0] == (*verdict.range)[1]
-                         ? short_number((*verdict.range)[0]) + " m/s only"
-                         : short_number((*verdict.range)[0]) + " to " +
-                               short_number((*verdict.range)[1]) + " m/s";
+  std::string text =
+      !verdict.range ? std::string("none")
+      : (*verdict.range)[0] == (*verdict.range)[1]
+          ? short_number((*verdict.range)[0]) + " m/s only"
+          : short_number((*verdict.range)[0]) + " to " + short_number((*verdict.range)[1]) + " m/s";
   std::vector<double> undecided;
   for (std::size_t i = 0; i < verdict.decisions.size(); ++i)
     if (verdict.decisions[i] == Decision::undecided) undecided.push_back(report.runs[i].velocity);
@@ -54,12 +54,16 @@ std::string short_number(double value) {
   return text;
 }
 
-std::string velocity_label(double velocity) { return "V = " + short_number(velocity) + " m/s"; }
+std::string velocity_label(double velocity) {
+  return "V = " + short_number(velocity) + " m/s";
+}
 
 std::string velocity_list(const std::vector<double>& velocities) {
   std::string text;
   for (std::size_t i = 0; i < velocities.size(); ++i)
-    text += (i == 0 ? "" : i + 1 == velocities.size() ? " and " : ", ") +
+    text += (i == 0                       ? ""
+             : i + 1 == velocities.size() ? " and "
+                                          : ", ") +
             short_number(velocities[i]);
   return text + " m/s";
 }

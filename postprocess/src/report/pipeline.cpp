@@ -140,8 +140,8 @@ ReportOutcome write_report(const ReportRequest& request) {
     input = std::move(row->first);
     options.detail_row = row->second;
   }
-  ObtainedCalibration obtained = request.calibration ? read_calibration(*request.calibration)
-                                                     : calibrate_here(request, input);
+  ObtainedCalibration obtained =
+      request.calibration ? read_calibration(*request.calibration) : calibrate_here(request, input);
   options.tolerances = request.tolerances;
   options.simulators = request.simulators;
   // The rows of a validity map (a two-axis campaign) are calibrated here, every law; the row

@@ -25,8 +25,8 @@ json numbers(const std::vector<double>& values, double scale = 1) {
 
 json line(const std::string& label, json x, json y, const std::string& color,
           const std::string& style, const std::string& marker = "") {
-  return {{"label", label}, {"x", std::move(x)}, {"y", std::move(y)}, {"color", color},
-          {"linestyle", style}, {"marker", marker}};
+  return {{"label", label}, {"x", std::move(x)},  {"y", std::move(y)},
+          {"color", color}, {"linestyle", style}, {"marker", marker}};
 }
 
 std::string color_of(const PlasticLawCurve& law) {
@@ -77,17 +77,17 @@ json restitution_figure(const Report& report, const PlasticLaws& laws) {
       std::vector<double> ratio;
       for (double v : calibrated->curve->velocity) ratio.push_back(v / v_y);
       const auto& e = calibrated->curve->center[std::size_t(Quantity::restitution)];
-      panel["series"].push_back(line(calibrated->label, numbers(ratio), numbers(e), "tab:red", "-"));
+      panel["series"].push_back(
+          line(calibrated->label, numbers(ratio), numbers(e), "tab:red", "-"));
       for (double value : e)
         if (std::isfinite(value)) lowest = std::min(lowest, value);
     }
   // Thornton's far-field limit e -> 1.185 (V/V_y)^(-1/4) (reduced/thornton.hpp): the slope of
   // the plastic family.
   const double high = laws.laws.front().velocity.back() / v_y;
-  panel["series"].push_back(line("plastic family: 1.185 (V/V_y)^(-1/4) (Thornton's limit)",
-                                 numbers({2.0, high}),
-                                 numbers({1.185 * std::pow(2.0, -0.25), 1.185 * std::pow(high, -0.25)}),
-                                 "0.5", ":"));
+  panel["series"].push_back(
+      line("plastic family: 1.185 (V/V_y)^(-1/4) (Thornton's limit)", numbers({2.0, high}),
+           numbers({1.185 * std::pow(2.0, -0.25), 1.185 * std::pow(high, -0.25)}), "0.5", ":"));
   std::vector<double> ratio, e, error;
   for (const auto& run : report.runs) {
     ratio.push_back(run.velocity / v_y);
@@ -100,8 +100,8 @@ json restitution_figure(const Report& report, const PlasticLaws& laws) {
                   "none", "o");
   fem["yerr"] = {numbers(error), numbers(error)};
   panel["series"].push_back(fem);
-  panel["series"].push_back(line("V = V_y", numbers({1.0, 1.0}), numbers({0.9 * lowest, 1.05}),
-                                 "0.3", "-."));
+  panel["series"].push_back(
+      line("V = V_y", numbers({1.0, 1.0}), numbers({0.9 * lowest, 1.05}), "0.3", "-."));
   // Plain tick labels: e in steps of 0.1, V/V_y at 1-2-5 steps.
   json yticks = json::array(), xticks = json::array();
   for (double tick = std::floor(lowest * 10) / 10; tick <= 1.0001; tick += 0.1)
@@ -112,8 +112,13 @@ json restitution_figure(const Report& report, const PlasticLaws& laws) {
       if (step * decade >= low && step * decade <= high) xticks.push_back(step * decade);
   panel["yticks"] = yticks;
   panel["xticks"] = xticks;
-  return {{"title", ""}, {"columns", 1}, {"width", 8.0}, {"row_height", 4.6},
-          {"shared_legend", true}, {"legend_columns", 2}, {"panels", json::array({panel})}};
+  return {{"title", ""},
+          {"columns", 1},
+          {"width", 8.0},
+          {"row_height", 4.6},
+          {"shared_legend", true},
+          {"legend_columns", 2},
+          {"panels", json::array({panel})}};
 }
 
 json permanent_approach_figure(const Report& report, const PlasticLaws& laws) {
@@ -122,7 +127,7 @@ json permanent_approach_figure(const Report& report, const PlasticLaws& laws) {
                 {"ylabel", "permanent approach x_p [µm]"},
                 {"series", json::array()}};
   for (const auto& law : laws.laws)
-    if (!law.permanent_approach.empty())  // not the restitution fit
+    if (!law.permanent_approach.empty()) // not the restitution fit
       panel["series"].push_back(line(law.label, numbers(law.velocity),
                                      numbers(law.permanent_approach, 1e6), color_of(law),
                                      style_of(law)));
@@ -135,8 +140,13 @@ json permanent_approach_figure(const Report& report, const PlasticLaws& laws) {
                                   {"color", "0.85"},
                                   {"alpha", 0.35},
                                   {"label", "below V_y (Johnson): elastic, no dent"}}});
-  return {{"title", ""}, {"columns", 1}, {"width", 8.0}, {"row_height", 4.4},
-          {"shared_legend", true}, {"legend_columns", 2}, {"panels", json::array({panel})}};
+  return {{"title", ""},
+          {"columns", 1},
+          {"width", 8.0},
+          {"row_height", 4.4},
+          {"shared_legend", true},
+          {"legend_columns", 2},
+          {"panels", json::array({panel})}};
 }
 
 json loops_figure(const Report& report, const PlasticLaws& laws) {
@@ -155,17 +165,18 @@ json loops_figure(const Report& report, const PlasticLaws& laws) {
         approach.push_back(run.fem_history.approach[k]);
         force.push_back(run.fem_history.force[k]);
       }
-    panel["series"].push_back(line("FEM", numbers(approach, 1e6), numbers(force, 1e-3), "black", "-"));
+    panel["series"].push_back(
+        line("FEM", numbers(approach, 1e6), numbers(force, 1e-3), "black", "-"));
     for (const auto& law : laws.laws)
-      if (i < law.loops.size() && !law.loops[i].approach.empty())  // none of the e fit
+      if (i < law.loops.size() && !law.loops[i].approach.empty()) // none of the e fit
         panel["series"].push_back(line(law.label, numbers(law.loops[i].approach, 1e6),
                                        numbers(law.loops[i].force, 1e-3), color_of(law),
                                        style_of(law)));
     panels.push_back(panel);
   }
-  return {{"title", ""}, {"columns", std::min<std::size_t>(3, panels.size())},
-          {"row_height", 3.4}, {"shared_legend", true}, {"legend_columns", 3},
-          {"panels", panels}};
+  return {{"title", ""},         {"columns", std::min<std::size_t>(3, panels.size())},
+          {"row_height", 3.4},   {"shared_legend", true},
+          {"legend_columns", 3}, {"panels", panels}};
 }
 
 } // namespace
@@ -181,7 +192,8 @@ std::vector<ReportFigure> plastic_figures(const Report& report) {
        "restitution fit from the material (constants unconfirmed), Hunt–Crossley damping on the "
        "elastic-plastic springs where the calibration holds it (Thornton's spring: pink, dark "
        "magenta with b(V) from A fitted; Jackson–Green's: olive, teal with b(V) from A fitted; "
-       "a constant b fitted dash-dotted), the calibrated Hunt–Crossley law (red) and the plastic family's slope "
+       "a constant b fitted dash-dotted), the calibrated Hunt–Crossley law (red) and the plastic "
+       "family's slope "
        "-1/4.",
        restitution_figure(report, laws)},
       {FigureId::permanent_approach, "", "permanent_approach.png",
@@ -199,22 +211,23 @@ void plastic_section(Document& doc, const Report& report,
   if (!report.plastic_laws) return;
   const PlasticLaws& laws = *report.plastic_laws;
   doc.heading("Elastic-plastic laws");
-  doc.paragraph("The FEM's material is elastic-plastic: the laws built for it are Thornton's "
-                "(J. Appl. Mech. 64:383, 1997: Hertz to the limiting pressure p_y = 1.6 Y, then "
-                "a linear branch, elastic unloading on an enlarged radius) and Jackson & Green's "
-                "finite-element fit of the sphere on a flat (J. Tribol. 127:343, 2005, unloading "
-                "on the radius of the maximum contact), both elastic–perfectly-plastic: no "
-                "hardening enters them. The yield velocity of the material is V_y = " +
-                short_number(laws.yield_velocity) + " m/s with Johnson's p_y = 1.6 Y and " +
-                short_number(laws.jackson_green_yield_velocity) +
-                " m/s with Jackson–Green's p_y = C(nu) Y (" + laws.yield_basis +
-                "). Beside them, the restitution that Jackson, Green & Marghitu fitted to "
-                "their finite-element impacts of an elastic–perfectly-plastic sphere on a rigid "
-                "flat (Nonlinear Dyn. 60:217, 2010): e = 1 - 0.0361 eps_y^-0.114 ln(V/V_c) "
-                "(V/V_c - 1)^(9.5 eps_y), V_c the critical velocity of p_y = C(nu) Y, "
-                "eps_y = C(nu) Y / E*. The paper could not be read here; the formula was read "
-                "in one public implementation, and its constants and the definition of eps_y "
-                "could not be confirmed. It gives e only (no force, no dent).");
+  doc.paragraph(
+      "The FEM's material is elastic-plastic: the laws built for it are Thornton's "
+      "(J. Appl. Mech. 64:383, 1997: Hertz to the limiting pressure p_y = 1.6 Y, then "
+      "a linear branch, elastic unloading on an enlarged radius) and Jackson & Green's "
+      "finite-element fit of the sphere on a flat (J. Tribol. 127:343, 2005, unloading "
+      "on the radius of the maximum contact), both elastic–perfectly-plastic: no "
+      "hardening enters them. The yield velocity of the material is V_y = " +
+      short_number(laws.yield_velocity) + " m/s with Johnson's p_y = 1.6 Y and " +
+      short_number(laws.jackson_green_yield_velocity) +
+      " m/s with Jackson–Green's p_y = C(nu) Y (" + laws.yield_basis +
+      "). Beside them, the restitution that Jackson, Green & Marghitu fitted to "
+      "their finite-element impacts of an elastic–perfectly-plastic sphere on a rigid "
+      "flat (Nonlinear Dyn. 60:217, 2010): e = 1 - 0.0361 eps_y^-0.114 ln(V/V_c) "
+      "(V/V_c - 1)^(9.5 eps_y), V_c the critical velocity of p_y = C(nu) Y, "
+      "eps_y = C(nu) Y / E*. The paper could not be read here; the formula was read "
+      "in one public implementation, and its constants and the definition of eps_y "
+      "could not be confirmed. It gives e only (no force, no dent).");
   std::vector<std::string> items;
   for (const auto& law : laws.laws)
     items.push_back(law.label + ": " + law.parameters +
@@ -224,13 +237,14 @@ void plastic_section(Document& doc, const Report& report,
   doc.list(items);
   if (std::any_of(laws.laws.begin(), laws.laws.end(),
                   [](const PlasticLawCurve& law) { return law.damped; }))
-    doc.paragraph("Hunt–Crossley on an elastic-plastic spring, F = F_s(x) (1 + b x'), carries "
-                  "both losses: the viscous one through b (below the yield velocity the law is "
-                  "Hunt–Crossley's), the plastic one through the spring's unloading branch. From "
-                  "the material: the spring from E*, R and Y, and b(V) = (3/2) gamma_1 A "
-                  "(c/m)^(2/5) V^(-4/5) with A of the retardation times, the b whose small-loss "
-                  "restitution is Kuwabara–Kono's. Fitted: the yield parameter and b, with c at "
-                  "the Hertz value of the materials.");
+    doc.paragraph(
+        "Hunt–Crossley on an elastic-plastic spring, F = F_s(x) (1 + b x'), carries "
+        "both losses: the viscous one through b (below the yield velocity the law is "
+        "Hunt–Crossley's), the plastic one through the spring's unloading branch. From "
+        "the material: the spring from E*, R and Y, and b(V) = (3/2) gamma_1 A "
+        "(c/m)^(2/5) V^(-4/5) with A of the retardation times, the b whose small-loss "
+        "restitution is Kuwabara–Kono's. Fitted: the yield parameter and b, with c at "
+        "the Hertz value of the materials.");
   doc.paragraph(laws.text);
   if (!report.family_text.empty()) doc.paragraph(report.family_text);
   Table table{{"V [m/s]", "V/V_y", "FEM e", "FEM x_p [µm]"}, {}};
@@ -240,7 +254,8 @@ void plastic_section(Document& doc, const Report& report,
   }
   for (std::size_t i = 0; i < report.runs.size(); ++i) {
     const ReportRun& run = report.runs[i];
-    std::vector<std::string> row{velocity_cell(run), short_number(run.velocity / laws.yield_velocity),
+    std::vector<std::string> row{velocity_cell(run),
+                                 short_number(run.velocity / laws.yield_velocity),
                                  cell(run.fem.restitution),
                                  std::isfinite(laws.fem_permanent_approach[i])
                                      ? cell(laws.fem_permanent_approach[i] * 1e6)

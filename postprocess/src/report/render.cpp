@@ -28,11 +28,20 @@ std::string escape_html(const std::string& text) {
       continue;
     }
     switch (c) {
-    case '&': out += "&amp;"; break;
-    case '<': out += "&lt;"; break;
-    case '>': out += "&gt;"; break;
-    case '"': out += "&quot;"; break;
-    default: out += c;
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      default:
+        out += c;
     }
   }
   return out;
@@ -45,8 +54,7 @@ std::string escape_markdown_cell(const std::string& text) {
 }
 
 std::string base64(const std::string& bytes) {
-  static const char* alphabet =
-      "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  static const char* alphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
   std::string out;
   std::size_t i = 0;
   for (; i + 2 < bytes.size(); i += 3) {
@@ -94,38 +102,44 @@ void write_report_markdown(const Report& report, const fs::path& file,
   std::ostringstream out;
   for (const auto& block : doc.blocks) {
     switch (block.kind) {
-    case Block::Kind::heading: out << std::string(block.level, '#') << ' ' << block.text << "\n\n"; break;
-    case Block::Kind::paragraph:
-    case Block::Kind::warning: out << block.text << "\n\n"; break;
-    case Block::Kind::list:
-      for (const auto& item : block.items) out << "- " << item << '\n';
-      out << '\n';
-      break;
-    case Block::Kind::code: out << "```\n" << block.text << "\n```\n\n"; break;
-    case Block::Kind::table: {
-      const auto row = [&](const std::vector<std::string>& cells) {
-        out << '|';
-        for (const auto& c : cells) out << ' ' << escape_markdown_cell(c) << " |";
+      case Block::Kind::heading:
+        out << std::string(block.level, '#') << ' ' << block.text << "\n\n";
+        break;
+      case Block::Kind::paragraph:
+      case Block::Kind::warning:
+        out << block.text << "\n\n";
+        break;
+      case Block::Kind::list:
+        for (const auto& item : block.items) out << "- " << item << '\n';
         out << '\n';
-      };
-      row(block.table.header);
-      out << '|';
-      for (std::size_t i = 0; i < block.table.header.size(); ++i) out << "---|";
-      out << '\n';
-      for (const auto& r : block.table.rows) row(r);
-      out << '\n';
-      break;
-    }
-    case Block::Kind::figure: {
-      const fs::path image = file.parent_path() / block.figure.file;
-      if (fs::exists(image) && fs::file_size(image) > 0)
-        out << "![" << block.figure.caption << "](" << block.figure.file << ")\n\n*"
-            << block.figure.caption << "*\n\n";
-      else
-        out << "*Figure missing (" << block.figure.file << " was not drawn, see Status): "
-            << block.figure.caption << "*\n\n";
-      break;
-    }
+        break;
+      case Block::Kind::code:
+        out << "```\n" << block.text << "\n```\n\n";
+        break;
+      case Block::Kind::table: {
+        const auto row = [&](const std::vector<std::string>& cells) {
+          out << '|';
+          for (const auto& c : cells) out << ' ' << escape_markdown_cell(c) << " |";
+          out << '\n';
+        };
+        row(block.table.header);
+        out << '|';
+        for (std::size_t i = 0; i < block.table.header.size(); ++i) out << "---|";
+        out << '\n';
+        for (const auto& r : block.table.rows) row(r);
+        out << '\n';
+        break;
+      }
+      case Block::Kind::figure: {
+        const fs::path image = file.parent_path() / block.figure.file;
+        if (fs::exists(image) && fs::file_size(image) > 0)
+          out << "![" << block.figure.caption << "](" << block.figure.file << ")\n\n*"
+              << block.figure.caption << "*\n\n";
+        else
+          out << "*Figure missing (" << block.figure.file
+              << " was not drawn, see Status): " << block.figure.caption << "*\n\n";
+        break;
+      }
     }
   }
   write_atomically(file, out.str());
@@ -168,47 +182,53 @@ void write_report_html(const Report& report, const fs::path& file,
   };
   for (const auto& block : doc.blocks) {
     switch (block.kind) {
-    case Block::Kind::heading:
-      if (block.foldable) {
-        close_section();
-        out << "<details><summary><h2>" << escape_html(block.text) << "</h2></summary>\n";
-        section_open = true;
+      case Block::Kind::heading:
+        if (block.foldable) {
+          close_section();
+          out << "<details><summary><h2>" << escape_html(block.text) << "</h2></summary>\n";
+          section_open = true;
+          break;
+        }
+        out << "<h" << block.level << '>' << escape_html(block.text) << "</h" << block.level
+            << ">\n";
+        break;
+      case Block::Kind::paragraph:
+        out << "<p>" << escape_html(block.text) << "</p>\n";
+        break;
+      case Block::Kind::warning:
+        out << "<p class=\"missing\">" << escape_html(block.text) << "</p>\n";
+        break;
+      case Block::Kind::list:
+        out << "<ul>\n";
+        for (const auto& item : block.items) out << "<li>" << escape_html(item) << "</li>\n";
+        out << "</ul>\n";
+        break;
+      case Block::Kind::code:
+        out << "<pre>" << escape_html(block.text) << "</pre>\n";
+        break;
+      case Block::Kind::table:
+        out << "<table>\n<tr>";
+        for (const auto& c : block.table.header) out << "<th>" << escape_html(c) << "</th>";
+        out << "</tr>\n";
+        for (const auto& r : block.table.rows) {
+          out << "<tr>";
+          for (const auto& c : r) out << "<td>" << escape_html(c) << "</td>";
+          out << "</tr>\n";
+        }
+        out << "</table>\n";
+        break;
+      case Block::Kind::figure: {
+        const fs::path image = file.parent_path() / block.figure.file;
+        if (fs::exists(image) && fs::file_size(image) > 0)
+          out << "<figure><img alt=\"" << escape_html(block.figure.caption)
+              << "\" src=\"data:image/png;base64," << base64(read_binary(image))
+              << "\"><figcaption>" << escape_html(block.figure.caption)
+              << "</figcaption></figure>\n";
+        else
+          out << "<p class=\"missing\">Figure missing (" << escape_html(block.figure.file)
+              << " was not drawn, see Status): " << escape_html(block.figure.caption) << "</p>\n";
         break;
       }
-      out << "<h" << block.level << '>' << escape_html(block.text) << "</h" << block.level << ">\n";
-      break;
-    case Block::Kind::paragraph: out << "<p>" << escape_html(block.text) << "</p>\n"; break;
-    case Block::Kind::warning:
-      out << "<p class=\"missing\">" << escape_html(block.text) << "</p>\n";
-      break;
-    case Block::Kind::list:
-      out << "<ul>\n";
-      for (const auto& item : block.items) out << "<li>" << escape_html(item) << "</li>\n";
-      out << "</ul>\n";
-      break;
-    case Block::Kind::code: out << "<pre>" << escape_html(block.text) << "</pre>\n"; break;
-    case Block::Kind::table:
-      out << "<table>\n<tr>";
-      for (const auto& c : block.table.header) out << "<th>" << escape_html(c) << "</th>";
-      out << "</tr>\n";
-      for (const auto& r : block.table.rows) {
-        out << "<tr>";
-        for (const auto& c : r) out << "<td>" << escape_html(c) << "</td>";
-        out << "</tr>\n";
-      }
-      out << "</table>\n";
-      break;
-    case Block::Kind::figure: {
-      const fs::path image = file.parent_path() / block.figure.file;
-      if (fs::exists(image) && fs::file_size(image) > 0)
-        out << "<figure><img alt=\"" << escape_html(block.figure.caption)
-            << "\" src=\"data:image/png;base64," << base64(read_binary(image))
-            << "\"><figcaption>" << escape_html(block.figure.caption) << "</figcaption></figure>\n";
-      else
-        out << "<p class=\"missing\">Figure missing (" << escape_html(block.figure.file)
-            << " was not drawn, see Status): " << escape_html(block.figure.caption) << "</p>\n";
-      break;
-    }
     }
   }
   close_section();

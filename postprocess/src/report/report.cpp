@@ -31,8 +31,8 @@ ImpactHistory fem_window(const FemRun& run) {
     const double t = run.time[i] - t0;
     if (t >= -0.05 * tc && t <= 1.25 * tc) inside.push_back(i);
   }
-  const std::size_t stride = std::max<std::size_t>(1, (inside.size() + fem_history_samples - 1) /
-                                                          fem_history_samples);
+  const std::size_t stride =
+      std::max<std::size_t>(1, (inside.size() + fem_history_samples - 1) / fem_history_samples);
   for (std::size_t k = 0; k < inside.size(); k += stride) {
     const std::size_t i = inside[k];
     window.time.push_back(run.time[i] - t0);
@@ -65,12 +65,14 @@ void add_quality_warnings(const ReportRun& run, std::vector<Problem>& problems) 
   std::string message;
   if (std::isfinite(smoothness.oscillation) && smoothness.oscillation > force_oscillation_warning)
     message = "the contact force oscillates from step to step by " +
-              detail::unsigned_percent(smoothness.oscillation) + " of its peak (" + run.record.smoothness_source +
-              "; warning above " + detail::unsigned_percent(force_oscillation_warning) +
+              detail::unsigned_percent(smoothness.oscillation) + " of its peak (" +
+              run.record.smoothness_source + "; warning above " +
+              detail::unsigned_percent(force_oscillation_warning) +
               "): the peak force is uncertain by as much";
   if (std::isfinite(smoothness.after_release) && smoothness.after_release > release_warning)
     message += (message.empty() ? "" : "; ") + std::string("after the first zero that follows ") +
-               "the peak the force returns to " + detail::unsigned_percent(smoothness.after_release) +
+               "the peak the force returns to " +
+               detail::unsigned_percent(smoothness.after_release) +
                " of the peak (release chatter): the contact time is uncertain by its length";
   if (!message.empty())
     problems.push_back({run.source, ProblemKind::quality,
@@ -104,10 +106,10 @@ Report build_report(const Campaign& campaign, const std::optional<Calibration>& 
   report.tolerances = options.tolerances;
   std::sort(report.tolerances.begin(), report.tolerances.end());
   // A run without rebound is a finding (ProblemKind::no_rebound), listed, not an input error.
-  for (const auto& problem : campaign.problems)
-    problems.push_back(problem);
+  for (const auto& problem : campaign.problems) problems.push_back(problem);
   if (campaign.runs.empty())
-    problems.push_back({campaign_source, ProblemKind::input, "no usable run: the report has no FEM data"});
+    problems.push_back(
+        {campaign_source, ProblemKind::input, "no usable run: the report has no FEM data"});
 
   // Runs, with the calibration's measured numbers where it holds the run.
   for (const FemRun& fem : campaign.runs) {
@@ -170,10 +172,13 @@ Report build_report(const Campaign& campaign, const std::optional<Calibration>& 
     const std::string reason = report.campaign_reason.empty()
                                    ? std::string("the calibration has no campaign fit")
                                    : report.campaign_reason;
-    const bool said =
-        std::any_of(calibration->problems.begin(), calibration->problems.end(),
-                    [&](const Problem& p) { return is_campaign_not_fitted(p, calibration->campaign); });
-    if (!said) problems.push_back({calibration_source, ProblemKind::input, "no validity verdict: " + reason});
+    const bool said = std::any_of(calibration->problems.begin(), calibration->problems.end(),
+                                  [&](const Problem& p) {
+                                    return is_campaign_not_fitted(p, calibration->campaign);
+                                  });
+    if (!said)
+      problems.push_back(
+          {calibration_source, ProblemKind::input, "no validity verdict: " + reason});
   }
   report.problems = std::move(problems);
   detail::add_verdict(report);

@@ -59,8 +59,8 @@ std::string band_name(double tolerance);
 /// The decision at one run: within when every |error| + U of `quantities` is within the
 /// tolerance, outside when one |error| - U exceeds it, not decided in between (U: the FEM's
 /// uncertainty of the run), unknown without values. The one rule of every decision on the page.
-Decision decide(const std::optional<ImpactFigures>& judged, const ReportRun& run,
-                double tolerance, const std::vector<Quantity>& quantities);
+Decision decide(const std::optional<ImpactFigures>& judged, const ReportRun& run, double tolerance,
+                const std::vector<Quantity>& quantities);
 /// The decisions at every run (`judged` parallel to report.runs), the widest range within and
 /// the sentence ("Within 2 %: V = ... m/s" + basis + ...).
 ToleranceVerdict tolerance_verdict(const Report& report,
@@ -88,10 +88,13 @@ std::string effective_alpha_text(const std::vector<ReportRun>& runs);
 void add_simulators(Report& report, const std::filesystem::path& directory);
 /// What the tools measure (x_max and t(F_max) are not among them): the quantities judged, and
 /// those of the tables.
-inline const std::vector<Quantity> simulator_judged_quantities = {
-    Quantity::energy_loss, Quantity::contact_time, Quantity::force_max};
-inline const std::vector<Quantity> simulator_table_quantities = {
-    Quantity::restitution, Quantity::energy_loss, Quantity::contact_time, Quantity::force_max};
+inline const std::vector<Quantity> simulator_judged_quantities = {Quantity::energy_loss,
+                                                                  Quantity::contact_time,
+                                                                  Quantity::force_max};
+inline const std::vector<Quantity> simulator_table_quantities = {Quantity::restitution,
+                                                                 Quantity::energy_loss,
+                                                                 Quantity::contact_time,
+                                                                 Quantity::force_max};
 /// "Simbody", "MuJoCo", "LAMMPS" (another tool by its own name).
 std::string simulator_tool_name(const std::string& tool);
 
@@ -101,8 +104,8 @@ std::string simulator_tool_name(const std::string& tool);
 /// infinite Kirchhoff plate of the run's thickness and material, Hunt–Crossley damping b.
 struct ThinPlatePrediction {
   std::optional<ImpactFigures> quantities;
-  std::string missing;     ///< why there are none (the run does not record the plate, ...)
-  std::string parameters;  ///< c, Z, lambda as text
+  std::string missing;    ///< why there are none (the run does not record the plate, ...)
+  std::string parameters; ///< c, Z, lambda as text
 };
 /// rigid: the same contact on a rigid support (Z = infinity).
 ThinPlatePrediction thin_plate_prediction(const FemRun& run, double damping, bool rigid = false);
@@ -178,7 +181,9 @@ public:
   void list(std::vector<std::string> items) {
     if (!items.empty()) blocks.push_back({Block::Kind::list, 0, "", std::move(items), {}, {}});
   }
-  void table(Table table) { blocks.push_back({Block::Kind::table, 0, "", {}, std::move(table), {}}); }
+  void table(Table table) {
+    blocks.push_back({Block::Kind::table, 0, "", {}, std::move(table), {}});
+  }
   void figure(const PageFigure& figure) {
     blocks.push_back({Block::Kind::figure, 0, "", {}, {}, figure});
   }

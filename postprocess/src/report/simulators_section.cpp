@@ -15,7 +15,6 @@ namespace {
 namespace fs = std::filesystem;
 constexpr double nan = std::numeric_limits<double>::quiet_NaN();
 
-
 bool linear_spring_damper(const SimulatorResult& result) {
   return result.model == "linear-spring-damper";
 }
@@ -23,17 +22,23 @@ bool linear_spring_damper(const SimulatorResult& result) {
 // The table's display of each quantity: scale and unit.
 double display_scale(Quantity quantity) {
   switch (quantity) {
-  case Quantity::contact_time: return 1e6;
-  case Quantity::force_max: return 1e-3;
-  default: return 1;
+    case Quantity::contact_time:
+      return 1e6;
+    case Quantity::force_max:
+      return 1e-3;
+    default:
+      return 1;
   }
 }
 
 std::string display_unit(Quantity quantity) {
   switch (quantity) {
-  case Quantity::contact_time: return " [µs]";
-  case Quantity::force_max: return " [kN]";
-  default: return "";
+    case Quantity::contact_time:
+      return " [µs]";
+    case Quantity::force_max:
+      return " [kN]";
+    default:
+      return "";
   }
 }
 
@@ -92,20 +97,20 @@ std::string commands(const Report& report) {
   return "build/bin/impact-export " + campaign + " --calibration " + calibration +
          " --output EXPORT_DIR\n"
          "tests/consumers/run_in_simulators.sh EXPORT_DIR RESULTS_DIR\n"
-         "build/bin/impact-report " + campaign + " --calibration " + calibration +
+         "build/bin/impact-report " +
+         campaign + " --calibration " + calibration +
          " --output REPORT_DIR --simulators RESULTS_DIR";
 }
 
 void result_subsection(Document& doc, const Report& report, const SimulatorResult& result) {
   const std::string name = simulator_tool_name(result.tool);
   doc.heading(name + " " + result.tool_version + ": " + result.file, 3);
-  doc.paragraph("Model " + result.model + ". The file to use: " +
-                (export_directory(result) / result.file).string() + " (" + result.file +
-                " of the export " + export_directory(result).string() + "). " +
-                (result.reference_velocity
-                     ? "Matched to the FEM at the reference velocity V = " +
-                           short_number(*result.reference_velocity) + " m/s. "
-                     : std::string()) +
+  doc.paragraph("Model " + result.model +
+                ". The file to use: " + (export_directory(result) / result.file).string() + " (" +
+                result.file + " of the export " + export_directory(result).string() + "). " +
+                (result.reference_velocity ? "Matched to the FEM at the reference velocity V = " +
+                                                 short_number(*result.reference_velocity) + " m/s. "
+                                           : std::string()) +
                 "Result file: " + result.source + ".");
 
   Table table{{"V [m/s]"}, {}};
@@ -129,13 +134,15 @@ void result_subsection(Document& doc, const Report& report, const SimulatorResul
     }
     double deviation = 0;
     for (Quantity quantity : simulator_table_quantities)
-      deviation = std::max(deviation, std::abs(relative_error(run.tool, run.reduced_model, quantity)));
+      deviation =
+          std::max(deviation, std::abs(relative_error(run.tool, run.reduced_model, quantity)));
     row.push_back(unsigned_percent(deviation));
     table.rows.push_back(row);
   }
   doc.table(table);
 
-  doc.paragraph(name + " (" + result.file + ") against the FEM in the energy loss 1 - e^2, t_c "
+  doc.paragraph(name + " (" + result.file +
+                ") against the FEM in the energy loss 1 - e^2, t_c "
                 "and F_max, by the verdict's rule:");
   std::vector<std::string> items;
   for (const auto& verdict : result.against_fem) items.push_back(verdict.text);
@@ -152,7 +159,8 @@ void result_subsection(Document& doc, const Report& report, const SimulatorResul
   doc.list(items);
   if (linear_spring_damper(result)) {
     std::string text =
-        name + "'s contact is a linear spring–damper (the file's solref and solimp): its "
+        name +
+        "'s contact is a linear spring–damper (the file's solref and solimp): its "
         "stiffness and damping are matched to the FEM's e and t_c at the reference velocity" +
         (result.reference_velocity ? " V = " + short_number(*result.reference_velocity) + " m/s"
                                    : std::string()) +
@@ -172,37 +180,41 @@ void result_subsection(Document& doc, const Report& report, const SimulatorResul
 void simulators_section(Document& doc, const Report& report) {
   doc.heading("In your simulator");
   if (!report.simulators_source) {
-    doc.paragraph("Not produced: this section shows what Simbody, MuJoCo and LAMMPS themselves "
-                  "measure with the contact exported for them by impact-export, against the FEM "
-                  "and against the exported model. To produce it (the tools are installed by "
-                  "./setup.sh; run_in_simulators.sh drops the campaign's sphere in each tool at "
-                  "each campaign velocity and writes one result file per exported file), run "
-                  "from the source directory:");
+    doc.paragraph(
+        "Not produced: this section shows what Simbody, MuJoCo and LAMMPS themselves "
+        "measure with the contact exported for them by impact-export, against the FEM "
+        "and against the exported model. To produce it (the tools are installed by "
+        "./setup.sh; run_in_simulators.sh drops the campaign's sphere in each tool at "
+        "each campaign velocity and writes one result file per exported file), run "
+        "from the source directory:");
     doc.code(commands(report));
     return;
   }
-  doc.paragraph("What each tool measured itself, with the file exported for it by impact-export "
-                "(the result files in " + *report.simulators_source +
-                ", written by tests/consumers/run_in_simulators.sh): the campaign's sphere "
-                "dropped on a fixed plane at each campaign velocity, no gravity, no friction; "
-                "e, t_c and F_max from the tool's own state. Errors are (tool - reference) / "
-                "|reference|, against the FEM (the calibration's numbers, as everywhere in this "
-                "report) and against the reduced model the file was exported from (its "
-                "prediction in export.json): the second says whether the tool runs the exported "
-                "law, the first what a user of the file gets. The ranges within each band follow "
-                "the verdict's rule, with the FEM's uncertainty, in 1 - e^2, t_c and F_max (the "
-                "tools do not report x_max).");
+  doc.paragraph(
+      "What each tool measured itself, with the file exported for it by impact-export "
+      "(the result files in " +
+      *report.simulators_source +
+      ", written by tests/consumers/run_in_simulators.sh): the campaign's sphere "
+      "dropped on a fixed plane at each campaign velocity, no gravity, no friction; "
+      "e, t_c and F_max from the tool's own state. Errors are (tool - reference) / "
+      "|reference|, against the FEM (the calibration's numbers, as everywhere in this "
+      "report) and against the reduced model the file was exported from (its "
+      "prediction in export.json): the second says whether the tool runs the exported "
+      "law, the first what a user of the file gets. The ranges within each band follow "
+      "the verdict's rule, with the FEM's uncertainty, in 1 - e^2, t_c and F_max (the "
+      "tools do not report x_max).");
   if (report.simulators.empty()) {
     doc.warning("No usable result file in " + *report.simulators_source + " (see Status).");
     return;
   }
   Table summary{{"tool", "version", "model", "file"}, {}};
-  for (double tolerance : report.tolerances) summary.header.push_back("within " + band_name(tolerance));
+  for (double tolerance : report.tolerances)
+    summary.header.push_back("within " + band_name(tolerance));
   summary.header.push_back("RMS error vs FEM (1 - e^2, t_c, F_max)");
   summary.header.push_back("largest |error| vs exported model");
   for (const auto& result : report.simulators) {
-    std::vector<std::string> row{simulator_tool_name(result.tool), result.tool_version, result.model,
-                                 result.file};
+    std::vector<std::string> row{simulator_tool_name(result.tool), result.tool_version,
+                                 result.model, result.file};
     for (const auto& verdict : result.against_fem) row.push_back(range_text(verdict, report));
     row.push_back(unsigned_percent(rms_against_fem(result)));
     row.push_back(unsigned_percent(largest_against_model(result)));

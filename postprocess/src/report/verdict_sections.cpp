@@ -49,7 +49,8 @@ void verdict_section(Document& doc, const Report& report) {
              short_number(report.tolerances[i] * 100) + " %";
   doc.paragraph("Where the calibrated Hunt–Crossley model (" + calibrated.parameters +
                 ") predicts the energy loss 1 - e^2, the contact time, the peak force and the "
-                "peak approach all within " + bands + " of the FEM. " +
+                "peak approach all within " +
+                bands + " of the FEM. " +
                 (calibrated.out_of_sample
                      ? "The errors are out of sample: each velocity is predicted by the model "
                        "fitted to the other velocities only (leave one velocity out); the "
@@ -129,14 +130,16 @@ void ranking_section(Document& doc, const Report& report) {
   const CampaignCalibration& campaign = report.calibration->campaign;
   if (campaign.ranking.empty()) return;
   doc.heading("Ranking of the models");
-  doc.paragraph("All models of the calibration (calibration JSON, campaign.ranking), ranked by "
-                "the RMS of their relative errors in 1 - e^2, t_c, F_max and x_max over all "
-                "runs, out of sample where the campaign allows it (models that fit nothing are "
-                "out of sample by construction); a fitted model scored in sample (fewer than "
-                "three velocities) ranks after every model scored out of sample. Scores within "
-                "0.01 % count as equal, and among equals fewer free parameters rank first. The RMS residual of the force "
-                "histories (in sample) is shown for comparison: it is what the fits minimise, "
-                "not what the verdict judges.");
+  doc.paragraph(
+      "All models of the calibration (calibration JSON, campaign.ranking), ranked by "
+      "the RMS of their relative errors in 1 - e^2, t_c, F_max and x_max over all "
+      "runs, out of sample where the campaign allows it (models that fit nothing are "
+      "out of sample by construction); a fitted model scored in sample (fewer than "
+      "three velocities) ranks after every model scored out of sample. Scores within "
+      "0.01 % count as equal, and among equals fewer free parameters rank first. The RMS residual "
+      "of the force "
+      "histories (in sample) is shown for comparison: it is what the fits minimise, "
+      "not what the verdict judges.");
   Table table{{"rank", "model", "free parameters", "RMS error [%]", "errors", "worst error [%]",
                "in-sample RMS error [%]", "RMS residual [%]", "parameter", "value", "unit",
                "converged"},
@@ -172,22 +175,24 @@ void ranking_section(Document& doc, const Report& report) {
       unit += (i ? ", " : "") + (i < units.size() ? units[i] : std::string());
     }
     if (names.empty()) value = cell(nan);
-    table.rows.push_back({std::to_string(rank++), entry.key, std::to_string(entry.free_parameters),
-                          cell(entry.score * 100), entry.out_of_sample ? "out of sample" : "in sample",
-                          cell(entry.worst_error * 100), cell(entry.in_sample_score * 100),
-                          cell(entry.rms_residual * 100), name, value, unit,
-                          entry.converged ? "yes" : "no"});
+    table.rows.push_back(
+        {std::to_string(rank++), entry.key, std::to_string(entry.free_parameters),
+         cell(entry.score * 100), entry.out_of_sample ? "out of sample" : "in sample",
+         cell(entry.worst_error * 100), cell(entry.in_sample_score * 100),
+         cell(entry.rms_residual * 100), name, value, unit, entry.converged ? "yes" : "no"});
     if (entry.family.size() > 1) {
       std::string members, fitted;
       for (std::size_t i = 0; i < entry.family.size(); ++i) {
         members += (i ? ", " : "") + entry.family[i];
         if (const CampaignModelFit* fit = campaign.find(entry.family[i]))
-          fitted += (i ? ", " : "") + entry.family[i] + " e = " + short_number(fit->fit.parameter.value);
+          fitted +=
+              (i ? ", " : "") + entry.family[i] + " e = " + short_number(fit->fit.parameter.value);
       }
       families.push_back(
           entry.key + " stands for one family: " + members +
           " fitted with a constant e give one force history (beta = b V the same at every V: "
-          "Hunt–Crossley with b ∝ 1/V); they differ only in the e they report (" + fitted +
+          "Hunt–Crossley with b ∝ 1/V); they differ only in the e they report (" +
+          fitted +
           "). How far each map's restitution is from what it is given is in 'The laws as their "
           "users apply them'.");
     }
@@ -202,29 +207,32 @@ void estimate_tables(Document& doc, const Report& report, const CampaignModelFit
                      const std::string& json_path) {
   const double level = report.calibration->confidence_level;
   const ModelFit& parameters = fit.fit;
-  doc.paragraph(fit.label + " (" + fit.key + ", calibration JSON " + json_path + "): RMS residual " +
-                short_number(parameters.quality.rms_residual * 100) +
+  doc.paragraph(fit.label + " (" + fit.key + ", calibration JSON " + json_path +
+                "): RMS residual " + short_number(parameters.quality.rms_residual * 100) +
                 " % of the peak force, R^2 = " + cell(parameters.quality.r_squared) +
-                ", converged: " + (parameters.converged ? "yes" : "NO") +
-                ". Intervals at " + short_number(level * 100) +
+                ", converged: " + (parameters.converged ? "yes" : "NO") + ". Intervals at " +
+                short_number(level * 100) +
                 " % confidence. First the covariance intervals s^2 (J^T J)^-1, CONDITIONAL ON "
                 "THE MODEL: they take the residuals as independent noise, while for FEM data "
                 "they are mostly model error, correlated in time:");
   const std::vector<std::string> names = parameters.parameter_names();
-  std::vector<Estimate> conditional{parameters.stiffness, parameters.exponent, parameters.parameter};
+  std::vector<Estimate> conditional{parameters.stiffness, parameters.exponent,
+                                    parameters.parameter};
   std::vector<std::string> units{"N/m^n", "1", parameters.parameter_unit};
   for (const auto& extra : parameters.extra) {
     conditional.push_back(extra.estimate);
     units.push_back(extra.unit);
   }
-  Table table{{"parameter", "value", "standard error", "interval lower", "interval upper", "unit"}, {}};
+  Table table{{"parameter", "value", "standard error", "interval lower", "interval upper", "unit"},
+              {}};
   for (std::size_t i = 0; i < names.size(); ++i)
     table.rows.push_back({names[i], cell(conditional[i].value), cell(conditional[i].standard_error),
                           cell(conditional[i].lower), cell(conditional[i].upper), units[i]});
   doc.table(table);
   if (fit.jackknife.empty()) {
-    doc.paragraph("No jackknife intervals: they need fits with one velocity left out, and so "
-                  "at least three velocities.");
+    doc.paragraph(
+        "No jackknife intervals: they need fits with one velocity left out, and so "
+        "at least three velocities.");
     return;
   }
   doc.paragraph("Jackknife over the " + std::to_string(fit.held_out.size()) +
@@ -235,10 +243,10 @@ void estimate_tables(Document& doc, const Report& report, const CampaignModelFit
                    "jackknife interval upper", "unit", "jackknife / conditional standard error"},
                   {}};
   for (std::size_t i = 0; i < names.size() && i < fit.jackknife.size(); ++i)
-    jackknife.rows.push_back({names[i], cell(fit.jackknife[i].value),
-                              cell(fit.jackknife[i].standard_error), cell(fit.jackknife[i].lower),
-                              cell(fit.jackknife[i].upper), units[i],
-                              cell(fit.jackknife[i].standard_error / conditional[i].standard_error)});
+    jackknife.rows.push_back(
+        {names[i], cell(fit.jackknife[i].value), cell(fit.jackknife[i].standard_error),
+         cell(fit.jackknife[i].lower), cell(fit.jackknife[i].upper), units[i],
+         cell(fit.jackknife[i].standard_error / conditional[i].standard_error)});
   doc.table(jackknife);
 }
 
@@ -272,16 +280,18 @@ void parameters_section(Document& doc, const Report& report) {
       estimate_tables(doc, report, *law, "campaign.comparison_laws (" + law->key + ")");
   std::string basis;
   if (const ModelFit* recommended = recommended_hunt_crossley(*report.calibration, &basis))
-    doc.code("For a multibody code (" + basis + "):\n  F = c x^n (1 + b dx/dt)\n  c = " +
-             cell(recommended->stiffness.value) + " N/m^n\n  n = " +
-             cell(recommended->exponent.value) + "\n  b = " + cell(recommended->parameter.value) +
-             " s/m");
+    doc.code("For a multibody code (" + basis +
+             "):\n  F = c x^n (1 + b dx/dt)\n  c = " + cell(recommended->stiffness.value) +
+             " N/m^n\n  n = " + cell(recommended->exponent.value) +
+             "\n  b = " + cell(recommended->parameter.value) + " s/m");
   if (const auto& fit = campaign.hunt_crossley_velocity_damping)
     if (!fit->fit.extra.empty())
-      doc.code("With a velocity-dependent damping (" + fit->label + "; one line more: b from the "
+      doc.code("With a velocity-dependent damping (" + fit->label +
+               "; one line more: b from the "
                "approach speed V_0 at first contact):\n  F = c x^n (1 + b dx/dt),  b = b_1 "
-               "(V_0 / 1 m/s)^(-q)\n  c = " + cell(fit->fit.stiffness.value) + " N/m^n\n  n = " +
-               cell(fit->fit.exponent.value) + "\n  b_1 = " + cell(fit->fit.parameter.value) +
+               "(V_0 / 1 m/s)^(-q)\n  c = " +
+               cell(fit->fit.stiffness.value) + " N/m^n\n  n = " + cell(fit->fit.exponent.value) +
+               "\n  b_1 = " + cell(fit->fit.parameter.value) +
                " s/m\n  q = " + cell(fit->fit.extra.front().estimate.value));
 }
 
@@ -303,13 +313,14 @@ void trend_section(Document& doc, const Report& report,
                                                      std::pow(run.velocity, report.trend->exponent))
                                               : "n/a"};
     for (const auto& model : report.models)
-      row.push_back(model.runs[i].judged() ? cell(1 - model.runs[i].judged()->restitution) +
-                                                 not_converged(model)
-                                           : "n/a");
+      row.push_back(model.runs[i].judged()
+                        ? cell(1 - model.runs[i].judged()->restitution) + not_converged(model)
+                        : "n/a");
     table.rows.push_back(row);
   }
-  doc.paragraph("1 - e at each velocity: the FEM, the fitted power law, and each model as the "
-                "verdict judges it (out of sample where it can be):");
+  doc.paragraph(
+      "1 - e at each velocity: the FEM, the fitted power law, and each model as the "
+      "verdict judges it (out of sample where it can be):");
   doc.table(table);
 }
 
@@ -317,10 +328,13 @@ void users_section(Document& doc, const Report& report) {
   if (!report.calibration) return;
   const CampaignCalibration& campaign = report.calibration->campaign;
   doc.heading("The laws as their users apply them");
-  doc.paragraph("Multibody codes use the restitution-parametrised laws without fitting: c from "
-                "Hertz (" + campaign.hertz_basis + "), n = 3/2 and the e to reproduce, here the "
-                "FEM's e at each velocity. The restitution each law then really produces, and "
-                "its errors (against the FEM):");
+  doc.paragraph(
+      "Multibody codes use the restitution-parametrised laws without fitting: c from "
+      "Hertz (" +
+      campaign.hertz_basis +
+      "), n = 3/2 and the e to reproduce, here the "
+      "FEM's e at each velocity. The restitution each law then really produces, and "
+      "its errors (against the FEM):");
   Table table{{"law", "V [m/s]", "FEM e (given)", "produced e", "error e", "error 1 - e^2",
                "error t_c", "error F_max"},
               {}};
@@ -332,24 +346,26 @@ void users_section(Document& doc, const Report& report) {
       const ImpactFigures produced = run.prediction;
       const ImpactFigures reference =
           fem ? fem->fem : ImpactFigures{run.target, nan, nan, nan, nan};
-      table.rows.push_back({map.law, fem ? velocity_cell(*fem) : cell(run.velocity),
-                            cell(run.target), cell(produced.restitution),
-                            percent_cell(relative_error(produced.restitution, run.target)),
-                            percent_cell(relative_error(produced, reference, Quantity::energy_loss)),
-                            percent_cell(relative_error(produced, reference, Quantity::contact_time)),
-                            percent_cell(relative_error(produced, reference, Quantity::force_max))});
+      table.rows.push_back(
+          {map.law, fem ? velocity_cell(*fem) : cell(run.velocity), cell(run.target),
+           cell(produced.restitution),
+           percent_cell(relative_error(produced.restitution, run.target)),
+           percent_cell(relative_error(produced, reference, Quantity::energy_loss)),
+           percent_cell(relative_error(produced, reference, Quantity::contact_time)),
+           percent_cell(relative_error(produced, reference, Quantity::force_max))});
     }
   doc.table(table);
 
-  doc.paragraph("Kuwabara–Kono without tension as a prediction from the material, with nothing "
-                "fitted: c = c_Hertz, n = 3/2, and A from the retardation times, " +
-                (campaign.material_dissipative_constant
-                     ? "A = " + short_number(*campaign.material_dissipative_constant) + " s (" +
-                           campaign.material_basis + ")."
-                     : campaign.material_basis + ".") +
-                " For a Kelvin–Voigt body with equal deviatoric and volumetric retardation times "
-                "A = tau_r exactly; the theory has no wave radiation, so where the FEM plate "
-                "radiates energy the prediction loses too little.");
+  doc.paragraph(
+      "Kuwabara–Kono without tension as a prediction from the material, with nothing "
+      "fitted: c = c_Hertz, n = 3/2, and A from the retardation times, " +
+      (campaign.material_dissipative_constant
+           ? "A = " + short_number(*campaign.material_dissipative_constant) + " s (" +
+                 campaign.material_basis + ")."
+           : campaign.material_basis + ".") +
+      " For a Kelvin–Voigt body with equal deviatoric and volumetric retardation times "
+      "A = tau_r exactly; the theory has no wave radiation, so where the FEM plate "
+      "radiates energy the prediction loses too little.");
   if (const ReportModel* material = report.model(model_keys::kuwabara_kono_material)) {
     Table errors{{"V [m/s]"}, {}};
     for (Quantity quantity : all_quantities)
@@ -366,16 +382,18 @@ void users_section(Document& doc, const Report& report) {
       errors.rows.push_back(row);
     }
     doc.table(errors);
-    doc.paragraph("The last column is the FEM's radiated energy (absorbing plate boundaries) as "
-                  "a share of the kinetic energy lost: a loss the viscoelastic-sphere theory "
-                  "does not contain, so an energy-loss error of about minus that share is what "
-                  "the theory itself predicts.");
+    doc.paragraph(
+        "The last column is the FEM's radiated energy (absorbing plate boundaries) as "
+        "a share of the kinetic energy lost: a loss the viscoelastic-sphere theory "
+        "does not contain, so an energy-loss error of about minus that share is what "
+        "the theory itself predicts.");
     if (const CampaignModelFit* fitted = campaign.find("kuwabara-kono-no-tension"))
       doc.paragraph("The fitted Kuwabara–Kono without tension has A = " +
                     short_number(fitted->fit.parameter.value) + " s (c = " +
                     short_number(fitted->fit.stiffness.value) + " N/m^1.5): A_fit / A_material = " +
                     short_number(fitted->fit.parameter.value /
-                                 campaign.material_dissipative_constant.value_or(nan)) + ".");
+                                 campaign.material_dissipative_constant.value_or(nan)) +
+                    ".");
   }
 }
 

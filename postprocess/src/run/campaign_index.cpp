@@ -35,7 +35,9 @@ struct IndexEntry {
   throw RunInputError("campaign index " + quoted(index_file) + ": " + problem);
 }
 
-std::string value_text(const SweepValue& value) { return "'" + value.text + "'"; }
+std::string value_text(const SweepValue& value) {
+  return "'" + value.text + "'";
+}
 
 // A JSON number or string of the sweep (numbers with every digit as text).
 SweepValue sweep_value(const nlohmann::json& value, const fs::path& index_file,
@@ -74,10 +76,11 @@ std::vector<SweepAxis> read_axes(const nlohmann::json& index, const fs::path& in
       if (other.parameter == entry.parameter)
         index_error(index_file, "the axis '" + entry.parameter + "' is listed twice");
     if (!axis.contains("values") || !axis["values"].is_array() || axis["values"].empty())
-      index_error(index_file, "the axis '" + entry.parameter +
-                                  "' has no \"values\" (a non-empty list)");
+      index_error(index_file,
+                  "the axis '" + entry.parameter + "' has no \"values\" (a non-empty list)");
     for (const auto& value : axis["values"]) {
-      SweepValue parsed = sweep_value(value, index_file, "a value of the axis '" + entry.parameter + "'");
+      SweepValue parsed =
+          sweep_value(value, index_file, "a value of the axis '" + entry.parameter + "'");
       for (const auto& known : entry.values)
         if (known.matches(parsed))
           index_error(index_file, "the axis '" + entry.parameter + "' lists the value " +
@@ -91,9 +94,8 @@ std::vector<SweepAxis> read_axes(const nlohmann::json& index, const fs::path& in
 
 // A point (of the index or of a run) checked against the axes: every axis, only axes, and
 // values the axes list.
-void check_point(const std::map<std::string, SweepValue>& point,
-                 const std::vector<SweepAxis>& axes, const std::string& file_words,
-                 const std::string& whose) {
+void check_point(const std::map<std::string, SweepValue>& point, const std::vector<SweepAxis>& axes,
+                 const std::string& file_words, const std::string& whose) {
   const auto reject = [&](const std::string& problem) {
     throw RunInputError(file_words + ": " + problem);
   };
@@ -168,9 +170,9 @@ std::vector<IndexEntry> read_json_index(const fs::path& index_file, std::vector<
 
 // The run's point: the index's, checked against the run's own parameters (its text
 // attributes), else the run's parameters for the index's axes.
-std::map<std::string, SweepValue> point_of(const FemRun& run,
-                                           const std::optional<std::map<std::string, SweepValue>>& listed,
-                                           const std::vector<SweepAxis>& axes) {
+std::map<std::string, SweepValue> point_of(
+    const FemRun& run, const std::optional<std::map<std::string, SweepValue>>& listed,
+    const std::vector<SweepAxis>& axes) {
   std::map<std::string, SweepValue> own;
   for (const auto& axis : axes) {
     const auto attribute = run.text_attributes.find(axis.parameter);
@@ -181,9 +183,12 @@ std::map<std::string, SweepValue> point_of(const FemRun& run,
   if (!listed) {
     for (const auto& axis : axes)
       if (!own.count(axis.parameter))
-        fail(run.source, "the campaign index gives no \"point\" for this run and the run has no "
-                         "parameter '" + axis.parameter + "' (text attribute), so its place in "
-                         "the sweep is not known");
+        fail(run.source,
+             "the campaign index gives no \"point\" for this run and the run has no "
+             "parameter '" +
+                 axis.parameter +
+                 "' (text attribute), so its place in "
+                 "the sweep is not known");
     check_point(own, axes, "run " + quoted(fs::path(run.source)), "the run's parameters");
     return own;
   }
@@ -198,8 +203,7 @@ std::map<std::string, SweepValue> point_of(const FemRun& run,
 } // namespace
 
 bool SweepValue::matches(const SweepValue& other) const {
-  if (number && other.number)
-    return same_value(*number, *other.number);
+  if (number && other.number) return same_value(*number, *other.number);
   return !number && !other.number && text == other.text;
 }
 
@@ -231,21 +235,18 @@ Campaign read_campaign(const fs::path& directory) {
     throw RunInputError("campaign directory " + quoted(directory) + " holds no run" +
                         (indexed ? std::string(" (its index lists none)")
                                  : std::string(" (no ") + format::campaign_index_json +
-                                       ", no subdirectory with " +
-                                       format::history_file + ")"));
+                                       ", no subdirectory with " + format::history_file + ")"));
 
   std::vector<fs::path> paths;
   std::vector<const IndexEntry*> listed;
   Campaign missing;
   for (auto& entry : entries) {
     if (entry.path.is_relative()) entry.path = directory / entry.path;
-    if (!fs::exists(entry.path) &&
-        !(entry.path.filename() == format::history_file &&
-          fs::exists(incomplete_sibling(entry.path)))) {
-      missing.problems.push_back(
-          {{entry.path.string(), ProblemKind::input,
-            "run " + quoted(entry.path) + describe(entry) +
-                " is listed in the campaign index but does not exist"}});
+    if (!fs::exists(entry.path) && !(entry.path.filename() == format::history_file &&
+                                     fs::exists(incomplete_sibling(entry.path)))) {
+      missing.problems.push_back({{entry.path.string(), ProblemKind::input,
+                                   "run " + quoted(entry.path) + describe(entry) +
+                                       " is listed in the campaign index but does not exist"}});
       continue;
     }
     paths.push_back(entry.path);

@@ -25,7 +25,9 @@ namespace format = fem_format;
 
 namespace detail {
 
-std::string quoted(const fs::path& path) { return "'" + path.string() + "'"; }
+std::string quoted(const fs::path& path) {
+  return "'" + path.string() + "'";
+}
 
 [[noreturn]] void fail(const fs::path& file, const std::string& problem) {
   throw RunInputError("run " + quoted(file) + ": " + problem);
@@ -41,7 +43,6 @@ fs::path summary_path_of(const fs::path& file) {
 fs::path incomplete_sibling(const fs::path& file) {
   return file.parent_path() / format::incomplete_history_file;
 }
-
 
 std::optional<FemRun> read_or_record(const fs::path& path, std::vector<InputProblem>& problems,
                                      std::map<std::string, SweepValue> point) {
@@ -127,10 +128,9 @@ private:
   const std::map<std::string, double>& attributes_;
 };
 
-std::vector<double> required_series(const hdf5::File& file, const fs::path& path,
-                                    const char* name, std::size_t size) {
-  if (!file.has_dataset(name))
-    fail(path, std::string("the file has no dataset '") + name + "'");
+std::vector<double> required_series(const hdf5::File& file, const fs::path& path, const char* name,
+                                    std::size_t size) {
+  if (!file.has_dataset(name)) fail(path, std::string("the file has no dataset '") + name + "'");
   std::vector<double> values;
   try {
     values = file.read_dataset(name);
@@ -172,14 +172,14 @@ void read_histories(const hdf5::File& file, const fs::path& file_path, FemRun& r
                         " values; a run needs at least 3 time steps");
   for (std::size_t i = 1; i < run.time.size(); ++i)
     if (!(run.time[i] > run.time[i - 1]))
-      fail(file_path, "the dataset 'time' is not strictly increasing (step " + std::to_string(i) +
-                          ")");
-  run.contact_force = required_series(file, file_path, format::contact_force_dataset, run.time.size());
+      fail(file_path,
+           "the dataset 'time' is not strictly increasing (step " + std::to_string(i) + ")");
+  run.contact_force =
+      required_series(file, file_path, format::contact_force_dataset, run.time.size());
   run.approach = required_series(file, file_path, format::approach_dataset, run.time.size());
   if (file.has_dataset(format::sphere_velocity_dataset))
     run.sphere_velocity =
         required_series(file, file_path, format::sphere_velocity_dataset, run.time.size());
-
 }
 
 // The reduced model starts at first contact with the speed there: V of the run.
@@ -198,12 +198,10 @@ double impact_velocity_of(const FemRun& run, const Results& results, const fs::p
   if (!velocity)
     fail(file_path, std::string("no impact velocity: neither summary.json nor the file has '") +
                         format::contact_velocity_key + "' or '" + format::impact_velocity_key +
-                        "', and the attribute '" + format::impact_velocity.path +
-                        "' is missing");
+                        "', and the attribute '" + format::impact_velocity.path + "' is missing");
   if (!(std::isfinite(*velocity) && *velocity > 0))
     fail(file_path, "the impact velocity must be positive (got " + std::to_string(*velocity) + ")");
   return *velocity;
-
 }
 
 double sphere_mass_of(const FemRun& run, const Results& results, const fs::path& file_path) {
@@ -219,7 +217,6 @@ double sphere_mass_of(const FemRun& run, const Results& results, const fs::path&
   if (!(std::isfinite(*mass) && *mass > 0))
     fail(file_path, "the sphere mass must be positive (got " + std::to_string(*mass) + ")");
   return *mass;
-
 }
 
 // The contact of the run: the episode of positive force around the peak force (robust to
@@ -231,8 +228,9 @@ void read_contact(const Results& results, const fs::path& file_path, FemRun& run
       std::size_t(std::max_element(run.contact_force.begin(), run.contact_force.end()) -
                   run.contact_force.begin());
   if (!(run.contact_force[peak] > 0))
-    fail(file_path, "no contact: 'contact_force' is never positive (the sphere did not reach "
-                    "the plate within the simulated time?)");
+    fail(file_path,
+         "no contact: 'contact_force' is never positive (the sphere did not reach "
+         "the plate within the simulated time?)");
   std::size_t first = peak, last = peak;
   while (first > 0 && run.contact_force[first - 1] > 0) --first;
   while (last + 1 < n && run.contact_force[last + 1] > 0) ++last;
@@ -244,7 +242,8 @@ void read_contact(const Results& results, const fs::path& file_path, FemRun& run
   if (!restitution)
     throw NoRebound("run " + quoted(file_path) +
                     ": no rebound: the sphere did not separate from the plate within the "
-                    "simulated time (" + std::to_string(run.time.back() * 1e6) +
+                    "simulated time (" +
+                    std::to_string(run.time.back() * 1e6) +
                     " us; summary.json and the file have no '" +
                     std::string(format::restitution_key) +
                     "'): no restitution to calibrate or judge; lengthen the run to see one");
@@ -259,13 +258,14 @@ void read_contact(const Results& results, const fs::path& file_path, FemRun& run
 
   run.first_contact_time =
       results.number(format::first_contact_time_key)
-          .value_or(first > 0 ? std::max(run.time[first - 1], force_zero_time(run, first, first + 1))
-                              : run.time[0]);
-  const double separation =
-      last + 1 < n ? std::min(run.time[last + 1], force_zero_time(run, last, last - 1))
-                   : run.time[last];
-  run.contact_time = results.number(format::contact_time_key)
-                         .value_or(separation - run.first_contact_time);
+          .value_or(first > 0
+                        ? std::max(run.time[first - 1], force_zero_time(run, first, first + 1))
+                        : run.time[0]);
+  const double separation = last + 1 < n
+                                ? std::min(run.time[last + 1], force_zero_time(run, last, last - 1))
+                                : run.time[last];
+  run.contact_time =
+      results.number(format::contact_time_key).value_or(separation - run.first_contact_time);
   run.force_max = results.number(format::force_max_key).value_or(run.contact_force[peak]);
   run.time_force_max = results.number(format::time_force_max_key).value_or(run.time[peak]);
   run.approach_max = results.number(format::approach_max_key)
@@ -279,17 +279,18 @@ void read_contact(const Results& results, const fs::path& file_path, FemRun& run
 void check_momentum_balance(const FemRun& run, const fs::path& file_path) {
   double impulse = 0;
   for (std::size_t i = 0; i + 1 < run.time.size(); ++i)
-    impulse += 0.5 * (run.contact_force[i] + run.contact_force[i + 1]) *
-               (run.time[i + 1] - run.time[i]);
+    impulse +=
+        0.5 * (run.contact_force[i] + run.contact_force[i + 1]) * (run.time[i + 1] - run.time[i]);
   const double momentum = run.mass * run.impact_velocity * (1 + run.restitution);
   if (!(momentum > 0.5 * impulse && momentum < 2 * impulse))
-    fail(file_path, "the sphere mass " + impact_fem::as_written(run.mass) +
-                        " kg, impact velocity " + impact_fem::as_written(run.impact_velocity) +
-                        " m/s and restitution " + impact_fem::as_written(run.restitution) +
-                        " (" + format::summary_file + ", else the file) give a momentum change "
-                        "m V (1 + e) = " + impact_fem::as_written(momentum) +
-                        " N s, but the contact force's impulse is " +
-                        impact_fem::as_written(impulse) + " N s: they are not this run's");
+    fail(file_path,
+         "the sphere mass " + impact_fem::as_written(run.mass) + " kg, impact velocity " +
+             impact_fem::as_written(run.impact_velocity) + " m/s and restitution " +
+             impact_fem::as_written(run.restitution) + " (" + format::summary_file +
+             ", else the file) give a momentum change "
+             "m V (1 + e) = " +
+             impact_fem::as_written(momentum) + " N s, but the contact force's impulse is " +
+             impact_fem::as_written(impulse) + " N s: they are not this run's");
 }
 
 } // namespace
@@ -319,8 +320,6 @@ FemRun read_fem_run(const fs::path& path) {
   return run;
 }
 
-
-
 ImpactFigures measured_quantities(const FemRun& run) {
   return {run.restitution, run.contact_time, run.force_max,
           run.time_force_max - run.first_contact_time, run.approach_max};
@@ -329,7 +328,8 @@ ImpactFigures measured_quantities(const FemRun& run) {
 Campaign read_runs(const std::vector<fs::path>& paths) {
   Campaign campaign;
   for (const auto& path : paths)
-    if (auto run = read_or_record(path, campaign.problems)) campaign.runs.push_back(std::move(*run));
+    if (auto run = read_or_record(path, campaign.problems))
+      campaign.runs.push_back(std::move(*run));
   sort_by_velocity(campaign.runs);
   return campaign;
 }

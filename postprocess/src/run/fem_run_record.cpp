@@ -91,9 +91,9 @@ FemRunRecord read_fem_run_record(const FemRun& run) {
     }
   };
   // "yield_strength": the generic key of a summary written by another tool.
-  for (const std::string& key : {std::string("yield_strength"),
-                                 fem_format::yield_strength_prefix + sphere,
-                                 fem_format::yield_strength_prefix + plate})
+  for (const std::string& key :
+       {std::string("yield_strength"), fem_format::yield_strength_prefix + sphere,
+        fem_format::yield_strength_prefix + plate})
     consider(key, value(key));
   for (const char* body : {fem_format::sphere_body, fem_format::plate_body}) {
     const std::string key = fem_format::body_parameter(body, fem_format::yield_strength);
@@ -141,8 +141,7 @@ FemRunRecord read_fem_run_record(const FemRun& run) {
 
 FemUncertainty fem_uncertainty(const FemRunRecord& record, const ImpactFigures& fem) {
   FemUncertainty uncertainty;
-  for (auto& entry : uncertainty)
-    entry = {nan, "not known (no verification of the run)"};
+  for (auto& entry : uncertainty) entry = {nan, "not known (no verification of the run)"};
   const auto set = [&](Quantity quantity, double relative, std::string source) {
     uncertainty[std::size_t(quantity)] = {relative, std::move(source)};
   };

@@ -59,14 +59,13 @@ fs::path write_fem_run(const FemRun& run, const fs::path& directory, bool comple
     const std::vector<double>& values;
     const char* unit;
     const char* description;
-  } series[] = {
-      {format::time_dataset, run.time, format::time_unit, "simulated time"},
-      {format::contact_force_dataset, run.contact_force, format::contact_force_unit,
-       "total normal contact force"},
-      {format::approach_dataset, run.approach, format::approach_unit,
-       "approach (indentation) of sphere and plate"},
-      {format::sphere_velocity_dataset, run.sphere_velocity, format::sphere_velocity_unit,
-       "centre-of-mass velocity of the sphere, downward positive"}};
+  } series[] = {{format::time_dataset, run.time, format::time_unit, "simulated time"},
+                {format::contact_force_dataset, run.contact_force, format::contact_force_unit,
+                 "total normal contact force"},
+                {format::approach_dataset, run.approach, format::approach_unit,
+                 "approach (indentation) of sphere and plate"},
+                {format::sphere_velocity_dataset, run.sphere_velocity, format::sphere_velocity_unit,
+                 "centre-of-mass velocity of the sphere, downward positive"}};
   for (const auto& s : series)
     if (!s.values.empty()) file.write_dataset(s.name, s.values, s.unit, s.description);
 

@@ -15,11 +15,21 @@ void silence_hdf5() {
   (void)silenced;
 }
 
-herr_t close_attribute(hid_t id) { return H5Aclose(id); }
-herr_t close_dataset(hid_t id) { return H5Dclose(id); }
-herr_t close_dataspace(hid_t id) { return H5Sclose(id); }
-herr_t close_datatype(hid_t id) { return H5Tclose(id); }
-herr_t close_file(hid_t id) { return H5Fclose(id); }
+herr_t close_attribute(hid_t id) {
+  return H5Aclose(id);
+}
+herr_t close_dataset(hid_t id) {
+  return H5Dclose(id);
+}
+herr_t close_dataspace(hid_t id) {
+  return H5Sclose(id);
+}
+herr_t close_datatype(hid_t id) {
+  return H5Tclose(id);
+}
+herr_t close_file(hid_t id) {
+  return H5Fclose(id);
+}
 
 Handle check(hid_t id, herr_t (*close)(hid_t), const std::string& what) {
   if (id < 0) throw std::runtime_error(what);
@@ -43,32 +53,32 @@ AttributeValue read_attribute(hid_t attribute) {
   const Handle type(H5Aget_type(attribute), close_datatype);
   if (!type.valid()) return value;
   switch (H5Tget_class(type.id())) {
-  case H5T_STRING:
-    if (H5Tis_variable_str(type.id()) > 0) {
-      const Handle memory_type(H5Tcopy(H5T_C_S1), close_datatype);
-      H5Tset_size(memory_type.id(), H5T_VARIABLE);
-      H5Tset_cset(memory_type.id(), H5Tget_cset(type.id()));
-      char* text = nullptr;
-      if (H5Aread(attribute, memory_type.id(), &text) >= 0 && text != nullptr) {
-        value.text = std::string(text);
-        H5free_memory(text);
+    case H5T_STRING:
+      if (H5Tis_variable_str(type.id()) > 0) {
+        const Handle memory_type(H5Tcopy(H5T_C_S1), close_datatype);
+        H5Tset_size(memory_type.id(), H5T_VARIABLE);
+        H5Tset_cset(memory_type.id(), H5Tget_cset(type.id()));
+        char* text = nullptr;
+        if (H5Aread(attribute, memory_type.id(), &text) >= 0 && text != nullptr) {
+          value.text = std::string(text);
+          H5free_memory(text);
+        }
+      } else {
+        const std::size_t size = H5Tget_size(type.id());
+        std::string text(size, '\0');
+        const Handle memory_type(H5Tcopy(type.id()), close_datatype);
+        if (H5Aread(attribute, memory_type.id(), text.data()) >= 0)
+          value.text = text.substr(0, text.find('\0'));
       }
-    } else {
-      const std::size_t size = H5Tget_size(type.id());
-      std::string text(size, '\0');
-      const Handle memory_type(H5Tcopy(type.id()), close_datatype);
-      if (H5Aread(attribute, memory_type.id(), text.data()) >= 0)
-        value.text = text.substr(0, text.find('\0'));
+      break;
+    case H5T_INTEGER:
+    case H5T_FLOAT: {
+      double number = 0;
+      if (H5Aread(attribute, H5T_NATIVE_DOUBLE, &number) >= 0) value.number = number;
+      break;
     }
-    break;
-  case H5T_INTEGER:
-  case H5T_FLOAT: {
-    double number = 0;
-    if (H5Aread(attribute, H5T_NATIVE_DOUBLE, &number) >= 0) value.number = number;
-    break;
-  }
-  default:
-    break;
+    default:
+      break;
   }
   return value;
 }
@@ -120,8 +130,8 @@ Handle::~Handle() {
 File File::open_read_only(const std::string& path) {
   silence_hdf5();
   if (H5Fis_hdf5(path.c_str()) <= 0) throw std::runtime_error("it is not an HDF5 file");
-  return File(check(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), close_file,
-                    "HDF5 cannot open it"));
+  return File(
+      check(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), close_file, "HDF5 cannot open it"));
 }
 
 File File::create(const std::string& path) {
@@ -143,8 +153,8 @@ std::vector<double> File::read_dataset(const std::string& name) const {
                              "the dataset '" + name + "' has no dataspace");
   if (H5Sget_simple_extent_ndims(space.id()) != 1)
     throw std::runtime_error("the dataset '" + name + "' is not one-dimensional");
-  const Handle type = check(H5Dget_type(dataset.id()), close_datatype,
-                            "the dataset '" + name + "' has no type");
+  const Handle type =
+      check(H5Dget_type(dataset.id()), close_datatype, "the dataset '" + name + "' has no type");
   const H5T_class_t type_class = H5Tget_class(type.id());
   if (type_class != H5T_FLOAT && type_class != H5T_INTEGER)
     throw std::runtime_error("the dataset '" + name + "' is not numeric");
@@ -176,12 +186,11 @@ void File::read_root_attributes(std::map<std::string, std::string>& text,
 void File::write_dataset(const std::string& name, const std::vector<double>& values,
                          const std::string& unit, const std::string& description) {
   const hsize_t size = values.size();
-  const Handle space = check(H5Screate_simple(1, &size, nullptr), close_dataspace,
-                             "cannot create a dataspace");
-  const Handle dataset =
-      check(H5Dcreate2(file_.id(), name.c_str(), H5T_IEEE_F64LE, space.id(), H5P_DEFAULT,
-                       H5P_DEFAULT, H5P_DEFAULT),
-            close_dataset, "cannot create the dataset '" + name + "'");
+  const Handle space =
+      check(H5Screate_simple(1, &size, nullptr), close_dataspace, "cannot create a dataspace");
+  const Handle dataset = check(H5Dcreate2(file_.id(), name.c_str(), H5T_IEEE_F64LE, space.id(),
+                                          H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+                               close_dataset, "cannot create the dataset '" + name + "'");
   check(H5Dwrite(dataset.id(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()),
         "cannot write the dataset '" + name + "'");
   write_string_attribute(dataset.id(), "unit", unit);
@@ -194,10 +203,9 @@ void File::write_attribute(const std::string& name, const std::string& value) {
 
 void File::write_attribute(const std::string& name, double value) {
   const Handle space = check(H5Screate(H5S_SCALAR), close_dataspace, "cannot create a dataspace");
-  const Handle attribute =
-      check(H5Acreate2(file_.id(), name.c_str(), H5T_IEEE_F64LE, space.id(), H5P_DEFAULT,
-                       H5P_DEFAULT),
-            close_attribute, "cannot create the attribute '" + name + "'");
+  const Handle attribute = check(H5Acreate2(file_.id(), name.c_str(), H5T_IEEE_F64LE, space.id(),
+                                            H5P_DEFAULT, H5P_DEFAULT),
+                                 close_attribute, "cannot create the attribute '" + name + "'");
   check(H5Awrite(attribute.id(), H5T_NATIVE_DOUBLE, &value),
         "cannot write the attribute '" + name + "'");
 }

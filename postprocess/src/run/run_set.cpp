@@ -20,10 +20,10 @@ std::vector<InputProblem> runs_without_history(const fs::path& campaign) {
     if (item.is_directory() && fs::exists(path / format::summary_file) &&
         !fs::exists(path / format::history_file) &&
         !fs::exists(path / format::incomplete_history_file))
-      problems.push_back({{path.string(), ProblemKind::input,
-                           "run '" + path.string() + "': the directory holds " +
-                               format::summary_file + " but no " + format::history_file +
-                               ": the HDF5 file of the run is missing"}});
+      problems.push_back(
+          {{path.string(), ProblemKind::input,
+            "run '" + path.string() + "': the directory holds " + format::summary_file +
+                " but no " + format::history_file + ": the HDF5 file of the run is missing"}});
   }
   return problems;
 }

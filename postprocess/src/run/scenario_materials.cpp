@@ -17,7 +17,7 @@ std::string format(double value) {
 }
 
 struct Body {
-  std::string model;   // "elastic", "kelvin-voigt", ...
+  std::string model; // "elastic", "kelvin-voigt", ...
   double youngs_modulus;
   double poisson_ratio;
   std::optional<double> deviatoric_retardation_time; // kelvin-voigt only
@@ -54,10 +54,11 @@ std::string describe(const std::string& name, const Body& body) {
   std::string text = name + " " + body.model + " E = " + format(body.youngs_modulus) +
                      " Pa, nu = " + format(body.poisson_ratio);
   if (body.model == fem_format::elastic_plastic_model && body.deviatoric_retardation_time)
-    text += ", tau_r = " + format(*body.deviatoric_retardation_time) + " s (Kelvin–Voigt in "
+    text += ", tau_r = " + format(*body.deviatoric_retardation_time) +
+            " s (Kelvin–Voigt in "
             "parallel: tau_d = tau_v = tau_r)";
   else if (body.model == fem_format::kelvin_voigt_model && body.deviatoric_retardation_time &&
-      body.volumetric_retardation_time)
+           body.volumetric_retardation_time)
     text += ", tau_d = " + format(*body.deviatoric_retardation_time) +
             " s, tau_v = " + format(*body.volumetric_retardation_time) + " s";
   return text;
@@ -88,8 +89,7 @@ ScenarioMaterials scenario_materials(const std::vector<FemRun>& runs) {
   ScenarioMaterials materials{published_hertz_stiffness,
                               "the runs do not record the scenario's materials, so the published "
                               "steel value 1.7135e10 N/m^1.5 (0.1 kg steel ball on steel) is used",
-                              false, std::nullopt,
-                              "the runs do not record the bodies' materials"};
+                              false, std::nullopt, "the runs do not record the bodies' materials"};
   for (const auto& run : runs) {
     const auto sphere = body_of(run, fem_format::sphere_body);
     // "Plate/Material model = rigid" (impact-fem): the fixed rigid plane, no
@@ -113,20 +113,20 @@ ScenarioMaterials scenario_materials(const std::vector<FemRun>& runs) {
       continue;
     }
     materials.hertz_from_runs = true;
-    materials.hertz_basis = "Hertz value of the scenario's materials (sphere E = " +
-                            format(sphere->youngs_modulus) + " Pa, nu = " +
-                            format(sphere->poisson_ratio) + ", R = " + format(*radius) +
-                            (rigid_plate ? std::string(" m; rigid plate") :
-                                           " m; plate E = " + format(plate->youngs_modulus) +
-                                               " Pa, nu = " + format(plate->poisson_ratio)) +
-                            ") read from " + run.source;
+    materials.hertz_basis =
+        "Hertz value of the scenario's materials (sphere E = " + format(sphere->youngs_modulus) +
+        " Pa, nu = " + format(sphere->poisson_ratio) + ", R = " + format(*radius) +
+        (rigid_plate ? std::string(" m; rigid plate")
+                     : " m; plate E = " + format(plate->youngs_modulus) +
+                           " Pa, nu = " + format(plate->poisson_ratio)) +
+        ") read from " + run.source;
     const bool viscoelastic =
         sphere->deviatoric_retardation_time && sphere->volumetric_retardation_time &&
         plate->deviatoric_retardation_time && plate->volumetric_retardation_time;
     if (sphere->model == fem_format::elastic_model && plate->model == fem_format::elastic_model) {
-      materials.dissipative_basis = rigid_plate ?
-          "the sphere is elastic and the plate rigid: A = 0, the Hertz model" :
-          "the bodies are elastic: A = 0, the Hertz model";
+      materials.dissipative_basis =
+          rigid_plate ? "the sphere is elastic and the plate rigid: A = 0, the Hertz model"
+                      : "the bodies are elastic: A = 0, the Hertz model";
       return materials;
     }
     if (!viscoelastic) {
@@ -150,8 +150,10 @@ ScenarioMaterials scenario_materials(const std::vector<FemRun>& runs) {
           (rigid_plate ? std::string("; rigid plate") : "; " + describe("plate", *plate));
       if (!(*materials.dissipative_constant > 0)) {
         materials.dissipative_constant.reset();
-        materials.dissipative_basis = "the bodies' retardation times are 0: A = 0, no viscous "
-                                      "loss (" + describe("sphere", *sphere) + ")";
+        materials.dissipative_basis =
+            "the bodies' retardation times are 0: A = 0, no viscous "
+            "loss (" +
+            describe("sphere", *sphere) + ")";
       }
     } catch (const std::exception& error) {
       materials.dissipative_basis = std::string("no A from the material: ") + error.what();

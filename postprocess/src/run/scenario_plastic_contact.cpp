@@ -19,7 +19,9 @@ std::string six_digits(double value) {
 
 namespace {
 
-std::string format(double value) { return six_digits(value); }
+std::string format(double value) {
+  return six_digits(value);
+}
 
 struct BodyStrength {
   double youngs_modulus, poisson_ratio, yield_strength;
@@ -42,8 +44,8 @@ std::optional<BodyStrength> body_strength(const FemRun& run, const std::string& 
   if (!young || !poisson || !(*young > 0) || !(*poisson > -1 && *poisson < 0.5))
     throw PlasticContactError(run.source + ": '" + key + "' = " + format(*strength) +
                               " Pa, but the body's material does not record a Young's modulus "
-                              "> 0 and a Poisson's ratio in (-1, 0.5) ('" + body +
-                              "/Material model' and its constants)");
+                              "> 0 and a Poisson's ratio in (-1, 0.5) ('" +
+                              body + "/Material model' and its constants)");
   return BodyStrength{*young, *poisson, *strength, key, plastic};
 }
 
@@ -64,19 +66,23 @@ std::optional<PlasticContact> scenario_plastic_contact(const std::vector<FemRun>
     const auto young = material_constant(run, body, fem_format::youngs_modulus);
     const auto poisson = material_constant(run, body, fem_format::poissons_ratio);
     if (!young || !poisson)
-      throw PlasticContactError(run.source + ": the " + body + "'s Young's modulus and Poisson's "
-                                "ratio are not recorded ('" + body + "/Material model' and its "
+      throw PlasticContactError(run.source + ": the " + body +
+                                "'s Young's modulus and Poisson's "
+                                "ratio are not recorded ('" +
+                                body +
+                                "/Material model' and its "
                                 "constants): E* of the plastic contact is unknown");
     return std::pair<double, double>{*young, *poisson};
   };
-  const auto [sphere_e, sphere_nu] = sphere ? std::pair{sphere->youngs_modulus, sphere->poisson_ratio}
-                                            : elastic(fem_format::sphere_body);
+  const auto [sphere_e, sphere_nu] = sphere
+                                         ? std::pair{sphere->youngs_modulus, sphere->poisson_ratio}
+                                         : elastic(fem_format::sphere_body);
   PlasticContact contact;
   contact.sphere_youngs_modulus = sphere_e;
   contact.sphere_poisson_ratio = sphere_nu;
   if (!rigid_plate) {
-    const auto [plate_e, plate_nu] =
-        plate ? std::pair{plate->youngs_modulus, plate->poisson_ratio} : elastic(fem_format::plate_body);
+    const auto [plate_e, plate_nu] = plate ? std::pair{plate->youngs_modulus, plate->poisson_ratio}
+                                           : elastic(fem_format::plate_body);
     contact.plate_youngs_modulus = plate_e;
     contact.plate_poisson_ratio = plate_nu;
     contact.contact_modulus = reduced::contact_modulus(sphere_e, sphere_nu, plate_e, plate_nu);
@@ -84,15 +90,15 @@ std::optional<PlasticContact> scenario_plastic_contact(const std::vector<FemRun>
     contact.contact_modulus = sphere_e / (1 - sphere_nu * sphere_nu);
   }
   // Johnson's first yield of the body with the lower strength.
-  const BodyStrength& yielding = !plate || (sphere && sphere->yield_strength <= plate->yield_strength)
-                                     ? *sphere : *plate;
+  const BodyStrength& yielding =
+      !plate || (sphere && sphere->yield_strength <= plate->yield_strength) ? *sphere : *plate;
   contact.yield_pressure = reduced::johnson_yield_pressure(yielding.yield_strength);
   contact.yield_strength = yielding.yield_strength;
   contact.yield_poisson_ratio = yielding.poisson_ratio;
   contact.elastic_plastic = yielding.elastic_plastic;
-  contact.yield_basis = "Johnson's p_y = 1.6 Y with Y = " +
-                        format(yielding.yield_strength) + " Pa ('" + yielding.where +
-                        "' of " + run.source + ", the body that yields first)";
+  contact.yield_basis = "Johnson's p_y = 1.6 Y with Y = " + format(yielding.yield_strength) +
+                        " Pa ('" + yielding.where + "' of " + run.source +
+                        ", the body that yields first)";
   return contact;
 }
 
@@ -111,9 +117,9 @@ std::string hardening_note(const FemRun& run) {
     if (johnson_cook) {
       const double b = material_constant(run, body, fem_format::johnson_cook_b).value_or(0);
       const double c = material_constant(run, body, fem_format::johnson_cook_c).value_or(0);
-      if (b > 0 || c > 0)
-        hardening = "Johnson-Cook B = " + format(b) + " Pa, C = " + format(c);
-    } else if (const auto h = material_constant(run, body, fem_format::hardening_modulus); h && *h > 0) {
+      if (b > 0 || c > 0) hardening = "Johnson-Cook B = " + format(b) + " Pa, C = " + format(c);
+    } else if (const auto h = material_constant(run, body, fem_format::hardening_modulus);
+               h && *h > 0) {
       hardening = "linear hardening modulus " + format(*h) + " Pa";
     }
     if (!hardening.empty())
@@ -122,7 +128,8 @@ std::string hardening_note(const FemRun& run) {
   return left_out.empty() ? "no hardening: the law is elastic-perfectly-plastic, like the runs' "
                             "material"
                           : "no hardening enters the law (elastic-perfectly-plastic): it leaves "
-                            "out " + left_out + " recorded by the runs";
+                            "out " +
+                                left_out + " recorded by the runs";
 }
 
 } // namespace impact::postprocess

@@ -35,11 +35,11 @@ struct ContactSetup {
 
 /// One comparison law. Adding a law = one new entry (see reduced/src/law_catalogue.hpp).
 struct ComparisonLaw {
-  std::string name;            ///< command-line name, e.g. "lankarani-nikravesh"
-  std::string formula;         ///< force and damping map, in plain text
-  std::string reference;       ///< where the damping map comes from
-  std::string damping_name;    ///< symbol of the damping parameter, e.g. "b"
-  std::string damping_unit;    ///< e.g. "s/m"
+  std::string name;                        ///< command-line name, e.g. "lankarani-nikravesh"
+  std::string formula;                     ///< force and damping map, in plain text
+  std::string reference;                   ///< where the damping map comes from
+  std::string damping_name;                ///< symbol of the damping parameter, e.g. "b"
+  std::string damping_unit;                ///< e.g. "s/m"
   std::optional<double> required_exponent; ///< the law is defined for this n only
   /// Damping parameter that the law's own formula assigns to restitution e in (0, 1] at
   /// impact velocity V (m/s). Arguments are validated by the caller (evaluate_comparison_law
@@ -70,9 +70,9 @@ double comparison_law_damping(const ComparisonLaw& law, const ContactSetup& setu
 /// A law evaluated for a target restitution: the damping it assigns, the impact it then
 /// produces, and how far that restitution is from the target.
 struct ComparisonLawImpact {
-  double damping;             ///< in the law's damping_unit
-  OdeImpactResult impact;     ///< integrate_impact of the law with that damping
-  double restitution_error;   ///< (produced - target) / target
+  double damping;           ///< in the law's damping_unit
+  OdeImpactResult impact;   ///< integrate_impact of the law with that damping
+  double restitution_error; ///< (produced - target) / target
 };
 
 /// Evaluates `law` at target restitution e and impact velocity V (see

@@ -32,8 +32,8 @@ namespace impact::reduced {
 
 /// The unloading branch from one maximum approach: F = stiffness (x - residual_approach)^1.5.
 struct HertzianUnloading {
-  double stiffness;          ///< k_u = (4/3) E* sqrt(R_u) [N/m^1.5], R_u the unloading radius
-  double residual_approach;  ///< x_r [m], the permanent approach after the impact
+  double stiffness;         ///< k_u = (4/3) E* sqrt(R_u) [N/m^1.5], R_u the unloading radius
+  double residual_approach; ///< x_r [m], the permanent approach after the impact
 };
 
 /// An elastic-plastic contact law. Approach x in m, forces in N, work in J.
@@ -59,14 +59,14 @@ public:
 
 /// The figures of one impact. SI units.
 struct ElasticPlasticImpactResponse {
-  double approach_max;       ///< x_max [m]
-  double force_max;          ///< F_L(x_max) [N], the peak force (at x_max: the law has no rate term)
-  double residual_approach;  ///< x_r [m], permanent approach (0 for an elastic impact)
-  double compression_time;   ///< time of x_max [s]
-  double contact_time;       ///< time of separation (force back to 0 at x_r) [s]
-  double rebound_velocity;   ///< approach rate at separation [m/s], negative
-  double restitution;        ///< -rebound_velocity / V [-]
-  double dissipated_energy;  ///< m V^2 (1 - e^2) / 2 [J], the plastic work
+  double approach_max;      ///< x_max [m]
+  double force_max;         ///< F_L(x_max) [N], the peak force (at x_max: the law has no rate term)
+  double residual_approach; ///< x_r [m], permanent approach (0 for an elastic impact)
+  double compression_time;  ///< time of x_max [s]
+  double contact_time;      ///< time of separation (force back to 0 at x_r) [s]
+  double rebound_velocity;  ///< approach rate at separation [m/s], negative
+  double restitution;       ///< -rebound_velocity / V [-]
+  double dissipated_energy; ///< m V^2 (1 - e^2) / 2 [J], the plastic work
   /// The figures by which impacts are compared (impact_figures.hpp); the peak force is at
   /// x_max, so t(F_max) is the compression time.
   ImpactFigures figures() const {

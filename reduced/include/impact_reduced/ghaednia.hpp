@@ -107,8 +107,7 @@ public:
   /// (>= E* (1 - nu^2), the rigid-flat value); `tangent_modulus` E_t, 0 <= E_t < E_s.
   /// Throws InvalidInput naming "radius", "contact_modulus", "yield_strength",
   /// "poisson_ratio", "youngs_modulus" or "tangent_modulus".
-  GhaedniaContact(const SphereFlatContact& contact, double youngs_modulus,
-                  double tangent_modulus);
+  GhaedniaContact(const SphereFlatContact& contact, double youngs_modulus, double tangent_modulus);
 
   /// F(x) [N], x >= 0 (InvalidInput naming "approach" otherwise); likewise below.
   double loading_force(double approach) const override;
@@ -137,17 +136,17 @@ private:
   FitPoint fit(double approach) const;
 
   SphereFlatContact contact_;
-  double c_;                      // C(nu)
-  double b_;                      // B(Y / E*)
-  double critical_interference_;  // delta_c
-  double critical_load_;          // P_c
-  double hertz_coefficient_;      // (4/3) E* sqrt(R)
-  double modulus_ratio_;          // r = E_t / E_s
-  double log_modulus_ratio_;      // ln r (unused for r = 0)
-  double upsilon_scale_;          // 2 sqrt(E_s/Y) / ((4 - 3 exp(-2 sqrt(E_s/Y) r)) (1 - r))
-  double elastic_weight_;         // 1 - exp(-3.3 r)
-  double transition_;             // 1.9 delta_c
-  double transition_work_;        // Hertz work up to the transition
+  double c_;                     // C(nu)
+  double b_;                     // B(Y / E*)
+  double critical_interference_; // delta_c
+  double critical_load_;         // P_c
+  double hertz_coefficient_;     // (4/3) E* sqrt(R)
+  double modulus_ratio_;         // r = E_t / E_s
+  double log_modulus_ratio_;     // ln r (unused for r = 0)
+  double upsilon_scale_;         // 2 sqrt(E_s/Y) / ((4 - 3 exp(-2 sqrt(E_s/Y) r)) (1 - r))
+  double elastic_weight_;        // 1 - exp(-3.3 r)
+  double transition_;            // 1.9 delta_c
+  double transition_work_;       // Hertz work up to the transition
 };
 
 } // namespace impact::reduced

@@ -49,14 +49,14 @@ struct ImpactState {
 
 /// All derived quantities of one impact, SI units.
 struct ImpactResponse {
-  double approach_max;       ///< x_max [m]
-  double force_max;          ///< peak contact force [N]
-  double time_force_max;     ///< time of the peak force [s]
-  double compression_time;   ///< time of x_max [s]
-  double contact_time;       ///< time at which x returns to 0 [s]
-  double rebound_velocity;   ///< approach rate at separation [m/s], negative (moving away)
-  double restitution;        ///< -rebound_velocity / V [-]
-  double energy_loss;        ///< kinetic energy lost, m V^2 (1 - k^2) / 2 [J]
+  double approach_max;     ///< x_max [m]
+  double force_max;        ///< peak contact force [N]
+  double time_force_max;   ///< time of the peak force [s]
+  double compression_time; ///< time of x_max [s]
+  double contact_time;     ///< time at which x returns to 0 [s]
+  double rebound_velocity; ///< approach rate at separation [m/s], negative (moving away)
+  double restitution;      ///< -rebound_velocity / V [-]
+  double energy_loss;      ///< kinetic energy lost, m V^2 (1 - k^2) / 2 [J]
   /// The figures by which impacts are compared (impact_figures.hpp).
   ImpactFigures figures() const {
     return {restitution, contact_time, force_max, time_force_max, approach_max};
@@ -80,8 +80,8 @@ public:
   HuntCrossleyImpact(double mass, double stiffness, double exponent, double damping,
                      double velocity);
   /// Any elastic law f(x) (see ElasticForce).
-  HuntCrossleyImpact(double mass, std::shared_ptr<const ElasticForce> elastic_force,
-                     double damping, double velocity);
+  HuntCrossleyImpact(double mass, std::shared_ptr<const ElasticForce> elastic_force, double damping,
+                     double velocity);
 
   double mass() const { return mass_; }
   double damping() const { return damping_; }
@@ -146,8 +146,8 @@ public:
   ImpactState state_at(double time) const;
 
 private:
-  HuntCrossleyImpact(double mass, std::shared_ptr<const ElasticForce> custom_force,
-                     double damping, double velocity, std::optional<PowerLawForce> power_law);
+  HuntCrossleyImpact(double mass, std::shared_ptr<const ElasticForce> custom_force, double damping,
+                     double velocity, std::optional<PowerLawForce> power_law);
 
   // Each phase is parametrised by a distance u >= 0 from its singular end (first contact,
   // separation), so that the quantities are exact where the force vanishes. Compression:
@@ -191,7 +191,7 @@ private:
   std::shared_ptr<const ElasticForce> custom_force_;
   double damping_;
   double velocity_;
-  double excess_ratio_;   // (beta - ln(1 + beta)) / beta^2, 1/2 at beta = 0
+  double excess_ratio_;                  // (beta - ln(1 + beta)) / beta^2, 1/2 at beta = 0
   bool restitution_in_log_rate_ = false; // beta > 1: restitution parametrised by psi
   double log_rate_span_ = 0;             // psi_out = -log(1 + b v_out)
   double log_rate_in_ = 0;               // psi_in = log(1 + beta) (set for beta > 1)

@@ -49,14 +49,14 @@ namespace impact::reduced {
 
 /// The figures of one damped elastic-plastic impact. SI units.
 struct HuntCrossleyElasticPlasticResponse {
-  double approach_max;         ///< x_max [m]
-  double force_max;            ///< peak contact force [N] (before x_max when b > 0)
-  double time_force_max;       ///< time of the peak force [s]
-  double compression_time;     ///< time of x_max [s]
-  double contact_time;         ///< time of separation [s]
-  double rebound_velocity;     ///< approach rate at separation [m/s], negative
-  double restitution;          ///< -rebound_velocity / V [-]
-  double separation_approach;  ///< x_s [m]: the permanent approach, 0 for an elastic impact
+  double approach_max;        ///< x_max [m]
+  double force_max;           ///< peak contact force [N] (before x_max when b > 0)
+  double time_force_max;      ///< time of the peak force [s]
+  double compression_time;    ///< time of x_max [s]
+  double contact_time;        ///< time of separation [s]
+  double rebound_velocity;    ///< approach rate at separation [m/s], negative
+  double restitution;         ///< -rebound_velocity / V [-]
+  double separation_approach; ///< x_s [m]: the permanent approach, 0 for an elastic impact
   ImpactFigures figures() const {
     return {restitution, contact_time, force_max, time_force_max, approach_max};
   }
@@ -75,8 +75,7 @@ class HuntCrossleyElasticPlasticImpact {
 public:
   /// mass m > 0 [kg], the spring (not null), damping b >= 0 [s/m], velocity V > 0 [m/s].
   /// Throws InvalidInput naming "mass", "spring", "damping" or "velocity".
-  HuntCrossleyElasticPlasticImpact(double mass,
-                                   std::shared_ptr<const ElasticPlasticContact> spring,
+  HuntCrossleyElasticPlasticImpact(double mass, std::shared_ptr<const ElasticPlasticContact> spring,
                                    double damping, double velocity);
 
   double mass() const { return loading_.mass(); }
@@ -114,9 +113,9 @@ private:
   double restitution_time() const;
 
   std::shared_ptr<const ElasticPlasticContact> spring_;
-  HuntCrossleyImpact loading_;                    // the compression phase on F_L
+  HuntCrossleyImpact loading_; // the compression phase on F_L
   HertzianUnloading unloading_{0.0, 0.0};
-  std::optional<HuntCrossleyImpact> unloading_impact_;  // restitution on F_U (x - x_r)
+  std::optional<HuntCrossleyImpact> unloading_impact_; // restitution on F_U (x - x_r)
   double restitution_ = 1.0;
   double separation_approach_ = 0.0;
 };

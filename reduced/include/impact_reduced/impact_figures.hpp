@@ -15,11 +15,11 @@
 namespace impact::reduced {
 
 struct ImpactFigures {
-  double restitution;     ///< e = rebound speed / impact speed [1]
-  double contact_time;    ///< t_c: first contact to separation [s]
-  double force_max;       ///< F_max: peak contact force [N]
-  double time_force_max;  ///< t(F_max) [s since first contact]
-  double approach_max;    ///< x_max: peak approach [m]
+  double restitution;    ///< e = rebound speed / impact speed [1]
+  double contact_time;   ///< t_c: first contact to separation [s]
+  double force_max;      ///< F_max: peak contact force [N]
+  double time_force_max; ///< t(F_max) [s since first contact]
+  double approach_max;   ///< x_max: peak approach [m]
 };
 
 } // namespace impact::reduced

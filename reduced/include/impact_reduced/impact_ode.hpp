@@ -66,17 +66,17 @@ public:
 
 /// The characteristic figures of one impact. SI units.
 struct OdeImpactResult {
-  double approach_max;        ///< m, maximum approach x_max (where x' = 0)
-  double compression_time;    ///< s, time of approach_max
-  double force_max;           ///< N, maximum of F along the impact (may be at t = 0)
-  double time_force_max;      ///< s, time of force_max
-  double contact_time;        ///< s, first return to x = 0
-  double rebound_velocity;    ///< m/s, signed: x' at separation (negative, moving away)
-  double restitution;         ///< -rebound_velocity / V
-  double force_at_separation; ///< N, F(0, x') at separation: zero for a physically sound law;
-                              ///< the linear Kelvin–Voigt law gives mu x' < 0 (tension), its
-                              ///< known defect
-  std::size_t steps;          ///< accepted integration steps
+  double approach_max;           ///< m, maximum approach x_max (where x' = 0)
+  double compression_time;       ///< s, time of approach_max
+  double force_max;              ///< N, maximum of F along the impact (may be at t = 0)
+  double time_force_max;         ///< s, time of force_max
+  double contact_time;           ///< s, first return to x = 0
+  double rebound_velocity;       ///< m/s, signed: x' at separation (negative, moving away)
+  double restitution;            ///< -rebound_velocity / V
+  double force_at_separation;    ///< N, F(0, x') at separation: zero for a physically sound law;
+                                 ///< the linear Kelvin–Voigt law gives mu x' < 0 (tension), its
+                                 ///< known defect
+  std::size_t steps;             ///< accepted integration steps
   double approach_at_separation; ///< m, x at the end of contact: 0 for ContactEnd::zero_approach
   /// The figures by which impacts are compared (impact_figures.hpp).
   ImpactFigures figures() const {
@@ -114,8 +114,7 @@ OdeImpactResult integrate_impact(double mass, double velocity, const ContactForc
 /// carry the accuracy of the integration itself (no interpolation). The last sample is the
 /// separation state (approach 0, or approach_at_separation for ContactEnd::zero_force).
 std::vector<ImpactSample> integrate_impact_history(double mass, double velocity,
-                                                   const ContactForceLaw& force,
-                                                   std::size_t points,
+                                                   const ContactForceLaw& force, std::size_t points,
                                                    double relative_tolerance = 1e-10,
                                                    ContactEnd end = ContactEnd::zero_approach);
 

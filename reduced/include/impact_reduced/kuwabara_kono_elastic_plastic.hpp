@@ -55,8 +55,10 @@ OdeImpactResult kuwabara_kono_elastic_plastic_impact(double mass, double velocit
 
 /// The force history of the same impact at `points` >= 2 instants equally spaced from first
 /// contact to separation (integrate_impact_history).
-std::vector<ImpactSample> kuwabara_kono_elastic_plastic_history(
-    double mass, double velocity, const ElasticPlasticContact& spring,
-    double dissipative_constant, std::size_t points, double relative_tolerance = 1e-10);
+std::vector<ImpactSample> kuwabara_kono_elastic_plastic_history(double mass, double velocity,
+                                                                const ElasticPlasticContact& spring,
+                                                                double dissipative_constant,
+                                                                std::size_t points,
+                                                                double relative_tolerance = 1e-10);
 
 } // namespace impact::reduced

@@ -87,8 +87,7 @@ double lambert_w0_elementary(double z);
 /// linear decay, 3e-11 after 50 extremes of undamped nonlinear cases against quadrature).
 /// Throws std::runtime_error if an extreme is not found within 10^6 steps (cannot happen
 /// for inputs that pass validate_oscillator).
-std::vector<OscillatorExtreme> free_decay_extremes(const PowerLawOscillator& oscillator,
-                                                   int count);
+std::vector<OscillatorExtreme> free_decay_extremes(const PowerLawOscillator& oscillator, int count);
 
 /// Amplitudes a_1..a_count [m] by `method`. count in [1, max_extreme_count] ("count").
 /// - numeric: the amplitudes of free_decay_extremes.

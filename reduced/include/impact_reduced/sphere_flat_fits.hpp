@@ -131,8 +131,8 @@ private:
   SphereFlatContact contact_;
   JacksonGreenUnloading rule_;
   double critical_interference_;
-  double transition_;       // 1.9 omega_c
-  double transition_work_;  // Hertz work up to the transition
+  double transition_;      // 1.9 omega_c
+  double transition_work_; // Hertz work up to the transition
 };
 
 } // namespace impact::reduced

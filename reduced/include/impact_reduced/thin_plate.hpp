@@ -81,7 +81,8 @@ struct ThinPlateImpactResult {
   double damping_energy_fraction; ///< integral b c x^n x'^2 dt over m V^2 / 2: contact damping
   double plate_deflection;        ///< m, w of the plate point after the impact (it stays there)
   std::size_t number_of_contacts; ///< always 1 in this model (see the file comment)
-  double zener_lambda;            ///< lambda = m / (Z t0) [-] (Zener's parameter for n = 3/2)  /// The figures by which impacts are compared (impact_figures.hpp).
+  double
+      zener_lambda; ///< lambda = m / (Z t0) [-] (Zener's parameter for n = 3/2)  /// The figures by which impacts are compared (impact_figures.hpp).
   ImpactFigures figures() const {
     return {restitution, contact_time, force_max, time_force_max, approach_max};
   }
@@ -123,8 +124,7 @@ public:
   /// +infinity allowed (rigid plate: Hunt–Crossley on a fixed obstacle). Throws
   /// InvalidInput naming the parameter ("stiffness", "exponent", "damping", "mass",
   /// "impedance") outside these ranges or for NaN.
-  ThinPlateImpact(double stiffness, double exponent, double damping, double mass,
-                  double impedance);
+  ThinPlateImpact(double stiffness, double exponent, double damping, double mass, double impedance);
 
   /// The impact at `velocity` [m/s] > 0 (finite). `relative_tolerance` in [1e-14, 1e-3]:
   /// local error tolerance on the scaled state (results are within ~20 x of it). Throws

@@ -37,10 +37,10 @@ namespace impact::reduced {
 
 /// The contact and the impacting body of Thornton's law. SI units.
 struct ThorntonParameters {
-  double mass;             ///< effective mass m [kg], > 0
-  double radius;           ///< effective radius R [m], > 0
-  double contact_modulus;  ///< E* [Pa], > 0
-  double yield_pressure;   ///< limiting contact pressure p_y [Pa], > 0 (1.6 Y or C(nu) Y)
+  double mass;            ///< effective mass m [kg], > 0
+  double radius;          ///< effective radius R [m], > 0
+  double contact_modulus; ///< E* [Pa], > 0
+  double yield_pressure;  ///< limiting contact pressure p_y [Pa], > 0 (1.6 Y or C(nu) Y)
 };
 
 /// Thornton's loading/unloading law as an ElasticPlasticContact (for elastic_plastic_impact

@@ -33,8 +33,8 @@ namespace impact::reduced {
 
 /// The two yield criteria.
 enum class YieldCriterion {
-  johnson,       ///< p_y = 1.6 Y
-  jackson_green  ///< p_y = C(nu) Y, C = 1.295 exp(0.736 nu)
+  johnson,      ///< p_y = 1.6 Y
+  jackson_green ///< p_y = C(nu) Y, C = 1.295 exp(0.736 nu)
 };
 
 /// Contact modulus E* [Pa]: 1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2. E > 0, -1 < nu < 0.5;

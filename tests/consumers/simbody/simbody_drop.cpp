@@ -80,16 +80,19 @@ int main(int argc, char** argv) {
     const auto& entry = entries.front();
     if (std::abs(entry.mass / impact_contact::sphere_mass - 1) > 1e-12 ||
         std::abs(entry.radius / impact_contact::sphere_radius - 1) > 1e-12) {
-      std::fprintf(stderr, "impact-drop-simbody: the compiled impact_contact.hpp is not the one "
-                           "of %s (sphere mass or radius differ): rebuild against it\n", argv[1]);
+      std::fprintf(stderr,
+                   "impact-drop-simbody: the compiled impact_contact.hpp is not the one "
+                   "of %s (sphere mass or radius differ): rebuild against it\n",
+                   argv[1]);
       return 2;
     }
     std::vector<DropFigures> measured;
     for (double velocity : entry.velocities) measured.push_back(drop(velocity));
     int major = 0, minor = 0, build = 0;
     SimTK_version_simbody(&major, &minor, &build);
-    impact::consumers::write_simulator_run(
-        argv[2], entry, std::to_string(major) + "." + std::to_string(minor), measured);
+    impact::consumers::write_simulator_run(argv[2], entry,
+                                           std::to_string(major) + "." + std::to_string(minor),
+                                           measured);
     impact::consumers::print_simulator_run(entry, measured);
   } catch (const std::exception& error) {
     std::fprintf(stderr, "impact-drop-simbody: error: %s\n", error.what());

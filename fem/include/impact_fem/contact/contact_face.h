@@ -83,7 +83,7 @@ namespace impact_fem
       parameter_at_radius(const double r) const
       {
         const double r0 = position(0)[0], r1 = position(1)[0];
-        double       s  = (r - r0) / (r1 - r0);
+        double       s = (r - r0) / (r1 - r0);
         for (unsigned int it = 0; it < 50; ++it)
           {
             double value = -r, slope = 0;

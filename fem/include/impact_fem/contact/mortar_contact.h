@@ -96,12 +96,12 @@ namespace impact_fem
 
     /// u += W lambda.
     void
-    add_contact_response(const Vector<double>         &pressures,
+    add_contact_response(const Vector<double>          &pressures,
                          TrilinosWrappers::MPI::Vector &displacement) const;
 
     /// f += B^T lambda (owned entries).
     void
-    add_contact_forces(const Vector<double>         &pressures,
+    add_contact_forces(const Vector<double>          &pressures,
                        TrilinosWrappers::MPI::Vector &forces) const;
 
     /// Total normal force 2 pi int p r dr [N].
@@ -142,7 +142,8 @@ namespace impact_fem
   private:
     /// B, g_0 and the pointwise gaps of the rigid flat (rigid_flat.cc).
     void
-    setup_rigid_flat(const std::vector<contact_faces::ContactFace> &sphere_faces);
+    setup_rigid_flat(
+      const std::vector<contact_faces::ContactFace> &sphere_faces);
 
     /// The contact nodes: the vertices of the non-mortar side's faces,
     /// ordered by radius into node_radius; returns each node's row of B by
@@ -151,7 +152,8 @@ namespace impact_fem
     number_contact_nodes(const std::vector<contact_faces::ContactFace> &faces);
 
     /// Sparse rows of B while they are assembled, by global dof index.
-    using RowsUnderAssembly = std::vector<std::map<types::global_dof_index, double>>;
+    using RowsUnderAssembly =
+      std::vector<std::map<types::global_dof_index, double>>;
 
     /// Row @p row of B gains @p sign times the hat weight @p hat (the
     /// row's hat function times the area element at a point of the contact

@@ -48,7 +48,7 @@ namespace impact_fem
       }
 
       SymmetricTensor<2, 3>
-      stress_update(const QuadraturePointState &start,
+      stress_update(const QuadraturePointState  &start,
                     const SymmetricTensor<2, 3> &strain_end,
                     const double                 time_step,
                     QuadraturePointState        &end,
@@ -68,11 +68,11 @@ namespace impact_fem
                   double      &slope,
                   const double time_step) const;
 
-      double shear_modulus = 0, bulk_modulus = 0;
-      double yield_strength = 0, hardening_modulus = 0;
-      bool   johnson_cook = false;
-      double jc_b = 0, jc_n = 1, jc_c = 0, reference_rate = 1;
-      double retardation_time = 0;
+      double                shear_modulus = 0, bulk_modulus = 0;
+      double                yield_strength = 0, hardening_modulus = 0;
+      bool                  johnson_cook = false;
+      double                jc_b = 0, jc_n = 1, jc_c = 0, reference_rate = 1;
+      double                retardation_time = 0;
       SymmetricTensor<4, 3> damping;
     };
   } // namespace materials

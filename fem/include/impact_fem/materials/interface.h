@@ -170,7 +170,7 @@ namespace impact_fem
        * stress of the internal variables advanced exactly over the step.
        */
       virtual SymmetricTensor<2, 3>
-      stress_update(const QuadraturePointState &start,
+      stress_update(const QuadraturePointState  &start,
                     const SymmetricTensor<2, 3> &strain_end,
                     const double                 time_step,
                     QuadraturePointState        &end,
@@ -207,7 +207,8 @@ namespace impact_fem
 
     /// Isotropic elasticity tensor from Young's modulus and Poisson's ratio.
     SymmetricTensor<4, 3>
-    isotropic_stiffness(const double youngs_modulus, const double poissons_ratio);
+    isotropic_stiffness(const double youngs_modulus,
+                        const double poissons_ratio);
 
     /// Isotropic tensor 2 G P_dev + 3 K P_vol from a shear and a bulk
     /// modulus (P_dev, P_vol: the deviatoric and volumetric projectors).
@@ -251,6 +252,9 @@ namespace impact_fem
  * model's own subsection.
  */
 #define IMPACT_FEM_REGISTER_MATERIAL(classname, name, description) \
-  IMPACT_FEM_REGISTER(impact_fem::materials::Interface, classname, name, description)
+  IMPACT_FEM_REGISTER(impact_fem::materials::Interface,            \
+                      classname,                                   \
+                      name,                                        \
+                      description)
 
 #endif

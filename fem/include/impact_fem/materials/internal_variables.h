@@ -39,7 +39,7 @@ namespace impact_fem
     class InternalVariables
     {
     public:
-      using VectorType = TrilinosWrappers::MPI::Vector;
+      using VectorType   = TrilinosWrappers::MPI::Vector;
       using CellIterator = typename Triangulation<2>::cell_iterator;
       using States = std::vector<std::shared_ptr<const QuadraturePointState>>;
 
@@ -48,11 +48,12 @@ namespace impact_fem
       /// material. The displacements given later have the layout (owned
       /// and ghost entries) of @p ghosted_layout.
       void
-      initialize(const DoFHandler<2>   &dof_handler,
-                 const Mapping<2>      &mapping,
-                 const Quadrature<2>   &quadrature,
-                 const std::function<const Interface &(types::material_id)> &material_of,
-                 const VectorType      &ghosted_layout);
+      initialize(
+        const DoFHandler<2>                                        &dof_handler,
+        const Mapping<2>                                           &mapping,
+        const Quadrature<2>                                        &quadrature,
+        const std::function<const Interface &(types::material_id)> &material_of,
+        const VectorType &ghosted_layout);
 
       /// A body with a nonlinear stress (elastic-plastic) exists: the
       /// step must iterate on plastic_force().

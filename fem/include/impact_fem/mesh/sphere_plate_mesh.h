@@ -23,7 +23,7 @@ namespace impact_fem
     constexpr types::boundary_id plate_side          = 6;
     constexpr types::boundary_id plate_bottom        = 7;
     /// The equatorial plane of a hemisphere (indentation meshes only).
-    constexpr types::boundary_id sphere_base         = 8;
+    constexpr types::boundary_id sphere_base = 8;
   } // namespace boundary_ids
 
   /// Material ids = physical surface tags.
@@ -76,11 +76,11 @@ namespace impact_fem
     create(parallel::distributed::Triangulation<2> &triangulation,
            const std::string                       &work_directory) const;
 
-    double contact_element_size = 0; ///< [m]
-    double contact_surface_radius = 0; ///< [m]
-    double uniform_zone_radius  = 0; ///< [m]
-    double growth_factor        = 0; ///< [-]
-    double maximum_element_size = 0; ///< [m]
+    double contact_element_size      = 0; ///< [m]
+    double contact_surface_radius    = 0; ///< [m]
+    double uniform_zone_radius       = 0; ///< [m]
+    double growth_factor             = 0; ///< [-]
+    double maximum_element_size      = 0; ///< [m]
     double elements_across_thickness = 4; ///< least number across H [-]
 
     /// The largest element size used: Maximum element size, or less on a

@@ -33,17 +33,18 @@ namespace impact_fem
       using CellIterator = DoFHandler<2>::active_cell_iterator;
 
       /// The operators of the owned cells for which @p selected is true.
-      CellStress(const ImpactProblem                        &problem,
+      CellStress(const ImpactProblem                             &problem,
                  const std::function<bool(const CellIterator &)> &selected);
 
       /// The stresses of every selected cell at its quadrature points, in
       /// the state of the problem now; @p visit(cell, points, stresses).
       void
-      evaluate(const ImpactProblem &problem,
-               const std::function<void(const CellIterator &,
-                                        const std::vector<Point<2>> &,
-                                        const std::vector<SymmetricTensor<2, 3>> &)>
-                 &visit) const;
+      evaluate(
+        const ImpactProblem &problem,
+        const std::function<void(const CellIterator &,
+                                 const std::vector<Point<2>> &,
+                                 const std::vector<SymmetricTensor<2, 3>> &)>
+          &visit) const;
 
     private:
       struct CellOperator

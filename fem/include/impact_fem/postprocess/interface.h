@@ -72,6 +72,9 @@ namespace impact_fem
 /// Register a postprocessor class (default constructible, with a static
 /// declare_parameters(ParameterHandler &)).
 #define IMPACT_FEM_REGISTER_POSTPROCESSOR(classname, name, description) \
-  IMPACT_FEM_REGISTER(impact_fem::postprocess::Interface, classname, name, description)
+  IMPACT_FEM_REGISTER(impact_fem::postprocess::Interface,               \
+                      classname,                                        \
+                      name,                                             \
+                      description)
 
 #endif

@@ -82,7 +82,7 @@ namespace impact_fem
      */
     double
     step_oscillation(const std::vector<double> &force,
-                     const unsigned int          excluded = 5);
+                     const unsigned int         excluded = 5);
 
     /// max F after the first zero sample that follows the peak, / max F
     /// (0 for a clean release; NaN if the force never returns to zero).
@@ -92,16 +92,16 @@ namespace impact_fem
     /// Everything a run reports about its impact.
     struct ImpactSummary
     {
-      double first_contact_time = nan; ///< [s]
-      double separation_time    = nan; ///< [s], NaN: no separation
-      double contact_time       = nan; ///< [s]
-      double force_max          = nan; ///< [N]
-      double time_force_max     = nan; ///< [s]
-      double approach_max       = nan; ///< [m]
-      double time_approach_max  = nan; ///< [s]
-      double rebound_velocity   = nan; ///< [m/s], upward at separation
-      double restitution        = nan; ///< rebound / contact velocity
-      double force_oscillation  = nan; ///< step_oscillation()
+      double first_contact_time  = nan; ///< [s]
+      double separation_time     = nan; ///< [s], NaN: no separation
+      double contact_time        = nan; ///< [s]
+      double force_max           = nan; ///< [N]
+      double time_force_max      = nan; ///< [s]
+      double approach_max        = nan; ///< [m]
+      double time_approach_max   = nan; ///< [s]
+      double rebound_velocity    = nan; ///< [m/s], upward at separation
+      double restitution         = nan; ///< rebound / contact velocity
+      double force_oscillation   = nan; ///< step_oscillation()
       double force_after_release = nan; ///< force_after_release()
     };
 

@@ -141,6 +141,9 @@ namespace impact_fem
 
 /// Register a scheme under a name usable in "Time integration/Scheme".
 #define IMPACT_FEM_REGISTER_TIME_STEPPER(classname, name, description) \
-  IMPACT_FEM_REGISTER(impact_fem::time_integration::Interface, classname, name, description)
+  IMPACT_FEM_REGISTER(impact_fem::time_integration::Interface,         \
+                      classname,                                       \
+                      name,                                            \
+                      description)
 
 #endif

@@ -54,9 +54,11 @@ namespace impact_fem
       parse_parameters(ParameterHandler &prm);
 
       /// u = S(f) for the plastic force f; returns the step's load norm.
-      using LinearSolve = std::function<double(const VectorType &f, VectorType &u)>;
+      using LinearSolve =
+        std::function<double(const VectorType &f, VectorType &u)>;
       /// f_p(u) for a displacement u (owned entries).
-      using PlasticForce = std::function<void(const VectorType &u, VectorType &f)>;
+      using PlasticForce =
+        std::function<void(const VectorType &u, VectorType &f)>;
 
       struct Result
       {
@@ -73,10 +75,10 @@ namespace impact_fem
        * reports a failure (it knows the time and the step).
        */
       Result
-      solve(const VectorType  &start_force,
-            const VectorType  &u_start,
-            VectorType        &u,
-            const LinearSolve &linear_solve,
+      solve(const VectorType   &start_force,
+            const VectorType   &u_start,
+            VectorType         &u,
+            const LinearSolve  &linear_solve,
             const PlasticForce &plastic_force) const;
 
       /// The convergence criterion, in words, for messages.
@@ -90,9 +92,9 @@ namespace impact_fem
       }
 
     private:
-      std::string  strategy       = "anderson";
-      unsigned int max_iterations = 100;
-      unsigned int depth          = 5;
+      std::string  strategy            = "anderson";
+      unsigned int max_iterations      = 100;
+      unsigned int depth               = 5;
       double       residual_tolerance  = 1e-8;
       double       increment_tolerance = 1e-6;
     };

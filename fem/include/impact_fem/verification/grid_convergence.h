@@ -31,8 +31,8 @@ namespace impact_fem
       double      observed_order   = __builtin_nan(""); ///< NaN if none
       double      extrapolated     = __builtin_nan(""); ///< NaN if none
       double      gci_absolute     = 0; ///< in the quantity's unit
-      double      gci_relative     = 0; ///< gci_absolute / |fine|, NaN if fine = 0
-      std::string convergence;          ///< monotone|oscillatory|divergent|converged
+      double      gci_relative = 0; ///< gci_absolute / |fine|, NaN if fine = 0
+      std::string convergence; ///< monotone|oscillatory|divergent|converged
     };
 
     /// @p formal_order: the scheme's order (2 here: time integration and

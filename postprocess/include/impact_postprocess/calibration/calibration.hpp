@@ -64,8 +64,8 @@ struct NamedEstimate {
 
 /// The result of one least-squares fit of a model.
 struct ModelFit {
-  std::string model;                ///< ContactModel::name
-  std::string parameter_name;       ///< "b", "A", "e", "b_1", ...
+  std::string model;          ///< ContactModel::name
+  std::string parameter_name; ///< "b", "A", "e", "b_1", ...
   std::string parameter_unit;
   Estimate stiffness;               ///< c [N/m^n]
   Estimate exponent;                ///< n
@@ -78,9 +78,9 @@ struct ModelFit {
   /// (NaN for a fixed parameter).
   std::vector<double> correlation;
   std::vector<double> covariance;
-  double reference_approach;        ///< x_ref [m] of the internal parametrisation
-  Estimate force_at_reference;      ///< F_ref = c x_ref^n [N], nearly uncorrelated with n
-  FitQuality quality;               ///< over all fitted force samples
+  double reference_approach;   ///< x_ref [m] of the internal parametrisation
+  Estimate force_at_reference; ///< F_ref = c x_ref^n [N], nearly uncorrelated with n
+  FitQuality quality;          ///< over all fitted force samples
   bool converged = false;
   std::string solver_message;
   int iterations = 0;
@@ -100,14 +100,14 @@ struct RunResidual {
   std::string source;
   double velocity;
   FitQuality quality;
-  ImpactPrediction prediction;                  ///< by the fit to all runs (in sample)
+  ImpactPrediction prediction;                   ///< by the fit to all runs (in sample)
   std::optional<ImpactPrediction> out_of_sample; ///< by the fit without this velocity
 };
 
 /// A campaign fit with this run's velocity left out (leave-one-velocity-out).
 struct HeldOutFit {
-  double velocity;                  ///< the velocity left out
-  std::vector<double> parameters;   ///< c, n, p, extra... of the fit to the other runs
+  double velocity;                ///< the velocity left out
+  std::vector<double> parameters; ///< c, n, p, extra... of the fit to the other runs
   bool converged;
 };
 
@@ -115,15 +115,15 @@ struct CampaignModelFit {
   /// Unique within the calibration: "hunt-crossley", "hunt-crossley-energy",
   /// "hunt-crossley-hertz-exponent", "hunt-crossley-velocity-damping" or the law's name.
   std::string key;
-  std::string label;          ///< what it is, in words
-  ModelFit fit;               ///< to all runs; its intervals are conditional on the model
+  std::string label; ///< what it is, in words
+  ModelFit fit;      ///< to all runs; its intervals are conditional on the model
   std::string formula;
   std::string reference;
-  std::string damping_name;   ///< the law's damping constant (reported per run)
+  std::string damping_name; ///< the law's damping constant (reported per run)
   std::string damping_unit;
-  double energy_weight = 0;   ///< of the energy-loss residuals; 0: force histories only
+  double energy_weight = 0; ///< of the energy-loss residuals; 0: force histories only
   std::vector<RunResidual> runs;
-  std::vector<HeldOutFit> held_out;  ///< one per velocity (empty below three velocities)
+  std::vector<HeldOutFit> held_out; ///< one per velocity (empty below three velocities)
   /// Jackknife estimates over the held-out fits, in the order of parameter_values(): value of
   /// the full fit, standard error sqrt((g - 1)/g sum (theta_i - mean)^2), interval with
   /// Student t at g - 1 degrees of freedom (g velocities). Empty without held-out fits.
@@ -133,16 +133,16 @@ struct CampaignModelFit {
 /// A model whose parameters come from the material or the literature: nothing is fitted, so
 /// its predictions are out of sample by construction.
 struct ReferenceModel {
-  std::string key;       ///< "hertz", "hunt-crossley-published", "kuwabara-kono-material", ...
+  std::string key; ///< "hertz", "hunt-crossley-published", "kuwabara-kono-material", ...
   std::string label;
-  std::string model;     ///< ContactModel name
-  std::string basis;     ///< where its parameters come from
-  double stiffness;      ///< c [N/m^n]
-  double exponent;       ///< n
+  std::string model;               ///< ContactModel name
+  std::string basis;               ///< where its parameters come from
+  double stiffness;                ///< c [N/m^n]
+  double exponent;                 ///< n
   std::vector<double> dissipation; ///< ContactModel::damping's parameters
   std::string parameter_name;      ///< of dissipation[0]
   std::string parameter_unit;
-  std::vector<RunResidual> runs;   ///< predictions and force-history agreement
+  std::vector<RunResidual> runs; ///< predictions and force-history agreement
   /// Names and units of dissipation[1], ... (a damped elastic-plastic model: its A).
   std::vector<std::string> extra_names;
   std::vector<std::string> extra_units;
@@ -153,8 +153,8 @@ struct ReferenceModel {
 struct RestitutionMapRun {
   std::string source;
   double velocity;
-  double target;                ///< the FEM's e
-  ImpactPrediction prediction;  ///< what the law with the mapped damping really gives
+  double target;               ///< the FEM's e
+  ImpactPrediction prediction; ///< what the law with the mapped damping really gives
 };
 struct RestitutionMapEvaluation {
   std::string law;
@@ -181,24 +181,24 @@ struct RankedModel {
 
 struct CampaignCalibration {
   bool fitted = false;
-  std::string reason;                       ///< why not, when not fitted
+  std::string reason; ///< why not, when not fitted
   std::vector<double> velocities;
-  double energy_weight = 0;                 ///< of the combined fits
-  std::optional<CampaignModelFit> hunt_crossley;                  ///< force histories
-  std::optional<CampaignModelFit> hunt_crossley_energy;           ///< + energy loss
+  double energy_weight = 0;                             ///< of the combined fits
+  std::optional<CampaignModelFit> hunt_crossley;        ///< force histories
+  std::optional<CampaignModelFit> hunt_crossley_energy; ///< + energy loss
   /// Hunt–Crossley with n fixed at hertz_exponent (c, b free): the c to compare with the
   /// Hertz stiffness (the free fit's c is in N/m^n and correlates with n).
   std::optional<CampaignModelFit> hunt_crossley_hertz_exponent;
   std::optional<CampaignModelFit> hunt_crossley_velocity_damping; ///< b(V), + energy loss
   std::vector<CampaignModelFit> comparison_laws;
-  std::vector<ReferenceModel> reference_models;     ///< Hertz, published b, A from the material
+  std::vector<ReferenceModel> reference_models; ///< Hertz, published b, A from the material
   std::vector<RestitutionMapEvaluation> restitution_maps; ///< the e maps as users apply them
-  double hertz_stiffness = 0;               ///< c_Hertz [N/m^1.5] of the reference models
+  double hertz_stiffness = 0; ///< c_Hertz [N/m^1.5] of the reference models
   std::string hertz_basis;
   std::optional<double> material_dissipative_constant; ///< A [s] from the material
-  std::string material_basis;               ///< its formula and inputs, or why there is none
-  double published_damping = 0;             ///< b [s/m] of the published example
-  std::vector<RankedModel> ranking;         ///< every campaign and reference model, best first
+  std::string material_basis;       ///< its formula and inputs, or why there is none
+  double published_damping = 0;     ///< b [s/m] of the published example
+  std::vector<RankedModel> ranking; ///< every campaign and reference model, best first
 
   /// Every campaign fit, Hunt–Crossley variants first.
   std::vector<const CampaignModelFit*> models() const;
@@ -213,13 +213,13 @@ using ImpactFigures = ImpactFigures;
 
 struct RunCalibration {
   std::string source;
-  double velocity;             ///< m/s at first contact
-  double mass;                 ///< kg
+  double velocity; ///< m/s at first contact
+  double mass;     ///< kg
   ImpactFigures measured;
-  double damping_from_restitution;   ///< b [s/m] (0 for e >= 1)
-  double impact_parameter;           ///< beta = b V
-  std::optional<ModelFit> loading;   ///< c, n (b fixed)
-  std::optional<ModelFit> history;   ///< c, n, b
+  double damping_from_restitution; ///< b [s/m] (0 for e >= 1)
+  double impact_parameter;         ///< beta = b V
+  std::optional<ModelFit> loading; ///< c, n (b fixed)
+  std::optional<ModelFit> history; ///< c, n, b
   std::optional<ImpactPrediction> history_prediction;
 };
 
@@ -234,9 +234,9 @@ struct CalibrationOptions {
   /// Comparison laws fitted over the campaign (names of comparison_model_names(): the
   /// library's comparison laws and the plastic models).
   std::vector<std::string> laws = comparison_model_names();
-  int max_iterations = 100;          ///< per least-squares fit
-  double confidence_level = 0.95;    ///< of the intervals, in (0, 1)
-  double ode_tolerance = 1e-10;      ///< of the simulated impacts (integrate_impact_history)
+  int max_iterations = 100;       ///< per least-squares fit
+  double confidence_level = 0.95; ///< of the intervals, in (0, 1)
+  double ode_tolerance = 1e-10;   ///< of the simulated impacts (integrate_impact_history)
   /// Weight of the energy-loss residuals of the combined fits: each run adds
   /// w (L_model - L_FEM) / L_FEM with L = 1 - e^2, against its force samples' RMS; so w = 1
   /// makes a 1 % error in the energy loss cost as much as a 1 % RMS force residual. >= 0.
@@ -247,7 +247,7 @@ struct CalibrationOptions {
   /// The damped elastic-plastic models (damped_plastic_models.hpp) hold c at the Hertz value
   /// of the runs' materials when they record them; false fits c as well.
   bool damped_plastic_hertz_stiffness = true;
-  int threads = 2;                   ///< for the campaign fits
+  int threads = 2;                                  ///< for the campaign fits
   std::function<void(const std::string&)> progress; ///< called with one line per step
 };
 

@@ -27,13 +27,13 @@ namespace impact::postprocess {
 ///   - surfaceEnergy 0 (no adhesion: Thornton 1997, not Thornton & Ning 1998);
 ///   - density = m / ((4/3) pi R^3), so that LIGGGHTS' particle has the campaign's mass.
 struct LiggghtsContact {
-  double sphere_youngs_modulus;  ///< Pa, atom type 1
+  double sphere_youngs_modulus; ///< Pa, atom type 1
   double sphere_poisson_ratio;
-  double wall_youngs_modulus;    ///< Pa, atom type 2 (the wall)
+  double wall_youngs_modulus; ///< Pa, atom type 2 (the wall)
   double wall_poisson_ratio;
-  double yield_ratio;            ///< coefficientYieldRatio a_y / R [-]
-  double density;                ///< kg/m^3
-  double yield_velocity;         ///< V_y [m/s] of Thornton's law (reduced::yield_velocity)
+  double yield_ratio;    ///< coefficientYieldRatio a_y / R [-]
+  double density;        ///< kg/m^3
+  double yield_velocity; ///< V_y [m/s] of Thornton's law (reduced::yield_velocity)
 };
 LiggghtsContact liggghts_contact(const PlasticContact& contact, double mass, double radius);
 

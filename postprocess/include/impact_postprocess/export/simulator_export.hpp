@@ -31,27 +31,27 @@ public:
 /// One run of the campaign as the calibration measured it.
 struct CampaignImpact {
   std::string source;
-  double velocity;          ///< m/s
-  ImpactFigures fem;        ///< the exports compare e, t_c and F_max
+  double velocity;   ///< m/s
+  ImpactFigures fem; ///< the exports compare e, t_c and F_max
 };
 
 /// A law with c [N/m^1.5] at n = 3/2 and one damping constant, fitted over the campaign.
 struct HertzLawFit {
-  std::string model;        ///< "hunt-crossley", "kuwabara-kono", "tsuji"
-  double stiffness;         ///< c [N/m^1.5]
-  double damping;           ///< b [s/m], A [s] or eta [N s/m^(5/4)]
-  double rms_residual;      ///< of the campaign force-history fit, fraction of the peak force
+  std::string model;   ///< "hunt-crossley", "kuwabara-kono", "tsuji"
+  double stiffness;    ///< c [N/m^1.5]
+  double damping;      ///< b [s/m], A [s] or eta [N s/m^(5/4)]
+  double rms_residual; ///< of the campaign force-history fit, fraction of the peak force
 };
 
 /// What impact-export needs from a calibration and its runs.
 struct ExportCampaign {
   std::string calibration_file;
-  double mass;              ///< kg
-  double radius;            ///< sphere radius [m]
-  std::vector<CampaignImpact> runs;   ///< by velocity
+  double mass;                      ///< kg
+  double radius;                    ///< sphere radius [m]
+  std::vector<CampaignImpact> runs; ///< by velocity
   /// The free Hunt–Crossley fit (the "multibody" block): c [N/m^n], n, b [s/m].
   double free_stiffness, free_exponent, free_damping, free_rms_residual;
-  HertzLawFit hunt_crossley;          ///< campaign.hunt_crossley_hertz_exponent
+  HertzLawFit hunt_crossley; ///< campaign.hunt_crossley_hertz_exponent
   std::optional<HertzLawFit> kuwabara_kono;
   std::optional<HertzLawFit> tsuji;
   /// The plastic contact: the calibration's converged Thornton fit if there is one
@@ -87,19 +87,18 @@ SimbodyContact simbody_contact(double stiffness, double damping, double radius);
 /// K x + B x' < 0 (the contact cannot pull). K [1/s^2] and B [1/s] are accelerations per
 /// penetration and per penetration rate: the force is the body's mass times that.
 struct MujocoContact {
-  double stiffness;        ///< K [1/s^2], solref[0] = -K
-  double damping;          ///< B [1/s], solref[1] = -B
-  double damping_ratio;    ///< zeta = B / (2 sqrt(K))
-  double impedance;        ///< d = solimp[0] = solimp[1]
-  double timestep;         ///< s, the MJCF's option timestep (contact time / 1000)
+  double stiffness;     ///< K [1/s^2], solref[0] = -K
+  double damping;       ///< B [1/s], solref[1] = -B
+  double damping_ratio; ///< zeta = B / (2 sqrt(K))
+  double impedance;     ///< d = solimp[0] = solimp[1]
+  double timestep;      ///< s, the MJCF's option timestep (contact time / 1000)
   double reference_velocity;
 };
 
 /// The impact of the clamped linear spring-damper x'' = -(K x + B x') (no pull) at velocity
 /// V, in closed form: exact for damping ratio in [0, 1); its x_max is NaN (not computed: the
 /// exports compare e, t_c and F_max).
-ImpactFigures linear_contact_impact(double stiffness, double damping, double mass,
-                                    double velocity);
+ImpactFigures linear_contact_impact(double stiffness, double damping, double mass, double velocity);
 
 /// K, B that make the clamped linear spring-damper give restitution e in (e_min, 1) and
 /// contact time t_c > 0 (e_min = exp(-2) = 0.1353, the restitution at damping ratio 1). Throws

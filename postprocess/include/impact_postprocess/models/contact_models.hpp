@@ -57,11 +57,11 @@ enum class SpringDamping {
 };
 
 struct ContactModel {
-  std::string name;          ///< "hunt-crossley", "hunt-crossley-velocity-damping" or a law name
-  std::string formula;       ///< force law and damping map, plain text
+  std::string name;    ///< "hunt-crossley", "hunt-crossley-velocity-damping" or a law name
+  std::string formula; ///< force law and damping map, plain text
   std::string reference;
-  std::string damping_name;  ///< symbol of the law's damping constant ("b", "A", ...)
-  std::string damping_unit;  ///< its unit ("s/m", "s", ...)
+  std::string damping_name; ///< symbol of the law's damping constant ("b", "A", ...)
+  std::string damping_unit; ///< its unit ("s/m", "s", ...)
   DissipationParameter parameter;
   std::vector<ExtraParameter> extra_parameters;
   std::optional<double> required_exponent; ///< n is fixed to this value
@@ -79,8 +79,8 @@ struct ContactModel {
   std::function<reduced::ContactForceLaw(double damping, const reduced::ContactSetup&)> force_law;
   /// A rate-independent elastic-plastic model's loading and unloading for the damping
   /// constant (its yield approach) and c (plastic_models.hpp); none for the other models.
-  std::function<std::shared_ptr<const reduced::ElasticPlasticContact>(
-      double damping, const reduced::ContactSetup&)>
+  std::function<std::shared_ptr<const reduced::ElasticPlasticContact>(double damping,
+                                                                      const reduced::ContactSetup&)>
       plastic_contact;
   /// A damped elastic-plastic model: plastic_contact is its spring (for `damping`, the
   /// spring's yield parameter), and this rate term acts on it, with the constant
@@ -90,8 +90,8 @@ struct ContactModel {
                        const reduced::ContactSetup&)>
       spring_damping_constant;
 
-  std::string parameter_name() const;  ///< "e" or damping_name
-  std::string parameter_unit() const;  ///< "1" or damping_unit
+  std::string parameter_name() const; ///< "e" or damping_name
+  std::string parameter_unit() const; ///< "1" or damping_unit
   /// Hunt–Crossley's force (closed forms of the reduced library apply).
   bool hunt_crossley_force() const;
   /// A damped elastic-plastic model (spring_damping is not none).
@@ -124,8 +124,7 @@ const std::vector<std::string>& restitution_parametrised_laws();
 /// parameters).
 ImpactPrediction predict_impact(const ContactModel& model, double mass, double velocity,
                                 double stiffness, double exponent,
-                                const std::vector<double>& dissipation,
-                                double tolerance = 1e-10);
+                                const std::vector<double>& dissipation, double tolerance = 1e-10);
 
 /// The restitution alone (cheap for Hunt–Crossley: k(b V)); NaN where not available.
 double predict_restitution(const ContactModel& model, double mass, double velocity,

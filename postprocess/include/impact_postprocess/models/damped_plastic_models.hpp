@@ -112,14 +112,15 @@ std::unique_ptr<const DampedPlasticImpact> damped_plastic_impact(
 /// materials' retardation times (scenario_materials). None without a yield strength, without
 /// an A, or with A = 0 (then the model is the rate-independent one from the material).
 struct MaterialDampedPlastic {
-  std::string key;                 ///< "hunt-crossley-thornton-material", ...
+  std::string key; ///< "hunt-crossley-thornton-material", ...
   std::string label;
   ContactModel model;              ///< the "-from-a" model
   double stiffness;                ///< c [N/m^1.5]
   std::vector<double> dissipation; ///< (yield parameter, A)
   std::string basis;               ///< where the numbers come from, and the b(V) formula
 };
-std::optional<MaterialDampedPlastic> material_hunt_crossley_thornton(const std::vector<FemRun>& runs);
+std::optional<MaterialDampedPlastic> material_hunt_crossley_thornton(
+    const std::vector<FemRun>& runs);
 std::optional<MaterialDampedPlastic> material_hunt_crossley_jackson_green(
     const std::vector<FemRun>& runs);
 

@@ -29,19 +29,19 @@ namespace impact::postprocess {
 inline constexpr double elastic_loss_limit = 0.01;
 
 struct FamilyRange {
-  double low, high;          ///< velocities of the first and last run of the range [m/s]
-  std::size_t runs;          ///< runs in the range
-  bool above_yield;          ///< the range lies above V_y
-  std::string family;        ///< "elastic", "plastic", "Hunt–Crossley (constant b)", ...
+  double low, high;   ///< velocities of the first and last run of the range [m/s]
+  std::size_t runs;   ///< runs in the range
+  bool above_yield;   ///< the range lies above V_y
+  std::string family; ///< "elastic", "plastic", "Hunt–Crossley (constant b)", ...
   /// The slope that decided: of ln e (plastic against constant e) or of ln(1 - e) (the
   /// elastic/viscoelastic families); NaN when the range has one run or no 0 < e < 1.
   double slope;
-  std::string slope_of;      ///< "e" or "1 - e"
+  std::string slope_of;               ///< "e" or "1 - e"
   std::optional<PowerLawTrend> trend; ///< with its interval (three runs or more)
   /// The plastic family's reference slopes of e over the range (above V_y): the band between
   /// the given plastic laws' own slopes, or -1/4 for both without them.
   double plastic_low = plastic_restitution_slope, plastic_high = plastic_restitution_slope;
-  std::string text;          ///< the range in words
+  std::string text; ///< the range in words
 };
 
 /// A plastic law's restitution at the runs' velocities (parallel to them).
@@ -54,8 +54,7 @@ struct PlasticReference {
 /// order); `yield_velocity` V_y [m/s] splits them, none: one range. Empty without runs.
 std::vector<FamilyRange> family_ranges(const std::vector<double>& velocity,
                                        const std::vector<double>& restitution,
-                                       std::optional<double> yield_velocity,
-                                       double level = 0.95,
+                                       std::optional<double> yield_velocity, double level = 0.95,
                                        const std::vector<PlasticReference>& plastic_laws = {});
 
 /// "Which family the FEM follows: ..." from the ranges, one sentence per range.

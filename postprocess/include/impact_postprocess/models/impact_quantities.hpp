@@ -22,18 +22,18 @@ using reduced::ImpactFigures;
 /// What a model predicts for one impact: its figures and, beyond them, the law's damping
 /// constant at this velocity (what the calibration JSON records with each prediction).
 struct ImpactPrediction : ImpactFigures {
-  double damping;  ///< the law's damping constant at this velocity
+  double damping; ///< the law's damping constant at this velocity
 };
 
 /// Everything the report compares, in the order of its tables.
 enum class Quantity : std::size_t {
-  energy_loss,          ///< 1 - e^2 [1]
-  restitution_deficit,  ///< 1 - e [1]
-  restitution,          ///< e [1]
-  contact_time,         ///< t_c [s]
-  force_max,            ///< F_max [N]
-  time_force_max,       ///< t(F_max) [s]
-  approach_max,         ///< x_max [m]
+  energy_loss,         ///< 1 - e^2 [1]
+  restitution_deficit, ///< 1 - e [1]
+  restitution,         ///< e [1]
+  contact_time,        ///< t_c [s]
+  force_max,           ///< F_max [N]
+  time_force_max,      ///< t(F_max) [s]
+  approach_max,        ///< x_max [m]
 };
 inline constexpr std::size_t quantity_count = 7;
 inline constexpr std::array<Quantity, quantity_count> all_quantities = {
@@ -41,15 +41,18 @@ inline constexpr std::array<Quantity, quantity_count> all_quantities = {
     Quantity::contact_time, Quantity::force_max,           Quantity::time_force_max,
     Quantity::approach_max};
 /// The quantities the validity verdict judges together (energy loss, not e).
-inline constexpr std::array<Quantity, 4> verdict_quantities = {
-    Quantity::energy_loss, Quantity::contact_time, Quantity::force_max, Quantity::approach_max};
+inline constexpr std::array<Quantity, 4> verdict_quantities = {Quantity::energy_loss,
+                                                               Quantity::contact_time,
+                                                               Quantity::force_max,
+                                                               Quantity::approach_max};
 
 /// The quantities a validity map judges (energy loss, contact time, peak force): not x_max,
 /// because the FEM's approach on a thin plate includes the plate's bending under the ball
 /// (it is measured from the mean of the plate's bottom), which the massive-plate laws do not
 /// have and Zener's indentation x leaves out.
-inline constexpr std::array<Quantity, 3> map_quantities = {
-    Quantity::energy_loss, Quantity::contact_time, Quantity::force_max};
+inline constexpr std::array<Quantity, 3> map_quantities = {Quantity::energy_loss,
+                                                           Quantity::contact_time,
+                                                           Quantity::force_max};
 
 /// The value of `quantity` for an impact (1 - e^2 and 1 - e derived from e).
 double value(const ImpactFigures& impact, Quantity quantity);

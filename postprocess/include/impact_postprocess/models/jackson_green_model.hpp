@@ -54,10 +54,10 @@ ContactModel jackson_green_model(double radius, double poisson_ratio);
 /// Jackson–Green from the scenario's material, nothing fitted: c = (4/3) E* sqrt(R), Y of
 /// the body that yields first. None without a yield strength (sphere_flat_scenario).
 struct MaterialJacksonGreen {
-  double stiffness;       ///< c [N/m^1.5]
-  double yield_strength;  ///< Y [Pa]
-  ContactModel model;     ///< jackson_green_model(R, nu)
-  std::string basis;      ///< where the numbers come from, and how hardening enters
+  double stiffness;      ///< c [N/m^1.5]
+  double yield_strength; ///< Y [Pa]
+  ContactModel model;    ///< jackson_green_model(R, nu)
+  std::string basis;     ///< where the numbers come from, and how hardening enters
 };
 std::optional<MaterialJacksonGreen> material_jackson_green(const std::vector<FemRun>& runs);
 

@@ -18,8 +18,7 @@ inline constexpr std::string_view hunt_crossley_energy = "hunt-crossley-energy";
 /// Hunt–Crossley with n = 3/2 fixed.
 inline constexpr std::string_view hunt_crossley_hertz_exponent = "hunt-crossley-hertz-exponent";
 /// Hunt–Crossley with b(V) = b_1 V^-q.
-inline constexpr std::string_view hunt_crossley_velocity_damping =
-    "hunt-crossley-velocity-damping";
+inline constexpr std::string_view hunt_crossley_velocity_damping = "hunt-crossley-velocity-damping";
 
 // ---- Reference models of the calibration (nothing fitted) ---------------------------------
 /// Hertz's elastic contact (b = 0).
@@ -34,14 +33,16 @@ inline constexpr std::string_view thornton_material = "thornton-material";
 inline constexpr std::string_view jackson_green_material = "jackson-green-material";
 /// Hunt–Crossley damping on Thornton's spring, x_y from p_y = 1.6 Y and b(V) from the
 /// materials' dissipative constant A (damped_plastic_models.hpp).
-inline constexpr std::string_view hunt_crossley_thornton_material = "hunt-crossley-thornton-material";
+inline constexpr std::string_view hunt_crossley_thornton_material =
+    "hunt-crossley-thornton-material";
 /// The same on Jackson–Green's spring (E*, Y, nu from the material).
 inline constexpr std::string_view hunt_crossley_jackson_green_material =
     "hunt-crossley-jackson-green-material";
 /// Jackson, Green & Marghitu's (2010) restitution fit from the material: e only, no force
 /// history (impact_reduced/jackson_green_marghitu.hpp); drawn in the report's elastic-plastic
 /// section, not ranked (the ranking judges t_c, F_max and x_max as well).
-inline constexpr std::string_view jackson_green_marghitu_material = "jackson-green-marghitu-material";
+inline constexpr std::string_view jackson_green_marghitu_material =
+    "jackson-green-marghitu-material";
 
 // ---- Elastic-plastic comparison models, fitted (plastic_models.hpp) -----------------------
 /// Thornton (1997), c and the yield approach x_y free.

@@ -82,9 +82,9 @@ double thornton_yield_velocity(double yield_approach, double mass, double stiffn
 /// radius"), c = (4/3) E* sqrt(R), x_y = R (pi p_y / (2 E*))^2. None when the runs record no
 /// yield strength, no radius, or a body with a strength but without elastic constants.
 struct MaterialThornton {
-  double stiffness;       ///< c [N/m^1.5]
-  double yield_approach;  ///< x_y [m]
-  std::string basis;      ///< where the numbers come from, in words
+  double stiffness;      ///< c [N/m^1.5]
+  double yield_approach; ///< x_y [m]
+  std::string basis;     ///< where the numbers come from, in words
 };
 std::optional<MaterialThornton> material_thornton(const std::vector<FemRun>& runs);
 

@@ -14,10 +14,10 @@
 namespace impact::postprocess {
 
 struct PowerLawTrend {
-  double exponent;        ///< p
+  double exponent; ///< p
   double standard_error;
-  double lower, upper;    ///< interval at the requested level
-  double prefactor;       ///< a of 1 - e = a (V / 1 m/s)^p
+  double lower, upper; ///< interval at the requested level
+  double prefactor;    ///< a of 1 - e = a (V / 1 m/s)^p
   std::size_t points;
   double level;
 };

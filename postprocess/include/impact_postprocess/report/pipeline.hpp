@@ -20,9 +20,9 @@ namespace impact::postprocess {
 /// Draws the figures of `report` into `figures` (a directory); `output` is the report's
 /// directory, for the files the drawing needs (report_data.json, figures.log). Returns the
 /// problems (kind figures), none when every figure of report_figures was drawn.
-using FigureDrawer = std::function<std::vector<Problem>(
-    const Report& report, const std::filesystem::path& output,
-    const std::filesystem::path& figures)>;
+using FigureDrawer =
+    std::function<std::vector<Problem>(const Report& report, const std::filesystem::path& output,
+                                       const std::filesystem::path& figures)>;
 
 /// The drawer of the installed tool: postprocess/report_figures.py run by the Python 3 with
 /// matplotlib (the environment variable IMPACT_REPORT_PYTHON, else the one found when the
@@ -33,16 +33,16 @@ std::vector<Problem> draw_figures_with_python(const Report& report,
                                               const std::filesystem::path& figures);
 
 struct ReportRequest {
-  std::vector<std::filesystem::path> runs;          ///< run files, or
-  std::optional<std::filesystem::path> campaign;    ///< a campaign directory
-  std::filesystem::path output;                     ///< the report's directory
+  std::vector<std::filesystem::path> runs;       ///< run files, or
+  std::optional<std::filesystem::path> campaign; ///< a campaign directory
+  std::filesystem::path output;                  ///< the report's directory
   /// impact-calibrate's JSON for these runs; none: the runs are calibrated here (every law)
   /// and output/calibration.json is written.
   std::optional<std::filesystem::path> calibration;
   std::vector<double> tolerances = default_tolerances;
   /// b [s/m] of the published Hunt–Crossley model when the runs are calibrated here.
   double published_damping = CalibrationOptions{}.published_damping;
-  std::optional<std::filesystem::path> simulators;  ///< the simulators' result files
+  std::optional<std::filesystem::path> simulators; ///< the simulators' result files
   /// Progress lines (none: quiet).
   std::function<void(const std::string&)> progress;
   FigureDrawer draw_figures = draw_figures_with_python;

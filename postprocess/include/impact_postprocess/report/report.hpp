@@ -44,9 +44,9 @@ struct ImpactHistory {
 struct ModelAtRun {
   std::optional<ImpactFigures> in_sample;     ///< fitted to all runs (or not fitted at all)
   std::optional<ImpactFigures> out_of_sample; ///< fitted without this velocity
-  ImpactHistory history;   ///< of the in-sample model
+  ImpactHistory history;                      ///< of the in-sample model
   std::vector<double> residual; ///< (F_model - F_FEM) / F_max at the FEM history's times
-  std::string missing;     ///< why there are no values (empty when there are)
+  std::string missing;          ///< why there are no values (empty when there are)
   /// The errors the verdict uses: out of sample when there are, else in sample.
   const std::optional<ImpactFigures>& judged() const {
     return out_of_sample ? out_of_sample : in_sample;
@@ -62,14 +62,14 @@ struct PredictionBand {
 };
 
 struct ReportModel {
-  std::string key;        ///< "calibrated", the calibration's key, "best-law", ...
-  std::string label;      ///< short name for legends and tables
-  std::string parameters; ///< the parameter values, as text with units
-  std::string basis;      ///< where the parameters come from
+  std::string key;             ///< "calibrated", the calibration's key, "best-law", ...
+  std::string label;           ///< short name for legends and tables
+  std::string parameters;      ///< the parameter values, as text with units
+  std::string basis;           ///< where the parameters come from
   std::string calibration_key; ///< the model's key in the calibration ("" if none)
   std::size_t free_parameters = 0;
-  bool converged = true;  ///< false when its fit did not converge (numbers marked so)
-  bool out_of_sample = false; ///< its judged errors are out of sample
+  bool converged = true;        ///< false when its fit did not converge (numbers marked so)
+  bool out_of_sample = false;   ///< its judged errors are out of sample
   std::vector<ModelAtRun> runs; ///< parallel to Report::runs
   std::optional<PredictionBand> band;
   /// The model's curve over the tested range (no band): velocity and each quantity.
@@ -86,7 +86,7 @@ struct ReportRun {
   std::string source;
   double velocity;                 ///< m/s
   double mass;                     ///< kg
-  ImpactFigures fem;            ///< measured (the calibration's numbers when it has the run)
+  ImpactFigures fem;               ///< measured (the calibration's numbers when it has the run)
   ImpactHistory fem_history;       ///< window around the contact, at most ~1500 samples
   bool calibrated = false;         ///< the calibration holds this run
   double damping_from_restitution; ///< b [s/m] of the run (NaN when not calibrated)
@@ -94,7 +94,7 @@ struct ReportRun {
   ReportEstimate history_stiffness;
   ReportEstimate history_exponent;
   FemRunRecord record;
-  FemUncertainty uncertainty;      ///< of each FEM quantity (relative)
+  FemUncertainty uncertainty; ///< of each FEM quantity (relative)
   /// The FEM exceeds the yield strength of a body without plasticity at this run: the flag
   /// "(yields)" (never set when the material is elastic-plastic, FemRunRecord::plastic_material:
   /// that FEM yields and stays valid).
@@ -107,13 +107,13 @@ enum class Decision { within, outside, undecided, unknown };
 /// Where a model holds within one tolerance.
 struct ToleranceVerdict {
   double tolerance;
-  std::vector<Decision> decisions;  ///< per run
+  std::vector<Decision> decisions;            ///< per run
   std::optional<std::array<double, 2>> range; ///< widest contiguous velocity range within
-  std::string text;                 ///< the verdict in words
+  std::string text;                           ///< the verdict in words
 };
 
 struct ModelVerdict {
-  std::string model_key;             ///< ReportModel::key
+  std::string model_key; ///< ReportModel::key
   bool out_of_sample = false;
   std::vector<ToleranceVerdict> tolerances;
 };
@@ -122,10 +122,11 @@ struct ModelVerdict {
 /// With an elastic-plastic material the FEM is valid above yield: then plastic_material is set
 /// and first_yielding_velocity stays empty (no velocity is flagged).
 struct PlasticityCheck {
-  bool recorded = false;            ///< some run records a yield strength and its stress
-  bool plastic_material = false;    ///< the FEM's material is elastic-plastic
+  bool recorded = false;         ///< some run records a yield strength and its stress
+  bool plastic_material = false; ///< the FEM's material is elastic-plastic
   std::optional<double> first_yielding_velocity; ///< m/s, the lowest tested velocity that yields
-  std::optional<double> onset_estimate; ///< m/s, log-log interpolation of the stress to the yield strength
+  std::optional<double>
+      onset_estimate; ///< m/s, log-log interpolation of the stress to the yield strength
   std::string text;
 };
 
@@ -133,17 +134,17 @@ struct PlasticityCheck {
 /// restitution and permanent approach over the tested range and at the runs, and its
 /// force-approach loop at each run (reduced::elastic_plastic_impact, _loop).
 struct PlasticLawCurve {
-  std::string key;         ///< the calibration's key ("thornton-material", "jackson-green", ...)
+  std::string key; ///< the calibration's key ("thornton-material", "jackson-green", ...)
   std::string label;
-  bool fitted = false;     ///< a campaign fit (else nothing fitted)
-  std::string parameters;  ///< the values used, as text with units
-  std::size_t free_parameters = 0; ///< of the campaign fit
-  std::vector<double> velocity;           ///< m/s, the curve's grid
-  std::vector<double> restitution;        ///< e on the grid
-  std::vector<double> permanent_approach; ///< x_p [m] on the grid (empty: a restitution fit)
-  std::vector<double> run_restitution;    ///< e at each report run (NaN where it failed)
+  bool fitted = false;                        ///< a campaign fit (else nothing fitted)
+  std::string parameters;                     ///< the values used, as text with units
+  std::size_t free_parameters = 0;            ///< of the campaign fit
+  std::vector<double> velocity;               ///< m/s, the curve's grid
+  std::vector<double> restitution;            ///< e on the grid
+  std::vector<double> permanent_approach;     ///< x_p [m] on the grid (empty: a restitution fit)
+  std::vector<double> run_restitution;        ///< e at each report run (NaN where it failed)
   std::vector<double> run_permanent_approach; ///< x_p [m] at each report run (likewise)
-  std::vector<ImpactHistory> loops;       ///< per report run (empty where it failed)
+  std::vector<ImpactHistory> loops;           ///< per report run (empty where it failed)
   /// A damped elastic-plastic law (viscous and plastic loss): not a reference of the
   /// plastic family's slope.
   bool damped = false;
@@ -151,22 +152,22 @@ struct PlasticLawCurve {
 
 /// The elastic-plastic laws of an elastic-plastic campaign (none otherwise).
 struct PlasticLaws {
-  double yield_velocity;              ///< V_y [m/s], Johnson's p_y = 1.6 Y (Thornton's)
+  double yield_velocity;               ///< V_y [m/s], Johnson's p_y = 1.6 Y (Thornton's)
   double jackson_green_yield_velocity; ///< V_y [m/s] with p_y = C(nu) Y
-  std::string yield_basis;            ///< the constants, in words
+  std::string yield_basis;             ///< the constants, in words
   /// No-fit Thornton and Jackson–Green, Jackson–Green–Marghitu's restitution fit (e only,
   /// no loops), then the campaign fits; then the damped elastic-plastic laws
   /// (damped_plastic_models.hpp) from the material and fitted.
   std::vector<PlasticLawCurve> laws;
   std::vector<double> fem_permanent_approach; ///< m, per report run (NaN: not recorded)
-  std::string text;                   ///< the comparison in words
+  std::string text;                           ///< the comparison in words
 };
 
 /// What a simulator measured at one velocity with a file of impact-export (a result file of
 /// tests/consumers/run_in_simulators.sh, format "impact-simulator-run", postprocess/README.md).
 /// The tools measure e, t_c and F_max: t(F_max) and x_max are NaN.
 struct SimulatorRunAt {
-  double velocity;                ///< m/s
+  double velocity;             ///< m/s
   ImpactFigures tool;          ///< measured by the tool from its own state
   ImpactFigures reduced_model; ///< the exported model's prediction (export.json)
   ImpactFigures fem;           ///< the FEM as the file holds it (the calibration's numbers)
@@ -174,8 +175,8 @@ struct SimulatorRunAt {
 
 /// One result file: one tool (and deck) run at the campaign's velocities.
 struct SimulatorResult {
-  std::string source;          ///< the result file
-  std::string tool;            ///< "simbody", "mujoco", "lammps" (or another tool's name)
+  std::string source; ///< the result file
+  std::string tool;   ///< "simbody", "mujoco", "lammps" (or another tool's name)
   std::string tool_version;
   std::string model;           ///< the exported model: "hunt-crossley", "linear-spring-damper", ...
   std::string export_manifest; ///< the export.json the file was run from
@@ -190,21 +191,22 @@ struct SimulatorResult {
 
 /// One cell of a validity map: one run (a value of the other axis, a velocity) and one model.
 struct MapCell {
-  double velocity;                              ///< m/s
-  std::string source;                           ///< the FEM run
-  std::optional<ImpactFigures> fem;          ///< measured
-  std::optional<ImpactFigures> judged;       ///< the model's prediction judged (out of sample where the row allows)
-  FemUncertainty uncertainty;                   ///< the FEM's, of each quantity (relative)
-  std::vector<Decision> decisions;              ///< per tolerance of the report (increasing)
+  double velocity;                  ///< m/s
+  std::string source;               ///< the FEM run
+  std::optional<ImpactFigures> fem; ///< measured
+  std::optional<ImpactFigures>
+      judged; ///< the model's prediction judged (out of sample where the row allows)
+  FemUncertainty uncertainty;      ///< the FEM's, of each quantity (relative)
+  std::vector<Decision> decisions; ///< per tolerance of the report (increasing)
   bool yields = false;
-  std::string missing;                          ///< why the model has no value here ("" if it has)
+  std::string missing; ///< why the model has no value here ("" if it has)
 };
 
 /// A model on one row (the runs at one value of the other axis).
 struct MapModelRow {
-  std::string parameters;  ///< the values used on this row, as text with units
+  std::string parameters; ///< the values used on this row, as text with units
   bool out_of_sample = false;
-  std::string missing;     ///< why the model cannot be evaluated on this row ("" if it can)
+  std::string missing;        ///< why the model cannot be evaluated on this row ("" if it can)
   std::vector<MapCell> cells; ///< one per run of the row, ordered by velocity
 };
 
@@ -216,7 +218,7 @@ struct MapRow {
 
 /// A model of the map.
 struct MapModel {
-  std::string key;    ///< "calibrated", "best-law", "thin-plate"
+  std::string key; ///< "calibrated", "best-law", "thin-plate"
   std::string label;
   std::string basis;  ///< how it is obtained on each row
   std::string region; ///< where it is valid, in a sentence
@@ -226,13 +228,13 @@ struct MapModel {
 /// calibrated and judged as a velocity campaign, by the verdict's rule (postprocess/README.md).
 struct ValidityMap {
   bool available = false;
-  std::string reason;          ///< why there is no map, when not available
-  std::string parameter;       ///< the other axis ("Scenario/Plate thickness")
-  std::string unit;            ///< its unit, when known ("m")
-  bool logarithmic = false;    ///< the other axis drawn on a log scale
+  std::string reason;             ///< why there is no map, when not available
+  std::string parameter;          ///< the other axis ("Scenario/Plate thickness")
+  std::string unit;               ///< its unit, when known ("m")
+  bool logarithmic = false;       ///< the other axis drawn on a log scale
   std::vector<double> velocities; ///< every velocity of the campaign, increasing
   std::vector<MapModel> models;
-  std::vector<MapRow> rows;    ///< in the order of the axis's values
+  std::vector<MapRow> rows;      ///< in the order of the axis's values
   std::size_t reference_row = 0; ///< the row whose Hunt–Crossley b the thin-plate model takes
 };
 
@@ -249,20 +251,20 @@ double map_uncertainty(const MapCell& cell);
 struct Report {
   std::string campaign_source;
   std::string calibration_source;
-  std::vector<Problem> problems;  ///< includes the warnings (ProblemKind::quality)
-  std::vector<ReportRun> runs;          ///< ordered by velocity
-  std::vector<ReportModel> models;      ///< calibrated first; see report.cpp for the list
+  std::vector<Problem> problems;          ///< includes the warnings (ProblemKind::quality)
+  std::vector<ReportRun> runs;            ///< ordered by velocity
+  std::vector<ReportModel> models;        ///< calibrated first; see report.cpp for the list
   std::optional<Calibration> calibration; ///< as read
-  std::vector<double> tolerances;       ///< of the verdict, increasing
+  std::vector<double> tolerances;         ///< of the verdict, increasing
   bool campaign_fitted = false;
-  std::string campaign_reason;          ///< why not, when not fitted
-  double hertz_stiffness;               ///< N/m^1.5
-  std::string hertz_basis;              ///< how it was obtained
+  std::string campaign_reason;              ///< why not, when not fitted
+  double hertz_stiffness;                   ///< N/m^1.5
+  std::string hertz_basis;                  ///< how it was obtained
   std::vector<std::string> parameter_notes; ///< offsets of c, n from Hertz, trend of b, ...
-  std::vector<ModelVerdict> verdicts;   ///< one per model, parallel to models
-  std::string cause;                    ///< why and where the calibrated model fails
+  std::vector<ModelVerdict> verdicts;       ///< one per model, parallel to models
+  std::string cause;                        ///< why and where the calibrated model fails
   bool verdict_available = false;
-  std::optional<PowerLawTrend> trend;   ///< 1 - e ~ V^p of the FEM
+  std::optional<PowerLawTrend> trend; ///< 1 - e ~ V^p of the FEM
   std::string trend_text;
   PlasticityCheck plasticity;
   /// Which family the FEM follows in which velocity range (family_ranges.hpp).
@@ -272,8 +274,8 @@ struct Report {
   std::optional<PlasticLaws> plastic_laws;
   /// The FEM's effective alpha (1 - e)/V per run against the measured 0.08–0.32 s/m.
   std::string alpha_text;
-  std::string uncertainty_text;         ///< what the FEM's uncertainty does to the verdict
-  std::string summary;                  ///< the verdict in a few sentences
+  std::string uncertainty_text; ///< what the FEM's uncertainty does to the verdict
+  std::string summary;          ///< the verdict in a few sentences
   /// The directory of the simulators' result files (--simulators), none when not given.
   std::optional<std::string> simulators_source;
   std::vector<SimulatorResult> simulators; ///< the usable result files, Simbody, MuJoCo, LAMMPS
@@ -291,14 +293,15 @@ struct Report {
 /// One row of a validity map: a value of the other axis and the campaign's runs there.
 struct MapRowRuns {
   SweepValue value;
-  std::string name;           ///< "Plate thickness = 0.05"
+  std::string name; ///< "Plate thickness = 0.05"
   std::vector<FemRun> runs;
 };
 
 /// The calibration of one row of a validity map.
 struct MapRowCalibration {
-  std::optional<Calibration> calibration; ///< none when the row has no run or could not be calibrated
-  std::string error;                      ///< why it could not be calibrated ("" otherwise)
+  std::optional<Calibration>
+      calibration;   ///< none when the row has no run or could not be calibrated
+  std::string error; ///< why it could not be calibrated ("" otherwise)
 };
 
 struct ReportOptions {
@@ -342,8 +345,19 @@ Report build_report(const Campaign& campaign, const std::optional<Calibration>& 
 /// The figures of the page. The section that shows a figure asks for it by its identity
 /// (and, for a validity map, the map model's key); a figure whose data do not exist (the
 /// damping figure without a calibration, the maps without a map) is not declared.
-enum class FigureId { loops, histories, residuals, quantities, energy_loss, damping, errors,
-                      validity_map, plastic_restitution, permanent_approach, plastic_loops };
+enum class FigureId {
+  loops,
+  histories,
+  residuals,
+  quantities,
+  energy_loss,
+  damping,
+  errors,
+  validity_map,
+  plastic_restitution,
+  permanent_approach,
+  plastic_loops
+};
 
 /// A figure, declared once: identity, file name (in the figures directory), caption and the
 /// data to draw it (title, columns, panels: the input of report_figures.py).

@@ -35,8 +35,8 @@ public:
 /// The value of a swept parameter at one run (index.json of a sweep campaign, format in
 /// postprocess/README.md, "Campaign index"): a number when its text parses completely as one, else text.
 struct SweepValue {
-  std::string text;               ///< as written ("0.005", "free")
-  std::optional<double> number;   ///< the number, when it is one
+  std::string text;             ///< as written ("0.005", "free")
+  std::optional<double> number; ///< the number, when it is one
   /// Same value: numbers equal to 1e-9 (relative), else the same text.
   bool matches(const SweepValue& other) const;
 };
@@ -57,20 +57,20 @@ inline constexpr const char* velocity_axis = fem_format::impact_velocity.path;
 /// which the models are compared with it (ImpactFigures, from first contact) are
 /// measured_quantities(run).
 struct FemRun {
-  std::string source;         ///< the HDF5 file read (or written)
-  double impact_velocity;     ///< V [m/s]: the sphere's speed at first contact (x'(0) of the
-                              ///< reduced model; "contact_velocity" of impact-fem)
-  double mass;                ///< sphere mass m [kg]
-  double restitution;         ///< e = rebound speed / V [-]
-  double first_contact_time;  ///< t0 [s]; the reduced model's t = 0
-  double contact_time;        ///< t_c [s]
-  double force_max;           ///< peak contact force [N]
-  double time_force_max;      ///< its time [s] (from the start of the run)
-  double approach_max;        ///< peak approach [m]
-  std::vector<double> time;           ///< s, strictly increasing
-  std::vector<double> contact_force;  ///< N
-  std::vector<double> approach;       ///< m
-  std::vector<double> sphere_velocity;///< m/s, downward positive (optional: may be empty)
+  std::string source;                ///< the HDF5 file read (or written)
+  double impact_velocity;            ///< V [m/s]: the sphere's speed at first contact (x'(0) of the
+                                     ///< reduced model; "contact_velocity" of impact-fem)
+  double mass;                       ///< sphere mass m [kg]
+  double restitution;                ///< e = rebound speed / V [-]
+  double first_contact_time;         ///< t0 [s]; the reduced model's t = 0
+  double contact_time;               ///< t_c [s]
+  double force_max;                  ///< peak contact force [N]
+  double time_force_max;             ///< its time [s] (from the start of the run)
+  double approach_max;               ///< peak approach [m]
+  std::vector<double> time;          ///< s, strictly increasing
+  std::vector<double> contact_force; ///< N
+  std::vector<double> approach;      ///< m
+  std::vector<double> sphere_velocity; ///< m/s, downward positive (optional: may be empty)
   /// Root attributes of the file: the scenario parameters (text) and results (numbers).
   std::map<std::string, std::string> text_attributes;
   std::map<std::string, double> numeric_attributes;
@@ -98,7 +98,7 @@ struct InputProblem : Problem {
 
 /// The runs of a campaign that could be read, and the problems with the others.
 struct Campaign {
-  std::vector<FemRun> runs;          ///< ordered by impact velocity
+  std::vector<FemRun> runs; ///< ordered by impact velocity
   std::vector<InputProblem> problems;
   /// The axes of a sweep campaign (index.json "axes"); empty for an older index, a CSV
   /// index, a directory without index or runs given one by one.

@@ -20,13 +20,13 @@
 namespace impact::postprocess {
 
 struct FemRunRecord {
-  std::optional<double> energy_error;        ///< max |balance error| / initial energy
+  std::optional<double> energy_error; ///< max |balance error| / initial energy
   std::optional<double> lost_energy_fraction;
   std::optional<double> dissipated_energy_fraction;
   std::optional<double> radiated_energy_fraction;
-  std::optional<double> max_von_mises;       ///< Pa, largest over both bodies
-  std::optional<double> yield_strength;      ///< Pa, smallest recorded
-  std::string yield_source;                  ///< the key it was read from
+  std::optional<double> max_von_mises;  ///< Pa, largest over both bodies
+  std::optional<double> yield_strength; ///< Pa, smallest recorded
+  std::string yield_source;             ///< the key it was read from
   /// The run exceeded a yield strength: the FEM's own flag (yield_exceeded) or its largest
   /// von Mises stress above the yield strength; none without a yield strength.
   std::optional<bool> yields;
@@ -38,11 +38,11 @@ struct FemRunRecord {
   /// end of contact (first contact + t_c); none for a run without plastic material.
   std::optional<double> permanent_approach;
   ForceSmoothness smoothness;
-  std::string smoothness_source;             ///< "summary.json" or "measured on history.h5"
-  double time_step;                          ///< s, median step of the history
-  double release_span;                       ///< s, length of the release chatter
+  std::string smoothness_source; ///< "summary.json" or "measured on history.h5"
+  double time_step;              ///< s, median step of the history
+  double release_span;           ///< s, length of the release chatter
   std::optional<Verification> verification;
-  std::string verification_problem;          ///< why a verification.json could not be used
+  std::string verification_problem; ///< why a verification.json could not be used
 };
 
 /// The record of `run` (never throws for what it cannot find: fields stay empty).
@@ -50,8 +50,8 @@ FemRunRecord read_fem_run_record(const FemRun& run);
 
 /// The numerical uncertainty of one FEM quantity, relative to its value.
 struct QuantityUncertainty {
-  double relative;     ///< fraction; NaN when not known
-  std::string source;  ///< how it was obtained, in words
+  double relative;    ///< fraction; NaN when not known
+  std::string source; ///< how it was obtained, in words
 };
 using FemUncertainty = std::array<QuantityUncertainty, quantity_count>;
 

@@ -15,8 +15,8 @@
 namespace impact::postprocess {
 
 struct ForceSmoothness {
-  double oscillation;    ///< fraction of the peak force; NaN below 14 steps in contact
-  double after_release;  ///< fraction of the peak force; NaN without contact
+  double oscillation;   ///< fraction of the peak force; NaN below 14 steps in contact
+  double after_release; ///< fraction of the peak force; NaN without contact
 };
 
 /// The two measures of a force history sampled at equal steps (one value per step).

@@ -24,10 +24,11 @@ namespace impact::postprocess {
 inline constexpr double published_hertz_stiffness = 1.7135e10;
 
 struct ScenarioMaterials {
-  double hertz_stiffness;        ///< c_Hertz [N/m^1.5]
-  std::string hertz_basis;       ///< where it comes from, in words
-  bool hertz_from_runs = false;  ///< false: the published fallback
-  std::optional<double> dissipative_constant; ///< A [s] > 0, when both bodies are Kelvin–Voigt, elastic-plastic with a retardation time, or elastic
+  double hertz_stiffness;       ///< c_Hertz [N/m^1.5]
+  std::string hertz_basis;      ///< where it comes from, in words
+  bool hertz_from_runs = false; ///< false: the published fallback
+  std::optional<double>
+      dissipative_constant; ///< A [s] > 0, when both bodies are Kelvin–Voigt, elastic-plastic with a retardation time, or elastic
   std::string dissipative_basis; ///< the formula's inputs, or why there is no A
 };
 

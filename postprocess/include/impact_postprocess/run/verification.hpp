@@ -23,16 +23,16 @@ namespace impact::postprocess {
 
 struct VerifiedQuantity {
   std::string unit;
-  double fine, medium, coarse;   ///< the three values (the run's own is the fine one)
-  double observed_order;         ///< NaN when not defined (oscillatory, converged)
-  double extrapolated;           ///< Richardson value, NaN when not defined
-  double gci_fine;               ///< relative GCI of the fine value (fraction), NaN if none
-  double gci_fine_absolute;      ///< absolute GCI (unit of the quantity), NaN if none
-  std::string convergence;       ///< "monotone", "oscillatory", "divergent", "converged"
+  double fine, medium, coarse; ///< the three values (the run's own is the fine one)
+  double observed_order;       ///< NaN when not defined (oscillatory, converged)
+  double extrapolated;         ///< Richardson value, NaN when not defined
+  double gci_fine;             ///< relative GCI of the fine value (fraction), NaN if none
+  double gci_fine_absolute;    ///< absolute GCI (unit of the quantity), NaN if none
+  std::string convergence;     ///< "monotone", "oscillatory", "divergent", "converged"
 };
 
 struct Verification {
-  std::string source;            ///< the file read
+  std::string source; ///< the file read
   double refinement_ratio;
   std::map<std::string, VerifiedQuantity> quantities; ///< by summary key
 };
