@@ -30,6 +30,15 @@ tool::Usage usage() {
                                 "MuJoCo's reference velocity [m/s], one of the campaign's")
                         .with_default_note("the median run, the lower middle one for an even "
                                            "number of runs"));
+  options.push_back(text_option("law", "KEY",
+                                "the damped elastic-plastic law of the restitution table "
+                                "(a key of the calibration's ranking, e.g. "
+                                "hunt-crossley-jackson-green-from-a)")
+                        .with_default_note("the first-ranked one; no table without one"));
+  options.push_back(integer_option("table-points", "N", 2, 1000,
+                                   "log-spaced velocities of the restitution table over the "
+                                   "campaign's range, besides the FEM's own")
+                        .with_default_note("25"));
   return {R"(usage: impact-export --campaign DIR --calibration FILE --output DIR [options]
        impact-export RUN... --calibration FILE --output DIR [options]
 
@@ -41,6 +50,9 @@ saying which model it carries and that model's errors against the FEM:
   lammps/tsuji.in
   liggghts/thornton_ning.in    LIGGGHTS 3.8.0 normal model thornton_ning on a wall
                                (elastic-plastic campaigns only: Thornton's law)
+  restitution/LAW.csv, .json   e(V), t_c(V), F_max(V) of a damped elastic-plastic law
+                               with the FEM's uncertainty and the law's error per row
+                               (when the calibration has such a law)
   export.json                  the manifest: parameters, mappings, model predictions
 
   RUN                   the FEM runs of the calibration, instead of --campaign (for the
@@ -67,6 +79,8 @@ Arguments parse(tool::CommandLine& line) {
   request.output = common.output;
   const auto calibration = line.text("calibration");
   if (line.has("reference-velocity")) request.reference_velocity = line.real("reference-velocity");
+  if (const auto law = line.text("law")) request.table_law = *law;
+  if (line.has("table-points")) request.table_points = std::size_t(line.integer("table-points"));
   if (!calibration) throw tool::UsageError("--calibration FILE is required");
   request.calibration = *calibration;
   tool::require_output_directory(request.output);

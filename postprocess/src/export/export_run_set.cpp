@@ -3,7 +3,9 @@
 #include "impact_postprocess/export/export_run_set.hpp"
 #include "impact_postprocess/same_value.hpp"
 
+#include "impact_postprocess/calibration/calibration_json.hpp"
 #include "impact_postprocess/export/liggghts.hpp"
+#include "impact_postprocess/export/restitution_table.hpp"
 #include "impact_postprocess/export/simulator_export.hpp"
 #include "impact_postprocess/run/fem_run_format.hpp"
 #include "impact_postprocess/run/run_set.hpp"
@@ -23,6 +25,24 @@ nlohmann::json read_calibration_file(const std::filesystem::path& file) {
     return nlohmann::json::parse(in);
   } catch (const nlohmann::json::exception& error) {
     throw ExportInputError(file.string() + ": not valid JSON (" + error.what() + ")");
+  }
+}
+
+// The restitution table of the law asked for, else of the first-ranked damped elastic-plastic
+// law; none when the calibration has no such law and none was asked for.
+std::optional<RestitutionTable> table_of(const nlohmann::json& json, const ExportRequest& request,
+                                         const std::vector<FemRun>& runs) {
+  Calibration calibration;
+  try {
+    calibration = calibration_from_json(json);
+  } catch (const CalibrationFormatError& error) {
+    throw ExportInputError(request.calibration.string() + ": " + error.what());
+  }
+  if (!request.table_law && restitution_table_laws(calibration).empty()) return std::nullopt;
+  try {
+    return restitution_table(calibration, runs, request.table_law, request.table_points);
+  } catch (const RestitutionTableError& error) {
+    throw ExportInputError(request.calibration.string() + ": " + error.what());
   }
 }
 
@@ -79,6 +99,7 @@ ExportOutcome export_run_set(const ExportRequest& request) {
       throw ExportInputError(request.calibration.string() + ": the calibration has " +
                              std::to_string(campaign.runs.size()) + " runs, the input " +
                              std::to_string(input.runs.size()) + ": not the same campaign");
+    campaign.restitution_table = table_of(calibration, request, input.runs);
     outcome.manifest = write_exports(campaign, request.reference_velocity, request.output);
   } catch (const ExportInputError& error) {
     outcome.problems.push_back(

@@ -30,6 +30,11 @@ std::vector<ExportedFile> mujoco(const ExportCampaign& campaign, const CampaignI
 std::vector<ExportedFile> lammps(const ExportCampaign& campaign, const CampaignImpact& reference);
 /// None when the campaign has no plastic contact.
 std::vector<ExportedFile> liggghts(const ExportCampaign& campaign, const CampaignImpact& reference);
+/// The restitution table (CSV, JSON) of a damped elastic-plastic law, and the entries of the
+/// tools that run that law through their own extension mechanisms (Simbody's Force::Custom,
+/// LAMMPS's fix external: tests/consumers); none without a table.
+std::vector<ExportedFile> restitution(const ExportCampaign& campaign,
+                                      const CampaignImpact& reference);
 
 /// The files of one exporter and their manifest entries, collected in the order written.
 struct ExportList {

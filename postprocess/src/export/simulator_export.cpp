@@ -72,7 +72,9 @@ const std::vector<std::pair<std::string, Exporter>>& registered_exporters() {
   static const std::vector<std::pair<std::string, Exporter>> exporters = {{"simbody", simbody},
                                                                           {"mujoco", mujoco},
                                                                           {"lammps", lammps},
-                                                                          {"liggghts", liggghts}};
+                                                                          {"liggghts", liggghts},
+                                                                          {"restitution",
+                                                                           restitution}};
   return exporters;
 }
 

@@ -12,6 +12,7 @@
 
 #include <filesystem>
 #include <optional>
+#include <string>
 #include <vector>
 
 namespace impact::postprocess {
@@ -22,6 +23,10 @@ struct ExportRequest {
   std::filesystem::path calibration;             ///< impact-calibrate's JSON of these runs
   std::filesystem::path output;                  ///< the export directory
   std::optional<double> reference_velocity;      ///< m/s, MuJoCo's (none: the median run)
+  /// The damped elastic-plastic law of the restitution table (none: the first-ranked one;
+  /// no table when the calibration has none), and its number of log-spaced velocities.
+  std::optional<std::string> table_law;
+  std::size_t table_points = 25;
 };
 
 struct ExportOutcome {

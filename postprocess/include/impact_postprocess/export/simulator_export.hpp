@@ -8,6 +8,7 @@
 /// JSON of impact-calibrate is the source of every number; the LIGGGHTS export also takes the
 /// scenario's materials from the runs.
 
+#include "impact_postprocess/export/restitution_table.hpp"
 #include "impact_postprocess/models/impact_quantities.hpp"
 #include "impact_postprocess/run/scenario_plastic_contact.hpp"
 
@@ -58,6 +59,9 @@ struct ExportCampaign {
   /// (read_export_campaign), else the scenario's material (scenario_plastic_contact,
   /// liggghts.hpp); none: nothing is exported to LIGGGHTS.
   std::optional<PlasticContact> plastic;
+  /// The restitution table of a damped elastic-plastic law (restitution_table.hpp), made by
+  /// export_run_set when the calibration has such a law; none: no table is written.
+  std::optional<RestitutionTable> restitution_table;
 };
 
 /// Reads the calibration JSON of impact-calibrate (through calibration_from_json) for the export. The
@@ -134,7 +138,8 @@ ImpactFigures hertz_law_impact(const HertzLawFit& law, double mass, double veloc
 /// Writes the exports into `directory` (replaced as a whole, written atomically):
 /// export.json (the manifest, format in postprocess/README.md), simbody/impact_contact.hpp,
 /// mujoco/impact_contact.xml, lammps/kuwabara_kono.in and lammps/tsuji.in (those the
-/// calibration has), liggghts/thornton_ning.in (when the campaign has a plastic contact).
+/// calibration has), liggghts/thornton_ning.in (when the campaign has a plastic contact),
+/// restitution/<law>.csv and restitution/<law>.json (when it has a restitution table).
 /// `reference_velocity` (one of the campaign's, m/s) is MuJoCo's; none
 /// means the median run (the lower of the two middle ones for an even count). Returns the
 /// manifest. Throws ExportInputError for a reference velocity that is not a campaign
