@@ -6,10 +6,15 @@
 //   MuJoCo: e, t_c within 1 % of the FEM at its reference velocity (the median run);
 //   LIGGGHTS: e, t_c within 4e-4 and F_max within 5e-5 of Thornton's law as LIGGGHTS
 //     integrates it (reduced::LiggghtsThorntonImpact) at 5000 steps per Hertz contact time, the
-//     error halving with the step, and the Richardson extrapolation within 1e-5.
+//     error halving with the step, and the Richardson extrapolation within 1e-5;
+//   Simbody (Force::Custom), LAMMPS (fix external): the damped elastic-plastic law of the
+//     restitution table (Hunt–Crossley on Thornton's spring from the material, yielding at
+//     every velocity), e within 1e-3 and t_c, F_max within 1 % of the law; LAMMPS's step
+//     error halving with the step, its Richardson extrapolation within 1e-6.
 
 #include <impact_reduced/comparison_laws.hpp>
 #include <impact_reduced/hunt_crossley.hpp>
+#include <impact_reduced/hunt_crossley_elastic_plastic.hpp>
 #include <impact_reduced/impact_ode.hpp>
 #include <impact_reduced/liggghts_thornton.hpp>
 #include <impact_reduced/thornton.hpp>
@@ -277,6 +282,110 @@ TEST(Liggghts, ReproducesThorntonsLawAsLiggghtsImplementsIt) {
     EXPECT_GT(std::abs(liggghts_restitution[i] / on_r - 1), 100 * 1e-5) << velocity;
   }
   print_against_fem("LIGGGHTS, Thornton (thornton_ning)", calibration, result);
+}
+
+} // namespace
+
+namespace {
+
+// The law of the fixture's restitution table, computed here from the calibration JSON with
+// the reduced library (not from the export): the reference model
+// "hunt-crossley-thornton-material" (c, x_y, A), Thornton's spring (the law depends on R only
+// through c and x_y: R = 1 m, E* = 3 c / 4, p_y = 3 c sqrt(x_y) / (2 pi)) and
+// b(V) = (3/2) gamma_1 A (c/m)^(2/5) V^(-4/5).
+Figures table_law(const json& calibration, double mass, double velocity) {
+  const json* model = nullptr;
+  for (const auto& entry : calibration.at("campaign").at("reference_models"))
+    if (entry.at("key") == "hunt-crossley-thornton-material") model = &entry;
+  if (!model) throw std::runtime_error("the calibration has no hunt-crossley-thornton-material");
+  const json& parameters = model->at("parameters");
+  const double c = parameters.at("c"), x_y = parameters.at("x_y"), a = parameters.at("A");
+  const double pi = 3.14159265358979323846;
+  const auto spring =
+      std::make_shared<reduced::ThorntonContact>(1.0, 0.75 * c, 3 * c * std::sqrt(x_y) / (2 * pi));
+  const double b =
+      1.5 * reduced::brilliantov_gamma1() * a * std::pow(c / mass, 0.4) * std::pow(velocity, -0.8);
+  const auto response =
+      reduced::HuntCrossleyElasticPlasticImpact(mass, spring, b, velocity).response();
+  EXPECT_GT(response.separation_approach, 0) << "the law yields at V = " << velocity;
+  return {response.restitution, response.contact_time, response.force_max};
+}
+
+struct Errors {
+  double restitution, contact_time, force_max;
+};
+Errors errors(const Figures& tool, const Figures& law) {
+  return {tool.restitution / law.restitution - 1, tool.contact_time / law.contact_time - 1,
+          tool.force_max / law.force_max - 1};
+}
+
+// Every run of `result` within 1e-3 in e and 1 % in t_c, F_max of the table's law.
+void expect_reproduces_table_law(const json& calibration, const json& result) {
+  ASSERT_EQ(result.at("model"), "hunt-crossley-thornton-material");
+  ASSERT_GE(result.at("runs").size(), 3u);
+  std::printf("%s (%s) against the law (tool / law - 1):\n",
+              result.at("tool").get<std::string>().c_str(),
+              result.at("file").get<std::string>().c_str());
+  for (const auto& run : result.at("runs")) {
+    const double velocity = run.at("impact_velocity");
+    const double mass = calibration_run(calibration, velocity).at("mass");
+    const Errors error = errors(tool_figures(run), table_law(calibration, mass, velocity));
+    std::printf("  V = %-5.3g m/s: e %+.2e, t_c %+.2e, F_max %+.2e\n", velocity, error.restitution,
+                error.contact_time, error.force_max);
+    EXPECT_LT(std::abs(error.restitution), 1e-3) << "V = " << velocity;
+    EXPECT_LT(std::abs(error.contact_time), 0.01) << "V = " << velocity;
+    EXPECT_LT(std::abs(error.force_max), 0.01) << "V = " << velocity;
+  }
+}
+
+TEST(SimbodyCustom, RunsTheRestitutionTablesLawAsAForceCustom) {
+  const json calibration = read_json(work / "calibration.json");
+  const json result = run_tool("simbody-custom", "simbody-custom.json");
+  EXPECT_EQ(result.at("tool_version"), "3.7");
+  expect_reproduces_table_law(calibration, result);
+  print_against_fem("Simbody, Force::Custom", calibration, result);
+}
+
+// LAMMPS's velocity Verlet gives the force the half-step velocity: first order in the step.
+// Measured on this fixture (tests/consumers, N = 2000 and 4000 steps per contact time): errors
+// at N = 2000 up to 5e-6 in e, 1.5e-4 in t_c (mostly where the sampled force is taken to
+// vanish), 6e-5 in F_max, halving with the step; the Richardson extrapolation within 3e-7.
+TEST(LammpsExternal, RunsTheRestitutionTablesLawThroughFixExternal) {
+  const json calibration = read_json(work / "calibration.json");
+  const json result = run_tool("lammps-external", "lammps-external.json");
+  expect_reproduces_table_law(calibration, result);
+  ASSERT_EQ(result.at("time_steps_per_contact_time"), 2000);
+  ASSERT_EQ(result.at("refined").at("time_steps_per_contact_time"), 4000);
+  const json& runs = result.at("runs");
+  const json& refined = result.at("refined").at("runs");
+  ASSERT_EQ(refined.size(), runs.size());
+  std::printf(
+      "LAMMPS fix external: the step error (tool / law - 1; N steps per contact time)\n"
+      "  V [m/s]  quantity  N = 2000   N = 4000   Richardson\n");
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    const double velocity = runs[i].at("impact_velocity");
+    ASSERT_EQ(refined[i].at("impact_velocity").get<double>(), velocity);
+    const double mass = calibration_run(calibration, velocity).at("mass");
+    const Figures law = table_law(calibration, mass, velocity);
+    const Figures coarse = tool_figures(runs[i]), fine = tool_figures(refined[i]);
+    const struct {
+      const char* name;
+      double law, coarse, fine;
+    } checks[] = {{"e", law.restitution, coarse.restitution, fine.restitution},
+                  {"t_c", law.contact_time, coarse.contact_time, fine.contact_time},
+                  {"F_max", law.force_max, coarse.force_max, fine.force_max}};
+    for (const auto& check : checks) {
+      const double error_coarse = check.coarse / check.law - 1,
+                   error_fine = check.fine / check.law - 1;
+      const double richardson = (2 * check.fine - check.coarse) / check.law - 1;
+      std::printf("  %-7.3g  %-8s  %+.2e  %+.2e  %+.2e\n", velocity, check.name, error_coarse,
+                  error_fine, richardson);
+      EXPECT_GT(error_fine / error_coarse, 0.4) << check.name << " at V = " << velocity;
+      EXPECT_LT(error_fine / error_coarse, 0.6) << check.name << " at V = " << velocity;
+      EXPECT_LT(std::abs(richardson), 1e-6) << check.name << " at V = " << velocity;
+    }
+  }
+  print_against_fem("LAMMPS, fix external", calibration, result);
 }
 
 } // namespace
