@@ -18,6 +18,7 @@ packages=(
   chromium fonts-dejavu-core                # the report's rendering test (headless screenshot)
   libsimbody-dev libmujoco-dev lammps       # the exports run in Simbody, MuJoCo, LAMMPS (tests/consumers)
   liggghts                                  # ... and in LIGGGHTS 3.8 (thornton_ning, tests/consumers)
+  liblammps-dev                             # the restitution table's law in LAMMPS (fix external)
 )
 
 missing=()

@@ -70,6 +70,11 @@ missing=()
 command -v "${IMPACT_LAMMPS:-lmp}" >/dev/null 2>&1 || command -v lmp_serial >/dev/null 2>&1 ||
   command -v lmp_stable >/dev/null 2>&1 || missing+=("LAMMPS (Debian package lammps: lmp)")
 command -v liggghts >/dev/null 2>&1 || missing+=("LIGGGHTS (Debian package liggghts)")
+# The restitution table's law runs in both through their extension points (run_in_simulators.sh).
+[ -x "$bin/impact-drop-simbody-custom" ] ||
+  missing+=("Simbody's Force::Custom drop ($bin/impact-drop-simbody-custom is built only when libsimbody-dev is found)")
+[ -x "$bin/impact-drop-lammps-external" ] ||
+  missing+=("LAMMPS's library ($bin/impact-drop-lammps-external is built only when liblammps-dev is found: install it, then run cmake and build again)")
 if [ ${#missing[@]} -gt 0 ]; then
   echo "study: the section 'In your simulator' needs Simbody, MuJoCo, LAMMPS and LIGGGHTS; missing:" >&2
   printf '  %s\n' "${missing[@]}" >&2

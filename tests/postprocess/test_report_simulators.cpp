@@ -286,6 +286,46 @@ TEST_F(ReportSimulators, TablesHoldTheToolsNumbersAndTheirErrors) {
   EXPECT_TRUE(contains(markdown, "even there its F_max is off by -19 %"));
 }
 
+// The restitution table's law run through Simbody's Force::Custom and LAMMPS's fix external
+// stands beside the tool's own exports, named by its extension point and described.
+TEST_F(ReportSimulators, ExtensionPointRunsStandBesideTheirTools) {
+  const fs::path results = *directory / "in_simulator_extension";
+  const std::string table = "restitution/hunt-crossley-thornton-material.json";
+  write_json(results / "simbody.json",
+             result_json("simbody", "3.7", "hunt-crossley", "simbody/impact_contact.hpp", nullptr,
+                         simbody_runs()));
+  write_json(results / "mujoco.json", result_json("mujoco", "2.2.2", "linear-spring-damper",
+                                                  "mujoco/impact_contact.xml", 2.0, mujoco_runs()));
+  write_json(results / "lammps-external.json",
+             result_json("lammps-external", "20210929", "hunt-crossley-thornton-material", table,
+                         nullptr, simbody_runs()));
+  write_json(results / "simbody-custom.json",
+             result_json("simbody-custom", "3.7", "hunt-crossley-thornton-material", table, nullptr,
+                         simbody_runs()));
+  const fs::path output = *directory / "report_extension";
+  const CliRun run = report(output, {"--simulators", results.string()});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const std::string markdown = read_text(output / "report.md");
+  const auto tables = markdown_tables(markdown);
+  const MarkdownTable* summary = find_table(tables, {"tool", "version", "model", "file"});
+  ASSERT_NE(summary, nullptr);
+  ASSERT_EQ(summary->size(), 5u);
+  EXPECT_EQ((*summary)[1][0], "Simbody");
+  EXPECT_EQ((*summary)[2][0], "Simbody (Force::Custom)");
+  EXPECT_EQ((*summary)[2][2], "hunt-crossley-thornton-material");
+  EXPECT_EQ((*summary)[3][0], "MuJoCo");
+  EXPECT_EQ((*summary)[4][0], "LAMMPS (fix external)");
+  EXPECT_TRUE(contains(markdown, "### Simbody (Force::Custom) 3.7: " + table)) << markdown;
+  EXPECT_TRUE(contains(markdown,
+                       "as a SimTK::Force::Custom on the sphere, with x_max a "
+                       "continuous state"));
+  EXPECT_TRUE(contains(markdown, "through fix external (pf/callback) of LAMMPS's library"));
+  EXPECT_TRUE(contains(markdown,
+                       "the restitution table /exports/study/restitution/"
+                       "hunt-crossley-thornton-material.csv"))
+      << markdown;
+}
+
 TEST_F(ReportSimulators, BadResultFilesAreReportedAndLeftOut) {
   const fs::path results = *directory / "bad";
   const json good = result_json("simbody", "3.7", "hunt-crossley", "simbody/impact_contact.hpp",

@@ -138,9 +138,11 @@ std::string other_campaign(const Report& report, const SimulatorResult& result) 
   return "";
 }
 
-// Simbody, MuJoCo, LAMMPS, LIGGGHTS, then any other tool; by file within a tool.
+// Simbody, MuJoCo, LAMMPS, LIGGGHTS, each tool's run of the restitution table's law through
+// its extension point beside it, then any other tool; by file within a tool.
 int tool_rank(const std::string& tool) {
-  const std::vector<std::string> order = {"simbody", "mujoco", "lammps", "liggghts"};
+  const std::vector<std::string> order = {"simbody", "simbody-custom",  "mujoco",
+                                          "lammps",  "lammps-external", "liggghts"};
   const auto found = std::find(order.begin(), order.end(), tool);
   return int(found - order.begin());
 }
@@ -158,6 +160,8 @@ std::string simulator_tool_name(const std::string& tool) {
   if (tool == "mujoco") return "MuJoCo";
   if (tool == "lammps") return "LAMMPS";
   if (tool == "liggghts") return "LIGGGHTS";
+  if (tool == "simbody-custom") return "Simbody (Force::Custom)";
+  if (tool == "lammps-external") return "LAMMPS (fix external)";
   return tool;
 }
 

@@ -19,6 +19,12 @@ bool linear_spring_damper(const SimulatorResult& result) {
   return result.model == "linear-spring-damper";
 }
 
+// The restitution table's law, run through the tool's own extension point (no built-in
+// contact of the tool carries it).
+bool extension_point(const SimulatorResult& result) {
+  return result.tool == "simbody-custom" || result.tool == "lammps-external";
+}
+
 // The table's display of each quantity: scale and unit.
 double display_scale(Quantity quantity) {
   switch (quantity) {
@@ -157,6 +163,27 @@ void result_subsection(Document& doc, const Report& report, const SimulatorResul
            unsigned_percent(largest_against_model(result)) + " in e, 1 - e^2, t_c and F_max.";
   items.push_back(worst);
   doc.list(items);
+  if (extension_point(result)) {
+    const fs::path table = fs::path(result.file).replace_extension(".csv");
+    doc.paragraph(
+        "The damped elastic-plastic law " + result.model +
+        " (F = F_s(x) (1 + b x'), the spring's loading branch while the approach grows and "
+        "its unloading branch from the largest approach x_max after) is no built-in contact "
+        "of " +
+        simulator_tool_name(result.tool.substr(0, result.tool.find('-'))) + ": it runs " +
+        (result.tool == "simbody-custom"
+             ? "as a SimTK::Force::Custom on the sphere, with x_max a continuous state of the "
+               "force (z' = max(x', 0)) integrated under Simbody's error control"
+             : "through fix external (pf/callback) of LAMMPS's library interface: at every step "
+               "the callback reads the sphere's height and velocity and returns the wall's "
+               "force, x_max kept between steps; fix nve/sphere integrates with the half-step "
+               "velocity, an error of first order in the step") +
+        ". Its parameters are those of the restitution table " +
+        (export_directory(result) / table).string() +
+        " (e(V), t_c(V), F_max(V) over the campaign's range for an impulse-based engine, "
+        "with the FEM's uncertainty and the law's error per row); the spring is the reduced "
+        "library's.");
+  }
   if (linear_spring_damper(result)) {
     std::string text =
         name +
@@ -181,8 +208,10 @@ void simulators_section(Document& doc, const Report& report) {
   doc.heading("In your simulator");
   if (!report.simulators_source) {
     doc.paragraph(
-        "Not produced: this section shows what Simbody, MuJoCo and LAMMPS themselves "
-        "measure with the contact exported for them by impact-export, against the FEM "
+        "Not produced: this section shows what Simbody, MuJoCo, LAMMPS and LIGGGHTS "
+        "themselves measure with the contact exported for them by impact-export (and, "
+        "through Simbody's Force::Custom and LAMMPS's fix external, the damped "
+        "elastic-plastic law of its restitution table), against the FEM "
         "and against the exported model. To produce it (the tools are installed by "
         "./setup.sh; run_in_simulators.sh drops the campaign's sphere in each tool at "
         "each campaign velocity and writes one result file per exported file), run "
