@@ -166,6 +166,33 @@ TEST_F(ExportCli, ReferenceVelocityOutsideTheCampaignIsAnError) {
   EXPECT_EQ(run_export(args, scratch).exit_code, 2);
 }
 
+// The restitution table: none without a damped elastic-plastic law; a law the calibration
+// does not have, or too few points, is refused by name and nothing is written.
+TEST_F(ExportCli, RestitutionTableOfALawTheCalibrationLacksIsAnError) {
+  make({"tsuji"});
+  const CliRun plain = run_export(arguments(scratch / "export"), scratch);
+  ASSERT_EQ(plain.exit_code, 0) << plain.err;
+  EXPECT_FALSE(fs::exists(scratch / "export" / "restitution"));
+  fs::remove_all(scratch / "export");
+  auto args = arguments(scratch / "export");
+  args.insert(args.end(), {"--law", "hunt-crossley-thornton"});
+  const CliRun run = run_export(args, scratch);
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_TRUE(contains(run.err, "the calibration has no law hunt-crossley-thornton")) << run.err;
+  EXPECT_TRUE(contains(run.err, "nothing was written")) << run.err;
+  EXPECT_FALSE(fs::exists(scratch / "export"));
+  args.back() = "tsuji";
+  const CliRun other = run_export(args, scratch);
+  EXPECT_EQ(other.exit_code, 2);
+  EXPECT_TRUE(contains(other.err, "--law tsuji: not a damped elastic-plastic law")) << other.err;
+  args = arguments(scratch / "export");
+  args.insert(args.end(), {"--table-points", "1"});
+  const CliRun points = run_export(args, scratch);
+  EXPECT_EQ(points.exit_code, 2);
+  EXPECT_TRUE(contains(points.err, "--table-points")) << points.err;
+  EXPECT_FALSE(fs::exists(scratch / "export"));
+}
+
 // Nothing written from nothing: a missing or an empty campaign directory.
 TEST_F(ExportCli, NoUsableRunWritesNothing) {
   make({"tsuji"});
@@ -209,7 +236,8 @@ TEST(ExportCliUsage, NamesTheFourSimulators) {
     const CliRun run = run_export(arguments, scratch);
     EXPECT_EQ(run.exit_code, 0) << run.err;
     for (const char* text : {"four simulators", "simbody/", "mujoco/", "lammps/", "liggghts/",
-                             "--reference-velocity V", "--calibration FILE"})
+                             "--reference-velocity V", "--calibration FILE", "restitution/",
+                             "--law KEY", "--table-points N"})
       EXPECT_TRUE(contains(run.out, text)) << text << " not in " << run.out;
   }
   fs::remove_all(scratch);
