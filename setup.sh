@@ -18,6 +18,9 @@ packages=(
   chromium fonts-dejavu-core                # the report's rendering test (headless screenshot)
   libsimbody-dev libmujoco-dev lammps       # the exports run in Simbody, MuJoCo, LAMMPS (tests/consumers)
   liggghts                                  # ... and in LIGGGHTS 3.8 (thornton_ning, tests/consumers)
+  python3-sphinx python3-myst-parser        # the manual (doc/, target doc, test doc.build): Sphinx, MyST Markdown,
+  python3-sphinx-rtd-theme                  # ... its theme,
+  doxygen python3-breathe                   # ... the reduced library's API from its headers (Doxygen XML, Breathe)
 )
 
 missing=()
