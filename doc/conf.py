@@ -26,7 +26,8 @@ breathe_show_include = True
 html_theme = "sphinx_rtd_theme"
 html_title = "impact manual"
 html_theme_options = {"navigation_depth": 3, "collapse_navigation": False}
-html_static_path = []
+html_static_path = ["_static"]
+html_css_files = ["manual.css"]
 # A build that is the same from one run to the next (no date in the footer).
 html_last_updated_fmt = None
 html_show_sourcelink = False
