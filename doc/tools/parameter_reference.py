@@ -11,8 +11,14 @@ page, one heading per subsection and one item per entry.
                                                       program prints now (test doc.parameters_current)
 """
 import difflib
+import pathlib
 import subprocess
 import sys
+
+# The repository this script belongs to: defaults that name a file of the source tree the
+# program was built from (Mesh/Geometry file) are written relative to it, so that the page is
+# the same in every checkout.
+REPOSITORY = pathlib.Path(__file__).resolve().parents[2]
 
 
 def parse(listing):
@@ -55,6 +61,19 @@ def parse(listing):
         q[:len(p)] == p and sections[q] for q in order)]
 
 
+def source_relative(value):
+    """An absolute path into the source tree as `<source tree>/...`; other values unchanged."""
+    if not value.startswith("/"):
+        return value
+    root = str(REPOSITORY) + "/"
+    if value.startswith(root):
+        return "<source tree>/" + value[len(root):]
+    for folder in ("/meshes/", "/fem/"):
+        if folder in value:
+            return "<source tree>" + value[value.rindex(folder):]
+    return value
+
+
 def escape(text):
     # Markdown would read these as markup; the help texts are plain text.
     for character in "\\*_`[]<>|":
@@ -80,6 +99,7 @@ def page(listing):
         "naming the entry (exit 2).",
     ]
     for path, entries in parse(listing):
+        entries = [(name, source_relative(default), text) for name, default, text in entries]
         if not path:
             continue
         level = min(len(path) + 1, 4)
