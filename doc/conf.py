@@ -17,6 +17,8 @@ exclude_patterns = ["_build", "tools"]
 myst_heading_anchors = 3
 # Most code blocks are shell commands or parameter files; no lexer is guessed for the rest.
 highlight_language = "none"
+# Typographic quotes, but no dashes: "--velocities" in a help text is an option, not an en dash.
+smartquotes_action = "qe"
 
 breathe_projects = {"impact_reduced": os.environ.get("IMPACT_DOXYGEN_XML", "_doxygen/xml")}
 breathe_default_project = "impact_reduced"
