@@ -19,6 +19,9 @@ packages=(
   libsimbody-dev libmujoco-dev lammps       # the exports run in Simbody, MuJoCo, LAMMPS (tests/consumers)
   liggghts                                  # ... and in LIGGGHTS 3.8 (thornton_ning, tests/consumers)
   liblammps-dev                             # the restitution table's law in LAMMPS (fix external)
+  python3-sphinx python3-myst-parser        # the manual (doc/, target doc, test doc.build): Sphinx, MyST Markdown,
+  python3-sphinx-rtd-theme                  # ... its theme,
+  doxygen python3-breathe                   # ... the reduced library's API from its headers (Doxygen XML, Breathe)
 )
 
 missing=()

@@ -49,7 +49,9 @@ saying which model it carries and that model's errors against the FEM:
   lammps/kuwabara_kono.in      LAMMPS fix wall/gran granular input decks
   lammps/tsuji.in
   liggghts/thornton_ning.in    LIGGGHTS 3.8.0 normal model thornton_ning on a wall
-                               (elastic-plastic campaigns only: Thornton's law)
+                               (Thornton's law, p_y from the calibration's Thornton
+                               fit, else from the runs' yield strength; no file
+                               when neither exists)
   restitution/LAW.csv, .json   e(V), t_c(V), F_max(V) of a damped elastic-plastic law
                                with the FEM's uncertainty and the law's error per row
                                (when the calibration has such a law)
