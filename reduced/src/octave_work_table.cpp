@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <vector>
 
@@ -123,24 +124,35 @@ double OctaveWorkTable::work(double approach, const Force& force) const {
 
 double OctaveWorkTable::approach(double work, const Force& force) const {
   if (!(work > start_work_)) return start_approach_;
-  std::size_t index = 0;
-  for (;; ++index) {
-    if (index > 4000) throw std::runtime_error("the loading curve never absorbs the impact energy");
-    if (octave(index, force).work_end >= work) break;
+  // The octave whose works bracket the target: built up to it, then a binary search.
+  const Octave* found = nullptr;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    while (octaves_.empty() || octaves_.back().work_end < work) {
+      if (octaves_.size() > 4000)
+        throw std::runtime_error("the loading curve never absorbs the impact energy");
+      const double lower = octaves_.empty() ? start_approach_ : 2 * octaves_.back().lower;
+      const double start = octaves_.empty() ? start_work_ : octaves_.back().work_end;
+      octaves_.push_back(build(lower, start, force));
+    }
+    found = &*std::lower_bound(octaves_.begin(), octaves_.end(), work,
+                               [](const Octave& o, double w) { return o.work_end < w; });
   }
-  const Octave& piece = octave(index, force);
+  const Octave& piece = *found;
   // Newton in t on the octave's series (increasing: its slope G > 0), safeguarded by
-  // bisection on [low, high].
+  // bisection on [low, high]; it stops once a step is within a few ulps of t.
   const double target = work - piece.work_start;
   double low = -1, high = 1;
   double t = -1 + 2 * target / (piece.work_end - piece.work_start);
   for (int iteration = 0; iteration < 100; ++iteration) {
     const double residual = chebyshev_sum(piece.integral.data(), piece.size + 1, t) - target;
+    if (residual == 0) break;
     (residual < 0 ? low : high) = t;
     const double slope = chebyshev_sum(piece.density.data(), piece.size, t);
     double next = t - residual / slope;
     if (!(next > low && next < high)) next = 0.5 * (low + high);
-    const bool done = std::abs(next - t) <= 1e-16 || high - low <= 1e-16;
+    const bool done = std::abs(next - t) <= 4 * std::numeric_limits<double>::epsilon() ||
+                      high - low <= 4 * std::numeric_limits<double>::epsilon();
     t = next;
     if (done) break;
   }
