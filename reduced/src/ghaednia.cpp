@@ -1,8 +1,7 @@
 #include "impact_reduced/ghaednia.hpp"
 
 #include "impact_reduced/invalid_input.hpp"
-
-#include <boost/math/quadrature/gauss.hpp>
+#include "octave_work_table.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -89,6 +88,7 @@ GhaedniaContact::GhaedniaContact(const SphereFlatContact& contact, double youngs
   elastic_weight_ = -std::expm1(-3.3 * modulus_ratio_);
   transition_ = transition_ratio * critical_interference_;
   transition_work_ = 0.4 * hertz_coefficient_ * std::pow(transition_, 2.5);
+  work_table_ = std::make_shared<detail::OctaveWorkTable>(transition_, transition_work_);
 }
 
 double GhaedniaContact::upsilon(double approach) const {
@@ -124,11 +124,15 @@ double GhaedniaContact::contact_radius(double approach) const {
   return fit(approach).radius;
 }
 
+double GhaedniaContact::fit_force(double approach) const {
+  const FitPoint p = fit(approach);
+  return p.plastic_force + (p.hertz_force - p.plastic_force) * elastic_weight_;
+}
+
 double GhaedniaContact::loading_force(double approach) const {
   require_non_negative("approach", approach);
   if (approach <= transition_) return hertz_coefficient_ * approach * std::sqrt(approach);
-  const FitPoint p = fit(approach);
-  return p.plastic_force + (p.hertz_force - p.plastic_force) * elastic_weight_;
+  return fit_force(approach);
 }
 
 // dF/dx above the transition, F = (1 - w) F_p + w F_e:
@@ -169,16 +173,13 @@ double GhaedniaContact::loading_stiffness(double approach) const {
 double GhaedniaContact::loading_work(double approach) const {
   require_non_negative("approach", approach);
   if (approach <= transition_) return 0.4 * hertz_coefficient_ * std::pow(approach, 2.5);
-  // The fit is analytic beyond the transition (branch points only at x = 0; Upsilon is
-  // entire in x): composite 30-point Gauss-Legendre on pieces [x, 2x), each at least its
-  // own length away from 0, as for JacksonGreenContact.
-  double work = transition_work_;
-  for (double lower = transition_; lower < approach; lower *= 2) {
-    const double upper = std::min(2 * lower, approach);
-    work += boost::math::quadrature::gauss<double, 30>::integrate(
-        [&](double x) { return loading_force(x); }, lower, upper);
-  }
-  return work;
+  return work_table_->work(approach, [this](double x) { return fit_force(x); });
+}
+
+double GhaedniaContact::loading_approach(double work) const {
+  if (!(work > 0)) return 0.0;
+  if (work <= transition_work_) return std::pow(2.5 * work / hertz_coefficient_, 0.4);
+  return work_table_->approach(work, [this](double x) { return fit_force(x); });
 }
 
 HertzianUnloading GhaedniaContact::unloading(double approach_max) const {

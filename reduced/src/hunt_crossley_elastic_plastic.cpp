@@ -152,17 +152,25 @@ std::vector<ImpactState> HuntCrossleyElasticPlasticImpact::history(std::size_t p
   const double branch_total = branch_compression + unloading_impact_->restitution_time();
   std::vector<ImpactState> states(points);
   states.front() = {0.0, 0.0, velocity(), 0.0};
+  // Each phase's instants in one pass (states_at), on the clock of its own impact.
+  std::vector<double> loading_times, unloading_times, restoring_times;
   for (std::size_t i = 1; i + 1 < points; ++i) {
     const double time = total * static_cast<double>(i) / static_cast<double>(points - 1);
     if (time <= compression) {
-      states[i] = loading_.state_at(time);
-      continue;
+      loading_times.push_back(time);
+    } else {
+      restoring_times.push_back(time);
+      unloading_times.push_back(std::min(branch_total, branch_compression + (time - compression)));
     }
-    ImpactState state = unloading_impact_->state_at(
-        std::min(branch_total, branch_compression + (time - compression)));
-    state.time = time;
+  }
+  const auto loaded = loading_.states_at(loading_times);
+  const auto unloaded = unloading_impact_->states_at(unloading_times);
+  std::copy(loaded.begin(), loaded.end(), states.begin() + 1);
+  for (std::size_t j = 0; j < unloaded.size(); ++j) {
+    ImpactState state = unloaded[j];
+    state.time = restoring_times[j];
     state.approach += unloading_.residual_approach;
-    states[i] = state;
+    states[1 + loaded.size() + j] = state;
   }
   const double rate = rebound_velocity();
   states.back() = {total, separation_approach_, rate,

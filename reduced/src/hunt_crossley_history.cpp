@@ -178,6 +178,45 @@ ImpactState HuntCrossleyImpact::state_at(double time) const {
   return restitution_state(time, distance[0]);
 }
 
+std::vector<ImpactState> HuntCrossleyImpact::states_at(const std::vector<double>& times) const {
+  const double compression = compression_time();
+  const double extent = restitution_span();
+  const double total = compression + restitution_time_from(extent);
+  for (std::size_t i = 0; i < times.size(); ++i)
+    if (!(times[i] >= 0 && times[i] <= total) || (i > 0 && times[i] < times[i - 1])) {
+      std::ostringstream message;
+      message.precision(17);
+      message << "times must ascend within [0, contact_time = " << total << "] s (got " << times[i]
+              << " at index " << i << ")";
+      throw InvalidInput("times", message.str());
+    }
+  // Compression instants forward from first contact, restitution instants backward from
+  // separation, as state_at integrates each from its phase's singular end.
+  std::vector<double> elapsed, remaining;
+  std::vector<std::size_t> compression_index, restitution_index;
+  for (std::size_t i = 0; i < times.size() && times[i] <= compression; ++i) {
+    elapsed.push_back(times[i]);
+    compression_index.push_back(i);
+  }
+  for (std::size_t i = times.size(); i-- > 0 && times[i] > compression;) {
+    remaining.push_back(total - times[i]);
+    restitution_index.push_back(i);
+  }
+  std::vector<ImpactState> states(times.size());
+  const auto compression_distances =
+      invert_cumulative_integral([this](double u) { return compression_time_density(u); }, elapsed,
+                                 velocity_);
+  for (std::size_t j = 0; j < compression_index.size(); ++j)
+    states[compression_index[j]] = compression_state(elapsed[j], compression_distances[j]);
+  const auto restitution_distances =
+      invert_cumulative_integral([this](double u) { return restitution_time_density(u); },
+                                 remaining, extent);
+  for (std::size_t j = 0; j < restitution_index.size(); ++j)
+    states[restitution_index[j]] =
+        restitution_state(total - remaining[j], restitution_distances[j]);
+  return states;
+}
+
 // Any elastic law: each point's time inverted by Newton's method on the adaptive quadrature.
 std::vector<ImpactState> HuntCrossleyImpact::quadrature_history(std::size_t points) const {
   const auto compression_density = [this](double u) { return compression_time_density(u); };

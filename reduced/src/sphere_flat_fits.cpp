@@ -1,8 +1,7 @@
 #include "impact_reduced/sphere_flat_fits.hpp"
 
 #include "impact_reduced/invalid_input.hpp"
-
-#include <boost/math/quadrature/gauss.hpp>
+#include "octave_work_table.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -146,13 +145,18 @@ JacksonGreenContact::JacksonGreenContact(const SphereFlatContact& contact,
       rule_(rule),
       critical_interference_(jackson_green_critical_interference(contact)),
       transition_(jackson_green_transition * critical_interference_),
-      transition_work_(0.4 * hertz_load(transition_, contact) * transition_) {}
+      transition_work_(0.4 * hertz_load(transition_, contact) * transition_),
+      work_table_(std::make_shared<detail::OctaveWorkTable>(transition_, transition_work_)) {}
 
-double JacksonGreenContact::loading_force(double approach) const {
-  if (approach <= transition_) return hertz_load(approach, contact_);
+double JacksonGreenContact::fit_force(double approach) const {
   return jackson_green_critical_load(contact_) *
          jackson_green_fit(approach / critical_interference_, contact_,
                            jackson_green_c(contact_.poisson_ratio));
+}
+
+double JacksonGreenContact::loading_force(double approach) const {
+  if (approach <= transition_) return hertz_load(approach, contact_);
+  return fit_force(approach);
 }
 
 double JacksonGreenContact::loading_stiffness(double approach) const {
@@ -165,16 +169,7 @@ double JacksonGreenContact::loading_stiffness(double approach) const {
 
 double JacksonGreenContact::loading_work(double approach) const {
   if (approach <= transition_) return 0.4 * hertz_load(approach, contact_) * approach;
-  // The fit is analytic beyond the transition, with its branch points at omega = 0:
-  // composite 30-point Gauss-Legendre on pieces [x, 2x) (each at least its own length away
-  // from 0), which reaches machine precision.
-  double work = transition_work_;
-  for (double lower = transition_; lower < approach; lower *= 2) {
-    const double upper = std::min(2 * lower, approach);
-    work += boost::math::quadrature::gauss<double, 30>::integrate(
-        [&](double x) { return loading_force(x); }, lower, upper);
-  }
-  return work;
+  return work_table_->work(approach, [this](double x) { return fit_force(x); });
 }
 
 double JacksonGreenContact::loading_approach(double work) const {
@@ -183,17 +178,7 @@ double JacksonGreenContact::loading_approach(double work) const {
     const double stiffness = 4.0 / 3.0 * contact_.contact_modulus * std::sqrt(contact_.radius);
     return std::pow(2.5 * work / stiffness, 0.4);
   }
-  // W is convex above the transition (F increases), so Newton from the right stays on the
-  // right of the root and converges monotonically. The fit just above the transition lies
-  // above the Hertz branch's end (the force jumps up there), F_t is the fit's value.
-  const double force_at_transition = loading_force(transition_ * (1 + 1e-15));
-  double approach = transition_ + (work - transition_work_) / force_at_transition;
-  for (int iteration = 0; iteration < 100; ++iteration) {
-    const double step = (loading_work(approach) - work) / loading_force(approach);
-    approach -= step;
-    if (!(std::abs(step) > 4 * std::numeric_limits<double>::epsilon() * approach)) break;
-  }
-  return std::max(approach, transition_);
+  return work_table_->approach(work, [this](double x) { return fit_force(x); });
 }
 
 HertzianUnloading JacksonGreenContact::unloading(double approach_max) const {

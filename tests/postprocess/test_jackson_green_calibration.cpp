@@ -154,4 +154,23 @@ TEST(JacksonGreenCalibration, LeftOutWhenTheRunsDoNotRecordTheScenario) {
   EXPECT_THROW(comparison_model("jackson-green", std::vector<FemRun>{run}), reduced::InvalidInput);
 }
 
+// A campaign whose materials cannot yield (Kelvin–Voigt sphere and plate): the plastic and
+// damped plastic laws are left out, the viscoelastic ones kept.
+TEST(JacksonGreenCalibration, PlasticLawsLeftOutWhenNoMaterialCanYield) {
+  const Truth truth;
+  FemRun run = jackson_green_run(truth, 5 * truth.yield_velocity());
+  EXPECT_TRUE(runs_can_yield({run}));
+  run.text_attributes["Sphere/Material model"] = "kelvin-voigt";
+  run.text_attributes["Plate/Material model"] = "kelvin-voigt";
+  EXPECT_FALSE(runs_can_yield({run}));
+  std::vector<std::string> left_out;
+  const auto models = comparison_models({"kuwabara-kono", "thornton", "jackson-green",
+                                         "hunt-crossley-jackson-green"},
+                                        {run}, left_out);
+  ASSERT_EQ(models.size(), 1u);
+  EXPECT_EQ(models.front().name, "kuwabara-kono");
+  EXPECT_EQ(left_out,
+            (std::vector<std::string>{"thornton", "jackson-green", "hunt-crossley-jackson-green"}));
+}
+
 } // namespace

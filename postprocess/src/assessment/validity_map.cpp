@@ -6,6 +6,7 @@
 
 #include "report/report_parts.hpp"
 
+#include "impact_postprocess/models/plastic_models.hpp"
 #include "impact_postprocess/models/model_keys.hpp"
 #include "impact_postprocess/run/fem_run_format.hpp"
 #include "impact_postprocess/run/scenario_materials.hpp"
@@ -125,7 +126,13 @@ void map_frame(ValidityMap& map, const Campaign& campaign, const std::vector<Map
        "fit without it",
        ""},
       {std::string(model_keys::best_law), "the row's best law",
-       "the comparison law ranked first on the row by out-of-sample error, judged out of sample",
+       std::string("the comparison law ranked first on the row by out-of-sample error, judged "
+                   "out of sample") +
+           (runs_can_yield(campaign.runs)
+                ? ""
+                : "; the plastic laws (Thornton, Jackson–Green and Hunt–Crossley on their "
+                  "springs) are not fitted: no material of the campaign can yield, so their "
+                  "yield parameter would only stand in for the viscous loss"),
        ""},
       {std::string(model_keys::thin_plate), "thin-plate model",
        "Zener: Hertz contact (c from the run's materials, n = 3/2) on an infinite Kirchhoff plate "

@@ -12,6 +12,7 @@
 #include "impact_postprocess/models/jackson_green_model.hpp"
 #include "impact_postprocess/run/scenario_materials.hpp"
 #include "impact_postprocess/models/model_keys.hpp"
+#include "impact_postprocess/models/plastic_models.hpp"
 #include "calibration/fit_model.hpp"
 #include "calibration/ranking.hpp"
 
@@ -184,9 +185,11 @@ Calibration calibrate(const std::vector<FemRun>& runs, const CalibrationOptions&
   calibration.confidence_level = options.confidence_level;
   Progress progress(options.progress);
   for (const auto& name : left_out)
-    progress("law " + name +
-             " left out: the runs do not record the sphere radius and Poisson "
-             "ratio it needs");
+    progress("law " + name + " left out: " +
+             (runs_can_yield(runs) ? "the runs do not record the sphere radius and Poisson "
+                                     "ratio it needs"
+                                   : "no material of the runs can yield, so its yield parameter "
+                                     "would only stand in for the viscous loss"));
 
   std::vector<PreparedRun> prepared;
   for (const auto& run : runs) prepared.push_back(prepare(run));

@@ -133,13 +133,25 @@ ContactModel comparison_model(const std::string& name, const std::vector<FemRun>
   return damped_plastic_needs_scenario(name) ? damped_plastic_model(name, spring) : spring;
 }
 
+bool runs_can_yield(const std::vector<FemRun>& runs) {
+  return std::any_of(runs.begin(), runs.end(), [](const FemRun& run) {
+    for (const char* key : {"Sphere/Material model", "Plate/Material model"}) {
+      const auto model = run.text_attributes.find(key);
+      if (model != run.text_attributes.end() && model->second == "elastic-plastic") return true;
+    }
+    return false;
+  });
+}
+
 std::vector<ContactModel> comparison_models(const std::vector<std::string>& names,
                                             const std::vector<FemRun>& runs,
                                             std::vector<std::string>& left_out) {
   std::vector<ContactModel> models;
   const bool scenario = sphere_flat_scenario(runs).has_value();
+  const bool yielding = runs_can_yield(runs);
   for (const auto& name : names) {
-    if (needs_scenario(name) && !scenario) {
+    const bool plastic = is_plastic_model(name) || is_damped_plastic_model(name);
+    if ((needs_scenario(name) && !scenario) || (plastic && !yielding)) {
       left_out.push_back(name);
       continue;
     }

@@ -96,9 +96,14 @@
 #include "impact_reduced/elastic_plastic_impact.hpp"
 #include "impact_reduced/sphere_flat_fits.hpp"
 
+#include <memory>
 #include <vector>
 
 namespace impact::reduced {
+
+namespace detail {
+class OctaveWorkTable;
+}
 
 /// Ghaednia et al. (2019) loading with the radius-preserving Hertzian unloading.
 class GhaedniaContact final : public ElasticPlasticContact {
@@ -111,7 +116,11 @@ public:
 
   /// F(x) [N], x >= 0 (InvalidInput naming "approach" otherwise); likewise below.
   double loading_force(double approach) const override;
+  /// Hertz's work up to 1.9 delta_c; above it a Chebyshev series in ln x per octave, built on
+  /// first use and shared by copies of the law (as JacksonGreenContact's).
   double loading_work(double approach) const override;
+  /// The inverse of loading_work: Hertz's in closed form, then Newton on the octave's series.
+  double loading_approach(double work) const override;
   /// dF/dx [N/m], analytic; the fit's (right) slope at x = 1.9 delta_c.
   double loading_stiffness(double approach) const override;
   std::vector<double> loading_breakpoints() const override { return {transition_}; }
@@ -134,6 +143,7 @@ public:
 private:
   struct FitPoint;
   FitPoint fit(double approach) const;
+  double fit_force(double approach) const; // Eq. 30 above the transition
 
   SphereFlatContact contact_;
   double c_;                     // C(nu)
@@ -147,6 +157,7 @@ private:
   double elastic_weight_;        // 1 - exp(-3.3 r)
   double transition_;            // 1.9 delta_c
   double transition_work_;       // Hertz work up to the transition
+  std::shared_ptr<const detail::OctaveWorkTable> work_table_; // the work above the transition
 };
 
 } // namespace impact::reduced

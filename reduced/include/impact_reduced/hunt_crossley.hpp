@@ -145,6 +145,14 @@ public:
   /// tens of microseconds per call. Throws InvalidInput for a time outside.
   ImpactState state_at(double time) const;
 
+  /// The states at `times` [s], ascending within [0, contact_time()]: each as state_at, but
+  /// each phase's instants inverted in one pass (its quadrature carried on from the previous
+  /// instant), so that n instants cost n short integrals instead of n whole ones. Agrees
+  /// with state_at within 1e-11 of x_max, V and F_max (worst measured 1.1e-12,
+  /// tests/reduced/test_hunt_crossley_history.cpp). Throws InvalidInput naming "times" for a
+  /// time outside or out of order.
+  std::vector<ImpactState> states_at(const std::vector<double>& times) const;
+
 private:
   HuntCrossleyImpact(double mass, std::shared_ptr<const ElasticForce> custom_force, double damping,
                      double velocity, std::optional<PowerLawForce> power_law);

@@ -56,9 +56,14 @@ ContactModel comparison_model(const std::string& name, const std::vector<FemRun>
 /// the scenario.
 std::string model_formula(const std::string& name);
 
-/// The comparison models `names` for the runs: those that need the scenario are left out,
-/// and named in `left_out`, when the runs do not record it; throws reduced::InvalidInput for
-/// an unknown name.
+/// Whether the FEM of the runs can yield: some run has an elastic-plastic sphere or plate.
+bool runs_can_yield(const std::vector<FemRun>& runs);
+
+/// The comparison models `names` for the runs, leaving out (and naming in `left_out`) those
+/// that need the scenario when the runs do not record it, and the plastic and damped plastic
+/// models when no material of the runs can yield (runs_can_yield): their yield parameter
+/// would then only stand in for the viscous loss, a fit with no material meaning (and the
+/// costliest of the calibration). Throws reduced::InvalidInput for an unknown name.
 std::vector<ContactModel> comparison_models(const std::vector<std::string>& names,
                                             const std::vector<FemRun>& runs,
                                             std::vector<std::string>& left_out);

@@ -1,0 +1,162 @@
+#include "octave_work_table.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <vector>
+
+namespace impact::reduced::detail {
+
+namespace {
+
+constexpr double pi = 3.14159265358979323846;
+constexpr double half_log_two = 0.34657359027997265471; // ln(2) / 2: dx/dt = x ln(2) / 2
+
+// Chebyshev sum of coefficients c_0 .. c_(n-1) at t in [-1, 1] (Clenshaw).
+double chebyshev_sum(const double* coefficients, std::size_t n, double t) {
+  double next = 0, current = 0;
+  for (std::size_t m = n; m-- > 1;) {
+    const double previous = 2 * t * current - next + coefficients[m];
+    next = current;
+    current = previous;
+  }
+  return t * current - next + coefficients[0];
+}
+
+// cos(pi k / 64), k = 0 .. 127: the cosines of every Chebyshev-Lobatto transform used here
+// (n = 16, 32, 64 points: cos(pi k / n) is entry k 64 / n).
+const std::array<double, 128>& lobatto_cosines() {
+  static const std::array<double, 128> table = [] {
+    std::array<double, 128> values{};
+    for (std::size_t k = 0; k < values.size(); ++k)
+      values[k] = std::cos(pi * static_cast<double>(k) / 64.0);
+    return values;
+  }();
+  return table;
+}
+
+} // namespace
+
+OctaveWorkTable::OctaveWorkTable(double start_approach, double start_work)
+    : start_approach_(start_approach), start_work_(start_work) {}
+
+// Chebyshev-Lobatto interpolation of G(t) = F(x(t)) dx/dt, x = lower 2^((t + 1) / 2), at
+// 17, 33, then 65 points (nested: each doubling reuses the values), until the last two
+// coefficients are below 1e-15 of the first (they fall by about 30 per degree on the fits,
+// so the neglected tail is below the rounding of the sum); the work is G's exact
+// antiderivative.
+OctaveWorkTable::Octave OctaveWorkTable::build(double lower, double work_start,
+                                               const Force& force) const {
+  Octave result{};
+  result.lower = lower;
+  result.work_start = work_start;
+  std::vector<double> values; // G at t_j = cos(pi j / n), j = 0 .. n
+  auto density = [&](double t) {
+    const double x = lower * std::exp2(0.5 * (t + 1));
+    return force(x) * x * half_log_two;
+  };
+  const auto& cosines = lobatto_cosines();
+  for (std::size_t n = 16; n + 1 <= max_degree; n *= 2) {
+    const std::size_t stride = 64 / n;
+    std::vector<double> refined(n + 1);
+    for (std::size_t j = 0; j <= n; ++j)
+      refined[j] = j % 2 == 0 && !values.empty() ? values[j / 2] : density(cosines[j * stride]);
+    values = std::move(refined);
+    // c_m = (2/n) sum'' G_j cos(pi m j / n), the end terms halved, and c_0, c_n halved.
+    for (std::size_t m = 0; m <= n; ++m) {
+      double sum = 0;
+      for (std::size_t j = 0; j <= n; ++j) {
+        const double term = values[j] * cosines[(m * j % (2 * n)) * stride];
+        sum += j == 0 || j == n ? 0.5 * term : term;
+      }
+      result.density[m] = 2 * sum / static_cast<double>(n);
+    }
+    result.density[0] *= 0.5;
+    result.density[n] *= 0.5;
+    result.size = n + 1;
+    const double scale = std::abs(result.density[0]);
+    if (std::abs(result.density[n]) <= 1e-15 * scale &&
+        std::abs(result.density[n - 1]) <= 1e-15 * scale)
+      break;
+    if (2 * n + 1 > max_degree)
+      throw std::runtime_error("the loading work's series does not converge on an octave");
+  }
+  // Antiderivative: C_m = (c_(m-1) - c_(m+1)) / (2 m), C_0 such that it vanishes at t = -1.
+  const std::size_t n = result.size;
+  for (std::size_t m = 1; m <= n; ++m) {
+    const double above = m + 1 < n ? result.density[m + 1] : 0.0;
+    result.integral[m] =
+        ((m == 1 ? 2 * result.density[0] : result.density[m - 1]) - above) / (2.0 * m);
+  }
+  double at_minus_one = 0;
+  for (std::size_t m = 1; m <= n; ++m)
+    at_minus_one += (m % 2 == 0 ? 1.0 : -1.0) * result.integral[m];
+  result.integral[0] = -at_minus_one;
+  result.work_end = work_start + chebyshev_sum(result.integral.data(), n + 1, 1.0);
+  return result;
+}
+
+const OctaveWorkTable::Octave& OctaveWorkTable::octave(std::size_t index,
+                                                       const Force& force) const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  while (octaves_.size() <= index) {
+    const double lower = octaves_.empty() ? start_approach_ : 2 * octaves_.back().lower;
+    const double work = octaves_.empty() ? start_work_ : octaves_.back().work_end;
+    octaves_.push_back(build(lower, work, force));
+  }
+  return octaves_[index];
+}
+
+const OctaveWorkTable::Octave& OctaveWorkTable::octave_of(double approach,
+                                                          const Force& force) const {
+  int exponent = 0;
+  std::frexp(approach / start_approach_, &exponent); // ratio in [2^(e-1), 2^e)
+  return octave(static_cast<std::size_t>(std::max(exponent - 1, 0)), force);
+}
+
+double OctaveWorkTable::work(double approach, const Force& force) const {
+  if (!(approach > start_approach_)) return start_work_;
+  const Octave& piece = octave_of(approach, force);
+  const double t = std::clamp(2 * std::log2(approach / piece.lower) - 1, -1.0, 1.0);
+  return piece.work_start + chebyshev_sum(piece.integral.data(), piece.size + 1, t);
+}
+
+double OctaveWorkTable::approach(double work, const Force& force) const {
+  if (!(work > start_work_)) return start_approach_;
+  // The octave whose works bracket the target: built up to it, then a binary search.
+  const Octave* found = nullptr;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    while (octaves_.empty() || octaves_.back().work_end < work) {
+      if (octaves_.size() > 4000)
+        throw std::runtime_error("the loading curve never absorbs the impact energy");
+      const double lower = octaves_.empty() ? start_approach_ : 2 * octaves_.back().lower;
+      const double start = octaves_.empty() ? start_work_ : octaves_.back().work_end;
+      octaves_.push_back(build(lower, start, force));
+    }
+    found = &*std::lower_bound(octaves_.begin(), octaves_.end(), work,
+                               [](const Octave& o, double w) { return o.work_end < w; });
+  }
+  const Octave& piece = *found;
+  // Newton in t on the octave's series (increasing: its slope G > 0), safeguarded by
+  // bisection on [low, high]; it stops once a step is within a few ulps of t.
+  const double target = work - piece.work_start;
+  double low = -1, high = 1;
+  double t = -1 + 2 * target / (piece.work_end - piece.work_start);
+  for (int iteration = 0; iteration < 100; ++iteration) {
+    const double residual = chebyshev_sum(piece.integral.data(), piece.size + 1, t) - target;
+    if (residual == 0) break;
+    (residual < 0 ? low : high) = t;
+    const double slope = chebyshev_sum(piece.density.data(), piece.size, t);
+    double next = t - residual / slope;
+    if (!(next > low && next < high)) next = 0.5 * (low + high);
+    const bool done = std::abs(next - t) <= 4 * std::numeric_limits<double>::epsilon() ||
+                      high - low <= 4 * std::numeric_limits<double>::epsilon();
+    t = next;
+    if (done) break;
+  }
+  return piece.lower * std::exp2(0.5 * (t + 1));
+}
+
+} // namespace impact::reduced::detail

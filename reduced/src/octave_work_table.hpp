@@ -1,0 +1,59 @@
+#pragma once
+// The work W(x) = W(x_0) + integral_(x_0)^x F of a loading force that is analytic above a start
+// approach x_0 > 0, tabulated octave by octave ([x_0 2^k, x_0 2^(k+1)]) as a Chebyshev series
+// in the logarithm of the approach, and its inverse. The fitted elastic-plastic loading curves
+// (Jackson-Green, Ghaednia) are built from powers and exponentials of powers of x: entire
+// functions of s = ln x, so that on an octave (s spans ln 2) the series of F(x) x converges
+// far faster than a Gauss rule in x on the same piece. The table is built on demand, one
+// octave at a time (a few tens of force evaluations each), and then gives W in one Clenshaw
+// sum and its inverse in a few Newton steps, instead of one composite quadrature per call.
+//
+// Accuracy: the series are truncated where their coefficients fall below 1e-17 of the
+// octave's work (checked when an octave is built; an octave that does not converge within
+// the largest degree throws, rather than returning a less accurate work). Measured against
+// composite 30-point Gauss-Legendre in x (tests/reduced/test_octave_work_table.cpp).
+//
+// Thread safety: const member functions may be called concurrently (the octaves are built
+// under a mutex and never move once built).
+
+#include <array>
+#include <cstddef>
+#include <deque>
+#include <functional>
+#include <mutex>
+
+namespace impact::reduced::detail {
+
+class OctaveWorkTable {
+public:
+  using Force = std::function<double(double)>;
+  /// x_0 > 0 [m], W(x_0) [J].
+  OctaveWorkTable(double start_approach, double start_work);
+  /// W(x) [J] for x >= x_0; `force` F(x) for x > x_0.
+  double work(double approach, const Force& force) const;
+  /// The x >= x_0 with W(x) = work (work >= W(x_0)).
+  double approach(double work, const Force& force) const;
+
+  static constexpr std::size_t max_degree = 65; // coefficients of the longest series
+
+private:
+  struct Octave {
+    double lower;                                // x_0 2^k
+    double work_start;                           // W(lower)
+    double work_end;                             // W(2 lower)
+    std::size_t size;                            // number of coefficients in use
+    std::array<double, max_degree> density;      // Chebyshev coefficients of dW/dt
+    std::array<double, max_degree + 1> integral; // of W - W(lower), zero at t = -1
+  };
+  // The octave that holds x (built with those below it).
+  const Octave& octave_of(double approach, const Force& force) const;
+  const Octave& octave(std::size_t index, const Force& force) const;
+  Octave build(double lower, double work_start, const Force& force) const;
+
+  double start_approach_;
+  double start_work_;
+  mutable std::mutex mutex_;
+  mutable std::deque<Octave> octaves_; // deque: references stay valid while it grows
+};
+
+} // namespace impact::reduced::detail

@@ -1,0 +1,121 @@
+// The tabulated loading work of the fitted elastic-plastic laws (octave_work_table.hpp) against
+// the independent quadrature it replaced: composite 30-point Gauss-Legendre in x on pieces
+// [x, 2x) above the transition, which reaches machine precision there (each piece lies its
+// own length away from the fits' branch points at x = 0). Jackson-Green and Ghaednia, over
+// yield strains 1e-4 .. 2e-2, interferences 1.9 omega_c .. min(1e6 omega_c, R / 5).
+
+#include "impact_reduced/ghaednia.hpp"
+#include "impact_reduced/sphere_flat_fits.hpp"
+#include "octave_work_table.hpp"
+
+#include <boost/math/quadrature/gauss.hpp>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <cmath>
+#include <functional>
+#include <thread>
+#include <vector>
+
+namespace {
+
+using namespace impact::reduced;
+
+double composite_gauss_work(const ElasticPlasticContact& law, double transition, double approach) {
+  double work = law.loading_work(transition);
+  for (double lower = transition; lower < approach; lower *= 2) {
+    const double upper = std::min(2 * lower, approach);
+    work += boost::math::quadrature::gauss<double, 30>::integrate(
+        [&](double x) { return law.loading_force(std::max(x, transition * (1 + 1e-15))); }, lower,
+        upper);
+  }
+  return work;
+}
+
+std::vector<SphereFlatContact> contacts() {
+  std::vector<SphereFlatContact> result;
+  for (const double strain : {1e-4, 1e-3, 4.4e-3, 2e-2})
+    for (const double nu : {0.0, 0.3, 0.45})
+      result.push_back({0.01, 1.15e11, strain * 1.15e11, nu});
+  return result;
+}
+
+std::vector<double> ratios() {
+  std::vector<double> result;
+  for (double w = 1.9 * 1.0001; w < 1e6; w *= 1.37) result.push_back(w);
+  result.push_back(1e6);
+  return result;
+}
+
+template <class Law>
+void check_against_quadrature(const Law& law, double law_radius, double critical, double transition,
+                              double& worst_work, double& worst_inverse) {
+  for (const double w : ratios()) {
+    const double x = w * critical;
+    if (x > 0.2 * law_radius) break;
+    const double reference = composite_gauss_work(law, transition, x);
+    worst_work = std::max(worst_work, std::abs(law.loading_work(x) - reference) / reference);
+    worst_inverse = std::max(worst_inverse, std::abs(law.loading_approach(reference) - x) / x);
+  }
+}
+
+TEST(OctaveWorkTable, JacksonGreenWorkMatchesCompositeGaussLegendre) {
+  double worst_work = 0, worst_inverse = 0;
+  for (const auto& contact : contacts()) {
+    const JacksonGreenContact law(contact);
+    check_against_quadrature(law, contact.radius, law.critical_interference(),
+                             1.9 * law.critical_interference(), worst_work, worst_inverse);
+  }
+  std::printf("worst relative error: work %.2e, inverse %.2e\n", worst_work, worst_inverse);
+  EXPECT_LE(worst_work, 2e-15);
+  EXPECT_LE(worst_inverse, 2e-15);
+}
+
+TEST(OctaveWorkTable, GhaedniaWorkMatchesCompositeGaussLegendre) {
+  double worst_work = 0, worst_inverse = 0;
+  for (const auto& contact : contacts())
+    for (const double hardening : {0.0, 0.02, 0.2}) {
+      const double youngs = 2.1e11;
+      const GhaedniaContact law({contact.radius,
+                                 youngs / (1 - contact.poisson_ratio * contact.poisson_ratio),
+                                 contact.yield_strength, contact.poisson_ratio},
+                                youngs, hardening * youngs);
+      check_against_quadrature(law, contact.radius, law.critical_interference(),
+                               law.transition_approach(), worst_work, worst_inverse);
+    }
+  std::printf("worst relative error: work %.2e, inverse %.2e\n", worst_work, worst_inverse);
+  EXPECT_LE(worst_work, 2e-15);
+  EXPECT_LE(worst_inverse, 2e-15);
+}
+
+// Copies share the table, which is built on first use: two threads asking for the same
+// octaves get the same works.
+TEST(OctaveWorkTable, ConcurrentUseGivesTheSameWork) {
+  const JacksonGreenContact law({0.01, 1.15e11, 1e9, 0.3});
+  const JacksonGreenContact copy = law;
+  std::vector<double> first, second;
+  const double critical = law.critical_interference();
+  auto run = [&](const JacksonGreenContact& l, std::vector<double>& out) {
+    for (const double w : ratios()) out.push_back(l.loading_work(w * critical));
+  };
+  std::thread a(run, std::cref(law), std::ref(first));
+  std::thread b(run, std::cref(copy), std::ref(second));
+  a.join();
+  b.join();
+  EXPECT_EQ(first, second);
+}
+
+TEST(OctaveWorkTable, PowerLawWorkIsExact) {
+  // F = x^(3/2) from x_0 = 1: W = (2/5) x^(5/2), and its inverse.
+  const impact::reduced::detail::OctaveWorkTable table(1.0, 0.4);
+  const auto force = [](double x) { return x * std::sqrt(x); };
+  for (const double x : {1.0, 1.5, 2.0, 3.7, 1e3, 1e9}) {
+    const double exact = 0.4 * std::pow(x, 2.5);
+    EXPECT_NEAR(table.work(x, force), exact, 1e-15 * exact) << x;
+    EXPECT_NEAR(table.approach(exact, force), x, 2e-15 * x) << x;
+  }
+}
+
+} // namespace
