@@ -435,9 +435,11 @@ namespace impact_fem
   // then complete: every certified run was certified before its writer's
   // own rename, hence before the last one, and the last writer, looking
   // after that rename, saw it (had it seen other runs than it wrote, its
-  // rename would not have been the last). No lock is needed, so none whose
-  // support depends on how a cluster mounts its file system (Lustre's
-  // flock option, NFS's lock daemon).
+  // rename would not have been the last); this takes a file system that
+  // shows a file to every machine once it is written (NFS clients may cache
+  // lookups for a while: doc/guide/cluster.md says how to check the index).
+  // No lock is needed, so none whose support depends on how a cluster
+  // mounts its file system (Lustre's flock option, NFS's lock daemon).
   void
   Campaign::write_index() const
   {
