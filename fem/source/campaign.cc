@@ -36,13 +36,22 @@ namespace impact_fem
     }
 
     // Written under a temporary name and renamed: never seen half-written.
+    // The temporary name is the writer's own even when writers on several
+    // machines share the directory (the shards of a campaign, the rank
+    // groups of a job): a process id alone is not unique across machines,
+    // host name and process id are.
     void
     write_file_atomically(const std::string &name, const std::string &text)
     {
-      const std::string temporary = name + ".tmp" + std::to_string(::getpid());
+      char host[256] = {};
+      ::gethostname(host, sizeof(host) - 1);
+      const std::string temporary =
+        name + ".tmp." + host + "." + std::to_string(::getpid());
       {
         std::ofstream out(temporary);
         out << text;
+        out.close();
+        AssertThrow(out, ExcMessage("Cannot write " + temporary + "."));
       }
       std::filesystem::rename(temporary, name);
     }
@@ -180,8 +189,10 @@ namespace impact_fem
 
   Campaign::Campaign(ParameterHandler               &prm,
                      const std::string              &velocity_list,
-                     const std::vector<std::string> &sweep_items)
+                     const std::vector<std::string> &sweep_items,
+                     const CampaignShard            &shard)
     : prm(prm)
+    , shard(shard)
   {
     prm.enter_subsection("Campaign");
     const std::string file_velocities = prm.get("Impact velocities");
@@ -364,8 +375,8 @@ namespace impact_fem
   }
 
 
-  void
-  Campaign::write_index() const
+  std::string
+  Campaign::index_text() const
   {
     nlohmann::ordered_json axes_json = nlohmann::ordered_json::array();
     for (const auto &axis : axes)
@@ -400,7 +411,44 @@ namespace impact_fem
     text << std::setw(2)
          << nlohmann::ordered_json{{"axes", axes_json}, {"runs", runs}}
          << std::endl;
-    write_file_atomically(directory + "/index.json", text.str());
+    return text.str();
+  }
+
+
+  // Several writers may write index.json at once: the rank groups of a job
+  // and the shards of a campaign, jobs of their own, perhaps on machines
+  // that share the directory. None of them merges what it knows into the
+  // index: each rebuilds it from the run directories (a run is listed once
+  // its checksums.sha256 is there, written after its files are final), in
+  // the campaign's order, so the index does not depend on which shard ran
+  // which point or finished first, and equals that of one job.
+  //
+  // A torn index: never. Each writer writes a temporary file of its own and
+  // renames it over index.json; rename is atomic on POSIX file systems
+  // (NFS and the parallel ones included), so a reader sees one complete
+  // index or the other.
+  //
+  // A stale index: a writer may rename an index it built before another
+  // writer's run was certified over that writer's newer index. So each
+  // writer looks again after its rename and writes again while the
+  // directories show other runs than it wrote. The last rename of all is
+  // then complete: every certified run was certified before its writer's
+  // own rename, hence before the last one, and the last writer, looking
+  // after that rename, saw it (had it seen other runs than it wrote, its
+  // rename would not have been the last); this takes a file system that
+  // shows a file to every machine once it is written (NFS clients may cache
+  // lookups for a while: doc/guide/cluster.md says how to check the index).
+  // No lock is needed, so none whose support depends on how a cluster
+  // mounts its file system (Lustre's flock option, NFS's lock daemon).
+  void
+  Campaign::write_index() const
+  {
+    std::string written;
+    do
+      {
+        written = index_text();
+        write_file_atomically(directory + "/index.json", written);
+    } while (index_text() != written);
   }
 
 
@@ -432,18 +480,28 @@ namespace impact_fem
                         << ", ";
             std::cout << "velocities x " << velocities.size() << ")";
           }
-        std::cout << " into " << directory << ", " << n_groups
-                  << " group(s) of " << group_size << " rank(s)" << std::endl;
+        std::cout << " into " << directory;
+        if (!shard.whole())
+          std::cout << ", shard " << shard.name() << ": "
+                    << shard.n_points(points.size()) << " of them";
+        std::cout << ", " << n_groups << " group(s) of " << group_size
+                  << " rank(s)" << std::endl;
       }
     MPI_Barrier(comm);
 
+    // The shard's points, taken by the rank groups in turn.
+    std::vector<unsigned int> share;
+    for (unsigned int i = 0; i < points.size(); ++i)
+      if (shard.contains(i))
+        share.push_back(i);
     unsigned int failed = 0;
-    for (unsigned int i = group; i < points.size() && group < n_groups;
-         i += n_groups)
+    for (unsigned int j = group; j < share.size() && group < n_groups;
+         j += n_groups)
       {
-        const Point      &point         = points[i];
-        const std::string run_directory = directory + "/" + point.path;
-        const std::string line = "  run " + std::to_string(i + 1) + "/" +
+        const unsigned int i             = share[j];
+        const Point       &point         = points[i];
+        const std::string  run_directory = directory + "/" + point.path;
+        const std::string  line = "  run " + std::to_string(i + 1) + "/" +
                                  std::to_string(points.size()) + "  " +
                                  label(point);
         // A signal received during an earlier run stops the campaign here
@@ -555,7 +613,13 @@ namespace impact_fem
     if (rank == 0)
       {
         write_index();
+        // With shards, the index is complete once the last shard ends.
+        const auto listed =
+          std::count_if(points.begin(), points.end(), [this](const Point &p) {
+            return listed_in_index(p);
+          });
         std::cout << "impact-fem campaign: index " << directory << "/index.json"
+                  << " (" << listed << " of " << points.size() << " runs)"
                   << (failed > 0 ? ", " + std::to_string(failed) +
                                      " run(s) failed or interrupted" :
                                    std::string())

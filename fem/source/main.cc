@@ -31,7 +31,7 @@ namespace
          "\"Section/Entry=value\"]...\n"
          "                  [--velocities V1,V2,...] [--sweep "
          "\"Section/Entry=v1,v2,...\"]...\n"
-         "                  [--verify]\n"
+         "                  [--verify] [--shard K/N]\n"
          "       impact-fem --print-parameters\n"
          "Runs one impact; results go to Output/Directory (history.h5, "
          "summary.json).\n"
@@ -46,6 +46,11 @@ namespace
          "With --verify (or Verification/Verify) every run is also run on two "
          "coarser discretisations and its numerical uncertainty (observed "
          "order, Richardson extrapolation, GCI) written to verification.json.\n"
+         "With --shard K/N a campaign's share K of N (1 <= K <= N): the points "
+         "i = 0, 1, ... of the campaign's order with i mod N = K - 1. N jobs, "
+         "one per share, on one machine or several sharing Output/Directory, "
+         "leave the runs and the index.json of one job (doc/guide/cluster.md)."
+         "\n"
          "Exit codes: 0 success; 2 bad input (an option, the parameter file, "
          "an "
          "entry or its value, named in the message; nothing is written); 1 a "
@@ -102,9 +107,10 @@ main(int argc, char *argv[])
       impact_fem::Campaign::declare_parameters(prm);
       impact_fem::verification::declare_parameters(prm);
 
-      std::string              parameter_file, velocity_list;
-      std::vector<std::string> assignments, sweep_items;
-      bool                     verify = false;
+      std::string               parameter_file, velocity_list, shard_option;
+      impact_fem::CampaignShard shard;
+      std::vector<std::string>  assignments, sweep_items;
+      bool                      verify = false;
       for (int i = 1; i < argc; ++i)
         {
           const std::string arg = argv[i];
@@ -150,6 +156,15 @@ main(int argc, char *argv[])
             sweep_items.push_back(arg.substr(8));
           else if (arg == "--verify")
             verify = true;
+          else if (arg == "--shard" || arg.rfind("--shard=", 0) == 0)
+            {
+              AssertThrow(arg != "--shard" || i + 1 < argc,
+                          ExcMessage("--shard needs K/N, e.g. --shard 1/4 "
+                                     "(share K of a campaign split into N "
+                                     "jobs, 1 <= K <= N)."));
+              shard_option = arg == "--shard" ? argv[++i] : arg.substr(8);
+              shard = impact_fem::CampaignShard::parse(shard_option, "--shard");
+            }
           else if (arg.rfind("--velocities=", 0) == 0)
             velocity_list = arg.substr(13);
           else if (!arg.empty() && arg[0] == '-')
@@ -180,6 +195,18 @@ main(int argc, char *argv[])
       prm.enter_subsection("Scenario");
       const std::string analysis = prm.get("Analysis");
       prm.leave_subsection();
+      const bool alone = analysis == "material point" ||
+                         analysis == "specimen" || analysis == "indentation";
+      AssertThrow(shard_option.empty() ||
+                    (!alone && impact_fem::Campaign::requested(prm,
+                                                               velocity_list,
+                                                               sweep_items)),
+                  ExcMessage("--shard " + shard_option +
+                             ": only a campaign of impacts is shared among "
+                             "jobs (--velocities, --sweep, Campaign/Impact "
+                             "velocities or Campaign/Sweep); this command "
+                             "runs one " +
+                             analysis + "."));
       if (analysis == "material point")
         {
           if (is_root)
@@ -219,7 +246,7 @@ main(int argc, char *argv[])
         }
       else if (impact_fem::Campaign::requested(prm, velocity_list, sweep_items))
         {
-          impact_fem::Campaign campaign(prm, velocity_list, sweep_items);
+          impact_fem::Campaign campaign(prm, velocity_list, sweep_items, shard);
           reading_input = false;
           if (campaign.run(MPI_COMM_WORLD) > 0)
             return 1;

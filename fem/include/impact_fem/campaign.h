@@ -1,6 +1,7 @@
 #ifndef IMPACT_FEM_CAMPAIGN_H
 #define IMPACT_FEM_CAMPAIGN_H
 
+#include <impact_fem/campaign/shard.h>
 #include <impact_fem/campaign/sweep.h>
 
 #include <deal.II/base/mpi.h>
@@ -35,6 +36,11 @@ namespace impact_fem
    * verification.json is linked from the index entry ("verification") and
    * covered by the checksums; a complete run without one is verified at
    * restart, the run itself kept.
+   *
+   * With --shard K/N (campaign/shard.h) only the job's share of the points
+   * is run; N such jobs, concurrent or not, on one machine or many sharing
+   * the campaign directory, leave the same runs and the same index.json as
+   * one job (write_index() says why two writers do no harm).
    */
   class Campaign
   {
@@ -51,12 +57,14 @@ namespace impact_fem
 
     /// The campaign of the command line's lists where given, else of the
     /// Campaign entries; checks them all (errors name the option) before
-    /// anything is written.
+    /// anything is written. @p shard: the points this job runs.
     Campaign(ParameterHandler               &prm,
              const std::string              &velocity_list,
-             const std::vector<std::string> &sweep_items);
+             const std::vector<std::string> &sweep_items,
+             const CampaignShard            &shard = CampaignShard());
 
-    /// Runs what is missing; returns the number of runs that failed.
+    /// Runs what is missing of the shard's points; returns the number of
+    /// runs that failed.
     unsigned int
     run(const MPI_Comm comm);
 
@@ -80,6 +88,9 @@ namespace impact_fem
     restart_status(const Point &point, bool &verified) const;
     bool
     listed_in_index(const Point &point) const;
+    /// index.json's text as the run directories show it now.
+    std::string
+    index_text() const;
     void
     write_index() const;
 
@@ -87,6 +98,7 @@ namespace impact_fem
     std::vector<SweepAxis> axes;
     std::vector<double>    velocities;
     std::vector<Point>     points;
+    CampaignShard          shard;
     std::string            directory;
     unsigned int           ranks_per_run = 0;
     bool                   verify        = false; ///< Verification/Verify
