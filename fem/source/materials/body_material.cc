@@ -46,9 +46,9 @@ namespace impact_fem
 
       /**
        * The entries of @p model's subsection declared without a default
-       * (ConstantPattern, empty text): the constants a scenario or the
-       * table must give. Found by declaring the model alone in a scratch
-       * handler, so that a new model needs no list here.
+       * (a ConstantPattern): the constants a scenario or the table must
+       * give. Found by declaring the model alone in a scratch handler, so
+       * that a new model needs no list here.
        */
       std::vector<std::string>
       constants_without_default(const std::string &model)
@@ -56,16 +56,20 @@ namespace impact_fem
         ParameterHandler scratch;
         Kinds::get(model).declare_parameters(scratch);
         std::ostringstream text;
-        scratch.print_parameters(text, ParameterHandler::ShortJSON);
+        scratch.print_parameters(text, ParameterHandler::JSON);
+        const std::string        marker = ConstantPattern::marker;
         std::vector<std::string> names;
-        for (const auto &[name, node] :
-             nlohmann::json::parse(text.str()).items())
-          {
-            const nlohmann::json &value =
-              node.is_object() && node.contains("value") ? node["value"] : node;
-            if (value.is_string() && value.get<std::string>().empty())
-              names.push_back(name);
-          }
+        const nlohmann::json     entries = nlohmann::json::parse(text.str());
+        for (const auto &[name, node] : entries.items())
+          if (node.is_object() && node.contains("pattern_description"))
+            {
+              const std::string pattern = node["pattern_description"];
+              if (pattern.size() >= marker.size() &&
+                  pattern.compare(pattern.size() - marker.size(),
+                                  marker.size(),
+                                  marker) == 0)
+                names.push_back(name);
+            }
         return names;
       }
 
@@ -95,7 +99,7 @@ namespace impact_fem
     std::string
     ConstantPattern::description(const OutputStyle style) const
     {
-      return number.description(style) + " or empty (not given)";
+      return number.description(style) + marker;
     }
 
 
@@ -317,15 +321,14 @@ namespace impact_fem
     }
 
 
-    nlohmann::ordered_json
+    nlohmann::json
     BodyMaterial::to_json() const
     {
-      nlohmann::ordered_json json;
-      json["material model"]      = model;
-      json["material"]            = table_name.empty() ?
-                                      nlohmann::ordered_json(nullptr) :
-                                      nlohmann::ordered_json(table_name);
-      nlohmann::ordered_json list = nlohmann::ordered_json::object();
+      nlohmann::json json;
+      json["material model"] = model;
+      json["material"]       = table_name.empty() ? nlohmann::json(nullptr) :
+                                                    nlohmann::json(table_name);
+      nlohmann::json list    = nlohmann::json::object();
       for (const auto &constant : constants)
         {
           const std::string entry =

@@ -37,6 +37,10 @@ namespace impact_fem
       std::unique_ptr<Patterns::PatternBase>
       clone() const override;
 
+      /// The end of description(): how the entries without a default are
+      /// told from the others.
+      static constexpr const char *marker = " or empty (not given)";
+
     private:
       Patterns::Double number;
     };
@@ -95,7 +99,7 @@ namespace impact_fem
 
       /// For summary.json: {"material model", "material", "constants":
       /// {entry: {"parameter", "value", "unit", "origin", "source"}}}.
-      nlohmann::ordered_json
+      nlohmann::json
       to_json() const;
 
       /// Lines for the start of a run's log, one per constant.
