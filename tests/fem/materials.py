@@ -78,7 +78,7 @@ refused("unknown", [STEEL_PRM] + sets(dict(SMALL, **{"Sphere/Material": "AISI 99
 # ---- the former second yield strength: refused, its replacement named ----
 refused("replaced_yield",
         [STEEL_PRM] + sets(dict(SMALL, **{"Sphere/Material model": "elastic-plastic",
-                                          "Sphere/Elastic-plastic/Yield strength": 2e9})),
+                                          "Sphere/Elastic-plastic/Yield strength": "2e9"})),
         ["Sphere/Elastic-plastic/Yield strength was replaced by Sphere/Yield strength",
          "set Yield strength = 2e9"])
 refused("rigid_material", [STEEL_PRM] + sets(dict(SMALL, **{"Plate/Material model": "rigid",

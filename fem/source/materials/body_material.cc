@@ -76,8 +76,8 @@ namespace impact_fem
       std::string
       how_to_give(const std::string &body)
       {
-        return "set it in the scenario, or name a material of the table "
-               "for this body ('set Material = <name>' in subsection " +
+        return "set the entry in the scenario, or name a material of the "
+               "table for this body ('set Material = <name>' in subsection " +
                body + "; known: " + material_table_names() +
                "; fem/materials/materials.json)";
       }
