@@ -127,9 +127,9 @@ if code == 0:
         if origin == "table":
             checks.check(c.get("source") == table[entry]["source"],
                          f"summary.json: {entry} cites the table's source")
-    checks.check(constants.get("Poisson's ratio", {}).get("value") != table["Poisson's ratio"]["value"],
-                 "the scenario's Poisson's ratio overrides the table's "
-                 f"({table['Poisson's ratio']['value']})")
+    table_poisson = table["Poisson's ratio"]["value"]
+    checks.check(constants.get("Poisson's ratio", {}).get("value") != table_poisson,
+                 f"the scenario's Poisson's ratio overrides the table's ({table_poisson})")
     plate = s.get("materials", {}).get("plate", {})
     checks.check(plate.get("material") is None and all(c.get("origin") == "scenario"
                                                        for c in plate.get("constants", {}).values())

@@ -8,6 +8,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <sstream>
 
 namespace impact_fem
@@ -354,12 +355,23 @@ namespace impact_fem
         text << ", Material = " << table_name;
       text << "\n";
       for (const auto &constant : constants)
-        text << "    " << constant.parameter << " = "
-             << as_written(constant.value)
-             << (constant.unit.empty() ? "" : " " + constant.unit) << "  ("
-             << (constant.origin == "table" ? "table: " + table_name :
-                                              "scenario entry")
-             << ")\n";
+        {
+          // Six digits as a reader writes them (8000, not 8e+03), more only
+          // where six would not read back as the value used.
+          std::ostringstream value;
+          value << constant.value;
+          const bool exact =
+            std::strtod(value.str().c_str(), nullptr) == constant.value;
+          text << "    " << constant.parameter << " = "
+               << (exact ? value.str() : as_written(constant.value))
+               << (constant.unit.empty() || constant.unit == "1" ?
+                     "" :
+                     " " + constant.unit)
+               << "  ("
+               << (constant.origin == "table" ? "table: " + table_name :
+                                                "scenario entry")
+               << ")\n";
+        }
       return text.str();
     }
   } // namespace materials
