@@ -16,6 +16,8 @@ binary="$build/bin/impact-fem"
 mkdir -p "$output"
 run() { # name contact-element-size maximum-element-size
   "$binary" --set "Scenario/Analysis=indentation" --set "Plate/Material model=rigid" \
+    --set "Sphere/Elastic/Young's modulus=2e11" --set "Sphere/Elastic/Poisson's ratio=0.25" \
+    --set "Sphere/Elastic/Density=7800" \
     --set "Indentation/Maximum approach=20e-6" --set "Indentation/Steps=20" \
     --set "Mesh/Contact element size=$2" --set "Mesh/Maximum element size=$3" \
     --set "Output/Directory=$output/$1" > "$output/$1.log" 2>&1 \

@@ -62,7 +62,8 @@ PY
       --set "Sphere/Material model=elastic-plastic" \
       --set "Sphere/Elastic-plastic/Young's modulus=$young" \
       --set "Sphere/Elastic-plastic/Poisson's ratio=$poisson" \
-      --set "Sphere/Elastic-plastic/Yield strength=$yield" \
+      --set "Sphere/Elastic-plastic/Density=7800" \
+      --set "Sphere/Yield strength=$yield" \
       --set "Sphere/Elastic-plastic/Hardening modulus=0" \
       --set "Indentation/Maximum approach=$approach" --set "Indentation/Steps=$steps" \
       --set "Nonlinear solver/Maximum iterations=$max_iterations" \

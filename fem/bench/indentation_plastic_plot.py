@@ -39,7 +39,11 @@ for arg in sys.argv[3:]:
     with h5py.File(os.path.join(directory, "history.h5"), "r") as f:
         E = attribute(f, "Sphere/Elastic-plastic/Young's modulus")
         nu = attribute(f, "Sphere/Elastic-plastic/Poisson's ratio")
-        Y = attribute(f, "Sphere/Elastic-plastic/Yield strength")
+        # One yield strength per body; results written before it kept it in the material's
+        # subsection.
+        Y = attribute(f, "Sphere/Yield strength" if "Sphere/Yield strength" in f.attrs
+                      and attribute(f, "Sphere/Yield strength") else
+                      "Sphere/Elastic-plastic/Yield strength")
         R = attribute(f, "Scenario/Sphere radius")
         data = {k: f[k][:] for k in ("approach", "contact_force", "unloading", "contact_radius")}
     runs.append((label or os.path.basename(directory.rstrip("/")), E, nu, Y, R, data,

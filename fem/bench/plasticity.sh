@@ -38,7 +38,7 @@ run() { # name ranks velocity --set arguments...
 plastic=()
 for body in Sphere Plate; do
   plastic+=(--set "$body/Material model=elastic-plastic"
-            --set "$body/Elastic-plastic/Yield strength=2.03e9"
+            --set "$body/Yield strength=2.03e9"
             --set "$body/Elastic-plastic/Hardening modulus=$hardening")
 done
 

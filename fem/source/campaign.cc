@@ -1,5 +1,6 @@
 #include <impact_fem/campaign.h>
 #include <impact_fem/campaign/checksums.h>
+#include <impact_fem/campaign/run_identity.h>
 #include <impact_fem/impact_problem.h>
 #include <impact_fem/parameters.h>
 #include <impact_fem/verification/verification.h>
@@ -17,7 +18,6 @@
 #include <iomanip>
 #include <iostream>
 #include <memory>
-#include <regex>
 #include <set>
 #include <sstream>
 #include <unistd.h>
@@ -57,36 +57,12 @@ namespace impact_fem
     }
 
 
-    // The parameters.prm text as compared at restart: without its
-    // Output/Directory line (where a campaign lies is not a parameter of
-    // its runs: a moved or copied campaign keeps them) and without the
-    // subsection Campaign (the campaign's own entries, normalised anyway;
-    // files written before Campaign/Sweep existed lack its line).
+    // The parameters.prm text as compared at restart: its run identity
+    // (campaign/run_identity.h lists the entries left out, and why).
     std::string
     comparable_parameters(const std::string &text)
     {
-      static const std::regex  directory_line(R"(^\s*set\s+Directory\s*=.*$)");
-      std::istringstream       in(text);
-      std::ostringstream       out;
-      std::vector<std::string> sections;
-      std::string              line;
-      while (std::getline(in, line))
-        {
-          const std::string trimmed = Utilities::trim(line);
-          const bool        in_campaign =
-            !sections.empty() && sections[0] == "Campaign";
-          if (trimmed.rfind("subsection ", 0) == 0)
-            sections.push_back(Utilities::trim(trimmed.substr(11)));
-          else if (trimmed == "end" && !sections.empty())
-            sections.pop_back();
-          else if (sections.size() == 1 && sections[0] == "Output" &&
-                   std::regex_match(line, directory_line))
-            continue;
-          if (in_campaign || (!sections.empty() && sections[0] == "Campaign"))
-            continue;
-          out << line << '\n';
-        }
-      return out.str();
+      return run_identity::of(text);
     }
 
 

@@ -131,6 +131,10 @@ namespace impact_fem
     if (parameters.indentation)
       indentation_control.parse_parameters(prm);
     nonlinear_step.parse_parameters(prm);
+    // What the bodies are made of, and where each constant came from.
+    pcout << "impact-fem: materials\n"
+          << parameters.material_used[sphere].describe()
+          << parameters.material_used[plate].describe() << std::flush;
     const HertzImpact &hertz = parameters.hertz;
     const double       expected_contact_radius =
       parameters.indentation ? std::sqrt(parameters.geometry.sphere_radius *
@@ -691,6 +695,11 @@ namespace impact_fem
     prm.print_parameters(prm_json, ParameterHandler::ShortJSON);
     std::map<std::string, std::string> entries;
     flatten(nlohmann::json::parse(prm_json.str()), "", entries);
+    // The constants a run used, wherever they came from (the scenario or
+    // the material table), under their entries' names.
+    for (const auto &body : parameters.material_used)
+      for (const auto &constant : body.constants)
+        entries[constant.parameter] = as_written(constant.value);
     return entries;
   }
 
@@ -734,14 +743,17 @@ namespace impact_fem
     for (auto &[name, postprocessor] : postprocessors)
       postprocessor->finalize(*this, history, result, report);
     result[result_files::sphere_mass_key] = parameters.sphere_mass;
-    result["scheme"]                      = parameters.scheme;
-    result[result_files::time_step_key]   = time_stepper->time_step();
-    result["cells"]         = triangulation.n_global_active_cells();
-    result["dofs"]          = dof_handler.n_dofs();
-    result["contact_nodes"] = contact.n_contact_nodes();
-    result["steps"]         = time_stepper->step_number();
-    result["ranks"]         = Utilities::MPI::n_mpi_processes(mpi_communicator);
-    result["wall_time"]     = wall_time;
+    result[result_files::materials_key]   = {
+        {body_name(sphere), parameters.material_used[sphere].to_json()},
+        {body_name(plate), parameters.material_used[plate].to_json()}};
+    result["scheme"]                    = parameters.scheme;
+    result[result_files::time_step_key] = time_stepper->time_step();
+    result["cells"]                     = triangulation.n_global_active_cells();
+    result["dofs"]                      = dof_handler.n_dofs();
+    result["contact_nodes"]             = contact.n_contact_nodes();
+    result["steps"]                     = time_stepper->step_number();
+    result["ranks"]     = Utilities::MPI::n_mpi_processes(mpi_communicator);
+    result["wall_time"] = wall_time;
 
     if (Utilities::MPI::this_mpi_process(mpi_communicator) != 0)
       return;

@@ -1,5 +1,6 @@
 #include <impact_fem/analysis/indentation.h>
 #include <impact_fem/contact/mortar_contact.h>
+#include <impact_fem/materials/body_material.h>
 #include <impact_fem/parameters.h>
 #include <impact_fem/result_files.h>
 #include <impact_fem/postprocess/interface.h>
@@ -134,13 +135,7 @@ namespace impact_fem
       {
         prm.enter_subsection(body);
         materials::declare_parameters(prm, contract::elastic_model);
-        prm.declare_entry(contract::yield_strength.entry,
-                          "0",
-                          Patterns::Double(0),
-                          "Yield strength of the body [Pa], >= 0; 0: none. "
-                          "The summary reports whether, when and where the "
-                          "von Mises stress exceeded it (the viscoelastic "
-                          "model is not valid beyond).");
+        materials::declare_body_entries(prm);
         prm.leave_subsection();
       }
 
@@ -266,14 +261,17 @@ namespace impact_fem
                            text(plate_faces.support_stiffness) + " N/m^3."));
     for (const unsigned int body : {sphere, plate})
       {
-        prm.enter_subsection(body == sphere ? contract::sphere_body :
-                                              contract::plate_body);
-        const bool rigid = prm.get(contract::material_model_entry) ==
-                           materials::rigid_model_name;
-        yield_strength[body] = prm.get_double(contract::yield_strength.entry);
-        if (!rigid)
-          material[body] = materials::create_material(prm);
-        prm.leave_subsection();
+        materials::BodyMaterial read = materials::read_body_material(
+          prm, body == sphere ? contract::sphere_body : contract::plate_body);
+        const bool rigid = read.model == materials::rigid_model_name;
+        // The elastic-plastic model yields by itself (its plastic strain is
+        // reported); the summary's yield check is for the models that
+        // cannot.
+        yield_strength[body] = read.model == contract::elastic_plastic_model ?
+                                 0 :
+                                 read.yield_strength;
+        material[body]       = std::move(read.material);
+        material_used[body]  = std::move(read);
         AssertThrow(!rigid || body == plate,
                     ExcMessage("Sphere/Material model = rigid is not allowed: "
                                "the sphere is the deformable body (only the "
@@ -316,9 +314,6 @@ namespace impact_fem
         refuse(plate_faces.support_stiffness != 0,
                "Scenario/Support stiffness",
                text(plate_faces.support_stiffness));
-        refuse(yield_strength[plate] != 0,
-               "Plate/Yield strength",
-               text(yield_strength[plate]));
       }
     AssertThrow(!(static_press || indentation) || rigid_plate ||
                   plate_faces.side == FaceCondition::clamped ||

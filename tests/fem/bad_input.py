@@ -51,8 +51,6 @@ expect_failure("negative_retardation", {"Sphere/Material model": "kelvin-voigt",
 # The elastic-plastic entries: the entry, its range and the value named.
 plastic = {"Sphere/Material model": "elastic-plastic"}
 for entry, value, words in [
-        ("Yield strength", -1e8, ["Elastic-plastic/Yield strength", "> 0 Pa", "-1e+08"]),
-        ("Yield strength", 0, ["Elastic-plastic/Yield strength", "> 0 Pa", "got 0"]),
         ("Hardening modulus", -5e9, ["Elastic-plastic/Hardening modulus", ">= 0 Pa", "-5e+09"]),
         ("Johnson-Cook n", 1.5, ["Elastic-plastic/Johnson-Cook n", "(0, 1]", "1.5"]),
         ("Johnson-Cook n", 0, ["Elastic-plastic/Johnson-Cook n", "(0, 1]", "got 0"]),
@@ -63,6 +61,11 @@ for entry, value, words in [
         ("Poisson's ratio", 0.5, ["Poisson's ratio", "0.5"])]:
     expect_failure("plastic_" + entry.lower().replace(" ", "_").replace("'", "") + "_" + str(value),
                    dict(plastic, **{"Sphere/Elastic-plastic/" + entry: value}), words)
+# One yield strength per body, beside its Material model (materials.py tests the rest).
+expect_failure("plastic_yield_strength_negative", dict(plastic, **{"Sphere/Yield strength": -1e8}),
+               ["Sphere/Yield strength", "does not fit"])
+expect_failure("plastic_yield_strength_0", dict(plastic, **{"Sphere/Yield strength": 0}),
+               ["Sphere/Yield strength", "> 0 Pa", "got 0"])
 expect_failure("plastic_hardening_law", dict(plastic, **{"Plate/Material model": "elastic-plastic",
                                                          "Plate/Elastic-plastic/Hardening law": "voce"}),
                ["Hardening law", "voce"])

@@ -31,7 +31,7 @@ env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIR
 
 def command(directory):
     return [mpiexec, "--allow-run-as-root", "--oversubscribe", "-np", "2", binary,
-            "--velocities", VELOCITIES, "--set", f"Output/Directory={directory}"] + settings
+            STEEL_PRM, "--velocities", VELOCITIES, "--set", f"Output/Directory={directory}"] + settings
 
 
 def complete_runs(directory):

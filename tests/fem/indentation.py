@@ -106,7 +106,7 @@ def expect_refusal(name, overrides, words, extra=()):
 def run_with_arguments(directory, overrides, extra):
     import shutil, subprocess
     shutil.rmtree(directory, ignore_errors=True)
-    command = [binary, "--set", "Output/Directory=" + directory] + list(extra)
+    command = [binary, STEEL_PRM, "--set", "Output/Directory=" + directory] + list(extra)
     for key, value in dict(settings, **overrides).items():
         command += ["--set", f"{key}={value}"]
     result = subprocess.run(command, capture_output=True, text=True)

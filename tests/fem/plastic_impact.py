@@ -29,7 +29,7 @@ def bodies(model, yield_strength=YIELD, extra=None):
     for body in ("Sphere", "Plate"):
         s[f"{body}/Material model"] = model
         if model == "elastic-plastic":
-            s[f"{body}/Elastic-plastic/Yield strength"] = yield_strength
+            s[f"{body}/Yield strength"] = yield_strength
     s.update(extra or {})
     return s
 
@@ -101,7 +101,7 @@ import glob, subprocess, h5py
 directory = f"{work}/plastic_sweep"
 import shutil
 shutil.rmtree(directory, ignore_errors=True)
-command = [binary, "--velocities", "3", "--sweep", "Sphere/Elastic-plastic/Yield strength=2.03e9,4e9",
+command = [binary, STEEL_PRM, "--velocities", "3", "--sweep", "Sphere/Yield strength=2.03e9,4e9",
            "--set", "Output/Directory=" + directory, "--set", "Output/Snapshot interval=2e-5"]
 for key, value in bodies("elastic-plastic").items():
     command += ["--set", f"{key}={value}"]
@@ -110,10 +110,10 @@ print("sweep: exit", result.returncode, (result.stdout + result.stderr).strip().
 runs = {}
 for path in glob.glob(f"{directory}/**/history.h5", recursive=True):
     with h5py.File(path, "r") as f:
-        runs[float(f.attrs["Sphere/Elastic-plastic/Yield strength"])] = os.path.dirname(path)
+        runs[float(f.attrs["Sphere/Yield strength"])] = os.path.dirname(path)
 print("sweep runs:", {k: os.path.relpath(v, directory) for k, v in sorted(runs.items())})
 checks.check(result.returncode == 0 and sorted(runs) == [2.03e9, 4e9],
-             "sweep over Sphere/Elastic-plastic/Yield strength: one run per value")
+             "sweep over Sphere/Yield strength: one run per value")
 if sorted(runs) == [2.03e9, 4e9]:
     w = {y: summary(d)["max_accumulated_plastic_strain_sphere"] for y, d in runs.items()}
     print(f"  sphere's max accumulated plastic strain: {w}")

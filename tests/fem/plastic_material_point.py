@@ -39,7 +39,7 @@ def material(hardening=H, extra=None):
          "Sphere/Material model": "elastic-plastic",
          "Sphere/Elastic-plastic/Young's modulus": E,
          "Sphere/Elastic-plastic/Poisson's ratio": NU,
-         "Sphere/Elastic-plastic/Yield strength": Y,
+         "Sphere/Yield strength": Y,
          "Sphere/Elastic-plastic/Hardening modulus": hardening,
          "Material point/Loading": "strain path",
          "Material point/Ramp time": RAMP}
@@ -174,7 +174,7 @@ checks.check(0.8 < order < 1.5, "rotating flow direction: radial return converge
 # ---- Johnson-Cook (rate term off): uniaxial flow curve ----
 A, B, n = 3e8, 5e8, 0.4
 jc = {"Sphere/Elastic-plastic/Hardening law": "johnson-cook",
-      "Sphere/Elastic-plastic/Yield strength": A,
+      "Sphere/Yield strength": A,
       "Sphere/Elastic-plastic/Johnson-Cook B": B,
       "Sphere/Elastic-plastic/Johnson-Cook n": n}
 ep_targets = [0.002, 0.01, 0.03]

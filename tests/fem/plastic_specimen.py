@@ -44,7 +44,9 @@ def specimen(name, path, steps_per_segment, law):
                 "Material point/Ramp time": RAMP,
                 "Material point/Duration": RAMP * len(path),
                 "Material point/Time step": RAMP / steps_per_segment}
-    settings.update({f"Sphere/Elastic-plastic/{k}": v for k, v in law.items()})
+    # The yield strength is the body's (one per body), the rest the model's.
+    settings.update({(f"Sphere/{k}" if k == "Yield strength" else f"Sphere/Elastic-plastic/{k}"): v
+                     for k, v in law.items()})
     code, output = run(binary, directory, settings)
     print(output.strip().splitlines()[-1])
     names = ["time", "strain_zz", "stress_rr", "stress_zz", "stress_thetatheta", "stress_rz",

@@ -14,7 +14,7 @@ binary, work, mpiexec = parse_common_arguments()
 checks = Checks()
 directory = f"{work}/progress"
 command = (f"{mpiexec} --allow-run-as-root --oversubscribe -np 1 {binary} "
-           f"--set Output/Directory={directory} --set 'Mesh/Contact element size=100e-6' "
+           f"{STEEL_PRM} --set Output/Directory={directory} --set 'Mesh/Contact element size=100e-6' "
            f"--set 'Output/Progress interval=1000'")
 env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
 result = subprocess.run(["script", "-qec", command, "/dev/null"], capture_output=True, text=True, env=env)

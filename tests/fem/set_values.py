@@ -33,14 +33,14 @@ cases = [
     ("Time integration/Steps per contact time", ["0", "5", "-1e300", "many", "1e300"], {}),
     ("Time integration/Time step", ["-1", "1e-300", "1e300"], {}),
     ("Time integration/Time after separation", ["-1", "1e300"], {}),
-    ("Sphere/Elastic-plastic/Yield strength", ["0", "-1e8", "nan"], plastic),
+    ("Sphere/Yield strength", ["0", "-1e8", "nan"], plastic),
 ]
 
 
 def run_case(index, entry, value, settings):
     directory = f"{work}/set_value_{index}"
     shutil.rmtree(directory, ignore_errors=True)
-    command = [binary, "--set", "Output/Directory=" + directory]
+    command = [binary, STEEL_PRM, "--set", "Output/Directory=" + directory]
     for key, setting in dict(small, **settings).items():
         command += ["--set", f"{key}={setting}"]
     command += ["--set", f"{entry}={value}"]

@@ -45,7 +45,7 @@ PATHS = [f"plate-bottom-absorbing_plate-thickness-{h}_v{v:g}" for h in THICKNESS
 
 
 def campaign(directory, ranks=2, extra=SWEEP + VELOCITIES):
-    command = [binary, "--set", f"Output/Directory={directory}"] + SETTINGS + extra
+    command = [binary, STEEL_PRM, "--set", f"Output/Directory={directory}"] + SETTINGS + extra
     if ranks > 1:
         command = [mpiexec, "--allow-run-as-root", "--oversubscribe", "-np", str(ranks)] + command
     result = subprocess.run(command, capture_output=True, text=True, env=env)

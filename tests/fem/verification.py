@@ -36,7 +36,7 @@ QUANTITIES = ("contact_time", "force_max", "time_force_max", "approach_max", "re
 def verify(directory, settings, extra=()):
     if os.path.isdir(directory):
         shutil.rmtree(directory)
-    command = [binary, "--set", "Output/Directory=" + directory, "--verify", *extra]
+    command = [binary, STEEL_PRM, "--set", "Output/Directory=" + directory, "--verify", *extra]
     for key, value in settings.items():
         command += ["--set", f"{key}={value}"]
     return subprocess.run(command, capture_output=True, text=True)
@@ -93,7 +93,7 @@ with open(f"{campaign}/index.json") as f:
     index = json.load(f)
 checks.check([run.get("verification") for run in index["runs"]] == ["v1/verification.json", "v2/verification.json"],
              "index.json links each run's verification.json")
-again = subprocess.run([binary, "--set", f"Output/Directory={campaign}", "--verify", "--velocities", "1,2"]
+again = subprocess.run([binary, STEEL_PRM, "--set", f"Output/Directory={campaign}", "--verify", "--velocities", "1,2"]
                        + sum((["--set", f"{k}={x}"] for k, x in SMALL.items()), []),
                        capture_output=True, text=True)
 checks.check(again.returncode == 0 and again.stdout.count("complete, skipped") == 2,
@@ -120,7 +120,7 @@ with open(f"{campaign}/index.json") as f:
 plain = f"{work}/verification_later"
 if os.path.isdir(plain):
     shutil.rmtree(plain)
-base = [binary, "--set", f"Output/Directory={plain}", "--velocities", "1"] + \
+base = [binary, STEEL_PRM, "--set", f"Output/Directory={plain}", "--velocities", "1"] + \
        sum((["--set", f"{k}={x}"] for k, x in SMALL.items()), [])
 first = subprocess.run(base, capture_output=True, text=True)
 wall = summary(f"{plain}/v1")["wall_time"]

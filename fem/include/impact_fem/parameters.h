@@ -2,6 +2,7 @@
 #define IMPACT_FEM_PARAMETERS_H
 
 #include <impact_fem/hertz.h>
+#include <impact_fem/materials/body_material.h>
 #include <impact_fem/materials/interface.h>
 #include <impact_fem/mesh/sphere_plate_mesh.h>
 
@@ -103,7 +104,12 @@ namespace impact_fem
     // is the fixed plane z = 0: no material, no mesh, no faces.
     std::unique_ptr<materials::Interface> material[2];
     bool                                  rigid_plate = false;
-    double yield_strength[2] = {0, 0}; ///< [Pa], 0: none
+    /// [Pa] of the summary's yield check, 0: none (elastic-plastic bodies
+    /// yield by themselves).
+    double yield_strength[2] = {0, 0};
+    /// What each body is made of and where each constant came from (the
+    /// model itself moved to material[]).
+    materials::BodyMaterial material_used[2];
 
     // Time control
     std::string scheme;                     ///< Time integration/Scheme

@@ -2,6 +2,7 @@
 // their history columns (loading_history.h).
 
 #include <impact_fem/analysis/loading_history.h>
+#include <impact_fem/materials/body_material.h>
 
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
@@ -29,9 +30,11 @@ namespace impact_fem
     read_loading(ParameterHandler &prm)
     {
       Loading l;
-      prm.enter_subsection("Sphere");
-      l.material = materials::create_material(prm);
-      prm.leave_subsection();
+      l.material = materials::read_body_material(prm, "Sphere").material;
+      AssertThrow(l.material,
+                  ExcMessage("Sphere/Material model = rigid is not allowed: "
+                             "the material point and the specimen are of "
+                             "the sphere's material."));
       prm.enter_subsection("Output");
       l.directory = prm.get("Directory");
       prm.leave_subsection();

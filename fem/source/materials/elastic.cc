@@ -1,3 +1,4 @@
+#include <impact_fem/materials/body_material.h>
 #include <impact_fem/materials/elastic.h>
 #include <impact_fem/result_files.h>
 
@@ -8,20 +9,29 @@ namespace impact_fem
     void
     Elastic::declare_parameters(ParameterHandler &prm)
     {
+      declare_elastic_constants(prm);
+    }
+
+
+    void
+    IsotropicElasticity::declare_elastic_constants(ParameterHandler &prm)
+    {
+      // No defaults: a constant left out is refused, or taken from the
+      // body's Material (body_material.h), never a silent steel.
       prm.declare_entry(result_files::youngs_modulus.entry,
-                        "2e11",
-                        Patterns::Double(0),
-                        "Young's modulus E [Pa], > 0.");
+                        "",
+                        ConstantPattern(0),
+                        "Young's modulus E [Pa], > 0; no default.");
       prm.declare_entry(result_files::poissons_ratio.entry,
-                        "0.25",
-                        Patterns::Double(-1, 0.5),
+                        "",
+                        ConstantPattern(-1, 0.5),
                         "Poisson's ratio nu [-], in (-1, 0.5): 0.5 (an "
                         "incompressible body) is not supported by this "
-                        "displacement formulation.");
+                        "displacement formulation; no default.");
       prm.declare_entry(result_files::density.entry,
-                        "7800",
-                        Patterns::Double(0),
-                        "Mass density rho [kg/m^3], > 0.");
+                        "",
+                        ConstantPattern(0),
+                        "Mass density rho [kg/m^3], > 0; no default.");
     }
 
 

@@ -32,14 +32,17 @@ namespace impact_fem
     void
     ElasticPlastic::declare_parameters(ParameterHandler &prm)
     {
-      Elastic::declare_parameters(prm);
+      declare_elastic_constants(prm);
+      // Replaced by the body's own Yield strength (one per body, whatever
+      // its model): declared only to refuse it with a message saying what
+      // to write instead (body_material.cc).
+      prm.declare_entry(result_files::yield_strength.entry,
+                        "",
+                        Patterns::Anything(),
+                        "Replaced by the body's 'Yield strength' (beside "
+                        "'Material model'); must not be set.");
       // Patterns without bounds: the ranges are checked in parse_parameters
       // with messages that give the entry, its range and the value.
-      prm.declare_entry(result_files::yield_strength.entry,
-                        "2.03e9",
-                        Patterns::Double(),
-                        "Initial yield strength in uniaxial tension Y [Pa], "
-                        "> 0 (the constant A of Johnson-Cook).");
       prm.declare_entry(result_files::hardening_law_entry,
                         "linear",
                         Patterns::Selection("linear|johnson-cook"),
@@ -86,11 +89,8 @@ namespace impact_fem
       shear_modulus = young / (2 * (1 + poisson));
       bulk_modulus  = young / (3 * (1 - 2 * poisson));
 
-      yield_strength = prm.get_double(result_files::yield_strength.entry);
-      check_entry(yield_strength > 0,
-                  "Yield strength",
-                  "be > 0 Pa",
-                  yield_strength);
+      // yield_strength: the body's, given by set_yield_strength() and
+      // checked where it is read (body_material.cc).
       johnson_cook = prm.get(result_files::hardening_law_entry) ==
                      result_files::johnson_cook_law;
       hardening_modulus = prm.get_double(result_files::hardening_modulus.entry);

@@ -142,17 +142,5 @@ namespace impact_fem
         }
     }
 
-
-    std::unique_ptr<Interface>
-    create_material(ParameterHandler &prm)
-    {
-      const std::string name = prm.get(result_files::material_model_entry);
-      std::unique_ptr<Interface> material = Kinds::get(name).create();
-      prm.enter_subsection(subsection_name(name));
-      material->parse_parameters(prm);
-      prm.leave_subsection();
-      return material;
-    }
-
   } // namespace materials
 } // namespace impact_fem

@@ -1,5 +1,6 @@
 // Kelvin-Voigt viscoelasticity: sigma = C : (eps + tau_r d eps/dt), with
 // separate retardation times for the deviatoric and the volumetric parts.
+#include <impact_fem/materials/body_material.h>
 #include <impact_fem/materials/elastic.h>
 #include <impact_fem/result_files.h>
 
@@ -19,24 +20,13 @@ namespace impact_fem
       static void
       declare_parameters(ParameterHandler &prm)
       {
-        prm.declare_entry(result_files::youngs_modulus.entry,
-                          "2e11",
-                          Patterns::Double(0),
-                          "Young's modulus E of the spring [Pa], > 0.");
-        prm.declare_entry(result_files::poissons_ratio.entry,
-                          "0.25",
-                          Patterns::Double(-1, 0.5),
-                          "Poisson's ratio nu of the spring [-], in (-1, "
-                          "0.5).");
-        prm.declare_entry(result_files::density.entry,
-                          "7800",
-                          Patterns::Double(0),
-                          "Mass density rho [kg/m^3], > 0.");
+        declare_elastic_constants(prm);
         prm.declare_entry(result_files::retardation_time.entry,
-                          "1e-7",
-                          Patterns::Double(0),
+                          "",
+                          ConstantPattern(0),
                           "Retardation time tau_r of the deviatoric "
-                          "(shear) part [s], >= 0; 0 is elastic.");
+                          "(shear) part [s], >= 0; 0 is elastic; no "
+                          "default.");
         prm.declare_entry(result_files::volumetric_retardation_time.entry,
                           "-1",
                           Patterns::Double(-1),

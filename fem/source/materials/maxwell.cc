@@ -1,5 +1,6 @@
 // Generalised Maxwell (standard linear solid): shear and bulk relaxation as
 // Prony series, internal variables integrated exactly over each step.
+#include <impact_fem/materials/body_material.h>
 #include <impact_fem/materials/elastic.h>
 #include <impact_fem/result_files.h>
 
@@ -31,17 +32,19 @@ namespace impact_fem
       declare_parameters(ParameterHandler &prm)
       {
         prm.declare_entry(result_files::density.entry,
-                          "7800",
-                          Patterns::Double(0),
-                          "Mass density rho [kg/m^3], > 0.");
+                          "",
+                          ConstantPattern(0),
+                          "Mass density rho [kg/m^3], > 0; no default.");
         prm.declare_entry("Long-term shear modulus",
-                          "8e10",
-                          Patterns::Double(0),
-                          "G_inf, the relaxed shear modulus [Pa], >= 0.");
+                          "",
+                          ConstantPattern(0),
+                          "G_inf, the relaxed shear modulus [Pa], >= 0; no "
+                          "default.");
         prm.declare_entry("Long-term bulk modulus",
-                          "1.3333333333333333e11",
-                          Patterns::Double(0),
-                          "K_inf, the relaxed bulk modulus [Pa], >= 0.");
+                          "",
+                          ConstantPattern(0),
+                          "K_inf, the relaxed bulk modulus [Pa], >= 0; no "
+                          "default.");
         prm.declare_entry("Shear moduli",
                           "",
                           Patterns::List(Patterns::Double(0)),

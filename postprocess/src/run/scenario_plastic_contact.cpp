@@ -34,10 +34,14 @@ std::optional<BodyStrength> body_strength(const FemRun& run, const std::string& 
   const auto model = run.text_attributes.find(fem_format::material_model_parameter(body));
   const bool plastic =
       model != run.text_attributes.end() && model->second == fem_format::elastic_plastic_model;
-  const std::string key =
-      plastic ? fem_format::material_parameter(body, model->second, fem_format::yield_strength)
-              : fem_format::body_parameter(body, fem_format::yield_strength);
-  const auto strength = text_number(run, key);
+  // One yield strength per body, "<Body>/Yield strength"; the result files of impact-fem
+  // before it kept an elastic-plastic body's in "<Body>/Elastic-plastic/Yield strength".
+  std::string key = fem_format::body_parameter(body, fem_format::yield_strength);
+  auto strength = text_number(run, key);
+  if (plastic && !(strength && *strength > 0)) {
+    key = fem_format::material_parameter(body, model->second, fem_format::yield_strength);
+    strength = text_number(run, key);
+  }
   if (!strength || !(*strength > 0)) return std::nullopt;
   const auto young = material_constant(run, body, fem_format::youngs_modulus);
   const auto poisson = material_constant(run, body, fem_format::poissons_ratio);

@@ -97,6 +97,10 @@ namespace impact_fem::result_files
   inline constexpr const char *yield_strength_prefix = "yield_strength_";
   inline constexpr const char *max_von_mises_key     = "max_von_mises"; // Pa
   inline constexpr const char *yield_exceeded_key = "yield_exceeded"; // boolean
+  // The bodies' materials: {"sphere": {...}, "plate": {...}}, each with "material model",
+  // "material" (the table's name or null) and "constants": {entry: {"parameter", "value",
+  // "unit", "origin" ("scenario" | "table"), "source" (the table's citation)}}.
+  inline constexpr const char *materials_key = "materials";
 
   /// The unit of each numeric summary key (SI; "1" for a ratio), by the names above.
   struct KeyUnit

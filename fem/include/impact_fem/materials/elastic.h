@@ -40,6 +40,11 @@ namespace impact_fem
       }
 
     protected:
+      /// Declare "Young's modulus", "Poisson's ratio" and "Density", without
+      /// defaults.
+      static void
+      declare_elastic_constants(ParameterHandler &prm);
+
       /// Read "Young's modulus", "Poisson's ratio" and "Density" of the
       /// current subsection into young, poisson and mass_density, and check
       /// them (check_elastic_constants).

@@ -35,6 +35,13 @@ namespace impact_fem
       void
       parse_parameters(ParameterHandler &prm) override;
 
+      /// The initial flow stress Y [Pa]: the body's Yield strength.
+      void
+      set_yield_strength(const double yield) override
+      {
+        yield_strength = yield;
+      }
+
       bool
       is_linear() const override
       {

@@ -80,6 +80,14 @@ namespace impact_fem
       virtual void
       parse_parameters(ParameterHandler &prm) = 0;
 
+      /// The body's yield strength [Pa] (its entry "Yield strength", 0:
+      /// none), given before parse_parameters(): the initial flow stress of
+      /// a model that yields; a model that never yields ignores it (the
+      /// summary's yield check uses it).
+      virtual void
+      set_yield_strength(const double /*yield_strength*/)
+      {}
+
       /// Mass density [kg/m^3].
       virtual double
       density() const = 0;
@@ -234,13 +242,6 @@ namespace impact_fem
      */
     void
     declare_parameters(ParameterHandler &prm, const std::string &default_model);
-
-    /**
-     * Create the material chosen by "Material model" in the current subsection
-     * and let it parse its own subsection.
-     */
-    std::unique_ptr<Interface>
-    create_material(ParameterHandler &prm);
 
   } // namespace materials
 } // namespace impact_fem

@@ -36,9 +36,10 @@ public:
 };
 
 /// The plastic contact of the runs' scenario, or none when no body records a yield strength.
-/// Read from the first run's parameters: a body's yield strength Y is
-/// "<Body>/Elastic-plastic/Yield strength" when its "Material model" is elastic-plastic, else
-/// "<Body>/Yield strength" when > 0 (the strength impact-fem checks the stresses against); its
+/// Read from the first run's parameters: a body's yield strength Y is "<Body>/Yield strength"
+/// when > 0 (one per body: an elastic-plastic body's initial flow stress, else the strength
+/// impact-fem checks the stresses against; result files written before it was one per body
+/// give an elastic-plastic body's in "<Body>/Elastic-plastic/Yield strength"); its
 /// elastic constants "<Body>/<Model>/Young's modulus" and "Poisson's ratio";
 /// "Plate/Material model = rigid" is a rigid plate. The limiting pressure is Johnson's
 /// p_y = 1.6 Y (Contact Mechanics, 1985, sec. 4.2; the p_y of Thornton 1997) of the body that

@@ -1,0 +1,79 @@
+"""A campaign keeps a complete run when only entries that cannot change its
+results beyond the solvers' tolerances changed (fem/README.md, "Campaigns":
+the nonlinear and contact iteration limits, the direct solver, the output
+options), and runs it again when a physical entry changed.
+One run (1 m/s) of the tests' steel bodies on the coarse mesh of sweep.py
+(100 um contact elements), one rank:
+- restarted with Nonlinear solver/Maximum iterations, Contact/Maximum active set
+  iterations, Solver/Direct solver, Output/Snapshot interval and Output/Progress
+  interval changed: "complete, skipped", summary.json untouched;
+- restarted with the sphere's Young's modulus changed: "parameters changed",
+  run again, its restitution and peak force those of the new modulus;
+- restarted with Nonlinear solver/Residual tolerance changed (a tolerance is part of
+  the run): run again."""
+import os
+import re
+import shutil
+import subprocess
+from fem_test_lib import *
+
+binary, work, _ = parse_common_arguments()
+checks = Checks()
+directory = f"{work}/campaign_reuse"
+shutil.rmtree(directory, ignore_errors=True)
+BASE = ["--velocities", "1", "--set", "Mesh/Contact element size=100e-6",
+        "--set", "Time integration/Steps per contact time=300"]
+RUN = f"{directory}/v1"
+
+
+def campaign(label, settings):
+    command = [binary, STEEL_PRM, "--set", f"Output/Directory={directory}"] + BASE
+    for key, value in settings.items():
+        command += ["--set", f"{key}={value}"]
+    result = subprocess.run(command, capture_output=True, text=True, timeout=600)
+    output = result.stdout + result.stderr
+    match = re.search(r"\(v1\): (.*)", output)
+    status = match.group(1) if match else ""
+    print(f"--- {label}: exit {result.returncode}, status: {status}")
+    if result.returncode != 0:
+        print(output)
+    return result.returncode, status
+
+
+def stamp():
+    return os.stat(f"{RUN}/summary.json").st_mtime_ns
+
+
+code, status = campaign("first", {})
+checks.check(code == 0 and os.path.exists(f"{RUN}/summary.json"), "the first campaign completes its run")
+first = summary(RUN)
+before = stamp()
+
+not_identity = {"Nonlinear solver/Maximum iterations": 300,
+                "Contact/Maximum active set iterations": 500,
+                "Solver/Direct solver": "Amesos_Klu",
+                "Output/Snapshot interval": 1e-5,
+                "Output/Progress interval": 0}
+for key, value in not_identity.items():
+    code, status = campaign(f"{key} = {value}", {key: value})
+    checks.check(code == 0 and status == "complete, skipped" and stamp() == before,
+                 f"{key} changed to {value}: the complete run is kept (status '{status}')")
+code, status = campaign("all of them", not_identity)
+checks.check(code == 0 and status == "complete, skipped" and stamp() == before,
+             f"all of them changed at once: the complete run is kept (status '{status}')")
+
+code, status = campaign("Young's modulus", {"Sphere/Elastic/Young's modulus": 2.1e11})
+second = summary(RUN) if code == 0 else {}
+checks.check(code == 0 and status.startswith("parameters changed") and stamp() != before,
+             f"the sphere's Young's modulus changed: the run is done again (status '{status}')")
+if second:
+    print(f"  F_max {first['force_max']:.6g} -> {second['force_max']:.6g} N")
+    checks.check(second["force_max"] > first["force_max"] * 1.005,
+                 "  ... with the new modulus: a stiffer sphere, a larger peak force")
+
+before = stamp()
+code, status = campaign("Residual tolerance", {"Sphere/Elastic/Young's modulus": 2.1e11,
+                                               "Nonlinear solver/Residual tolerance": 1e-7})
+checks.check(code == 0 and status.startswith("parameters changed") and stamp() != before,
+             f"Nonlinear solver/Residual tolerance changed: the run is done again (status '{status}')")
+checks.finish()
