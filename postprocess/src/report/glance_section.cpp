@@ -132,7 +132,8 @@ std::string recommendation_line(const Report& report) {
       text += " Closest: " + law_name(closest) + ", ranked first by " +
               (closest.out_of_sample ? "out-of-sample" : "in-sample") + " error (RMS " +
               unsigned_percent(closest.score) + "); " + largest_error(report, closest) +
-              "; outside " + band + " by " + breaking_text(report, closest) + ".";
+              "; not within " + band + " (outside, or not decided for the FEM's uncertainty) by " +
+              breaking_text(report, closest) + ".";
     }
     return text;
   }
@@ -142,7 +143,8 @@ std::string recommendation_line(const Report& report) {
                      unsigned_percent(law.score) + ").";
   // Elsewhere: what keeps it out, which other law holds there, and where none does.
   if (law.within < report.runs.size())
-    text += " Outside " + band + " by " + breaking_text(report, law) + ".";
+    text += " Not within " + band + " (outside, or not decided for the FEM's uncertainty) by " +
+            breaking_text(report, law) + ".";
   std::vector<std::size_t> elsewhere;
   for (std::size_t i = 0; i < report.runs.size(); ++i)
     if (law.decisions[i] != Decision::within &&
