@@ -94,13 +94,22 @@ TEST_F(ReportPipeline, OpensWithTheVerdictTheErrorsFigureAndTheRecommendedModel)
   const Report& report = outcome.report;
   ASSERT_TRUE(report.calibration && !report.calibration->campaign.ranking.empty());
   const std::string markdown = read_text(outcome.markdown);
-  // The first screen, before the first section: three lines, the figure, the parameters.
+  // The first screen, before the first section: three lines, the figure, the parameters of
+  // the law recommended where it holds (else of the closest, headed so).
+  ASSERT_TRUE(report.recommendation);
+  const LawRecommendation& recommendation = *report.recommendation;
+  const auto chosen =
+      recommendation.recommended ? recommendation.recommended : recommendation.closest;
+  ASSERT_TRUE(chosen);
+  const JudgedLaw& best = recommendation.laws[*chosen];
   const std::size_t first_section = markdown.find("\n## ");
   ASSERT_NE(first_section, std::string::npos);
   const std::string glance = markdown.substr(0, first_section);
-  const std::size_t lines = glance.find("\n- Use ");
+  const std::size_t lines =
+      glance.find(recommendation.recommended ? "\n- Use " : "\n- No law holds within 5 %");
   const std::size_t figure = glance.find("](figures/errors.png)");
-  const std::size_t recommended = glance.find("```\nRecommended: ");
+  const std::size_t recommended = glance.find(
+      recommendation.recommended ? "```\nRecommended, within 5 % at " : "```\nClosest, within ");
   ASSERT_NE(lines, std::string::npos) << glance;
   ASSERT_NE(figure, std::string::npos) << glance;
   ASSERT_NE(recommended, std::string::npos) << glance;
@@ -109,9 +118,7 @@ TEST_F(ReportPipeline, OpensWithTheVerdictTheErrorsFigureAndTheRecommendedModel)
   std::size_t items = 0;
   for (std::size_t at = glance.find("\n- "); at < figure; at = glance.find("\n- ", at + 1)) ++items;
   EXPECT_EQ(items, 3u) << glance;
-  // The parameters shown are those of the model ranked first, to six digits.
-  const RankedModel& best = report.calibration->campaign.ranking.front();
-  EXPECT_TRUE(contains(glance, "Use ")) << glance;
+  // The parameters shown are those of that law, to six digits.
   EXPECT_TRUE(contains(glance.substr(lines, figure - lines), "(" + best.key + ")")) << glance;
   std::vector<std::string> names;
   std::vector<double> values;
@@ -139,7 +146,8 @@ TEST_F(ReportPipeline, OpensWithTheVerdictTheErrorsFigureAndTheRecommendedModel)
   const std::size_t folded = html.find("<details>");
   ASSERT_NE(folded, std::string::npos);
   EXPECT_LT(html.find("<img "), folded);
-  EXPECT_LT(html.find("<pre>Recommended: "), folded);
+  EXPECT_LT(html.find(recommendation.recommended ? "<pre>Recommended, " : "<pre>Closest, "),
+            folded);
   std::size_t headings = 0, sections = 0;
   for (std::size_t at = html.find("<h2>"); at != std::string::npos; at = html.find("<h2>", at + 1))
     ++headings;

@@ -181,12 +181,12 @@ namespace impact_fem
         const double plate_stored =
           last("kinetic_energy") + last("strain_energy") -
           last("sphere_kinetic_energy") - last("sphere_strain_energy");
-        const double E0                             = initial;
-        summary[result_files::energy_error_key]     = largest_error;
-        summary["energy_error_final"]               = last("energy_error");
-        summary["initial_energy"]                   = E0;
-        summary["sphere_vibration_energy_fraction"] = sphere_vibration / E0;
-        summary["plate_energy_fraction"]            = plate_stored / E0;
+        const double E0                               = initial;
+        summary[result_files::energy_error_key]       = largest_error;
+        summary[result_files::energy_error_final_key] = last("energy_error");
+        summary["initial_energy"]                     = E0;
+        summary["sphere_vibration_energy_fraction"]   = sphere_vibration / E0;
+        summary["plate_energy_fraction"]              = plate_stored / E0;
         summary[result_files::radiated_energy_fraction_key] =
           last("radiated_energy") / E0;
         summary[result_files::dissipated_energy_fraction_key] =

@@ -388,17 +388,28 @@ std::vector<ReportModel> report_models(const std::vector<ReportRun>& runs,
                      level));
   if (campaign.fitted) {
     const CampaignModelFit* best = nullptr;
+    const RankedModel* best_entry = nullptr;
     for (const auto& entry : campaign.ranking) {
       for (const auto& law : campaign.comparison_laws)
-        if (law.key == entry.key) best = &law;
+        if (law.key == entry.key) {
+          best = &law;
+          best_entry = &entry;
+        }
       if (best) break;
     }
+    // Scored in sample (fewer than three velocities), the rank says how well the law fits
+    // these runs, not how well it predicts another velocity.
     if (best)
-      models.push_back(fitted_model(runs, fem_runs, *best, std::string(model_keys::best_law),
-                                    damped_label(best->key).value_or(best->key) + " (best law)",
-                                    "the comparison law ranked first by out-of-sample error, "
-                                    "fitted to the force histories of all runs",
-                                    level));
+      models.push_back(fitted_model(
+          runs, fem_runs, *best, std::string(model_keys::best_law),
+          damped_label(best->key).value_or(best->key) + " (best law)",
+          std::string(best_entry->out_of_sample
+                          ? "the comparison law ranked first by out-of-sample error"
+                          : "the comparison law ranked first among the fitted laws by its "
+                            "in-sample error (fewer than three velocities: no out-of-sample "
+                            "error; a fit ranks after every law that fits nothing)") +
+              ", fitted to the force histories of all runs",
+          level));
     else
       models.push_back(missing_model(runs, std::string(model_keys::best_law), "best comparison law",
                                      "the calibration has no fitted comparison law"));

@@ -18,7 +18,9 @@
 namespace impact::postprocess::detail {
 
 /// F at each time in `times` [s since first contact]; 0 before contact and after separation
-/// (`end`: the law's end of contact).
+/// (`end`: the law's end of contact). A force that jumps to 0 at separation (F(0, x') != 0, the
+/// linear dashpot) is averaged over the cell of the measured time that holds the separation,
+/// so that the sampled force is continuous in the law's parameters.
 /// Returns false if the impact cannot be integrated (the law holds the body, non-finite
 /// force, invalid parameters).
 bool simulate_force(const reduced::ContactForceLaw& law, double mass, double velocity,

@@ -46,11 +46,10 @@ std::string not_converged(const ReportModel& model) {
 Document build_document(const Report& report, const fs::path& figures_directory) {
   Document doc;
   doc.heading("Impact model-validity report", 1);
-  // A report with problems says so before anything else; a complete one in a folded section.
-  bool incomplete = false;
-  for (const auto& problem : report.problems) incomplete = incomplete || !is_warning(problem.kind);
-  if (incomplete || report.runs.empty()) status_section(doc, report);
+  // Without runs the problems are the page; else one line under the glance says what the
+  // section Status (folded after it) lists.
   if (report.runs.empty()) {
+    status_section(doc, report);
     doc.paragraph(
         "No FEM run could be read: there is nothing to compare. Fix the problems "
         "above and run impact-report again.");
@@ -73,7 +72,7 @@ Document build_document(const Report& report, const fs::path& figures_directory)
       ". Every number below is computed by impact-report (C++, impact::reduced and "
       "the calibration JSON); the figures are drawn from them by report_figures.py.");
   doc.fold_from_here();
-  if (!incomplete) status_section(doc, report);
+  status_section(doc, report);
   map_section(doc, report, place);
   verdict_section(doc, report);
   ranking_section(doc, report);

@@ -172,6 +172,9 @@ void write_report_html(const Report& report, const fs::path& file,
          "overflow-wrap:anywhere;margin:.4em 0}\n"
          ".glance ul{margin:.2em 0;padding-left:1.3em}.glance li{margin:.15em 0}\n"
          ".glance p{margin:.3em 0}\n"
+         // The glance's figure a little lower than the page is wide, so that the recommended
+         // law's block below it stays on the first screen after the glance's lines.
+         ".glance figure img{max-height:300px;width:auto}\n"
          ".missing{color:#b22;font-weight:bold}\n"
          "</style>\n</head>\n<body>\n<div class=\"glance\">\n";
   bool glance = true, section_open = false;

@@ -7,6 +7,7 @@
 #include "report/report_parts.hpp"
 
 #include "impact_postprocess/calibration/calibrate_run_set.hpp"
+#include "impact_postprocess/run/fem_run_format.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -78,6 +79,23 @@ void add_quality_warnings(const ReportRun& run, std::vector<Problem>& problems) 
     problems.push_back({run.source, ProblemKind::quality,
                         "V = " + detail::short_number(run.velocity) + " m/s: " + message +
                             ". The verdict does not claim a smaller difference."});
+  // The energy balance at the end of the run, against the FEM's own target.
+  if (const auto& balance = run.record.energy_error_final;
+      balance && std::abs(*balance) > energy_balance_target) {
+    const double lost = 1 - run.fem.restitution * run.fem.restitution;
+    problems.push_back(
+        {run.source, ProblemKind::quality,
+         "V = " + detail::short_number(run.velocity) +
+             " m/s: the energy balance misses its target: at the end of the run it is off by " +
+             detail::unsigned_percent(std::abs(*balance)) + " of the impact energy (" +
+             fem_format::energy_error_final_key + " of summary.json; target " +
+             detail::unsigned_percent(energy_balance_target) + ")" +
+             (lost > 0 ? ", " + detail::unsigned_percent(std::abs(*balance) / lost) +
+                             " of the energy the impact loses (1 - e^2)"
+                       : std::string()) +
+             ": the time step or the contact's discretisation does work of that size, which the "
+             "energy loss carries."});
+  }
   if (!run.record.verification_problem.empty())
     problems.push_back({run.source, ProblemKind::input, run.record.verification_problem});
 }
@@ -186,6 +204,7 @@ Report build_report(const Campaign& campaign, const std::optional<Calibration>& 
                            options);
   report.detail_row = options.detail_row;
   if (options.simulators) detail::add_simulators(report, *options.simulators);
+  detail::add_recommendation(report);
   return report;
 }
 

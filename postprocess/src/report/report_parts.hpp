@@ -68,6 +68,11 @@ ToleranceVerdict tolerance_verdict(const Report& report,
                                    double tolerance, const std::vector<Quantity>& quantities,
                                    const std::string& basis);
 
+/// The law to recommend (recommendation.cpp): every ranked law judged in the loosest band,
+/// into report.recommendation; nothing without a verdict. After the simulators are read (the
+/// export closest to the FEM).
+void add_recommendation(Report& report);
+
 /// The elastic-plastic laws of a campaign whose material is elastic-plastic (plastic_laws.cpp);
 /// none otherwise, or when the runs do not record the material's constants.
 std::optional<PlasticLaws> plastic_laws(const std::vector<FemRun>& fem_runs,
@@ -233,6 +238,35 @@ std::string not_converged(const ReportModel& model);
 /// Places a declared figure on the page (nothing when it is not declared); the key names
 /// the map model of a validity map.
 using FigurePlacer = std::function<void(FigureId, const std::string& model_key)>;
+
+/// A law of the calibration in a form to copy (glance_section.cpp): its name and origin, its
+/// force law, and each parameter's symbol, value and unit.
+struct LawBlock {
+  struct Parameter {
+    std::string name;
+    double value;
+    std::string unit;
+  };
+  bool found = false; ///< the calibration holds the law
+  std::string name;
+  std::string law;
+  std::vector<Parameter> parameters;
+};
+LawBlock law_block(const Report& report, const std::string& key);
+/// heading + name, then the law and one parameter per line, "  c = 1.2e+10 N/m^1.5".
+std::string law_block_text(const std::string& heading, const LawBlock& block);
+/// "its largest error is -12.3 % (peak approach x_max at V = 5 m/s)".
+std::string largest_error(const Report& report, const JudgedLaw& law);
+/// What keeps a law out of the band, by quantity: "1 - e^2 at V = 0.1 and 0.2 m/s, x_max at
+/// V = 5 m/s".
+std::string breaking_text(const Report& report, const JudgedLaw& law);
+/// Where a law is within the band: "over the whole tested range, V = 0.5 to 5 m/s" or
+/// "at V = 0.5 to 1 and 3 to 5 m/s".
+std::string where_within(const Report& report, const JudgedLaw& law);
+/// "Label (key)".
+std::string law_name(const JudgedLaw& law);
+/// The velocities of report runs.
+std::vector<double> velocities_of(const Report& report, const std::vector<std::size_t>& runs);
 
 /// The first screen (glance_section.cpp): the verdict in three lines, the figure of every
 /// model's errors against V, the recommended model's parameters in a form to copy.

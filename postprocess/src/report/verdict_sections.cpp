@@ -252,6 +252,57 @@ void estimate_tables(Document& doc, const Report& report, const CampaignModelFit
 
 } // namespace
 
+namespace {
+
+// The law for a multibody code: a Hunt–Crossley form (what Simbody's HuntCrossleyForce and
+// most multibody codes take as it is) offered only where it holds by the verdict's rule; else
+// that none does, and which export comes closest with its error.
+void multibody_block(Document& doc, const Report& report) {
+  if (!report.recommendation) return;
+  const LawRecommendation& recommendation = *report.recommendation;
+  const std::string band = band_name(recommendation.tolerance);
+  if (recommendation.multibody) {
+    const JudgedLaw& law = recommendation.laws[*recommendation.multibody];
+    const LawBlock block = law_block(report, law.key);
+    if (block.found) {
+      doc.code(law_block_text("For a multibody code, " + where_within(report, law) + " (within " +
+                                  band +
+                                  " there, out of sample, with the FEM's uncertainty; not "
+                                  "judged elsewhere): ",
+                              block));
+      return;
+    }
+  }
+  std::string text =
+      "For a multibody code: no Hunt–Crossley law (F = c x^n (1 + b dx/dt)) holds "
+      "within " +
+      band +
+      " at any tested velocity (out of sample, with the FEM's uncertainty), so "
+      "none is offered here.";
+  const JudgedLaw* closest = nullptr;
+  for (const auto& law : recommendation.laws)
+    if (law.hunt_crossley_form && law.out_of_sample && !closest) closest = &law;
+  if (closest)
+    text += " The Hunt–Crossley form ranked first, " + law_name(*closest) + " (RMS error " +
+            unsigned_percent(closest->score) + "): " + largest_error(report, *closest) + ".";
+  if (const auto& exported = recommendation.closest_export) {
+    const SimulatorResult& result = report.simulators[exported->simulator];
+    text += " Of the exports run in their simulators, " + simulator_tool_name(result.tool) +
+            "'s (" + result.file + ", " + result.model +
+            ") comes closest to the FEM: its largest error is " +
+            percent_cell(exported->worst_error) + " (" + quantity_words(exported->worst_quantity) +
+            " " + quantity_symbol(exported->worst_quantity) +
+            " at V = " + short_number(exported->velocity) + " m/s; section In your simulator).";
+  } else {
+    text +=
+        " The exports' own errors in their simulators are in section In your simulator "
+        "(impact-report --simulators).";
+  }
+  doc.warning(text);
+}
+
+} // namespace
+
 void parameters_section(Document& doc, const Report& report) {
   doc.heading("Calibrated parameters");
   if (!report.calibration || !report.campaign_fitted) {
@@ -278,21 +329,7 @@ void parameters_section(Document& doc, const Report& report) {
   if (const ReportModel* best = report.model(model_keys::best_law))
     if (const CampaignModelFit* law = campaign.find(best->calibration_key))
       estimate_tables(doc, report, *law, "campaign.comparison_laws (" + law->key + ")");
-  std::string basis;
-  if (const ModelFit* recommended = recommended_hunt_crossley(*report.calibration, &basis))
-    doc.code("For a multibody code (" + basis +
-             "):\n  F = c x^n (1 + b dx/dt)\n  c = " + cell(recommended->stiffness.value) +
-             " N/m^n\n  n = " + cell(recommended->exponent.value) +
-             "\n  b = " + cell(recommended->parameter.value) + " s/m");
-  if (const auto& fit = campaign.hunt_crossley_velocity_damping)
-    if (!fit->fit.extra.empty())
-      doc.code("With a velocity-dependent damping (" + fit->label +
-               "; one line more: b from the "
-               "approach speed V_0 at first contact):\n  F = c x^n (1 + b dx/dt),  b = b_1 "
-               "(V_0 / 1 m/s)^(-q)\n  c = " +
-               cell(fit->fit.stiffness.value) + " N/m^n\n  n = " + cell(fit->fit.exponent.value) +
-               "\n  b_1 = " + cell(fit->fit.parameter.value) +
-               " s/m\n  q = " + cell(fit->fit.extra.front().estimate.value));
+  multibody_block(doc, report);
 }
 
 void trend_section(Document& doc, const Report& report,

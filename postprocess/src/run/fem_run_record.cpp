@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <fstream>
 #include <limits>
@@ -42,6 +43,11 @@ double approach_at(const FemRun& run, double t) {
   return nan;
 }
 
+std::string lower_case(std::string text) {
+  for (char& c : text) c = char(std::tolower(static_cast<unsigned char>(c)));
+  return text;
+}
+
 bool has_plastic_material(const FemRun& run) {
   for (const char* key : {"Sphere/Material model", "Plate/Material model"}) {
     const auto model = run.text_attributes.find(key);
@@ -51,6 +57,10 @@ bool has_plastic_material(const FemRun& run) {
 }
 
 } // namespace
+
+double BodyStress::ratio() const {
+  return max_von_mises && yield_strength ? *max_von_mises / *yield_strength : nan;
+}
 
 FemRunRecord read_fem_run_record(const FemRun& run) {
   json summary = json::object();
@@ -74,42 +84,74 @@ FemRunRecord read_fem_run_record(const FemRun& run) {
   record.dissipated_energy_fraction = value(fem_format::dissipated_energy_fraction_key);
   record.radiated_energy_fraction = value(fem_format::radiated_energy_fraction_key);
 
-  // Stresses and yield strengths: impact-fem records them per body; a generic
-  // "max_von_mises" / "yield_strength" pair is read too. The parameters
-  // "<Body>/Yield strength" (0 = none) give the strength when the summary does not.
-  const std::string sphere = "sphere", plate = "plate"; // impact-fem's body names
-  for (const std::string& key :
-       {std::string(fem_format::max_von_mises_key), fem_format::von_mises_max_prefix + sphere,
-        fem_format::von_mises_max_prefix + plate})
-    if (const auto stress = value(key))
-      record.max_von_mises = std::max(record.max_von_mises.value_or(0.0), *stress);
-  const auto consider = [&](const std::string& key, std::optional<double> strength) {
+  record.energy_error_final = value(fem_format::energy_error_final_key);
+
+  // Stresses and yield strengths, per body: impact-fem records "von_mises_max_<body>" and,
+  // for a body checked against a strength, "yield_strength_<body>"; the parameters
+  // "<Body>/Yield strength" (0 = none) and an elastic-plastic body's material constant give
+  // the strength when the summary does not. A summary of another tool may record only the
+  // generic pair "max_von_mises" / "yield_strength": then one entry for both bodies.
+  const auto consider = [](BodyStress& body, const std::string& key,
+                           std::optional<double> strength) {
     if (!strength || !(*strength > 0)) return;
-    if (!record.yield_strength || *strength < *record.yield_strength) {
-      record.yield_strength = strength;
-      record.yield_source = key;
+    if (!body.yield_strength || *strength < *body.yield_strength) {
+      body.yield_strength = strength;
+      body.yield_source = key;
     }
   };
-  // "yield_strength": the generic key of a summary written by another tool.
-  for (const std::string& key :
-       {std::string("yield_strength"), fem_format::yield_strength_prefix + sphere,
-        fem_format::yield_strength_prefix + plate})
-    consider(key, value(key));
-  for (const char* body : {fem_format::sphere_body, fem_format::plate_body}) {
-    const std::string key = fem_format::body_parameter(body, fem_format::yield_strength);
-    consider(key, text_number(run, key));
+  const std::optional<double> generic_strength = value("yield_strength");
+  for (const char* name : {fem_format::sphere_body, fem_format::plate_body}) {
+    const std::string key = lower_case(name); // impact-fem's summary names the bodies so
+    BodyStress body{name, value(fem_format::von_mises_max_prefix + key), {}, {}, {}};
+    consider(body, fem_format::yield_strength_prefix + key,
+             value(fem_format::yield_strength_prefix + key));
+    const std::string parameter = fem_format::body_parameter(name, fem_format::yield_strength);
+    consider(body, parameter, text_number(run, parameter));
     // An elastic-plastic body's initial yield strength (its material's constant).
-    const auto model = run.text_attributes.find(fem_format::material_model_parameter(body));
+    const auto model = run.text_attributes.find(fem_format::material_model_parameter(name));
     if (model != run.text_attributes.end() && model->second == fem_format::elastic_plastic_model)
-      consider(fem_format::material_parameter(body, fem_format::elastic_plastic_model,
+      consider(body,
+               fem_format::material_parameter(name, fem_format::elastic_plastic_model,
                                               fem_format::yield_strength),
-               material_constant(run, body, fem_format::yield_strength));
+               material_constant(run, name, fem_format::yield_strength));
+    if (!body.yield_strength) consider(body, "yield_strength", generic_strength);
+    const std::string flag = fem_format::yield_exceeded_key + ("_" + key);
+    if (summary.is_object() && summary.contains(flag) && summary[flag].is_boolean())
+      body.yields = summary[flag].get<bool>();
+    else if (body.max_von_mises && body.yield_strength)
+      body.yields = *body.max_von_mises > *body.yield_strength;
+    record.bodies.push_back(std::move(body));
+  }
+  const bool per_body = std::any_of(record.bodies.begin(), record.bodies.end(),
+                                    [](const BodyStress& body) { return body.max_von_mises; });
+  if (const auto largest = value(fem_format::max_von_mises_key); largest && !per_body) {
+    BodyStress both{both_bodies, largest, {}, {}, {}};
+    for (const auto& body : record.bodies) consider(both, body.yield_source, body.yield_strength);
+    if (both.yield_strength) both.yields = *both.max_von_mises > *both.yield_strength;
+    record.bodies = {std::move(both)};
+  }
+  // The body nearest to its own strength (the largest ratio; without one, the largest stress).
+  const BodyStress* governing = nullptr;
+  for (const auto& body : record.bodies) {
+    if (!body.max_von_mises) continue;
+    const double ratio = body.ratio(), best = governing ? governing->ratio() : nan;
+    if (!governing || (std::isfinite(ratio) && !(ratio <= best)) ||
+        (!std::isfinite(ratio) && !std::isfinite(best) &&
+         *body.max_von_mises > *governing->max_von_mises))
+      governing = &body;
+  }
+  if (governing) {
+    record.max_von_mises = governing->max_von_mises;
+    record.yield_strength = governing->yield_strength;
+    record.yield_source = governing->yield_source;
   }
   if (summary.is_object() && summary.contains(fem_format::yield_exceeded_key) &&
-      summary[fem_format::yield_exceeded_key].is_boolean())
+      summary[fem_format::yield_exceeded_key].is_boolean()) {
     record.yields = summary[fem_format::yield_exceeded_key].get<bool>();
-  else if (record.yield_strength && record.max_von_mises)
-    record.yields = *record.max_von_mises > *record.yield_strength;
+  } else {
+    for (const auto& body : record.bodies)
+      if (body.yields) record.yields = record.yields.value_or(false) || *body.yields;
+  }
 
   record.plastic_material = has_plastic_material(run);
   if (record.plastic_material) {

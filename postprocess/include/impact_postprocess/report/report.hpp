@@ -189,6 +189,58 @@ struct SimulatorResult {
   std::vector<ToleranceVerdict> against_fem;
 };
 
+/// A ranked law judged at every run of the report by the verdict's rule (decide, with the
+/// FEM's uncertainty) in the loosest band: where it holds, and its largest error.
+struct JudgedLaw {
+  std::string key;   ///< the calibration's key (its ranking)
+  std::string label; ///< as the page names it
+  std::size_t rank;  ///< 0-based, in the calibration's ranking
+  double score;      ///< the ranking's RMS error
+  /// The errors judged are out of sample (fitted without the velocity, or nothing fitted). A
+  /// fit scored in sample (fewer than three velocities) is never said to hold: its errors are
+  /// those of the runs it was fitted to.
+  bool out_of_sample = false;
+  /// F = c x^n (1 + b x') with a constant b or b(V) = b_1 V^-q: the law a multibody code takes
+  /// as it is (Simbody's HuntCrossleyForce, the force of the block "For a multibody code").
+  bool hunt_crossley_form = false;
+  std::vector<Decision> decisions; ///< per report run, in the loosest band
+  /// Per report run where it is not within: the quantity that keeps it out (the largest
+  /// |error| - U of those with |error| + U beyond the band; U the FEM's uncertainty); none
+  /// where it is within or has no prediction.
+  std::vector<std::optional<Quantity>> breaking;
+  std::size_t within = 0;    ///< runs within
+  double worst_error;        ///< largest |relative error| of the judged quantities (signed)
+  Quantity worst_quantity;   ///< where it is
+  std::size_t worst_run = 0; ///< at which report run
+};
+
+/// An export run in its simulator (Report::simulators) against the FEM: its largest error.
+struct ExportError {
+  std::size_t simulator; ///< index in Report::simulators
+  double worst_error;    ///< largest |relative error| of the tool's own measurement (signed)
+  Quantity worst_quantity;
+  double velocity; ///< m/s, where it is
+};
+
+/// The law to recommend, by the verdict's rule in the loosest band (5 %): one that holds where
+/// it is recommended, or none, with the law and the export that come closest.
+struct LawRecommendation {
+  double tolerance = 0;        ///< the loosest band of the report
+  std::vector<JudgedLaw> laws; ///< every ranked law that could be judged, in rank order
+  /// Index in laws: the out-of-sample law within at the most tested velocities, the better
+  /// ranked among equals; none when no law holds anywhere.
+  std::optional<std::size_t> recommended;
+  /// Index in laws: the same among the Hunt–Crossley forms (the block for a multibody code).
+  std::optional<std::size_t> multibody;
+  /// Report runs at which no out-of-sample law is within the band.
+  std::vector<std::size_t> uncovered;
+  /// Index in laws: the law ranked first (out of sample where one is), the closest when
+  /// none holds; none without a ranking.
+  std::optional<std::size_t> closest;
+  /// The export closest to the FEM in its simulator, when the simulators' runs are given.
+  std::optional<ExportError> closest_export;
+};
+
 /// One cell of a validity map: one run (a value of the other axis, a velocity) and one model.
 struct MapCell {
   double velocity;                  ///< m/s
@@ -281,6 +333,9 @@ struct Report {
   std::vector<SimulatorResult> simulators; ///< the usable result files, Simbody, MuJoCo, LAMMPS
   /// The validity map, for a campaign with sweep axes (none for a velocity-only campaign).
   std::optional<ValidityMap> map;
+  /// The law the first screen and the block for a multibody code recommend (none without a
+  /// verdict).
+  std::optional<LawRecommendation> recommendation;
   /// The row of a map campaign that the sections after the map detail ("Plate thickness =
   /// 0.05 m"); empty when they show every run.
   std::string detail_row;
