@@ -35,7 +35,8 @@ array_script = sys.argv[4]
 checks = Checks()
 env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
            OMPI_MCA_rmaps_base_oversubscribe="1")
-CAMPAIGN = ["--sweep", "Scenario/Plate thickness=0.1,0.35", "--velocities", "0.5,1",
+# The tests' steel bodies (a body's constants have no defaults), swept and refined.
+CAMPAIGN = [STEEL_PRM, "--sweep", "Scenario/Plate thickness=0.1,0.35", "--velocities", "0.5,1",
             "--set", "Mesh/Contact element size=100e-6",
             "--set", "Time integration/Steps per contact time=300",
             "--set", "Output/Progress interval=0"]
@@ -43,8 +44,8 @@ PATHS = [f"plate-thickness-{h}_v{v}" for h in ("0.1", "0.35") for v in ("0.5", "
 
 
 def command(directory, ranks, shard=None):
-    return ([mpiexec, "--allow-run-as-root", "--oversubscribe", "-np", str(ranks), binary,
-             "--set", f"Output/Directory={directory}"] + CAMPAIGN +
+    return ([mpiexec, "--allow-run-as-root", "--oversubscribe", "-np", str(ranks), binary] +
+            CAMPAIGN + ["--set", f"Output/Directory={directory}"] +
             (["--shard", shard] if shard else []))
 
 
@@ -61,8 +62,8 @@ def array_task(directory, task):
     task_env = dict(env, PATH=stand_in + os.pathsep + env["PATH"], IMPACT_FEM=binary,
                     SLURM_ARRAY_TASK_ID=str(task), SLURM_ARRAY_TASK_MIN="1",
                     SLURM_ARRAY_TASK_MAX="2", SLURM_ARRAY_TASK_COUNT="2")
-    return subprocess.Popen(["bash", array_script, "--set", f"Output/Directory={directory}"] +
-                            CAMPAIGN, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+    return subprocess.Popen(["bash", array_script] + CAMPAIGN +
+                            ["--set", f"Output/Directory={directory}"], stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
                             text=True, env=task_env)
 
 

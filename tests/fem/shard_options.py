@@ -12,7 +12,8 @@ binary, work, _ = parse_common_arguments()
 array_script = sys.argv[4]
 checks = Checks()
 directory = f"{work}/shard_refused"
-CAMPAIGN = ["--velocities", "0.5,1", "--set", f"Output/Directory={directory}"]
+# The tests' steel bodies (a body's constants have no defaults), as a campaign.
+CAMPAIGN = [STEEL_PRM, "--velocities", "0.5,1", "--set", f"Output/Directory={directory}"]
 RANGE = "1 <= K <= N"
 
 
@@ -34,7 +35,7 @@ for value in ["0/2", "3/2", "a/b", "1/0", "0/0", "2", "1/2/3", "-1/2", "1.5/2", 
             f"--shard '{value}'")
 refused(CAMPAIGN + ["--shard=3/2"], ["--shard <3/2>", RANGE], "--shard=3/2")
 refused(CAMPAIGN + ["--shard"], ["--shard needs K/N", RANGE], "--shard without its value")
-refused(["--set", f"Output/Directory={directory}", "--shard", "1/2"],
+refused([STEEL_PRM, "--set", f"Output/Directory={directory}", "--shard", "1/2"],
         ["--shard 1/2", "only a campaign", "one impact"], "--shard 1/2 without a campaign")
 refused(CAMPAIGN + ["--set", "Scenario/Analysis=material point", "--shard", "1/2"],
         ["--shard 1/2", "only a campaign", "one material point"],
