@@ -126,15 +126,48 @@ namespace impact_fem
     , dof_handler(triangulation)
     , solver_control(1, 0)
   {
-    mesh.parse_parameters(prm, parameters.geometry);
-    contact.parse_parameters(prm);
     if (parameters.indentation)
       indentation_control.parse_parameters(prm);
+    // The contact the sizes left "auto" are made for.
+    const discretisation::ExpectedContact expected =
+      parameters.indentation ?
+        discretisation::ExpectedContact::of_indentation(
+          parameters.hertz, indentation_control.maximum_approach) :
+        parameters.expected_contact;
+    mesh.parse_parameters(prm, parameters.geometry, [&]() {
+      return discretisation::AutomaticDiscretisation(
+        expected,
+        parameters.geometry.sphere_radius,
+        parameters.hertz.contact_time());
+    });
+    discretisation_choice.expected = expected;
+    discretisation_choice.entries  = {{"Mesh/Contact element size",
+                                       "m",
+                                       mesh.contact_element_size,
+                                       mesh.automatic_size[0]},
+                                      {"Mesh/Uniform zone radius",
+                                       "m",
+                                       mesh.uniform_zone_radius,
+                                       mesh.automatic_size[1]},
+                                      {"Mesh/Contact surface radius",
+                                       "m",
+                                       mesh.contact_surface_radius,
+                                       mesh.automatic_size[2]}};
+    if (!parameters.static_press && !parameters.indentation &&
+        parameters.prescribed_time_step == 0)
+      discretisation_choice.entries.push_back(
+        {"Time integration/Steps per contact time",
+         "1",
+         parameters.steps_per_contact_time,
+         parameters.steps_per_contact_time_automatic});
+    contact.parse_parameters(prm);
     nonlinear_step.parse_parameters(prm);
     // What the bodies are made of, and where each constant came from.
     pcout << "impact-fem: materials\n"
           << parameters.material_used[sphere].describe()
-          << parameters.material_used[plate].describe() << std::flush;
+          << parameters.material_used[plate].describe()
+          << "impact-fem: discretisation\n"
+          << discretisation_choice.describe() << std::flush;
     const HertzImpact &hertz = parameters.hertz;
     const double       expected_contact_radius =
       parameters.indentation ? std::sqrt(parameters.geometry.sphere_radius *
@@ -700,6 +733,9 @@ namespace impact_fem
     for (const auto &body : parameters.material_used)
       for (const auto &constant : body.constants)
         entries[constant.parameter] = as_written(constant.value);
+    // The sizes and the step a run used, "auto" resolved.
+    for (const auto &entry : discretisation_choice.entries)
+      entries[entry.path] = as_written(entry.value);
     return entries;
   }
 
@@ -746,14 +782,15 @@ namespace impact_fem
     result[result_files::materials_key]   = {
         {body_name(sphere), parameters.material_used[sphere].to_json()},
         {body_name(plate), parameters.material_used[plate].to_json()}};
-    result["scheme"]                    = parameters.scheme;
-    result[result_files::time_step_key] = time_stepper->time_step();
-    result["cells"]                     = triangulation.n_global_active_cells();
-    result["dofs"]                      = dof_handler.n_dofs();
-    result["contact_nodes"]             = contact.n_contact_nodes();
-    result["steps"]                     = time_stepper->step_number();
-    result["ranks"]     = Utilities::MPI::n_mpi_processes(mpi_communicator);
-    result["wall_time"] = wall_time;
+    result[result_files::discretisation_key] = discretisation_choice.to_json();
+    result["scheme"]                         = parameters.scheme;
+    result[result_files::time_step_key]      = time_stepper->time_step();
+    result["cells"]         = triangulation.n_global_active_cells();
+    result["dofs"]          = dof_handler.n_dofs();
+    result["contact_nodes"] = contact.n_contact_nodes();
+    result["steps"]         = time_stepper->step_number();
+    result["ranks"]         = Utilities::MPI::n_mpi_processes(mpi_communicator);
+    result["wall_time"]     = wall_time;
 
     if (Utilities::MPI::this_mpi_process(mpi_communicator) != 0)
       return;

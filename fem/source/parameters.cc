@@ -1,6 +1,7 @@
 #include <impact_fem/analysis/indentation.h>
 #include <impact_fem/contact/mortar_contact.h>
 #include <impact_fem/materials/body_material.h>
+#include <impact_fem/discretisation/automatic_discretisation.h>
 #include <impact_fem/parameters.h>
 #include <impact_fem/result_files.h>
 #include <impact_fem/postprocess/interface.h>
@@ -141,10 +142,13 @@ namespace impact_fem
 
     prm.enter_subsection("Time integration");
     prm.declare_entry("Steps per contact time",
-                      "300",
-                      Patterns::Double(),
+                      "auto",
+                      *discretisation::number_or_auto_pattern(),
                       "Time step = Hertz contact time / this number [-], "
-                      "in [10, 1e6].");
+                      "in [10, 1e6]; 'auto': 300 steps per expected contact "
+                      "time (Hertz, or Jackson-Green's elastic-plastic "
+                      "impact if a body can yield; the run's log and "
+                      "summary.json say which).");
     prm.declare_entry("Time step",
                       "0",
                       Patterns::Double(),
@@ -340,16 +344,11 @@ namespace impact_fem
                            "materials need a loading rate)."));
 
     prm.enter_subsection("Time integration");
-    scheme                 = prm.get("Scheme");
-    steps_per_contact_time = prm.get_double("Steps per contact time");
-    prescribed_time_step   = prm.get_double("Time step");
-    time_after_separation  = prm.get_double("Time after separation");
-    maximum_time           = prm.get_double("Maximum time");
+    scheme                = prm.get("Scheme");
+    prescribed_time_step  = prm.get_double("Time step");
+    time_after_separation = prm.get_double("Time after separation");
+    maximum_time          = prm.get_double("Maximum time");
     prm.leave_subsection();
-    AssertThrow(steps_per_contact_time >= 10 && steps_per_contact_time <= 1e6,
-                ExcMessage("Time integration/Steps per contact time must lie "
-                           "in [10, 1e6], got " +
-                           text(steps_per_contact_time) + "."));
     AssertThrow(prescribed_time_step >= 0,
                 ExcMessage("Time integration/Time step must not be negative, "
                            "got " +
@@ -385,6 +384,44 @@ namespace impact_fem
                         R,
                         sphere_mass,
                         impact_velocity};
+    // What the contact will be, for the sizes and the step left "auto".
+    if (static_press)
+      expected_contact =
+        discretisation::ExpectedContact::of_static_force(hertz, static_force);
+    else if (!indentation)
+      {
+        std::vector<discretisation::ExpectedContact::YieldingBody> bodies;
+        for (const unsigned int body : {sphere, plate})
+          if (material[body] &&
+              material_used[body].model == contract::elastic_plastic_model)
+            bodies.push_back({body_name(body),
+                              material_used[body].yield_strength,
+                              material[body]->poissons_ratio()});
+        expected_contact =
+          discretisation::ExpectedContact::of_impact(hertz, bodies);
+      }
+    {
+      prm.enter_subsection("Time integration");
+      const double automatic_steps =
+        discretisation::AutomaticDiscretisation::
+          steps_per_expected_contact_time *
+        (expected_contact.contact_time > 0 ?
+           hertz.contact_time() / expected_contact.contact_time :
+           1.);
+      steps_per_contact_time =
+        discretisation::number_or_auto(prm,
+                                       "Steps per contact time",
+                                       "Time integration/Steps per contact "
+                                       "time",
+                                       automatic_steps,
+                                       steps_per_contact_time_automatic);
+      prm.leave_subsection();
+    }
+    AssertThrow(steps_per_contact_time >= 10 && steps_per_contact_time <= 1e6,
+                ExcMessage("Time integration/Steps per contact time must lie "
+                           "in [10, 1e6], got " +
+                           text(steps_per_contact_time) + "."));
+
     // The same bounds as for 'Steps per contact time'.
     const double contact_time = hertz.contact_time();
     AssertThrow(prescribed_time_step == 0 ||

@@ -1,6 +1,7 @@
 #ifndef IMPACT_FEM_IMPACT_PROBLEM_H
 #define IMPACT_FEM_IMPACT_PROBLEM_H
 
+#include <impact_fem/discretisation/automatic_discretisation.h>
 #include <impact_fem/analysis/indentation.h>
 #include <impact_fem/contact/mortar_contact.h>
 #include <impact_fem/materials/internal_variables.h>
@@ -257,9 +258,11 @@ namespace impact_fem
     std::unique_ptr<TimerOutput> computing_timer;
     ParameterHandler            &prm;
 
-    Parameters                                   parameters;
-    IndentationControl                           indentation_control;
-    SpherePlateMesh                              mesh;
+    Parameters         parameters;
+    IndentationControl indentation_control;
+    SpherePlateMesh    mesh;
+    /// The sizes and the step the run uses, and whether "auto" chose them.
+    discretisation::DiscretisationChoice         discretisation_choice;
     MortarContact                                contact;
     std::unique_ptr<time_integration::Interface> time_stepper;
     std::vector<std::pair<std::string, std::unique_ptr<postprocess::Interface>>>

@@ -1,6 +1,7 @@
 #ifndef IMPACT_FEM_PARAMETERS_H
 #define IMPACT_FEM_PARAMETERS_H
 
+#include <impact_fem/discretisation/expected_contact.h>
 #include <impact_fem/hertz.h>
 #include <impact_fem/materials/body_material.h>
 #include <impact_fem/materials/interface.h>
@@ -113,7 +114,10 @@ namespace impact_fem
 
     // Time control
     std::string scheme;                     ///< Time integration/Scheme
-    double      steps_per_contact_time = 0; ///< [-]
+    double      steps_per_contact_time = 0; ///< [-], "auto" resolved
+    /// Whether Steps per contact time was "auto" (sized from the expected
+    /// contact, discretisation/automatic_discretisation.h).
+    bool   steps_per_contact_time_automatic = false;
     double prescribed_time_step  = 0; ///< [s], 0: from steps_per_contact_time
     double time_after_separation = 0; ///< fraction of the contact time [-]
     double maximum_time          = 0; ///< [s], 0: automatic
@@ -124,6 +128,10 @@ namespace impact_fem
     // Derived
     double      sphere_mass = 0; ///< [kg]
     HertzImpact hertz;           ///< estimates: step, run length, contact zone
+    /// The contact the mesh and the step are sized for (an impact: Hertz,
+    /// or Jackson-Green if a body can yield; the static press: Hertz under
+    /// the static force; the indentation: set by its analysis).
+    discretisation::ExpectedContact expected_contact;
 
     /// Any viscous (Kelvin-Voigt) body, any body with internal variables.
     bool

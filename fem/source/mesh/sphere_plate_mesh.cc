@@ -21,15 +21,20 @@ namespace impact_fem
   {
     prm.enter_subsection("Mesh");
     prm.declare_entry("Contact element size",
-                      "50e-6",
-                      Patterns::Double(),
+                      "auto",
+                      *discretisation::number_or_auto_pattern(),
                       "Edge length of the elements at the contact point "
-                      "[m], > 0 and smaller than the sphere radius.");
+                      "[m], > 0 and smaller than the sphere radius; 'auto': "
+                      "the expected contact radius a / 20 (a of Hertz, or "
+                      "of Jackson-Green's elastic-plastic impact if a body "
+                      "can yield; the run's log and summary.json say "
+                      "which).");
     prm.declare_entry("Uniform zone radius",
-                      "1.5e-3",
-                      Patterns::Double(),
+                      "auto",
+                      *discretisation::number_or_auto_pattern(),
                       "Distance from the contact point within which the "
-                      "elements keep the contact element size [m], >= 0.");
+                      "elements keep the contact element size [m], >= 0; "
+                      "'auto': 1.5 a (at most the contact surface radius).");
     prm.declare_entry("Growth factor",
                       "1.2",
                       Patterns::Double(),
@@ -50,11 +55,12 @@ namespace impact_fem
                       "its bending, fem/README.md). Need not be an integer "
                       "(the verification divides it by its ratio).");
     prm.declare_entry("Contact surface radius",
-                      "2.5e-3",
-                      Patterns::Double(),
+                      "auto",
+                      *discretisation::number_or_auto_pattern(),
                       "Radius of the candidate contact surfaces of sphere "
                       "and plate [m], in (0, R/2]; must exceed the largest "
-                      "contact radius (1.4 mm at 5 m/s for the default ball).");
+                      "contact radius (1.4 mm at 5 m/s for the default "
+                      "ball); 'auto': 2.5 a, at most R/2.");
     prm.declare_entry("Global refinements",
                       "0",
                       Patterns::Integer(0, 6),
@@ -85,23 +91,46 @@ namespace impact_fem
 
 
   void
-  SpherePlateMesh::parse_parameters(ParameterHandler &prm,
-                                    const Geometry   &geometry_in)
+  SpherePlateMesh::parse_parameters(
+    ParameterHandler                                               &prm,
+    const Geometry                                                 &geometry_in,
+    const std::function<discretisation::AutomaticDiscretisation()> &automatic)
   {
     geometry = geometry_in;
     prm.enter_subsection("Mesh");
-    contact_element_size = prm.get_double("Contact element size");
-    uniform_zone_radius  = prm.get_double("Uniform zone radius");
-    growth_factor        = prm.get_double("Growth factor");
-    maximum_element_size = prm.get_double("Maximum element size");
+    const char *const sized[3]      = {"Contact element size",
+                                       "Uniform zone radius",
+                                       "Contact surface radius"};
+    double            size[3]       = {0, 0, 0};
+    bool              any_automatic = false;
+    for (unsigned int i = 0; i < 3; ++i)
+      {
+        size[i] = discretisation::number_or_auto(
+          prm, sized[i], std::string("Mesh/") + sized[i], 0, automatic_size[i]);
+        any_automatic = any_automatic || automatic_size[i];
+      }
+    if (any_automatic)
+      {
+        const discretisation::AutomaticDiscretisation rule = automatic();
+        const double ruled[3] = {rule.contact_element_size,
+                                 rule.uniform_zone_radius,
+                                 rule.contact_surface_radius};
+        for (unsigned int i = 0; i < 3; ++i)
+          if (automatic_size[i])
+            size[i] = ruled[i];
+      }
+    contact_element_size   = size[0];
+    uniform_zone_radius    = size[1];
+    contact_surface_radius = size[2];
+    growth_factor          = prm.get_double("Growth factor");
+    maximum_element_size   = prm.get_double("Maximum element size");
     elements_across_thickness =
       prm.get_double("Elements across the plate thickness");
-    contact_surface_radius = prm.get_double("Contact surface radius");
-    global_refinements     = prm.get_integer("Global refinements");
-    contact_refinements    = prm.get_integer("Contact refinements");
-    polynomial_degree      = prm.get_integer("Polynomial degree");
-    gmsh_executable        = prm.get("Gmsh executable");
-    geometry_file          = prm.get("Geometry file");
+    global_refinements  = prm.get_integer("Global refinements");
+    contact_refinements = prm.get_integer("Contact refinements");
+    polynomial_degree   = prm.get_integer("Polynomial degree");
+    gmsh_executable     = prm.get("Gmsh executable");
+    geometry_file       = prm.get("Geometry file");
     prm.leave_subsection();
 
     const double R = geometry.sphere_radius;

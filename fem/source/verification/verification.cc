@@ -1,3 +1,5 @@
+#include <impact_fem/discretisation/automatic_discretisation.h>
+#include <impact_fem/parameters.h>
 #include <impact_fem/as_written.h>
 #include <impact_fem/impact_problem.h>
 #include <impact_fem/verification/grid_convergence.h>
@@ -149,14 +151,32 @@ namespace impact_fem
       const std::string directory = prm.get("Directory");
       prm.leave_subsection();
 
-      const double hc   = get_number(prm, "Mesh", "Contact element size");
+      // The fine level's contact element size and step count, "auto"
+      // resolved as the run resolves them (the coarser levels scale them).
+      const Parameters scenario(prm);
+      double           hc = 0;
+      {
+        bool automatic = false;
+        prm.enter_subsection("Mesh");
+        hc = discretisation::number_or_auto(prm,
+                                            "Contact element size",
+                                            "Mesh/Contact element size",
+                                            0,
+                                            automatic);
+        prm.leave_subsection();
+        if (automatic)
+          hc = discretisation::AutomaticDiscretisation(
+                 scenario.expected_contact,
+                 scenario.geometry.sphere_radius,
+                 scenario.hertz.contact_time())
+                 .contact_element_size;
+      }
       const double hmax = get_number(prm, "Mesh", "Maximum element size");
       const double g    = get_number(prm, "Mesh", "Growth factor");
       const double across =
         get_number(prm, "Mesh", "Elements across the plate thickness");
       const double dt = get_number(prm, "Time integration", "Time step");
-      const double n =
-        get_number(prm, "Time integration", "Steps per contact time");
+      const double n  = scenario.steps_per_contact_time;
       AssertThrow(dt > 0 || n / (r * r) >= 10,
                   ExcMessage("Verification: the coarsest level would have "
                              "fewer than 10 steps per contact time; raise "

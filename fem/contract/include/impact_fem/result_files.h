@@ -104,6 +104,14 @@ namespace impact_fem::result_files
   // "material" (the table's name or null) and "constants": {entry: {"parameter", "value",
   // "unit", "origin" ("scenario" | "table"), "source" (the table's citation)}}.
   inline constexpr const char *materials_key = "materials";
+  // The discretisation a run used: {"expected_contact": {"law" ("Hertz" |
+  // "Jackson-Green"), "approach_max" [m], "contact_radius" [m],
+  // "contact_time" [s], with a yielding body "yielding_body" and
+  // "velocity_ratio" V/V_y}, "entries": {entry path: {"value", "unit",
+  // "origin" ("auto" | "scenario")}}} for Mesh/Contact element size,
+  // Uniform zone radius, Contact surface radius and Time integration/Steps
+  // per contact time.
+  inline constexpr const char *discretisation_key = "discretisation";
 
   /// The unit of each numeric summary key (SI; "1" for a ratio), by the names above.
   struct KeyUnit

@@ -1,11 +1,13 @@
 #ifndef IMPACT_FEM_MESH_SPHERE_PLATE_MESH_H
 #define IMPACT_FEM_MESH_SPHERE_PLATE_MESH_H
 
+#include <impact_fem/discretisation/automatic_discretisation.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
 #include <deal.II/distributed/tria.h>
 
 #include <algorithm>
+#include <functional>
 #include <string>
 
 namespace impact_fem
@@ -64,9 +66,21 @@ namespace impact_fem
     static void
     declare_parameters(ParameterHandler &prm);
 
-    /// Read and check the "Mesh" subsection.
+    /**
+     * Read and check the "Mesh" subsection. The sizes left "auto" come from
+     * @p automatic, called only if one is (it may refuse a contact too
+     * large for the sphere).
+     */
     void
-    parse_parameters(ParameterHandler &prm, const Geometry &geometry);
+    parse_parameters(
+      ParameterHandler &prm,
+      const Geometry   &geometry,
+      const std::function<discretisation::AutomaticDiscretisation()>
+        &automatic);
+
+    /// Which of the three sizes were "auto" (contact element size, uniform
+    /// zone radius, contact surface radius).
+    bool automatic_size[3] = {false, false, false};
 
     /**
      * Run gmsh (rank 0) to write <work_directory>/<name>.msh, read it on all

@@ -1,0 +1,101 @@
+#ifndef IMPACT_FEM_DISCRETISATION_AUTOMATIC_DISCRETISATION_H
+#define IMPACT_FEM_DISCRETISATION_AUTOMATIC_DISCRETISATION_H
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <impact_fem/discretisation/expected_contact.h>
+
+#include <nlohmann/json.hpp>
+
+#include <string>
+
+namespace impact_fem
+{
+  namespace discretisation
+  {
+    using namespace dealii;
+
+    /**
+     * The mesh and the time step of a run sized from its expected contact:
+     * the entries Mesh/Contact element size, Uniform zone radius, Contact
+     * surface radius and Time integration/Steps per contact time take the
+     * value "auto" (their default) or a number, which wins.
+     *
+     * The rule, with a the expected contact radius and t_c the expected
+     * contact time (expected_contact.h): contact elements a / 20, a uniform
+     * zone of 1.5 a and a contact surface of 2.5 a (at most R/2, the
+     * largest the mesh allows), 300 time steps per expected contact time.
+     * The sizes are the ones the rigid-flat bench (fem/bench/
+     * dynamic_plastic.sh) measured as the coarsest meeting its GCI targets
+     * at 1 and 10 V_y; the step count is the default scenario's, whose
+     * contact time is then converged to 0.1 % (fem/README.md). Their
+     * accuracy over a table of material pairs and velocities is measured by
+     * fem/bench/automatic_discretisation.sh.
+     */
+    struct AutomaticDiscretisation
+    {
+      static constexpr double elements_per_contact_radius     = 20;
+      static constexpr double uniform_zone_per_contact_radius = 1.5;
+      static constexpr double surface_per_contact_radius      = 2.5;
+      static constexpr double steps_per_expected_contact_time = 300;
+
+      /// The sizes of the rule for @p expected on a sphere of radius R [m]
+      /// whose Hertz contact time is @p hertz_contact_time [s] (the time
+      /// step is Hertz's contact time / Steps per contact time). Throws an
+      /// ExcMessage when the expected contact radius does not fit on the
+      /// sphere (a > 0.4 R).
+      AutomaticDiscretisation(const ExpectedContact &expected,
+                              double                 sphere_radius,
+                              double                 hertz_contact_time);
+
+      ExpectedContact expected;
+      double          contact_element_size   = 0; ///< [m]
+      double          uniform_zone_radius    = 0; ///< [m]
+      double          contact_surface_radius = 0; ///< [m]
+      double          steps_per_contact_time = 0; ///< per Hertz t_c [-]
+    };
+
+    /// The pattern of an entry that is "auto" or a number.
+    std::unique_ptr<Patterns::PatternBase>
+    number_or_auto_pattern();
+
+    /**
+     * The value of the entry @p entry of the current subsection of @p prm
+     * (named @p path in messages): @p automatic if it reads "auto", else
+     * its number. @p was_automatic tells which.
+     */
+    double
+    number_or_auto(const ParameterHandler &prm,
+                   const std::string      &entry,
+                   const std::string      &path,
+                   double                  automatic,
+                   bool                   &was_automatic);
+
+    /**
+     * What a run chose: each of the four entries with its value and whether
+     * the rule ("auto") or the scenario set it, and the expected contact;
+     * for the log and for summary.json.
+     */
+    struct DiscretisationChoice
+    {
+      struct Entry
+      {
+        std::string path; ///< "Mesh/Contact element size", ...
+        std::string unit; ///< "m" or "1"
+        double      value     = 0;
+        bool        automatic = false;
+      };
+      ExpectedContact    expected;
+      std::vector<Entry> entries;
+
+      /// The log's lines, one per entry, with the rule that gave the value.
+      std::string
+      describe() const;
+
+      nlohmann::json
+      to_json() const;
+    };
+  } // namespace discretisation
+} // namespace impact_fem
+
+#endif

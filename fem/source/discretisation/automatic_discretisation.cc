@@ -1,0 +1,136 @@
+#include <impact_fem/as_written.h>
+#include <impact_fem/discretisation/automatic_discretisation.h>
+
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/utilities.h>
+
+#include <cmath>
+#include <sstream>
+
+namespace impact_fem
+{
+  namespace discretisation
+  {
+    AutomaticDiscretisation::AutomaticDiscretisation(
+      const ExpectedContact &expected,
+      const double           sphere_radius,
+      const double           hertz_contact_time)
+      : expected(expected)
+    {
+      const double a = expected.contact_radius;
+      // The mesh generator allows contact surfaces up to R/2; a contact that
+      // would fill most of that is far outside the small-strain model.
+      AssertThrow(a > 0 && a <= 0.4 * sphere_radius,
+                  ExcMessage("The " + expected.describe() +
+                             " does not fit on the sphere (at most 0.4 R = " +
+                             as_written(0.4 * sphere_radius) +
+                             " m, so that a contact surface of 1.25 a fits "
+                             "within R/2): the impact is beyond the model's "
+                             "small strains. Give Mesh/Contact element "
+                             "size, Uniform zone radius and Contact surface "
+                             "radius explicitly only if you know better."));
+      contact_element_size = a / elements_per_contact_radius;
+      contact_surface_radius =
+        std::min(surface_per_contact_radius * a, 0.5 * sphere_radius);
+      uniform_zone_radius =
+        std::min(uniform_zone_per_contact_radius * a, contact_surface_radius);
+      steps_per_contact_time = expected.contact_time > 0 ?
+                                 steps_per_expected_contact_time *
+                                   hertz_contact_time / expected.contact_time :
+                                 steps_per_expected_contact_time;
+    }
+
+
+    namespace
+    {
+      bool
+      is_auto(const std::string &text)
+      {
+        return Utilities::trim(text) == "auto";
+      }
+
+      bool
+      is_number(const std::string &text)
+      {
+        std::istringstream in(Utilities::trim(text));
+        double             x;
+        in >> x;
+        return !in.fail() && in.eof() && std::isfinite(x);
+      }
+
+      class NumberOrAuto : public Patterns::PatternBase
+      {
+      public:
+        bool
+        match(const std::string &text) const override
+        {
+          return is_auto(text) || is_number(text);
+        }
+
+        std::string
+        description(const Patterns::PatternBase::OutputStyle) const override
+        {
+          return "[auto or a floating point number]";
+        }
+
+        std::unique_ptr<Patterns::PatternBase>
+        clone() const override
+        {
+          return std::make_unique<NumberOrAuto>();
+        }
+      };
+    } // namespace
+
+
+    std::unique_ptr<Patterns::PatternBase>
+    number_or_auto_pattern()
+    {
+      return std::make_unique<NumberOrAuto>();
+    }
+
+
+    double
+    number_or_auto(const ParameterHandler &prm,
+                   const std::string      &entry,
+                   const std::string      &path,
+                   const double            automatic,
+                   bool                   &was_automatic)
+    {
+      const std::string text = prm.get(entry);
+      was_automatic          = is_auto(text);
+      if (was_automatic)
+        return automatic;
+      AssertThrow(is_number(text),
+                  ExcMessage(path + " must be 'auto' or a number, got '" +
+                             text + "'."));
+      return std::stod(Utilities::trim(text));
+    }
+
+
+    std::string
+    DiscretisationChoice::describe() const
+    {
+      std::ostringstream s;
+      s << "  " << expected.describe() << "\n";
+      for (const auto &e : entries)
+        s << "  " << e.path << " = " << as_written(e.value)
+          << (e.unit == "1" ? "" : " " + e.unit)
+          << (e.automatic ? "  (auto: from the expected contact)" :
+                            "  (set by the scenario)")
+          << "\n";
+      return s.str();
+    }
+
+
+    nlohmann::json
+    DiscretisationChoice::to_json() const
+    {
+      nlohmann::json j = {{"expected_contact", expected.to_json()}};
+      for (const auto &e : entries)
+        j["entries"][e.path] = {{"value", e.value},
+                                {"unit", e.unit},
+                                {"origin", e.automatic ? "auto" : "scenario"}};
+      return j;
+    }
+  } // namespace discretisation
+} // namespace impact_fem
