@@ -95,9 +95,13 @@ namespace impact_fem
       VectorType         x(start_force), g(start_force), r(start_force),
         previous_u(u_start), step(u_start);
       // Differences of the last m residuals and map values (Walker & Ni's
-      // Delta F and Delta G), oldest first.
-      std::deque<VectorType> dR, dG;
-      VectorType             last_r, last_g;
+      // Delta F and Delta G), oldest first, and the Gram matrix of the
+      // residual differences, gram[i][j] = dR[i] . dR[j]: each difference
+      // enters it once (m products per iteration instead of m^2 / 2, each a
+      // global reduction), with the same products as a fresh computation.
+      std::deque<VectorType>          dR, dG;
+      std::deque<std::vector<double>> gram;
+      VectorType                      last_r, last_g;
 
       for (unsigned int k = 1; k <= max_iterations; ++k)
         {
@@ -135,13 +139,24 @@ namespace impact_fem
             {
               last_r.sadd(-1., 1., r); // r_k - r_{k-1}
               last_g.sadd(-1., 1., g);
-              dR.push_back(last_r);
-              dG.push_back(last_g);
-              if (dR.size() > m)
+              if (dR.size() == m)
                 {
                   dR.pop_front();
                   dG.pop_front();
+                  gram.pop_front();
+                  for (auto &row : gram)
+                    row.erase(row.begin());
                 }
+              std::vector<double> row(dR.size() + 1);
+              for (unsigned int j = 0; j < dR.size(); ++j)
+                {
+                  row[j] = dR[j] * last_r;
+                  gram[j].push_back(row[j]);
+                }
+              row.back() = last_r * last_r;
+              gram.push_back(std::move(row));
+              dR.push_back(last_r);
+              dG.push_back(last_g);
             }
           last_r               = r;
           last_g               = g;
@@ -158,7 +173,7 @@ namespace impact_fem
             {
               b(i) = dR[i] * r;
               for (unsigned int j = 0; j <= i; ++j)
-                A(i, j) = A(j, i) = dR[i] * dR[j];
+                A(i, j) = A(j, i) = gram[i][j];
               largest = std::max(largest, A(i, i));
             }
           for (unsigned int i = 0; i < n; ++i)
