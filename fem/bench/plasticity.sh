@@ -91,21 +91,22 @@ far_run() { # name case_settings... -- solver settings...
 far_cases=()
 if [ "${FAR:-1}" = 1 ]; then
   far_cases=(304-on-6061 52100-on-C11000)
+  # Appends a perfectly plastic body of a table material to settings (array entries,
+  # not echoed words: the material names hold spaces).
   body() { # body material
-    echo --set "$1/Material model=elastic-plastic" --set "$1/Material=$2" \
-         --set "$1/Elastic-plastic/Hardening law=linear" --set "$1/Elastic-plastic/Hardening modulus=0"
+    settings+=(--set "$1/Material model=elastic-plastic" --set "$1/Material=$2"
+               --set "$1/Elastic-plastic/Hardening law=linear"
+               --set "$1/Elastic-plastic/Hardening modulus=0")
   }
   for case in "${far_cases[@]}"; do
+    settings=()
     case "$case" in
-      304-on-6061) settings=($(body Sphere "AISI 304") $(body Plate 6061-T6)
-                   --set "Scenario/Impact velocity=3"
+      304-on-6061) body Sphere "AISI 304"; body Plate 6061-T6
+                   settings+=(--set "Scenario/Impact velocity=3"
                    --set "Mesh/Contact element size=32e-6" --set "Mesh/Uniform zone radius=0.97e-3"
                    --set "Mesh/Contact surface radius=1.62e-3") ;;
-      52100-on-C11000) settings=($(body Sphere "AISI 52100 hardened")
-                   --set "Plate/Material model=elastic-plastic" --set "Plate/Material=C11000 annealed"
-                   --set "Plate/Elastic-plastic/Hardening law=linear"
-                   --set "Plate/Elastic-plastic/Hardening modulus=0"
-                   --set "Scenario/Impact velocity=5"
+      52100-on-C11000) body Sphere "AISI 52100 hardened"; body Plate "C11000 annealed"
+                   settings+=(--set "Scenario/Impact velocity=5"
                    --set "Mesh/Contact element size=52e-6" --set "Mesh/Uniform zone radius=1.57e-3"
                    --set "Mesh/Contact surface radius=2.5e-3") ;;
     esac
