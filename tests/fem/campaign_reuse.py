@@ -1,12 +1,13 @@
 """A campaign keeps a complete run when only entries that cannot change its
 results beyond the solvers' tolerances changed (fem/README.md, "Campaigns":
-the nonlinear and contact iteration limits, the direct solver, the output
-options), and runs it again when a physical entry changed.
+the nonlinear and contact iteration limits, the nonlinear iteration's strategy and
+Anderson depth, the direct solver, the output options), and runs it again when a
+physical entry changed.
 One run (1 m/s) of the tests' steel bodies on the coarse mesh of sweep.py
 (100 um contact elements), one rank:
-- restarted with Nonlinear solver/Maximum iterations, Contact/Maximum active set
-  iterations, Solver/Direct solver, Output/Snapshot interval and Output/Progress
-  interval changed: "complete, skipped", summary.json untouched;
+- restarted with Nonlinear solver/Maximum iterations, Strategy, Anderson depth,
+  Contact/Maximum active set iterations, Solver/Direct solver, Output/Snapshot
+  interval and Output/Progress interval changed: "complete, skipped", summary.json untouched;
 - restarted with the sphere's Young's modulus changed: "parameters changed",
   run again, its restitution and peak force those of the new modulus;
 - restarted with Nonlinear solver/Residual tolerance changed (a tolerance is part of
@@ -50,6 +51,8 @@ first = summary(RUN)
 before = stamp()
 
 not_identity = {"Nonlinear solver/Maximum iterations": 300,
+                "Nonlinear solver/Strategy": "modified newton",
+                "Nonlinear solver/Anderson depth": 7,
                 "Contact/Maximum active set iterations": 500,
                 "Solver/Direct solver": "Amesos_Klu",
                 "Output/Snapshot interval": 1e-5,

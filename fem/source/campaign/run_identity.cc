@@ -40,6 +40,11 @@ namespace impact_fem
           // run with an error, never give another result.
           "Nonlinear solver/Maximum iterations",
           "Contact/Maximum active set iterations",
+          // How a step iterates to its tolerances: another strategy or
+          // Anderson depth ends in another iterate that meets the same
+          // tolerances, so its results differ by less than they allow.
+          "Nonlinear solver/Strategy",
+          "Nonlinear solver/Anderson depth",
           // A sparse direct solver solves to round-off, far below the
           // nonlinear and contact tolerances.
           "Solver/Direct solver",

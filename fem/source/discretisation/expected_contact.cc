@@ -63,11 +63,9 @@ namespace impact_fem
     ExpectedContact::of_static_force(const HertzImpact &hertz,
                                      const double       force)
     {
-      ExpectedContact expected;
-      expected.law            = "Hertz";
-      expected.approach_max   = std::pow(force / hertz.stiffness(), 2. / 3.);
-      expected.contact_radius = std::sqrt(hertz.radius * expected.approach_max);
-      return expected;
+      // Hertz's F = k x^(3/2) inverted.
+      return of_indentation(hertz,
+                            std::pow(force / hertz.stiffness(), 2. / 3.));
     }
 
 
