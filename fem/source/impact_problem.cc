@@ -141,25 +141,30 @@ namespace impact_fem
         parameters.hertz.contact_time());
     });
     discretisation_choice.expected = expected;
-    discretisation_choice.entries  = {{"Mesh/Contact element size",
-                                       "m",
-                                       mesh.contact_element_size,
-                                       mesh.automatic_size[0]},
-                                      {"Mesh/Uniform zone radius",
-                                       "m",
-                                       mesh.uniform_zone_radius,
-                                       mesh.automatic_size[1]},
-                                      {"Mesh/Contact surface radius",
-                                       "m",
-                                       mesh.contact_surface_radius,
-                                       mesh.automatic_size[2]}};
+    using Rule                    = discretisation::AutomaticDiscretisation;
+    discretisation_choice.entries = {{"Mesh/Contact element size",
+                                      "m",
+                                      mesh.contact_element_size,
+                                      mesh.automatic_size[0],
+                                      Rule::contact_element_size_rule()},
+                                     {"Mesh/Uniform zone radius",
+                                      "m",
+                                      mesh.uniform_zone_radius,
+                                      mesh.automatic_size[1],
+                                      Rule::uniform_zone_rule()},
+                                     {"Mesh/Contact surface radius",
+                                      "m",
+                                      mesh.contact_surface_radius,
+                                      mesh.automatic_size[2],
+                                      Rule::contact_surface_rule()}};
     if (!parameters.static_press && !parameters.indentation &&
         parameters.prescribed_time_step == 0)
       discretisation_choice.entries.push_back(
         {"Time integration/Steps per contact time",
          "1",
          parameters.steps_per_contact_time,
-         parameters.steps_per_contact_time_automatic});
+         parameters.steps_per_contact_time_automatic,
+         discretisation::AutomaticDiscretisation::steps_rule()});
     contact.parse_parameters(prm);
     nonlinear_step.parse_parameters(prm);
     // What the bodies are made of, and where each constant came from.

@@ -63,7 +63,7 @@ for path, value in want.items():
     got = d["entries"][path]
     checks.check(got["origin"] == "auto" and close(got["value"], value, 1e-12),
                  f"{path} = {got['value']:.6e} ({got['origin']}), rule {value:.6e}")
-checks.check("Mesh/Contact element size = " in log and "(auto: from the expected contact)" in log,
+checks.check("Mesh/Contact element size = " in log and "(auto: a / 20)" in log,
              "the log says what was chosen and why")
 with h5py.File(os.path.join(directory, "history.h5"), "r") as f:
     attribute = f.attrs.get("Mesh/Contact element size")

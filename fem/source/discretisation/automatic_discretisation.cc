@@ -43,6 +43,48 @@ namespace impact_fem
 
     namespace
     {
+      std::string
+      number(const double x)
+      {
+        std::ostringstream s;
+        s << x;
+        return s.str();
+      }
+    } // namespace
+
+
+    std::string
+    AutomaticDiscretisation::contact_element_size_rule()
+    {
+      return "a / " + number(elements_per_contact_radius);
+    }
+
+
+    std::string
+    AutomaticDiscretisation::uniform_zone_rule()
+    {
+      return number(uniform_zone_per_contact_radius) + " a";
+    }
+
+
+    std::string
+    AutomaticDiscretisation::contact_surface_rule()
+    {
+      return number(surface_per_contact_radius) + " a, at most R/2";
+    }
+
+
+    std::string
+    AutomaticDiscretisation::steps_rule()
+    {
+      return number(steps_per_expected_contact_time) +
+             " per expected contact time; the entry counts per Hertz contact "
+             "time";
+    }
+
+
+    namespace
+    {
       bool
       is_auto(const std::string &text)
       {
@@ -115,7 +157,7 @@ namespace impact_fem
       for (const auto &e : entries)
         s << "  " << e.path << " = " << as_written(e.value)
           << (e.unit == "1" ? "" : " " + e.unit)
-          << (e.automatic ? "  (auto: from the expected contact)" :
+          << (e.automatic ? "  (auto: " + e.rule + ")" :
                             "  (set by the scenario)")
           << "\n";
       return s.str();

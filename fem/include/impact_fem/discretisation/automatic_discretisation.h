@@ -48,6 +48,17 @@ namespace impact_fem
                               double                 sphere_radius,
                               double                 hertz_contact_time);
 
+      /// The rule of each entry in words, for the log: "a / 20", "1.5 a",
+      /// "2.5 a, at most R/2", "300 per expected contact time; ...".
+      static std::string
+      contact_element_size_rule();
+      static std::string
+      uniform_zone_rule();
+      static std::string
+      contact_surface_rule();
+      static std::string
+      steps_rule();
+
       ExpectedContact expected;
       double          contact_element_size   = 0; ///< [m]
       double          uniform_zone_radius    = 0; ///< [m]
@@ -84,6 +95,7 @@ namespace impact_fem
         std::string unit; ///< "m" or "1"
         double      value     = 0;
         bool        automatic = false;
+        std::string rule; ///< how "auto" sized it (AutomaticDiscretisation)
       };
       ExpectedContact    expected;
       std::vector<Entry> entries;
