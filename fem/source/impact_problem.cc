@@ -141,22 +141,22 @@ namespace impact_fem
         parameters.hertz.contact_time());
     });
     discretisation_choice.expected = expected;
-    using Rule                    = discretisation::AutomaticDiscretisation;
-    discretisation_choice.entries = {{"Mesh/Contact element size",
-                                      "m",
-                                      mesh.contact_element_size,
-                                      mesh.automatic_size[0],
-                                      Rule::contact_element_size_rule()},
-                                     {"Mesh/Uniform zone radius",
-                                      "m",
-                                      mesh.uniform_zone_radius,
-                                      mesh.automatic_size[1],
-                                      Rule::uniform_zone_rule()},
-                                     {"Mesh/Contact surface radius",
-                                      "m",
-                                      mesh.contact_surface_radius,
-                                      mesh.automatic_size[2],
-                                      Rule::contact_surface_rule()}};
+    using Rule                     = discretisation::AutomaticDiscretisation;
+    discretisation_choice.entries  = {{"Mesh/Contact element size",
+                                       "m",
+                                       mesh.contact_element_size,
+                                       mesh.automatic_size[0],
+                                       Rule::contact_element_size_rule()},
+                                      {"Mesh/Uniform zone radius",
+                                       "m",
+                                       mesh.uniform_zone_radius,
+                                       mesh.automatic_size[1],
+                                       Rule::uniform_zone_rule()},
+                                      {"Mesh/Contact surface radius",
+                                       "m",
+                                       mesh.contact_surface_radius,
+                                       mesh.automatic_size[2],
+                                       Rule::contact_surface_rule()}};
     if (!parameters.static_press && !parameters.indentation &&
         parameters.prescribed_time_step == 0)
       discretisation_choice.entries.push_back(
