@@ -36,10 +36,39 @@ const std::array<double, 128>& lobatto_cosines() {
   return table;
 }
 
+// Newton in t on an octave's series of W - W(lower) (increasing: its slope G > 0) for the
+// value `target`, from `guess`, safeguarded by bisection on [low, high]. It stops once a step
+// is within a few ulps of t, a Newton step is below 1e-9 (its error is then of order
+// (G' / 2G) 1e-18: the series grow like exp(t), so G' / G is of order 1), or the residual is 0.
+template <class Piece>
+double solve_octave(const Piece& piece, double target, double guess) {
+  double low = -1, high = 1;
+  double t = std::clamp(guess, -1.0, 1.0);
+  for (int iteration = 0; iteration < 100; ++iteration) {
+    const double residual = chebyshev_sum(piece.integral.data(), piece.size + 1, t) - target;
+    if (residual == 0) break;
+    (residual < 0 ? low : high) = t;
+    const double slope = chebyshev_sum(piece.density.data(), piece.size, t);
+    double next = t - residual / slope;
+    const bool newton = next > low && next < high;
+    if (!newton) next = 0.5 * (low + high);
+    const bool done = std::abs(next - t) <= 4 * std::numeric_limits<double>::epsilon() ||
+                      high - low <= 4 * std::numeric_limits<double>::epsilon() ||
+                      (newton && std::abs(next - t) <= 1e-9);
+    t = next;
+    if (done) break;
+  }
+  return t;
+}
+
 } // namespace
 
 OctaveWorkTable::OctaveWorkTable(double start_approach, double start_work)
-    : start_approach_(start_approach), start_work_(start_work) {}
+    : start_approach_(start_approach),
+      start_work_(start_work),
+      published_(new std::atomic<const Octave*>[max_octaves]) {
+  for (std::size_t k = 0; k < max_octaves; ++k) published_[k].store(nullptr);
+}
 
 // Chebyshev-Lobatto interpolation of G(t) = F(x(t)) dx/dt, x = lower 2^((t + 1) / 2), at
 // 17, 33, then 65 points (nested: each doubling reuses the values), until the last two
@@ -94,18 +123,47 @@ OctaveWorkTable::Octave OctaveWorkTable::build(double lower, double work_start,
     at_minus_one += (m % 2 == 0 ? 1.0 : -1.0) * result.integral[m];
   result.integral[0] = -at_minus_one;
   result.work_end = work_start + chebyshev_sum(result.integral.data(), n + 1, 1.0);
+  // The inverse's guess: t at the 17 Chebyshev-Lobatto points of the normalised work w in
+  // [-1, 1] (by Newton from the linear guess), and their series.
+  const double span = result.work_end - result.work_start;
+  std::array<double, inverse_size> times{};
+  constexpr std::size_t m = inverse_size - 1, stride = 64 / m;
+  for (std::size_t j = 0; j <= m; ++j) {
+    const double w = cosines[j * stride];
+    times[j] = j == 0 ? 1.0 : j == m ? -1.0 : solve_octave(result, 0.5 * (w + 1) * span, w);
+  }
+  for (std::size_t k = 0; k <= m; ++k) {
+    double sum = 0;
+    for (std::size_t j = 0; j <= m; ++j) {
+      const double term = times[j] * cosines[(k * j % (2 * m)) * stride];
+      sum += j == 0 || j == m ? 0.5 * term : term;
+    }
+    result.inverse[k] = 2 * sum / static_cast<double>(m);
+  }
+  result.inverse[0] *= 0.5;
+  result.inverse[m] *= 0.5;
   return result;
 }
 
-const OctaveWorkTable::Octave& OctaveWorkTable::octave(std::size_t index,
-                                                       const Force& force) const {
+void OctaveWorkTable::build_up_to(std::size_t index, const Force& force) const {
+  if (index >= max_octaves)
+    throw std::runtime_error("the loading curve never absorbs the impact energy");
   std::lock_guard<std::mutex> lock(mutex_);
   while (octaves_.size() <= index) {
     const double lower = octaves_.empty() ? start_approach_ : 2 * octaves_.back().lower;
     const double work = octaves_.empty() ? start_work_ : octaves_.back().work_end;
     octaves_.push_back(build(lower, work, force));
+    published_[octaves_.size() - 1].store(&octaves_.back(), std::memory_order_release);
+    built_.store(octaves_.size(), std::memory_order_release);
   }
-  return octaves_[index];
+}
+
+const OctaveWorkTable::Octave& OctaveWorkTable::octave(std::size_t index,
+                                                       const Force& force) const {
+  if (index < max_octaves)
+    if (const Octave* built = published_[index].load(std::memory_order_acquire)) return *built;
+  build_up_to(index, force);
+  return *published_[index].load(std::memory_order_acquire);
 }
 
 const OctaveWorkTable::Octave& OctaveWorkTable::octave_of(double approach,
@@ -125,37 +183,24 @@ double OctaveWorkTable::work(double approach, const Force& force) const {
 double OctaveWorkTable::approach(double work, const Force& force) const {
   if (!(work > start_work_)) return start_approach_;
   // The octave whose works bracket the target: built up to it, then a binary search.
-  const Octave* found = nullptr;
-  {
-    std::lock_guard<std::mutex> lock(mutex_);
-    while (octaves_.empty() || octaves_.back().work_end < work) {
-      if (octaves_.size() > 4000)
-        throw std::runtime_error("the loading curve never absorbs the impact energy");
-      const double lower = octaves_.empty() ? start_approach_ : 2 * octaves_.back().lower;
-      const double start = octaves_.empty() ? start_work_ : octaves_.back().work_end;
-      octaves_.push_back(build(lower, start, force));
-    }
-    found = &*std::lower_bound(octaves_.begin(), octaves_.end(), work,
-                               [](const Octave& o, double w) { return o.work_end < w; });
+  std::size_t count = built_.load(std::memory_order_acquire);
+  while (count == 0 || published_[count - 1].load(std::memory_order_acquire)->work_end < work) {
+    build_up_to(count, force);
+    count = built_.load(std::memory_order_acquire);
   }
-  const Octave& piece = *found;
-  // Newton in t on the octave's series (increasing: its slope G > 0), safeguarded by
-  // bisection on [low, high]; it stops once a step is within a few ulps of t.
+  std::size_t first = 0, last = count - 1; // the first octave with work_end >= work
+  while (first < last) {
+    const std::size_t middle = first + (last - first) / 2;
+    if (published_[middle].load(std::memory_order_acquire)->work_end < work)
+      first = middle + 1;
+    else
+      last = middle;
+  }
+  const Octave& piece = *published_[first].load(std::memory_order_acquire);
   const double target = work - piece.work_start;
-  double low = -1, high = 1;
-  double t = -1 + 2 * target / (piece.work_end - piece.work_start);
-  for (int iteration = 0; iteration < 100; ++iteration) {
-    const double residual = chebyshev_sum(piece.integral.data(), piece.size + 1, t) - target;
-    if (residual == 0) break;
-    (residual < 0 ? low : high) = t;
-    const double slope = chebyshev_sum(piece.density.data(), piece.size, t);
-    double next = t - residual / slope;
-    if (!(next > low && next < high)) next = 0.5 * (low + high);
-    const bool done = std::abs(next - t) <= 4 * std::numeric_limits<double>::epsilon() ||
-                      high - low <= 4 * std::numeric_limits<double>::epsilon();
-    t = next;
-    if (done) break;
-  }
+  const double normalised = 2 * target / (piece.work_end - piece.work_start) - 1;
+  const double t =
+      solve_octave(piece, target, chebyshev_sum(piece.inverse.data(), inverse_size, normalised));
   return piece.lower * std::exp2(0.5 * (t + 1));
 }
 

@@ -31,10 +31,14 @@ double hertz_load(double interference, const SphereFlatContact& contact) {
          std::pow(interference, 1.5);
 }
 
-// P / P_c of the Jackson-Green fit (omega* > 1.9) without validation.
-double jackson_green_fit(double ratio, const SphereFlatContact& contact, double c) {
+// B = 0.14 exp(23 Y / E*), the exponent of the contact radius's growth.
+double jackson_green_b(const SphereFlatContact& contact) {
+  return 0.14 * std::exp(23 * (contact.yield_strength / contact.contact_modulus));
+}
+
+// P / P_c of the Jackson-Green fit (omega* > 1.9) without validation, B given.
+double jackson_green_fit(double ratio, const SphereFlatContact& contact, double c, double b) {
   const double yield_strain = contact.yield_strength / contact.contact_modulus;
-  const double b = 0.14 * std::exp(23 * yield_strain);
   // a / R = sqrt(omega / R) (omega*/1.9)^(B/2), omega / R = omega* (pi C Y / (2 E*))^2.
   const double relative_radius = std::sqrt(ratio) * pi * c * yield_strain / 2 *
                                  std::pow(ratio / jackson_green_transition, b / 2);
@@ -48,9 +52,9 @@ double jackson_green_fit(double ratio, const SphereFlatContact& contact, double 
 //   d/dw [(4 H / C) G w] = (4 / C) (H' G w + H G' w + H G),  G = 1 - exp(-w^(5/9) / 25),
 //   G' w = exp(-w^(5/9) / 25) w^(5/9) / 45,  a/R = rho ~ w^((1 + B) / 2),
 //   H' w = -2.84 (0.82 * 0.7) rho^(-0.7) exp(-0.82 rho^(-0.7)) (1 + B) / 2.
-double jackson_green_fit_slope(double ratio, const SphereFlatContact& contact, double c) {
+double jackson_green_fit_slope(double ratio, const SphereFlatContact& contact, double c,
+                               double b) {
   const double yield_strain = contact.yield_strength / contact.contact_modulus;
-  const double b = 0.14 * std::exp(23 * yield_strain);
   const double relative_radius = std::sqrt(ratio) * pi * c * yield_strain / 2 *
                                  std::pow(ratio / jackson_green_transition, b / 2);
   const double decay = std::exp(-0.82 * std::pow(relative_radius, -0.7));
@@ -96,7 +100,8 @@ double jackson_green_load_ratio(double interference_ratio, const SphereFlatConta
   validate(contact);
   require_non_negative("interference_ratio", interference_ratio);
   if (interference_ratio <= jackson_green_transition) return std::pow(interference_ratio, 1.5);
-  return jackson_green_fit(interference_ratio, contact, jackson_green_c(contact.poisson_ratio));
+  return jackson_green_fit(interference_ratio, contact, jackson_green_c(contact.poisson_ratio),
+                           jackson_green_b(contact));
 }
 
 double jackson_green_load(double interference, const SphereFlatContact& contact) {
@@ -146,12 +151,13 @@ JacksonGreenContact::JacksonGreenContact(const SphereFlatContact& contact,
       critical_interference_(jackson_green_critical_interference(contact)),
       transition_(jackson_green_transition * critical_interference_),
       transition_work_(0.4 * hertz_load(transition_, contact) * transition_),
+      critical_load_(jackson_green_critical_load(contact)),
+      c_(jackson_green_c(contact.poisson_ratio)),
+      b_(jackson_green_b(contact)),
       work_table_(std::make_shared<detail::OctaveWorkTable>(transition_, transition_work_)) {}
 
 double JacksonGreenContact::fit_force(double approach) const {
-  return jackson_green_critical_load(contact_) *
-         jackson_green_fit(approach / critical_interference_, contact_,
-                           jackson_green_c(contact_.poisson_ratio));
+  return critical_load_ * jackson_green_fit(approach / critical_interference_, contact_, c_, b_);
 }
 
 double JacksonGreenContact::loading_force(double approach) const {
@@ -162,9 +168,8 @@ double JacksonGreenContact::loading_force(double approach) const {
 double JacksonGreenContact::loading_stiffness(double approach) const {
   if (approach < transition_)
     return 2 * contact_.contact_modulus * std::sqrt(contact_.radius * approach);
-  return jackson_green_critical_load(contact_) / critical_interference_ *
-         jackson_green_fit_slope(approach / critical_interference_, contact_,
-                                 jackson_green_c(contact_.poisson_ratio));
+  return critical_load_ / critical_interference_ *
+         jackson_green_fit_slope(approach / critical_interference_, contact_, c_, b_);
 }
 
 double JacksonGreenContact::loading_work(double approach) const {

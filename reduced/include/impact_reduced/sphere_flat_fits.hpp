@@ -140,6 +140,9 @@ private:
   double critical_interference_;
   double transition_;                                         // 1.9 omega_c
   double transition_work_;                                    // Hertz work up to the transition
+  double critical_load_;                                      // P_c
+  double c_;                                                  // C(nu)
+  double b_;                                                  // B(Y / E*)
   std::shared_ptr<const detail::OctaveWorkTable> work_table_; // the work above the transition
   double fit_force(double approach) const; // the fit's force above the transition
 };
