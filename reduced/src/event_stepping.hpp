@@ -88,6 +88,9 @@ public:
   /// Shortens the last recorded step to `length` (an event ends the integration in it).
   void truncate_last_step(double length) { steps_.back().length = length; }
 
+  /// Forgets the last recorded step (it is to be re-taken, the system having changed).
+  void drop_last_step() { steps_.pop_back(); }
+
   const std::vector<Step>& steps() const { return steps_; }
 
   /// The state reached from `start` after a single step of length h (no error control).

@@ -12,6 +12,7 @@
 #include "impact_reduced/invalid_input.hpp"
 
 #include "event_stepping.hpp"
+#include "switched_impact.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -64,8 +65,9 @@ double characteristic_length(double mass, double velocity, const ContactForceLaw
 class ImpactIntegration {
 public:
   ImpactIntegration(double mass, double velocity, const ContactForceLaw& force,
-                    double relative_tolerance, ContactEnd end)
-      : mass_(mass), velocity_(velocity), force_(force), end_(end) {
+                    double relative_tolerance, ContactEnd end,
+                    const detail::LawAtMaximum& at_maximum = nullptr)
+      : mass_(mass), velocity_(velocity), force_(&force), end_(end), at_maximum_(at_maximum) {
     require_positive("mass", mass);
     require_positive("velocity", velocity);
     if (!(relative_tolerance >= 1e-14 && relative_tolerance <= 1e-3))
@@ -108,7 +110,7 @@ private:
   double force_at(const State& y) const {
     const double approach = std::max(length_ * y[0], 0.0);
     const double rate = velocity_ * y[1];
-    const double value = force_(approach, rate);
+    const double value = (*force_)(approach, rate);
     if (!std::isfinite(value))
       throw std::runtime_error("contact force law returned a non-finite force (" + describe(value) +
                                ") at approach " + describe(approach) + " m, approach rate " +
@@ -144,11 +146,27 @@ private:
                 << " m/s; the contact force law sticks";
         throw ContactDoesNotEnd(message.str());
       }
+      const State before = y;
+      const double before_time = tau, before_trial = dtau;
       const auto& step = stepper_->step(y, tau, dtau);
       const State start = step.state;
       const double start_time = step.start;
       const double length = step.length;
       double event_start = 0; // where the search for a later event in this step begins
+      if (compressing && y[1] <= 0 && at_maximum_ && !switched_) {
+        // x_max is reached in this step: switch to the law of that x_max and re-take the
+        // step from its start with it, as an integration with that law from t = 0 would
+        // (the two laws agree while x' >= 0).
+        const double h = locate(start, 0.0, length, [](const State& s) { return s[1]; });
+        switched_law_ = at_maximum_(length_ * advance(start, h)[0]);
+        force_ = &switched_law_;
+        switched_ = true;
+        stepper_->drop_last_step();
+        y = before;
+        tau = before_time;
+        dtau = before_trial;
+        continue;
+      }
       if (compressing && y[1] <= 0) {
         const double h = locate(start, 0.0, length, [](const State& s) { return s[1]; });
         compression_time_ = start_time + h;
@@ -224,8 +242,11 @@ private:
 
   double mass_;
   double velocity_;
-  const ContactForceLaw& force_;
+  const ContactForceLaw* force_; // the law in use
   ContactEnd end_;
+  detail::LawAtMaximum at_maximum_; // if set: the law from x_max on, given x_max
+  ContactForceLaw switched_law_;
+  bool switched_ = false;
   double length_ = 0;
   double time_ = 0;
   std::optional<Stepper> stepper_;
@@ -255,3 +276,27 @@ std::vector<ImpactSample> integrate_impact_history(double mass, double velocity,
 }
 
 } // namespace impact::reduced
+
+namespace impact::reduced::detail {
+
+OdeImpactResult integrate_switched_impact(double mass, double velocity,
+                                          const ContactForceLaw& loading,
+                                          const LawAtMaximum& at_maximum,
+                                          double relative_tolerance, ContactEnd end) {
+  return ImpactIntegration(mass, velocity, loading, relative_tolerance, end, at_maximum).result();
+}
+
+std::vector<ImpactSample> integrate_switched_impact_history(double mass, double velocity,
+                                                            const ContactForceLaw& loading,
+                                                            const LawAtMaximum& at_maximum,
+                                                            std::size_t points,
+                                                            double relative_tolerance,
+                                                            ContactEnd end) {
+  if (points < 2)
+    throw InvalidInput("points",
+                       "points must be a whole number >= 2 (got " + std::to_string(points) + ")");
+  return ImpactIntegration(mass, velocity, loading, relative_tolerance, end, at_maximum)
+      .history(points);
+}
+
+} // namespace impact::reduced::detail
