@@ -63,12 +63,25 @@ double ElasticPlasticContact::loading_approach(double work) const {
   return 0.5 * (low + high);
 }
 
+double detail::hertz_work_below(double stiffness, double approach, double distance) {
+  if (!(distance > 0)) return 0.0;
+  distance = std::min(distance, approach);
+  // x^(5/2) (1 - (1 - d/x)^(5/2)) = -x^(5/2) expm1((5/2) log1p(-d/x)).
+  return -0.4 * stiffness * approach * approach * std::sqrt(approach) *
+         std::expm1(2.5 * std::log1p(-distance / approach));
+}
+
+double ElasticPlasticContact::loading_work_below(double approach_max, double distance) const {
+  if (distance <= 0) return 0.0;
+  if (distance > 0.5 * approach_max)
+    return loading_work(approach_max) - loading_work(approach_max - distance);
+  return local_work(*this, approach_max, distance);
+}
+
 double loading_work_below(const ElasticPlasticContact& contact, double approach_max,
                           double distance) {
   if (distance <= 0) return 0.0;
-  if (distance > 0.5 * approach_max)
-    return contact.loading_work(approach_max) - contact.loading_work(approach_max - distance);
-  return local_work(contact, approach_max, distance);
+  return contact.loading_work_below(approach_max, distance);
 }
 
 namespace {
@@ -95,7 +108,6 @@ public:
         iterations);
     approach_max_ = 0.5 * (low + high);
     force_max_ = contact.loading_force(approach_max_);
-    work_max_ = contact.loading_work(approach_max_);
     for (const double breakpoint : contact.loading_breakpoints())
       if (breakpoint > 0 && breakpoint < approach_max_)
         ends_.push_back(std::sqrt((approach_max_ - breakpoint) / approach_max_));
@@ -184,9 +196,7 @@ private:
   // Loading work between x_max - d and x_max, without cancellation for small d.
   double work_below(double distance) const {
     if (distance <= 0) return 0.0;
-    return distance > 0.5 * approach_max_
-               ? work_max_ - contact_.loading_work(approach_max_ - distance)
-               : local_work(contact_, approach_max_, distance);
+    return contact_.loading_work_below(approach_max_, distance);
   }
   double time_density(double s) const {
     // work / s^2 -> F_max x_max as s -> 0 (relative error ~ s^2: exact below 1e-8).
@@ -200,7 +210,6 @@ private:
   const ElasticPlasticContact& contact_;
   double approach_max_ = 0;
   double force_max_ = 0;
-  double work_max_ = 0;
   std::vector<double> ends_; // breakpoints in s
   HertzianUnloading unloading_{};
   double separation_approach_ = 0;

@@ -36,6 +36,29 @@ const std::array<double, 128>& lobatto_cosines() {
   return table;
 }
 
+// sum_m c_m (T_m(a) - T_m(b)) for a - b = gap >= 0 given: D_m = T_m(a) - T_m(b) satisfies
+// D_(m+1) = 2 a D_m + 2 gap T_m(b) - D_(m-1), D_0 = 0, D_1 = gap, so that every term is
+// formed from the gap and no difference of two close sums is taken.
+double chebyshev_difference(const double* coefficients, std::size_t n, double a, double b,
+                            double gap) {
+  if (n < 2 || gap == 0) return 0.0;
+  double previous_difference = 0, difference = gap; // D_0, D_1
+  double previous_value = 1, value = b;              // T_0(b), T_1(b)
+  double sum = coefficients[1] * difference;
+  for (std::size_t m = 1; m + 1 < n; ++m) {
+    const double next_difference = 2 * a * difference + 2 * gap * value - previous_difference;
+    const double next_value = 2 * b * value - previous_value;
+    previous_difference = difference;
+    difference = next_difference;
+    previous_value = value;
+    value = next_value;
+    sum += coefficients[m + 1] * difference;
+  }
+  return sum;
+}
+
+constexpr double two_over_log_two = 2.8853900817779268147; // dt/d(ln x) = 2 / ln 2
+
 // Newton in t on an octave's series of W - W(lower) (increasing: its slope G > 0) for the
 // value `target`, from `guess`, safeguarded by bisection on [low, high]. It stops once a step
 // is within a few ulps of t, a Newton step is below 1e-9 (its error is then of order
@@ -202,6 +225,35 @@ double OctaveWorkTable::approach(double work, const Force& force) const {
   const double t =
       solve_octave(piece, target, chebyshev_sum(piece.inverse.data(), inverse_size, normalised));
   return piece.lower * std::exp2(0.5 * (t + 1));
+}
+
+double OctaveWorkTable::work_below(double approach_max, double distance,
+                                   const Force& force) const {
+  if (!(distance > 0)) return 0.0;
+  const double approach = approach_max - distance;
+  const Octave& top = octave_of(approach_max, force);
+  const Octave& bottom = octave_of(std::max(approach, start_approach_), force);
+  const auto position = [](const Octave& piece, double x) {
+    return std::clamp(2 * std::log2(x / piece.lower) - 1, -1.0, 1.0);
+  };
+  const double top_t = position(top, approach_max);
+  if (&top == &bottom) // t(x_max) - t(x) = (2 / ln 2) ln(x_max / x)
+    return chebyshev_difference(top.integral.data(), top.size + 1, top_t,
+                                position(top, approach),
+                                -two_over_log_two * std::log1p(-distance / approach_max));
+  // From x to the end of its octave, the octaves between, and from the start of x_max's.
+  const double bottom_end = 2 * bottom.lower;
+  const double bottom_gap = distance - (approach_max - bottom_end); // 2 lower - x
+  double work = chebyshev_difference(bottom.integral.data(), bottom.size + 1, 1.0,
+                                     position(bottom, approach),
+                                     two_over_log_two * std::log1p(bottom_gap / approach));
+  for (double lower = bottom_end; lower < top.lower; lower *= 2) {
+    const Octave& piece = octave_of(lower, force);
+    work += chebyshev_sum(piece.integral.data(), piece.size + 1, 1.0);
+  }
+  return work + chebyshev_difference(
+                    top.integral.data(), top.size + 1, top_t, -1.0,
+                    two_over_log_two * std::log1p((approach_max - top.lower) / top.lower));
 }
 
 } // namespace impact::reduced::detail

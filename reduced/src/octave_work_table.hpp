@@ -40,6 +40,10 @@ public:
   double work(double approach, const Force& force) const;
   /// The x >= x_0 with W(x) = work (work >= W(x_0)).
   double approach(double work, const Force& force) const;
+  /// W(x_max) - W(x_max - d) [J] for x_max - d >= x_0, d >= 0, without cancellation for
+  /// small d: on each octave the difference of the series is summed term by term,
+  /// T_m(a) - T_m(b) by its own recurrence from a - b (formed from d, not from a and b).
+  double work_below(double approach_max, double distance, const Force& force) const;
 
   static constexpr std::size_t max_degree = 65; // coefficients of the longest series
   static constexpr std::size_t inverse_size = 17; // coefficients of the inverse's guess

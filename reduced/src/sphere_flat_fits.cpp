@@ -186,6 +186,18 @@ double JacksonGreenContact::loading_approach(double work) const {
   return work_table_->approach(work, [this](double x) { return fit_force(x); });
 }
 
+double JacksonGreenContact::loading_work_below(double approach_max, double distance) const {
+  if (!(distance > 0)) return 0.0;
+  const double stiffness = 4.0 / 3.0 * contact_.contact_modulus * std::sqrt(contact_.radius);
+  if (approach_max <= transition_)
+    return detail::hertz_work_below(stiffness, approach_max, distance);
+  const auto force = [this](double x) { return fit_force(x); };
+  const double above = approach_max - transition_; // the part of d above the transition
+  if (distance <= above) return work_table_->work_below(approach_max, distance, force);
+  return work_table_->work_below(approach_max, above, force) +
+         detail::hertz_work_below(stiffness, transition_, distance - above);
+}
+
 HertzianUnloading JacksonGreenContact::unloading(double approach_max) const {
   require_positive("approach_max", approach_max);
   const double force = loading_force(approach_max);

@@ -68,6 +68,18 @@ double ThorntonContact::loading_approach(double work) const {
                                                          2 * plastic_stiffness_ * excess));
 }
 
+double ThorntonContact::loading_work_below(double approach_max, double distance) const {
+  if (!(distance > 0)) return 0.0;
+  if (approach_max <= yield_approach_)
+    return detail::hertz_work_below(hertz_stiffness_, approach_max, distance);
+  // Plastic branch: F_y d + (k/2) (p_max^2 - p^2) = d (F_y + k (p_max - d/2)), p = x - x_y.
+  const double plastic = approach_max - yield_approach_;
+  if (distance <= plastic)
+    return distance * (yield_force_ + plastic_stiffness_ * (plastic - 0.5 * distance));
+  return plastic * (yield_force_ + 0.5 * plastic_stiffness_ * plastic) +
+         detail::hertz_work_below(hertz_stiffness_, yield_approach_, distance - plastic);
+}
+
 double ThorntonContact::unloading_radius(double approach_max) const {
   require_positive("approach_max", approach_max);
   if (approach_max <= yield_approach_) return radius_;

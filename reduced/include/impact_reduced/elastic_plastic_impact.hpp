@@ -16,7 +16,8 @@
 /// from the energy stored in the unloading branch, (2/5) F_max (x_max - x_r) = m V_out^2 / 2,
 /// and the times from t = integral dx / |x'| over each phase, evaluated by tanh-sinh
 /// quadrature in a variable that removes the inverse-square-root singularity at x_max, with
-/// the work near x_max integrated locally (Gauss-Legendre) so that it does not cancel.
+/// the work near x_max from the law's loading_work_below (closed forms, the fits' series
+/// differenced term by term, or local Gauss-Legendre) so that it does not cancel.
 ///
 /// Accuracy (measured, tests/reduced/test_elastic_plastic_impact.cpp, against Thornton's
 /// closed forms and an independent long-double Runge-Kutta-Fehlberg 7(8) integration):
@@ -36,6 +37,12 @@ struct HertzianUnloading {
   double residual_approach; ///< x_r [m], the permanent approach after the impact
 };
 
+namespace detail {
+/// (2/5) c (x^(5/2) - (x - d)^(5/2)), the work of the Hertz force c x^(3/2) between x - d and
+/// x (0 <= d <= x), without cancellation for small d.
+double hertz_work_below(double stiffness, double approach, double distance);
+} // namespace detail
+
 /// An elastic-plastic contact law. Approach x in m, forces in N, work in J.
 class ElasticPlasticContact {
 public:
@@ -51,6 +58,12 @@ public:
   /// the Hertz-like guess and solves by TOMS 748 to full double precision; laws with an
   /// inverse in closed form override it.
   virtual double loading_approach(double work) const;
+  /// The loading work between x_max - d and x_max [J], integral of F_L, for 0 <= d <= x_max,
+  /// without cancellation for small d (the time integrals need it where d << x_max). The
+  /// default integrates F_L by 30-point Gauss-Legendre on [x_max - d, x_max] split at the
+  /// breakpoints for d <= x_max / 2, and subtracts loading_work beyond; laws override it
+  /// with their closed forms or tables.
+  virtual double loading_work_below(double approach_max, double distance) const;
   /// Approaches where F_L or its slope jumps (the quadratures split there). Default: none.
   virtual std::vector<double> loading_breakpoints() const { return {}; }
   /// The unloading branch from the maximum approach x_max > 0.
@@ -91,8 +104,8 @@ std::vector<ImpactSample> elastic_plastic_impact_loop(double mass, double veloci
                                                       std::size_t points_per_phase);
 
 /// The work of the loading curve between x_max - d and x_max, integral of F_L [J], evaluated
-/// without cancellation for small d (0 <= d <= x_max). Used by the time integrals; exposed
-/// for tests.
+/// without cancellation for small d (0 <= d <= x_max; 0 for d <= 0): the law's
+/// ElasticPlasticContact::loading_work_below. Used by the time integrals; exposed for tests.
 double loading_work_below(const ElasticPlasticContact& contact, double approach_max,
                           double distance);
 

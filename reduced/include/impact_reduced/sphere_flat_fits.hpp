@@ -130,6 +130,9 @@ public:
   double loading_stiffness(double approach) const override;
   /// Hertz's inverse below the transition; above it Newton's method on the octave's series.
   double loading_approach(double work) const override;
+  /// Hertz's difference in closed form (expm1, log1p), the series' differences term by term
+  /// above the transition: the loading work's accuracy also for d << x_max.
+  double loading_work_below(double approach_max, double distance) const override;
   std::vector<double> loading_breakpoints() const override { return {transition_}; }
   HertzianUnloading unloading(double approach_max) const override;
   double critical_interference() const { return critical_interference_; }

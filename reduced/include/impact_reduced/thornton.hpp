@@ -54,6 +54,8 @@ public:
   double loading_stiffness(double approach) const override;
   /// In closed form: Hertz's inverse below W_L(x_y), the root of the quadratic above.
   double loading_approach(double work) const override;
+  /// In closed form, without cancellation for small d.
+  double loading_work_below(double approach_max, double distance) const override;
   std::vector<double> loading_breakpoints() const override { return {yield_approach_}; }
   HertzianUnloading unloading(double approach_max) const override;
 
