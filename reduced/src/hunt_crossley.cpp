@@ -385,8 +385,23 @@ double HuntCrossleyImpact::restitution_time_from(double distance) const {
                              restitution_breaks_);
 }
 
+// The compression integral from a distance u to x_max (u = V), split at the breakpoints.
+double HuntCrossleyImpact::compression_time_from(double distance) const {
+  return integrate_between([this](double u) { return compression_time_density(u); }, distance,
+                           velocity_, compression_breaks_);
+}
+
 double HuntCrossleyImpact::compression_time() const {
-  return compression_time_until(velocity_);
+  if (!splits_compression_at_peak()) return compression_time_until(velocity_);
+  const double peak = peak_distance();
+  return compression_time_until(peak) + compression_time_from(peak);
+}
+
+std::pair<ImpactState, double> HuntCrossleyImpact::force_peak_and_compression_time() const {
+  if (!splits_compression_at_peak()) return {force_peak(), compression_time()};
+  const double peak = peak_distance();
+  const double to_peak = compression_time_until(peak);
+  return {compression_state(to_peak, peak), to_peak + compression_time_from(peak)};
 }
 
 double HuntCrossleyImpact::contact_time() const {
@@ -412,6 +427,11 @@ double HuntCrossleyImpact::time_at_approach(double approach, ImpactPhase phase) 
 ImpactState HuntCrossleyImpact::force_peak() const {
   if (damping_ == 0.0)
     return {compression_time(), approach_max_, 0.0, elastic_force().force(approach_max_)};
+  const double distance = peak_distance();
+  return compression_state(compression_time_until(distance), distance);
+}
+
+double HuntCrossleyImpact::peak_distance() const {
   // dF/dt = 0  <=>  m f'(x) v = b f(x)^2 (while compressing). In the distance u = V - v
   // the left side dominates near first contact and the right side at x_max.
   auto condition = [this](double distance) {
@@ -433,8 +453,7 @@ ImpactState HuntCrossleyImpact::force_peak() const {
     const auto [low, high] =
         boost::math::tools::toms748_solve(power_law_condition, 0.0, velocity_, exponent * velocity_,
                                           power_law_condition(velocity_), tolerance, iterations);
-    const double distance = 0.5 * (low + high);
-    return compression_state(compression_time_until(distance), distance);
+    return 0.5 * (low + high);
   }
   double lower = velocity_ * 1e-6;
   while (!(condition(lower) > 0)) {
@@ -444,8 +463,7 @@ ImpactState HuntCrossleyImpact::force_peak() const {
   }
   const auto [low, high] =
       boost::math::tools::toms748_solve(condition, lower, velocity_, tolerance, iterations);
-  const double distance = 0.5 * (low + high);
-  return compression_state(compression_time_until(distance), distance);
+  return 0.5 * (low + high);
 }
 
 ImpactState HuntCrossleyImpact::compression_state(double time, double distance) const {
@@ -463,8 +481,7 @@ ImpactState HuntCrossleyImpact::restitution_state(double time, double distance) 
 }
 
 ImpactResponse HuntCrossleyImpact::response() const {
-  const ImpactState peak = force_peak();
-  const double compression = compression_time();
+  const auto [peak, compression] = force_peak_and_compression_time();
   return {approach_max_,
           peak.force,
           peak.time,

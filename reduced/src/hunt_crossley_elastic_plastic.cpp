@@ -129,8 +129,7 @@ double HuntCrossleyElasticPlasticImpact::contact_time() const {
 }
 
 HuntCrossleyElasticPlasticResponse HuntCrossleyElasticPlasticImpact::response() const {
-  const ImpactState peak = force_peak();
-  const double compression = compression_time();
+  const auto [peak, compression] = loading_.force_peak_and_compression_time();
   return {approach_max(),
           peak.force,
           peak.time,

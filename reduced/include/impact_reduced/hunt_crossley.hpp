@@ -16,6 +16,7 @@
 #include <cstddef>
 #include <memory>
 #include <optional>
+#include <utility>
 #include <vector>
 
 namespace impact::reduced {
@@ -115,6 +116,10 @@ public:
   /// phase: the inverse of the history's approach, integrated from the nearer singular end
   /// of the phase (same accuracy as compression_time). Throws InvalidInput for x outside.
   double time_at_approach(double approach, ImpactPhase phase) const;
+  /// force_peak() and compression_time() at once, with the same values: one peak search, and
+  /// for a custom law with damping the compression integral continued from the peak (as
+  /// compression_time() integrates it) instead of integrated again from first contact.
+  std::pair<ImpactState, double> force_peak_and_compression_time() const;
   /// Everything at once (one peak search, two integrals).
   ImpactResponse response() const;
 
@@ -171,6 +176,11 @@ private:
   double compression_time_density(double distance_from_impact_velocity) const;
   double restitution_time_density(double distance_from_separation) const;
   double compression_time_until(double distance_from_impact_velocity) const;
+  // The distance u of the force peak (b > 0), and whether the compression time of this law
+  // is integrated in two parts split there (custom laws with b > 0).
+  double peak_distance() const;
+  bool splits_compression_at_peak() const { return !power_law_ && damping_ > 0; }
+  double compression_time_from(double distance_from_impact_velocity) const;
   double restitution_time_from(double distance_from_rebound_velocity) const;
   // Power-law fast path: dt/du = K u^-alpha g(u) with g smooth, integrated by Gauss-Jacobi.
   bool uses_singular_rule() const;
