@@ -333,17 +333,15 @@ double HuntCrossleyImpact::restitution_span() const {
 
 // dt = -m dv / ((1 + b v) f(x(v))): Newton's law, with x(v) from the energy balance.
 double HuntCrossleyImpact::compression_time_density(double distance) const {
-  const double approach =
-      elastic_force().approach_at_potential(mass_ * compression_energy(distance));
-  return mass_ / ((1.0 + damping_ * (velocity_ - distance)) * elastic_force().force(approach));
+  const double elastic = elastic_force().force_at_potential(mass_ * compression_energy(distance));
+  return mass_ / ((1.0 + damping_ * (velocity_ - distance)) * elastic);
 }
 
 double HuntCrossleyImpact::restitution_time_density(double distance) const {
-  const double approach =
-      elastic_force().approach_at_potential(mass_ * restitution_energy(distance));
+  const double elastic = elastic_force().force_at_potential(mass_ * restitution_energy(distance));
   // dt = -m dv / ((1 + b v) f) = (m / b) dpsi / f.
-  if (restitution_in_log_rate_) return mass_ / (damping_ * elastic_force().force(approach));
-  return mass_ / ((1.0 + damping_ * restitution_rate(distance)) * elastic_force().force(approach));
+  if (restitution_in_log_rate_) return mass_ / (damping_ * elastic);
+  return mass_ / ((1.0 + damping_ * restitution_rate(distance)) * elastic);
 }
 
 bool HuntCrossleyImpact::uses_singular_rule() const {

@@ -27,6 +27,9 @@ public:
   double approach_at_potential(double work) const override {
     return spring_->loading_approach(work);
   }
+  double force_at_potential(double work) const override {
+    return spring_->loading_force_at_work(work);
+  }
   std::vector<double> breakpoints() const override { return spring_->loading_breakpoints(); }
 
 private:

@@ -203,8 +203,8 @@ double OctaveWorkTable::work(double approach, const Force& force) const {
   return piece.work_start + chebyshev_sum(piece.integral.data(), piece.size + 1, t);
 }
 
-double OctaveWorkTable::approach(double work, const Force& force) const {
-  if (!(work > start_work_)) return start_approach_;
+std::pair<const OctaveWorkTable::Octave*, double> OctaveWorkTable::locate_work(
+    double work, const Force& force) const {
   // The octave whose works bracket the target: built up to it, then a binary search.
   std::size_t count = built_.load(std::memory_order_acquire);
   while (count == 0 || published_[count - 1].load(std::memory_order_acquire)->work_end < work) {
@@ -222,9 +222,22 @@ double OctaveWorkTable::approach(double work, const Force& force) const {
   const Octave& piece = *published_[first].load(std::memory_order_acquire);
   const double target = work - piece.work_start;
   const double normalised = 2 * target / (piece.work_end - piece.work_start) - 1;
-  const double t =
-      solve_octave(piece, target, chebyshev_sum(piece.inverse.data(), inverse_size, normalised));
-  return piece.lower * std::exp2(0.5 * (t + 1));
+  return {&piece, solve_octave(piece, target,
+                               chebyshev_sum(piece.inverse.data(), inverse_size, normalised))};
+}
+
+double OctaveWorkTable::approach(double work, const Force& force) const {
+  if (!(work > start_work_)) return start_approach_;
+  const auto [piece, t] = locate_work(work, force);
+  return piece->lower * std::exp2(0.5 * (t + 1));
+}
+
+double OctaveWorkTable::force_at_work(double work, const Force& force) const {
+  if (!(work > start_work_)) return force(start_approach_);
+  const auto [piece, t] = locate_work(work, force);
+  const double approach = piece->lower * std::exp2(0.5 * (t + 1));
+  // G(t) = F(x) x ln(2) / 2.
+  return chebyshev_sum(piece->density.data(), piece->size, t) / (approach * half_log_two);
 }
 
 double OctaveWorkTable::work_below(double approach_max, double distance,

@@ -28,6 +28,7 @@
 #include <functional>
 #include <memory>
 #include <mutex>
+#include <utility>
 
 namespace impact::reduced::detail {
 
@@ -40,6 +41,10 @@ public:
   double work(double approach, const Force& force) const;
   /// The x >= x_0 with W(x) = work (work >= W(x_0)).
   double approach(double work, const Force& force) const;
+  /// F at that x from the octave's series of F(x) x (within a few 1e-16 of `force`'s value
+  /// relative to the octave's largest, measured in tests/reduced/test_octave_work_table.cpp):
+  /// for the time integrals, which need F only where W is given.
+  double force_at_work(double work, const Force& force) const;
   /// W(x_max) - W(x_max - d) [J] for x_max - d >= x_0, d >= 0, without cancellation for
   /// small d: on each octave the difference of the series is summed term by term,
   /// T_m(a) - T_m(b) by its own recurrence from a - b (formed from d, not from a and b).
@@ -63,6 +68,8 @@ private:
   // The octave that holds x (built with those below it).
   const Octave& octave_of(double approach, const Force& force) const;
   const Octave& octave(std::size_t index, const Force& force) const;
+  // The octave that holds W = work (built up to it) and t there.
+  std::pair<const Octave*, double> locate_work(double work, const Force& force) const;
   // Builds octaves up to `index` (under the mutex).
   void build_up_to(std::size_t index, const Force& force) const;
   Octave build(double lower, double work_start, const Force& force) const;

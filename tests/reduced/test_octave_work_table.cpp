@@ -149,6 +149,32 @@ TEST(OctaveWorkTable, WorkBelowMatchesTheQuadratureOfTheForce) {
   EXPECT_LE(worst, 4e-15);
 }
 
+// F at a given work from the series of F x (what the time integrals use) against the fit's
+// formula at the inverse.
+TEST(OctaveWorkTable, ForceAtWorkMatchesTheFitAtTheInverse) {
+  double worst = 0;
+  for (const auto& contact : contacts()) {
+    const JacksonGreenContact jackson_green(contact);
+    const double youngs = 2.1e11;
+    const GhaedniaContact ghaednia({contact.radius,
+                                    youngs / (1 - contact.poisson_ratio * contact.poisson_ratio),
+                                    contact.yield_strength, contact.poisson_ratio},
+                                   youngs, 0.02 * youngs);
+    for (const double w : ratios())
+      for (const ElasticPlasticContact* law :
+           {static_cast<const ElasticPlasticContact*>(&jackson_green),
+            static_cast<const ElasticPlasticContact*>(&ghaednia)}) {
+        const double x = w * jackson_green.critical_interference();
+        if (x > 0.2 * contact.radius) break;
+        const double work = law->loading_work(x);
+        const double reference = law->loading_force(law->loading_approach(work));
+        worst = std::max(worst, std::abs(law->loading_force_at_work(work) - reference) / reference);
+      }
+  }
+  std::printf("worst relative difference: %.2e\n", worst);
+  EXPECT_LE(worst, 3e-15);
+}
+
 TEST(OctaveWorkTable, PowerLawWorkIsExact) {
   // F = x^(3/2) from x_0 = 1: W = (2/5) x^(5/2), and its inverse.
   const impact::reduced::detail::OctaveWorkTable table(1.0, 0.4);

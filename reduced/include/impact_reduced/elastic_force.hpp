@@ -22,6 +22,12 @@ public:
   /// The approach x >= 0 with P(x) = potential (potential >= 0). The default solves
   /// P(x) = potential by bracketing and TOMS 748 to full double precision.
   virtual double approach_at_potential(double potential) const;
+  /// f at the approach where P = potential: f(approach_at_potential(potential)) by default.
+  /// The time integrals need only this pair; a law that tabulates P may return f from its
+  /// table (to the table's accuracy) instead of evaluating f again.
+  virtual double force_at_potential(double potential) const {
+    return force(approach_at_potential(potential));
+  }
   /// Approaches where f or its slope jumps: the time integrals split there. Default: none.
   virtual std::vector<double> breakpoints() const { return {}; }
 };

@@ -58,6 +58,12 @@ public:
   /// the Hertz-like guess and solves by TOMS 748 to full double precision; laws with an
   /// inverse in closed form override it.
   virtual double loading_approach(double work) const;
+  /// F_L at the approach where W_L = work: loading_force(loading_approach(work)) by default;
+  /// laws that tabulate W_L return it from the table (the time integrals of
+  /// hunt_crossley_elastic_plastic.hpp need only this pair).
+  virtual double loading_force_at_work(double work) const {
+    return loading_force(loading_approach(work));
+  }
   /// The loading work between x_max - d and x_max [J], integral of F_L, for 0 <= d <= x_max,
   /// without cancellation for small d (the time integrals need it where d << x_max). The
   /// default integrates F_L by 30-point Gauss-Legendre on [x_max - d, x_max] split at the

@@ -130,6 +130,9 @@ public:
   double loading_stiffness(double approach) const override;
   /// Hertz's inverse below the transition; above it Newton's method on the octave's series.
   double loading_approach(double work) const override;
+  /// Hertz's in closed form; above the transition F from the octave's series of F x at the
+  /// inverse (within 3e-15 of the fit's, tests/reduced/test_octave_work_table.cpp).
+  double loading_force_at_work(double work) const override;
   /// Hertz's difference in closed form (expm1, log1p), the series' differences term by term
   /// above the transition: the loading work's accuracy also for d << x_max.
   double loading_work_below(double approach_max, double distance) const override;
