@@ -256,6 +256,7 @@ HuntCrossleyImpact::HuntCrossleyImpact(double mass,
     separation_force_factor_ = -w_out;
   }
   if (!power_law_) {
+    initial_power_law_ = elastic_force().initial_power_law();
     for (const double breakpoint : elastic_force().breakpoints()) {
       if (!(breakpoint > 0 && breakpoint < approach_max_)) continue;
       compression_breaks_.push_back(velocity_ -
@@ -352,9 +353,11 @@ bool HuntCrossleyImpact::uses_singular_rule() const {
 //   dt/du = m / ((1 + b v) c^(1/(n+1)) ((n+1) m E)^alpha) = K u^-alpha g(u),
 //   alpha = n / (n + 1),  g = e(u)^-alpha / (1 + b v),
 // so the end-point singularity is exactly the Jacobi weight.
-double HuntCrossleyImpact::singular_rule_time(ImpactPhase phase, double distance) const {
+// A custom law that is c x^n below its first breakpoint has this form on its first piece.
+double HuntCrossleyImpact::singular_rule_time(ImpactPhase phase, double distance,
+                                              const PowerLawCoefficients& law) const {
   if (distance <= 0) return 0.0;
-  const double exponent = power_law_->exponent();
+  const double exponent = law.exponent;
   const double alpha = exponent / (exponent + 1);
   const auto& rule = detail::gauss_jacobi_rule(singular_rule_points, alpha);
   const bool compressing = phase == ImpactPhase::compression;
@@ -366,21 +369,43 @@ double HuntCrossleyImpact::singular_rule_time(ImpactPhase phase, double distance
     sum += rule.weights[i] * std::pow(energy / u, -alpha) / (1.0 + damping_ * rate);
   }
   // K = m / (c^(1/(n+1)) ((n+1) m)^alpha) [s (m/s)^(alpha - 1)]
-  const double time_scale = mass_ / (std::pow(power_law_->stiffness(), 1.0 / (exponent + 1)) *
+  const double time_scale = mass_ / (std::pow(law.stiffness, 1.0 / (exponent + 1)) *
                                      std::pow((exponent + 1) * mass_, alpha));
   return time_scale * std::pow(distance, 1.0 - alpha) * sum;
 }
 
+bool HuntCrossleyImpact::uses_initial_rule() const {
+  return !power_law_ && initial_power_law_ && impact_parameter() <= singular_rule_beta_limit;
+}
+
 double HuntCrossleyImpact::compression_time_until(double distance) const {
-  if (uses_singular_rule()) return singular_rule_time(ImpactPhase::compression, distance);
-  return integrate_from_zero([this](double u) { return compression_time_density(u); }, distance,
-                             compression_breaks_);
+  if (uses_singular_rule())
+    return singular_rule_time(ImpactPhase::compression, distance,
+                              {power_law_->stiffness(), power_law_->exponent()});
+  const auto density = [this](double u) { return compression_time_density(u); };
+  if (uses_initial_rule()) {
+    const double first = std::min(distance, compression_breaks_.empty()
+                                                ? distance
+                                                : compression_breaks_.front());
+    return singular_rule_time(ImpactPhase::compression, first, *initial_power_law_) +
+           integrate_between(density, first, distance, compression_breaks_);
+  }
+  return integrate_from_zero(density, distance, compression_breaks_);
 }
 
 double HuntCrossleyImpact::restitution_time_from(double distance) const {
-  if (uses_singular_rule()) return singular_rule_time(ImpactPhase::restitution, distance);
-  return integrate_from_zero([this](double u) { return restitution_time_density(u); }, distance,
-                             restitution_breaks_);
+  if (uses_singular_rule())
+    return singular_rule_time(ImpactPhase::restitution, distance,
+                              {power_law_->stiffness(), power_law_->exponent()});
+  const auto density = [this](double u) { return restitution_time_density(u); };
+  if (uses_initial_rule()) {
+    const double first = std::min(distance, restitution_breaks_.empty()
+                                                ? distance
+                                                : restitution_breaks_.front());
+    return singular_rule_time(ImpactPhase::restitution, first, *initial_power_law_) +
+           integrate_between(density, first, distance, restitution_breaks_);
+  }
+  return integrate_from_zero(density, distance, restitution_breaks_);
 }
 
 // The compression integral from a distance u to x_max (u = V), split at the breakpoints.

@@ -31,6 +31,9 @@ public:
     return spring_->loading_force_at_work(work);
   }
   std::vector<double> breakpoints() const override { return spring_->loading_breakpoints(); }
+  std::optional<PowerLawCoefficients> initial_power_law() const override {
+    return spring_->loading_power_law();
+  }
 
 private:
   std::shared_ptr<const ElasticPlasticContact> spring_;

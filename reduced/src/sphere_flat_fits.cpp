@@ -203,6 +203,12 @@ double JacksonGreenContact::loading_work_below(double approach_max, double dista
          detail::hertz_work_below(stiffness, transition_, distance - above);
 }
 
+std::optional<PowerLawCoefficients> JacksonGreenContact::loading_power_law() const {
+  // The stiffness exactly as hertz_load forms it, so that c x^(3/2) is loading_force.
+  return PowerLawCoefficients{4.0 / 3.0 * contact_.contact_modulus * std::sqrt(contact_.radius),
+                              1.5};
+}
+
 HertzianUnloading JacksonGreenContact::unloading(double approach_max) const {
   require_positive("approach_max", approach_max);
   const double force = loading_force(approach_max);

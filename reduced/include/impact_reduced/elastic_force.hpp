@@ -3,6 +3,7 @@
 /// The elastic part f(x) of a Hunt-Crossley contact law F = f(x) (1 + b dx/dt).
 
 #include <functional>
+#include <optional>
 #include <vector>
 
 namespace impact::reduced {
@@ -10,6 +11,12 @@ namespace impact::reduced {
 /// An increasing elastic force f(x) [N] of the approach x [m], f(0) = 0, with its
 /// potential P(x) = integral_0^x f [J]. The impact formulas work with P, so a law is
 /// fully described by f, P and the slope f' (used only to locate the force maximum).
+/// The coefficients of a power law f(x) = c x^n: stiffness c [N/m^n], exponent n > 0.
+struct PowerLawCoefficients {
+  double stiffness;
+  double exponent;
+};
+
 class ElasticForce {
 public:
   virtual ~ElasticForce() = default;
@@ -30,6 +37,10 @@ public:
   }
   /// Approaches where f or its slope jumps: the time integrals split there. Default: none.
   virtual std::vector<double> breakpoints() const { return {}; }
+  /// If f is exactly a power law c x^n from x = 0 to its first breakpoint: its coefficients
+  /// (the time integrals then take the power law's Gauss-Jacobi rule on that piece). Default:
+  /// none.
+  virtual std::optional<PowerLawCoefficients> initial_power_law() const { return std::nullopt; }
 };
 
 /// The power law f(x) = c x^n (Hertz: n = 3/2), the fast path: P and its inverse are

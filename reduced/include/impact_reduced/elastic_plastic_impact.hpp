@@ -24,9 +24,11 @@
 /// restitution, x_max, F_max, x_r within 1e-13 relative; compression and contact time
 /// within 1e-12.
 
+#include "impact_reduced/elastic_force.hpp"
 #include "impact_reduced/impact_ode.hpp"
 
 #include <cstddef>
+#include <optional>
 #include <vector>
 
 namespace impact::reduced {
@@ -70,6 +72,9 @@ public:
   /// breakpoints for d <= x_max / 2, and subtracts loading_work beyond; laws override it
   /// with their closed forms or tables.
   virtual double loading_work_below(double approach_max, double distance) const;
+  /// If F_L is exactly a power law c x^n from x = 0 to its first breakpoint (Hertz's below
+  /// yield): its coefficients, for the damped impact's time integrals. Default: none.
+  virtual std::optional<PowerLawCoefficients> loading_power_law() const { return std::nullopt; }
   /// Approaches where F_L or its slope jumps (the quadratures split there). Default: none.
   virtual std::vector<double> loading_breakpoints() const { return {}; }
   /// The unloading branch from the maximum approach x_max > 0.

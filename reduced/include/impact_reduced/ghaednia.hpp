@@ -128,6 +128,10 @@ public:
   /// dF/dx [N/m], analytic; the fit's (right) slope at x = 1.9 delta_c.
   double loading_stiffness(double approach) const override;
   std::vector<double> loading_breakpoints() const override { return {transition_}; }
+  /// Hertz's up to 1.9 delta_c.
+  std::optional<PowerLawCoefficients> loading_power_law() const override {
+    return PowerLawCoefficients{hertz_coefficient_, 1.5};
+  }
   /// The radius-preserving Hertzian unloading from x_max > 0 ("approach_max").
   HertzianUnloading unloading(double approach_max) const override;
 

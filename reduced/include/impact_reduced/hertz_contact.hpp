@@ -21,6 +21,9 @@ public:
   double loading_approach(double work) const override;
   /// In closed form, without cancellation for small d.
   double loading_work_below(double approach_max, double distance) const override;
+  std::optional<PowerLawCoefficients> loading_power_law() const override {
+    return PowerLawCoefficients{stiffness_, 1.5};
+  }
   /// The loading branch itself: stiffness c, residual approach 0.
   HertzianUnloading unloading(double approach_max) const override;
 

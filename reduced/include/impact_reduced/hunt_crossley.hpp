@@ -184,7 +184,11 @@ private:
   double restitution_time_from(double distance_from_rebound_velocity) const;
   // Power-law fast path: dt/du = K u^-alpha g(u) with g smooth, integrated by Gauss-Jacobi.
   bool uses_singular_rule() const;
-  double singular_rule_time(ImpactPhase phase, double distance) const;
+  double singular_rule_time(ImpactPhase phase, double distance,
+                            const PowerLawCoefficients& law) const;
+  // A custom law that is a power law below its first breakpoint (initial_power_law): the
+  // same rule on the first piece of each phase, for beta <= 1.
+  bool uses_initial_rule() const;
   ImpactState compression_state(double time, double distance) const;
   ImpactState restitution_state(double time, double distance) const;
   // The power law's linear-time history (see history()). Each phase is measured by a
@@ -220,6 +224,7 @@ private:
   // the time integrals split there, where the density jumps or kinks.
   std::vector<double> compression_breaks_;
   std::vector<double> restitution_breaks_;
+  std::optional<PowerLawCoefficients> initial_power_law_; // custom laws only
 };
 
 } // namespace impact::reduced

@@ -137,6 +137,8 @@ public:
   /// above the transition: the loading work's accuracy also for d << x_max.
   double loading_work_below(double approach_max, double distance) const override;
   std::vector<double> loading_breakpoints() const override { return {transition_}; }
+  /// Hertz's (4/3) E* sqrt(R) x^(3/2) up to the transition.
+  std::optional<PowerLawCoefficients> loading_power_law() const override;
   HertzianUnloading unloading(double approach_max) const override;
   double critical_interference() const { return critical_interference_; }
 

@@ -57,6 +57,10 @@ public:
   /// In closed form, without cancellation for small d.
   double loading_work_below(double approach_max, double distance) const override;
   std::vector<double> loading_breakpoints() const override { return {yield_approach_}; }
+  /// Hertz's up to the yield approach.
+  std::optional<PowerLawCoefficients> loading_power_law() const override {
+    return PowerLawCoefficients{hertz_stiffness_, 1.5};
+  }
   HertzianUnloading unloading(double approach_max) const override;
 
   double yield_approach() const { return yield_approach_; }
