@@ -146,7 +146,7 @@ OctaveWorkTable::Octave OctaveWorkTable::build(double lower, double work_start,
     at_minus_one += (m % 2 == 0 ? 1.0 : -1.0) * result.integral[m];
   result.integral[0] = -at_minus_one;
   result.work_end = work_start + chebyshev_sum(result.integral.data(), n + 1, 1.0);
-  // The inverse's guess: t at the 17 Chebyshev-Lobatto points of the normalised work w in
+  // The inverse's guess: t at the 33 Chebyshev-Lobatto points of the normalised work w in
   // [-1, 1] (by Newton from the linear guess), and their series.
   const double span = result.work_end - result.work_start;
   std::array<double, inverse_size> times{};

@@ -13,7 +13,7 @@
 // the largest degree throws, rather than returning a less accurate work). Measured against
 // composite 30-point Gauss-Legendre in x (tests/reduced/test_octave_work_table.cpp).
 //
-// The inverse starts Newton's method from a Chebyshev series of t(W) per octave (17 points,
+// The inverse starts Newton's method from a Chebyshev series of t(W) per octave (33 points,
 // built with the octave), so that one Newton step usually ends it: a step below 1e-9 in t
 // leaves an error of about (G'/2G) 1e-18, far below the rounding of t.
 //
@@ -51,7 +51,7 @@ public:
   double work_below(double approach_max, double distance, const Force& force) const;
 
   static constexpr std::size_t max_degree = 65; // coefficients of the longest series
-  static constexpr std::size_t inverse_size = 17; // coefficients of the inverse's guess
+  static constexpr std::size_t inverse_size = 33; // coefficients of the inverse's guess
   // Octaves x_0 2^k, k < max_octaves: beyond, x_0 2^k overflows for any x_0 >= 1e-300.
   static constexpr std::size_t max_octaves = 2100;
 
