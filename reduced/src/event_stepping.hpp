@@ -71,8 +71,12 @@ public:
     const auto system = [this](const State& s, State& d, double) { system_(s, d); };
     const State start = y;
     const double start_time = tau;
+    // The derivative at the start, evaluated once for all the tries from it (the controller
+    // would evaluate it again after each rejection).
+    State rate;
+    system_(y, rate);
     std::size_t rejections = 0;
-    while (controlled_.try_step(system, y, tau, dtau) == boost::numeric::odeint::fail) {
+    while (controlled_.try_step(system, y, rate, tau, dtau) == boost::numeric::odeint::fail) {
       if (++rejections > rejection_limit || !(dtau > 1e-300))
         throw std::runtime_error("impact integration cannot satisfy the tolerance at t = " +
                                  describe(time_unit_ * tau) + " s");
@@ -109,8 +113,13 @@ public:
   /// lower and h (or vanishes at h); returns h if it does not.
   template <class Event>
   double locate(const State& start, double lower, double h, Event event) const {
-    const double at_lower = event(advance(start, lower));
-    const double at_upper = event(advance(start, h));
+    return locate(start, lower, h, event, event(advance(start, lower)), event(advance(start, h)));
+  }
+
+  /// The same with the event's values at lower and h given.
+  template <class Event>
+  double locate(const State& start, double lower, double h, Event event, double at_lower,
+                double at_upper) const {
     if (at_upper == 0 || (at_upper > 0) == (at_lower > 0)) return h; // the sign change is at h
     if (at_lower == 0) return lower;
     std::uintmax_t iterations = 200;
@@ -160,8 +169,11 @@ public:
     for (std::size_t s = (j > 0 ? j - 1 : 0); s <= j && s < count; ++s) {
       const Step& step = steps_[s];
       const auto rate_at = [&](double h) { return rate(advance(step.state, h)); };
-      if (!(rate_at(0) > 0 && rate_at(step.length) < 0)) continue;
-      const double h = locate(step.state, 0.0, step.length, rate);
+      const double at_start = rate_at(0);
+      if (!(at_start > 0)) continue;
+      const double at_end = rate_at(step.length);
+      if (!(at_end < 0)) continue;
+      const double h = locate(step.state, 0.0, step.length, rate, at_start, at_end);
       const double candidate = value(advance(step.state, h));
       if (candidate > maximum) {
         maximum = candidate;
