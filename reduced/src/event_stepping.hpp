@@ -66,15 +66,19 @@ public:
 
   /// One accepted step from (y, tau) with trial length dtau, all three updated (dtau to
   /// the controller's proposal for the next step). The step is recorded and returned.
+  /// `start_rate`: f(y) if the caller has it (else evaluated here).
   /// Throws std::runtime_error if the tolerance cannot be met or the state is non-finite.
-  const Step& step(State& y, double& tau, double& dtau) {
+  const Step& step(State& y, double& tau, double& dtau, const State* start_rate = nullptr) {
     const auto system = [this](const State& s, State& d, double) { system_(s, d); };
     const State start = y;
     const double start_time = tau;
     // The derivative at the start, evaluated once for all the tries from it (the controller
     // would evaluate it again after each rejection).
     State rate;
-    system_(y, rate);
+    if (start_rate)
+      rate = *start_rate;
+    else
+      system_(y, rate);
     std::size_t rejections = 0;
     while (controlled_.try_step(system, y, rate, tau, dtau) == boost::numeric::odeint::fail) {
       if (++rejections > rejection_limit || !(dtau > 1e-300))
@@ -162,6 +166,15 @@ public:
     std::vector<double> node_value(count + 1);
     for (std::size_t i = 0; i < count; ++i) node_value[i] = value(steps_[i].state);
     node_value[count] = value(end);
+    return locate_maximum(node_value, value, rate);
+  }
+
+  /// The same with the values at the nodes given: node_value[i] = value(steps()[i].state),
+  /// and the last one the value at the end.
+  template <class Value, class Rate>
+  std::pair<double, double> locate_maximum(const std::vector<double>& node_value, Value value,
+                                           Rate rate) const {
+    const std::size_t count = steps_.size();
     const std::size_t j = static_cast<std::size_t>(
         std::max_element(node_value.begin(), node_value.end()) - node_value.begin());
     double maximum = node_value[j];

@@ -135,6 +135,9 @@ private:
     double tau = 0;
     double dtau = 1e-3;
     bool compressing = true;
+    // The force at y, carried from the check after a step to the start of the next one, where
+    // it gives the stepper its first derivative and the force maximum its node value.
+    double force_at_y = force_at(y);
     while (true) {
       if (stepper_->steps().size() >= step_limit || tau > time_limit) {
         std::ostringstream message;
@@ -148,7 +151,9 @@ private:
       }
       const State before = y;
       const double before_time = tau, before_trial = dtau;
-      const auto& step = stepper_->step(y, tau, dtau);
+      const State start_rate{y[1], -force_at_y * time_ / (mass_ * velocity_)}; // rhs(y)
+      node_forces_.push_back(force_at_y);
+      const auto& step = stepper_->step(y, tau, dtau, &start_rate);
       const State start = step.state;
       const double start_time = step.start;
       const double length = step.length;
@@ -162,9 +167,11 @@ private:
         force_ = &switched_law_;
         switched_ = true;
         stepper_->drop_last_step();
+        node_forces_.pop_back();
         y = before;
         tau = before_time;
         dtau = before_trial;
+        force_at_y = force_at(y); // the switched law's (equal while x' >= 0)
         continue;
       }
       if (compressing && y[1] <= 0) {
@@ -175,7 +182,8 @@ private:
         event_start = h;
       }
       // End of contact: x back at 0, or (no tension) the force back at 0, whichever first.
-      const bool released = !compressing && end_ == ContactEnd::zero_force && force_at(y) <= 0;
+      force_at_y = force_at(y);
+      const bool released = !compressing && end_ == ContactEnd::zero_force && force_at_y <= 0;
       if (!compressing && (y[0] <= 0 || released)) {
         double h = length;
         bool at_zero_approach = y[0] <= 0;
@@ -235,8 +243,10 @@ private:
   // The force maximum lies next to the largest node value, in one of the two adjacent
   // steps (or at that node): located where dF/dt = 0 by re-stepping.
   void locate_force_maximum() {
+    std::vector<double> node_value = node_forces_;
+    node_value.push_back(force_at(separation_));
     std::tie(force_max_, time_force_max_) = stepper_->locate_maximum(
-        separation_, [this](const State& y) { return force_at(y); },
+        node_value, [this](const State& y) { return force_at(y); },
         [this](const State& y) { return force_rate(y); });
   }
 
@@ -247,6 +257,7 @@ private:
   detail::LawAtMaximum at_maximum_; // if set: the law from x_max on, given x_max
   ContactForceLaw switched_law_;
   bool switched_ = false;
+  std::vector<double> node_forces_; // the force at the start of each recorded step
   double length_ = 0;
   double time_ = 0;
   std::optional<Stepper> stepper_;
