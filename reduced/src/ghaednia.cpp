@@ -147,7 +147,17 @@ double GhaedniaContact::loading_stiffness(double approach) const {
   require_non_negative("approach", approach);
   if (approach < transition_)
     return 2 * contact_.contact_modulus * std::sqrt(contact_.radius * approach);
-  const FitPoint p = fit(approach);
+  return fit_slope(approach, fit(approach));
+}
+
+std::pair<double, double> GhaedniaContact::loading_force_and_stiffness(double approach) const {
+  if (approach <= transition_) return {loading_force(approach), loading_stiffness(approach)};
+  const FitPoint p = fit(approach); // as fit_force and loading_stiffness form them
+  return {p.plastic_force + (p.hertz_force - p.plastic_force) * elastic_weight_,
+          fit_slope(approach, p)};
+}
+
+double GhaedniaContact::fit_slope(double approach, const FitPoint& p) const {
   const double w = p.ratio;
   const double hertz_radius_slope = p.hertz_radius / (2 * approach);
   const double plastic_radius_slope = p.plastic_radius * (1 + b_) / (2 * approach);

@@ -11,9 +11,10 @@ namespace impact::reduced {
 double kuwabara_kono_elastic_plastic_force(const ElasticPlasticContact& spring,
                                            double dissipative_constant, double approach,
                                            double approach_rate, double approach_max) {
-  if (approach_rate >= 0 || approach_max <= 0)
-    return spring.loading_force(approach) +
-           dissipative_constant * spring.loading_stiffness(approach) * approach_rate;
+  if (approach_rate >= 0 || approach_max <= 0) {
+    const auto [force, stiffness] = spring.loading_force_and_stiffness(approach);
+    return force + dissipative_constant * stiffness * approach_rate;
+  }
   const HertzianUnloading branch = spring.unloading(approach_max);
   const double stretch = std::max(0.0, approach - branch.residual_approach);
   const double root = std::sqrt(stretch);
@@ -37,8 +38,10 @@ ContactForceLaw switched_law(const ElasticPlasticContact& spring, double dissipa
                              double approach_max) {
   const HertzianUnloading branch = spring.unloading(approach_max);
   return [&spring, dissipative_constant, branch](double x, double rate) {
-    if (rate >= 0)
-      return spring.loading_force(x) + dissipative_constant * spring.loading_stiffness(x) * rate;
+    if (rate >= 0) {
+      const auto [force, stiffness] = spring.loading_force_and_stiffness(x);
+      return force + dissipative_constant * stiffness * rate;
+    }
     const double stretch = x - branch.residual_approach;
     return branch.stiffness * std::sqrt(std::abs(stretch)) *
            (stretch + 1.5 * dissipative_constant * rate);
@@ -48,7 +51,8 @@ ContactForceLaw switched_law(const ElasticPlasticContact& spring, double dissipa
 // The loading branch's law (identical to the switched law while x' >= 0).
 ContactForceLaw loading_law(const ElasticPlasticContact& spring, double dissipative_constant) {
   return [&spring, dissipative_constant](double x, double rate) {
-    return spring.loading_force(x) + dissipative_constant * spring.loading_stiffness(x) * rate;
+    const auto [force, stiffness] = spring.loading_force_and_stiffness(x);
+    return force + dissipative_constant * stiffness * rate;
   };
 }
 

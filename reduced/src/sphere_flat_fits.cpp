@@ -71,6 +71,33 @@ double jackson_green_fit_slope(double ratio, const SphereFlatContact& contact, d
                            hardness_ratio * shape_slope_times_ratio + hardness_ratio * shape);
 }
 
+// P / P_c and its slope in omega* at once (omega* > 1.9): the terms of jackson_green_fit and
+// jackson_green_fit_slope evaluated once, each result formed exactly as there.
+std::pair<double, double> jackson_green_fit_and_slope(double ratio, const SphereFlatContact& contact,
+                                                      double c, double b) {
+  const double yield_strain = contact.yield_strength / contact.contact_modulus;
+  const double relative_radius = std::sqrt(ratio) * pi * c * yield_strain / 2 *
+                                 std::pow(ratio / jackson_green_transition, b / 2);
+  const double radius_power = std::pow(relative_radius, -0.7);
+  const double decay = std::exp(-0.82 * radius_power);
+  const double hardness_ratio = 2.84 * (1 - decay);
+  const double hardness_slope_times_ratio = -2.84 * 0.82 * 0.7 * radius_power * decay * (1 + b) / 2;
+  const double power = std::pow(ratio, 5.0 / 9.0);
+  const double shape_decay = std::exp(-power / 25);
+  const double shape = 1 - shape_decay;
+  const double shape_slope_times_ratio = shape_decay * power / 45;
+  const double twelfth = std::pow(ratio, 5.0 / 12.0);
+  const double hertz_decay = std::exp(-0.25 * twelfth);
+  const double ratio_power = hertz_decay * std::pow(ratio, 1.5) +
+                             4 * hardness_ratio / c * shape * ratio;
+  const double hertz_like = hertz_decay * std::sqrt(ratio) * (1.5 - 5.0 / 48.0 * twelfth);
+  const double slope = hertz_like + 4 / c *
+                                        (hardness_slope_times_ratio * shape +
+                                         hardness_ratio * shape_slope_times_ratio +
+                                         hardness_ratio * shape);
+  return {ratio_power, slope};
+}
+
 } // namespace
 
 double jackson_green_critical_interference(const SphereFlatContact& contact) {
@@ -170,6 +197,13 @@ double JacksonGreenContact::loading_stiffness(double approach) const {
     return 2 * contact_.contact_modulus * std::sqrt(contact_.radius * approach);
   return critical_load_ / critical_interference_ *
          jackson_green_fit_slope(approach / critical_interference_, contact_, c_, b_);
+}
+
+std::pair<double, double> JacksonGreenContact::loading_force_and_stiffness(double approach) const {
+  if (approach <= transition_) return {loading_force(approach), loading_stiffness(approach)};
+  const auto [ratio_power, slope] =
+      jackson_green_fit_and_slope(approach / critical_interference_, contact_, c_, b_);
+  return {critical_load_ * ratio_power, critical_load_ / critical_interference_ * slope};
 }
 
 double JacksonGreenContact::loading_work(double approach) const {

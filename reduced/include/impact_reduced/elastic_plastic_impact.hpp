@@ -29,6 +29,7 @@
 
 #include <cstddef>
 #include <optional>
+#include <utility>
 #include <vector>
 
 namespace impact::reduced {
@@ -56,6 +57,11 @@ public:
   /// Loading stiffness dF_L/dx [N/m] for x > 0 (the right derivative at a breakpoint): the
   /// slope that locates the force peak of a damped impact and scales Kuwabara-Kono damping.
   virtual double loading_stiffness(double approach) const = 0;
+  /// {loading_force(x), loading_stiffness(x)} at once, the same values (the Kuwabara-Kono
+  /// law needs both at every evaluation; the fitted laws share their terms).
+  virtual std::pair<double, double> loading_force_and_stiffness(double approach) const {
+    return {loading_force(approach), loading_stiffness(approach)};
+  }
   /// The approach x >= 0 with W_L(x) = work (work >= 0). The default brackets the root from
   /// the Hertz-like guess and solves by TOMS 748 to full double precision; laws with an
   /// inverse in closed form override it.

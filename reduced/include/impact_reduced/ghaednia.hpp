@@ -97,6 +97,7 @@
 #include "impact_reduced/sphere_flat_fits.hpp"
 
 #include <memory>
+#include <utility>
 #include <vector>
 
 namespace impact::reduced {
@@ -127,6 +128,8 @@ public:
   double loading_work_below(double approach_max, double distance) const override;
   /// dF/dx [N/m], analytic; the fit's (right) slope at x = 1.9 delta_c.
   double loading_stiffness(double approach) const override;
+  /// Both from one evaluation of the fit (the same values as the two calls).
+  std::pair<double, double> loading_force_and_stiffness(double approach) const override;
   std::vector<double> loading_breakpoints() const override { return {transition_}; }
   /// Hertz's up to 1.9 delta_c.
   std::optional<PowerLawCoefficients> loading_power_law() const override {
@@ -152,6 +155,7 @@ private:
   struct FitPoint;
   FitPoint fit(double approach) const;
   double fit_force(double approach) const; // Eq. 30 above the transition
+  double fit_slope(double approach, const FitPoint& point) const; // its dF/dx
 
   SphereFlatContact contact_;
   double c_;                     // C(nu)

@@ -128,6 +128,8 @@ public:
   /// tests/reduced/test_octave_work_table.cpp).
   double loading_work(double approach) const override;
   double loading_stiffness(double approach) const override;
+  /// Both from one evaluation of the fit's terms (the same values as the two calls).
+  std::pair<double, double> loading_force_and_stiffness(double approach) const override;
   /// Hertz's inverse below the transition; above it Newton's method on the octave's series.
   double loading_approach(double work) const override;
   /// Hertz's in closed form; above the transition F from the octave's series of F x at the
