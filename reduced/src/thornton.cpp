@@ -57,6 +57,12 @@ double ThorntonContact::loading_stiffness(double approach) const {
   return plastic_stiffness_;
 }
 
+std::pair<double, double> ThorntonContact::loading_force_and_stiffness(double approach) const {
+  if (approach < yield_approach_)
+    return {hertz_stiffness_ * std::pow(approach, 1.5), 1.5 * hertz_stiffness_ * std::sqrt(approach)};
+  return {loading_force(approach), plastic_stiffness_};
+}
+
 double ThorntonContact::loading_approach(double work) const {
   if (!(work > 0)) return 0.0;
   const double yield_work = 0.4 * yield_force_ * yield_approach_;

@@ -17,6 +17,8 @@ public:
   double loading_force(double approach) const override;
   double loading_work(double approach) const override;
   double loading_stiffness(double approach) const override;
+  /// Both with one square root (the same values as the two calls).
+  std::pair<double, double> loading_force_and_stiffness(double approach) const override;
   /// In closed form: (5 W / (2 c))^(2/5).
   double loading_approach(double work) const override;
   /// In closed form, without cancellation for small d.

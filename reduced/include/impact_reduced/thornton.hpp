@@ -52,6 +52,8 @@ public:
   double loading_force(double approach) const override;
   double loading_work(double approach) const override;
   double loading_stiffness(double approach) const override;
+  /// Both at once (the same values as the two calls).
+  std::pair<double, double> loading_force_and_stiffness(double approach) const override;
   /// In closed form: Hertz's inverse below W_L(x_y), the root of the quadratic above.
   double loading_approach(double work) const override;
   /// In closed form, without cancellation for small d.
