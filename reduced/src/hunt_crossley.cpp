@@ -46,12 +46,21 @@ double integrate_density(const std::function<double(double)>& density, double lo
 double integrate_smooth_piece(const std::function<double(double)>& density, double lower,
                               double upper) {
   if (upper <= lower) return 0.0;
-  return boost::math::quadrature::gauss_kronrod<double, 31>::integrate(
-      [&](double s) {
-        const double u = std::exp(s);
-        return density(u) * u;
-      },
-      std::log(lower), std::log(upper), 15, 1e-12);
+  const auto integrand = [&](double s) {
+    const double u = std::exp(s);
+    return density(u) * u;
+  };
+  const double from = std::log(lower), to = std::log(upper);
+  if (to - from < 0.25) {
+    // A short piece (from the force peak to x_max at small beta): 15 points usually meet the
+    // same estimate; else the 31-point rule as below.
+    double error = 0;
+    const double quick = boost::math::quadrature::gauss_kronrod<double, 15>::integrate(
+        integrand, from, to, 0, 0.0, &error);
+    if (error <= 1e-12 * std::abs(quick)) return quick;
+  }
+  return boost::math::quadrature::gauss_kronrod<double, 31>::integrate(integrand, from, to, 15,
+                                                                        1e-12);
 }
 
 // The integral over [lower, upper] (lower > 0), split at the ascending `breaks` inside.
@@ -460,9 +469,8 @@ double HuntCrossleyImpact::peak_distance() const {
   auto condition = [this](double distance) {
     const double approach =
         elastic_force().approach_at_potential(mass_ * compression_energy(distance));
-    const double elastic = elastic_force().force(approach);
-    return mass_ * (velocity_ - distance) * elastic_force().slope(approach) / elastic -
-           damping_ * elastic;
+    const auto [elastic, slope] = elastic_force().force_and_slope(approach);
+    return mass_ * (velocity_ - distance) * slope / elastic - damping_ * elastic;
   };
   boost::uintmax_t iterations = 200;
   const auto tolerance = boost::math::tools::eps_tolerance<double>();

@@ -24,6 +24,9 @@ public:
   double force(double approach) const override { return spring_->loading_force(approach); }
   double potential(double approach) const override { return spring_->loading_work(approach); }
   double slope(double approach) const override { return spring_->loading_stiffness(approach); }
+  std::pair<double, double> force_and_slope(double approach) const override {
+    return spring_->loading_force_and_stiffness(approach);
+  }
   double approach_at_potential(double work) const override {
     return spring_->loading_approach(work);
   }

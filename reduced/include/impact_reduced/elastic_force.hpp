@@ -4,6 +4,7 @@
 
 #include <functional>
 #include <optional>
+#include <utility>
 #include <vector>
 
 namespace impact::reduced {
@@ -26,6 +27,10 @@ public:
   virtual double potential(double approach) const = 0;
   /// f'(x) [N/m] for x > 0.
   virtual double slope(double approach) const = 0;
+  /// {force(x), slope(x)} at once, the same values (the force peak's search needs both).
+  virtual std::pair<double, double> force_and_slope(double approach) const {
+    return {force(approach), slope(approach)};
+  }
   /// The approach x >= 0 with P(x) = potential (potential >= 0). The default solves
   /// P(x) = potential by bracketing and TOMS 748 to full double precision.
   virtual double approach_at_potential(double potential) const;
