@@ -14,10 +14,12 @@
 /// Model: m x'' = -F(x), x(0) = 0, x'(0) = V > 0. With no rate dependence the impact follows
 /// from energy: x_max from W_L(x_max) = m V^2 / 2 (W_L the loading work), the rebound speed
 /// from the energy stored in the unloading branch, (2/5) F_max (x_max - x_r) = m V_out^2 / 2,
-/// and the times from t = integral dx / |x'| over each phase, evaluated by tanh-sinh
-/// quadrature in a variable that removes the inverse-square-root singularity at x_max, with
-/// the work near x_max from the law's loading_work_below (closed forms, the fits' series
-/// differenced term by term, or local Gauss-Legendre) so that it does not cancel.
+/// and the times from t = integral dx / |x'| over each phase: the loading piece from x = 0 by
+/// Hertz's incomplete Beta function where the law is a power law there (loading_power_law;
+/// else tanh-sinh), the pieces above it by adaptive Gauss-Kronrod in sigma, x = x_max
+/// exp(-sigma^2), which removes the inverse-square-root singularity at x_max, with the work
+/// near x_max from the law's loading_work_below (closed forms, the fits' series differenced
+/// term by term, or local Gauss-Legendre) so that it does not cancel.
 ///
 /// Accuracy (measured, tests/reduced/test_elastic_plastic_impact.cpp, against Thornton's
 /// closed forms and an independent long-double Runge-Kutta-Fehlberg 7(8) integration):
