@@ -8,7 +8,12 @@
 ///     ln(1 + b v) - b v = ln(1 + beta) - beta + (b^2/m) P(x),
 /// solved with Lambert W through a formulation that stays exact at the branch point
 /// (x -> x_max, beta -> 0) and continuous at b = 0 (Hertz). Times are integrals over the
-/// approach rate, evaluated by tanh-sinh quadrature, so there is no ODE and no step size.
+/// approach rate, so there is no ODE and no step size: for the power law by Gauss-Jacobi
+/// (beta <= 1) or tanh-sinh; for a custom law the piece from the singular end by tanh-sinh
+/// (by the power law's Gauss-Jacobi rule if the law is one there, initial_power_law), the
+/// pieces between its breakpoints by adaptive Gauss-Kronrod in ln u (estimate 1e-12), and
+/// the compression split at the force peak, so that the peak's time and the compression time
+/// share one integral.
 
 #include "impact_reduced/elastic_force.hpp"
 #include "impact_reduced/impact_figures.hpp"
@@ -72,8 +77,9 @@ struct ImpactResponse {
 /// time_force_max 1e-13 and compression_time, contact_time 1e-12 (beta <= 1e3);
 /// approach_rate(x) 1e-12 on both branches, also within 1e-10 x_max of x_max (the power law
 /// evaluates the energy balance in quadruple precision there). A custom elastic law is as
-/// accurate as its callables, except approach_rate close to x_max, where the cancellation
-/// in P(x_max) - P(x) limits it to about 1e-16 x_max / (x_max - x).
+/// accurate as its callables (its times to 1e-12 or better: tests/reduced/
+/// test_hunt_crossley_elastic_plastic.cpp finds 1.5e-15), except approach_rate close to x_max,
+/// where the cancellation in P(x_max) - P(x) limits it to about 1e-16 x_max / (x_max - x).
 class HuntCrossleyImpact {
 public:
   /// Power law f = c x^n: mass m > 0 [kg], stiffness c > 0 [N/m^n], exponent n > 0,
