@@ -487,13 +487,15 @@ double HuntCrossleyImpact::peak_distance() const {
     return 0.5 * (low + high);
   }
   double lower = velocity_ * 1e-6;
-  while (!(condition(lower) > 0)) {
+  double at_lower = condition(lower);
+  while (!(at_lower > 0)) {
     lower *= 1e-3;
     if (lower < velocity_ * 1e-290)
       throw std::runtime_error("the force peak could not be bracketed");
+    at_lower = condition(lower);
   }
-  const auto [low, high] =
-      boost::math::tools::toms748_solve(condition, lower, velocity_, tolerance, iterations);
+  const auto [low, high] = boost::math::tools::toms748_solve(
+      condition, lower, velocity_, at_lower, condition(velocity_), tolerance, iterations);
   return 0.5 * (low + high);
 }
 
