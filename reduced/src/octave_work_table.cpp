@@ -146,25 +146,31 @@ OctaveWorkTable::Octave OctaveWorkTable::build(double lower, double work_start,
     at_minus_one += (m % 2 == 0 ? 1.0 : -1.0) * result.integral[m];
   result.integral[0] = -at_minus_one;
   result.work_end = work_start + chebyshev_sum(result.integral.data(), n + 1, 1.0);
-  // The inverse's guess: t at the 33 Chebyshev-Lobatto points of the normalised work w in
-  // [-1, 1] (by Newton from the linear guess), and their series.
+  // The inverse's guess: on each of eight equal parts of the octave's work, t at the 9
+  // Chebyshev-Lobatto points of the part's normalised work (by Newton from the linear guess),
+  // and their series.
   const double span = result.work_end - result.work_start;
-  std::array<double, inverse_size> times{};
   constexpr std::size_t m = inverse_size - 1, stride = 64 / m;
-  for (std::size_t j = 0; j <= m; ++j) {
-    const double w = cosines[j * stride];
-    times[j] = j == 0 ? 1.0 : j == m ? -1.0 : solve_octave(result, 0.5 * (w + 1) * span, w);
-  }
-  for (std::size_t k = 0; k <= m; ++k) {
-    double sum = 0;
+  for (std::size_t part = 0; part < inverse_parts; ++part) {
+    std::array<double, inverse_size> times{};
     for (std::size_t j = 0; j <= m; ++j) {
-      const double term = times[j] * cosines[(k * j % (2 * m)) * stride];
-      sum += j == 0 || j == m ? 0.5 * term : term;
+      const double w = cosines[j * stride]; // in the part, [-1, 1]
+      const double target =
+          span * (static_cast<double>(part) + 0.5 * (w + 1)) / static_cast<double>(inverse_parts);
+      times[j] = solve_octave(result, target, 2 * target / span - 1);
     }
-    result.inverse[k] = 2 * sum / static_cast<double>(m);
+    auto& coefficients = result.inverse[part];
+    for (std::size_t k = 0; k <= m; ++k) {
+      double sum = 0;
+      for (std::size_t j = 0; j <= m; ++j) {
+        const double term = times[j] * cosines[(k * j % (2 * m)) * stride];
+        sum += j == 0 || j == m ? 0.5 * term : term;
+      }
+      coefficients[k] = 2 * sum / static_cast<double>(m);
+    }
+    coefficients[0] *= 0.5;
+    coefficients[m] *= 0.5;
   }
-  result.inverse[0] *= 0.5;
-  result.inverse[m] *= 0.5;
   return result;
 }
 
@@ -221,9 +227,13 @@ std::pair<const OctaveWorkTable::Octave*, double> OctaveWorkTable::locate_work(
   }
   const Octave& piece = *published_[first].load(std::memory_order_acquire);
   const double target = work - piece.work_start;
-  const double normalised = 2 * target / (piece.work_end - piece.work_start) - 1;
+  // The part of the work that holds the target, and the normalised work in it.
+  const double scaled =
+      std::clamp(target / (piece.work_end - piece.work_start), 0.0, 1.0) * inverse_parts;
+  const std::size_t part = std::min(static_cast<std::size_t>(scaled), inverse_parts - 1);
+  const double normalised = 2 * (scaled - static_cast<double>(part)) - 1;
   return {&piece, solve_octave(piece, target,
-                               chebyshev_sum(piece.inverse.data(), inverse_size, normalised))};
+                               chebyshev_sum(piece.inverse[part].data(), inverse_size, normalised))};
 }
 
 double OctaveWorkTable::approach(double work, const Force& force) const {

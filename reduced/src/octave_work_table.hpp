@@ -13,8 +13,9 @@
 // the largest degree throws, rather than returning a less accurate work). Measured against
 // composite 30-point Gauss-Legendre in x (tests/reduced/test_octave_work_table.cpp).
 //
-// The inverse starts Newton's method from a Chebyshev series of t(W) per octave (33 points,
-// built with the octave), so that one Newton step usually ends it: a step below 1e-9 in t
+// The inverse starts Newton's method from Chebyshev series of t(W) on eight equal parts of
+// each octave's work (9 points each, built with the octave), so that one Newton step usually
+// ends it: a step below 1e-9 in t
 // leaves an error of about (G'/2G) 1e-18, far below the rounding of t.
 //
 // Thread safety: const member functions may be called concurrently (the octaves are built
@@ -51,7 +52,8 @@ public:
   double work_below(double approach_max, double distance, const Force& force) const;
 
   static constexpr std::size_t max_degree = 65; // coefficients of the longest series
-  static constexpr std::size_t inverse_size = 33; // coefficients of the inverse's guess
+  static constexpr std::size_t inverse_parts = 8; // pieces of the inverse's guess
+  static constexpr std::size_t inverse_size = 9;  // coefficients of each piece
   // Octaves x_0 2^k, k < max_octaves: beyond, x_0 2^k overflows for any x_0 >= 1e-300.
   static constexpr std::size_t max_octaves = 2100;
 
@@ -63,7 +65,8 @@ private:
     std::size_t size;                            // number of coefficients in use
     std::array<double, max_degree> density;      // Chebyshev coefficients of dW/dt
     std::array<double, max_degree + 1> integral; // of W - W(lower), zero at t = -1
-    std::array<double, inverse_size> inverse;    // t as a series in 2 (W - W(lower)) / dW - 1
+    // t on part k of the work as a series in its own normalised work in [-1, 1]
+    std::array<std::array<double, inverse_size>, inverse_parts> inverse;
   };
   // The octave that holds x (built with those below it).
   const Octave& octave_of(double approach, const Force& force) const;
