@@ -59,29 +59,63 @@ double chebyshev_difference(const double* coefficients, std::size_t n, double a,
 
 constexpr double two_over_log_two = 2.8853900817779268147; // dt/d(ln x) = 2 / ln 2
 
+// An octave's series at t in one pass: W - W(lower), G = dW/dt and G' = dG/dt, from the
+// forward recurrences T_(k+1) = 2 t T_k - T_(k-1) and U_(k+1) = 2 t U_k - U_(k-1)
+// (T_k' = k U_(k-1)), stable on [-1, 1]; the three sums share them.
+struct OctavePoint {
+  double work;
+  double density;
+  double density_slope;
+};
+
+template <class Piece>
+OctavePoint evaluate_octave(const Piece& piece, double t) {
+  const std::size_t n = piece.size; // density: c_0 .. c_(n-1); integral: C_0 .. C_n
+  double work = piece.integral[0] + piece.integral[1] * t;
+  double density = piece.density[0] + piece.density[1] * t;
+  double density_slope = piece.density[1];
+  double previous = 1, current = t;             // T_(k-1), T_k for k = 1
+  double previous_u = 1, current_u = 2 * t;     // U_(k-2), U_(k-1) for k = 2
+  for (std::size_t k = 2; k <= n; ++k) {
+    const double next = 2 * t * current - previous; // T_k
+    previous = current;
+    current = next;
+    work += piece.integral[k] * next;
+    if (k < n) {
+      density += piece.density[k] * next;
+      density_slope += piece.density[k] * static_cast<double>(k) * current_u; // k U_(k-1)
+    }
+    const double next_u = 2 * t * current_u - previous_u; // U_k
+    previous_u = current_u;
+    current_u = next_u;
+  }
+  return {work, density, density_slope};
+}
+
 // Newton in t on an octave's series of W - W(lower) (increasing: its slope G > 0) for the
 // value `target`, from `guess`, safeguarded by bisection on [low, high]. It stops once a step
 // is within a few ulps of t, a Newton step is below 1e-9 (its error is then of order
 // (G' / 2G) 1e-18: the series grow like exp(t), so G' / G is of order 1), or the residual is 0.
+// Returns t and G there (after a Newton step d, G + G' d: its error is of order d^2).
 template <class Piece>
-double solve_octave(const Piece& piece, double target, double guess) {
+std::pair<double, double> solve_octave(const Piece& piece, double target, double guess) {
   double low = -1, high = 1;
   double t = std::clamp(guess, -1.0, 1.0);
   for (int iteration = 0; iteration < 100; ++iteration) {
-    const double residual = chebyshev_sum(piece.integral.data(), piece.size + 1, t) - target;
-    if (residual == 0) break;
+    const OctavePoint point = evaluate_octave(piece, t);
+    const double residual = point.work - target;
+    if (residual == 0) return {t, point.density};
     (residual < 0 ? low : high) = t;
-    const double slope = chebyshev_sum(piece.density.data(), piece.size, t);
-    double next = t - residual / slope;
+    double next = t - residual / point.density;
     const bool newton = next > low && next < high;
     if (!newton) next = 0.5 * (low + high);
     const bool done = std::abs(next - t) <= 4 * std::numeric_limits<double>::epsilon() ||
                       high - low <= 4 * std::numeric_limits<double>::epsilon() ||
                       (newton && std::abs(next - t) <= 1e-9);
+    if (done) return {next, point.density + point.density_slope * (next - t)};
     t = next;
-    if (done) break;
   }
-  return t;
+  return {t, evaluate_octave(piece, t).density};
 }
 
 } // namespace
@@ -157,7 +191,7 @@ OctaveWorkTable::Octave OctaveWorkTable::build(double lower, double work_start,
       const double w = cosines[j * stride]; // in the part, [-1, 1]
       const double target =
           span * (static_cast<double>(part) + 0.5 * (w + 1)) / static_cast<double>(inverse_parts);
-      times[j] = solve_octave(result, target, 2 * target / span - 1);
+      times[j] = solve_octave(result, target, 2 * target / span - 1).first;
     }
     auto& coefficients = result.inverse[part];
     for (std::size_t k = 0; k <= m; ++k) {
@@ -209,7 +243,7 @@ double OctaveWorkTable::work(double approach, const Force& force) const {
   return piece.work_start + chebyshev_sum(piece.integral.data(), piece.size + 1, t);
 }
 
-std::pair<const OctaveWorkTable::Octave*, double> OctaveWorkTable::locate_work(
+OctaveWorkTable::Located OctaveWorkTable::locate_work(
     double work, const Force& force) const {
   // The octave whose works bracket the target: built up to it, then a binary search.
   std::size_t count = built_.load(std::memory_order_acquire);
@@ -232,22 +266,23 @@ std::pair<const OctaveWorkTable::Octave*, double> OctaveWorkTable::locate_work(
       std::clamp(target / (piece.work_end - piece.work_start), 0.0, 1.0) * inverse_parts;
   const std::size_t part = std::min(static_cast<std::size_t>(scaled), inverse_parts - 1);
   const double normalised = 2 * (scaled - static_cast<double>(part)) - 1;
-  return {&piece, solve_octave(piece, target,
-                               chebyshev_sum(piece.inverse[part].data(), inverse_size, normalised))};
+  const auto [t, density] = solve_octave(
+      piece, target, chebyshev_sum(piece.inverse[part].data(), inverse_size, normalised));
+  return {&piece, t, density};
 }
 
 double OctaveWorkTable::approach(double work, const Force& force) const {
   if (!(work > start_work_)) return start_approach_;
-  const auto [piece, t] = locate_work(work, force);
-  return piece->lower * std::exp2(0.5 * (t + 1));
+  const Located found = locate_work(work, force);
+  return found.piece->lower * std::exp2(0.5 * (found.t + 1));
 }
 
 double OctaveWorkTable::force_at_work(double work, const Force& force) const {
   if (!(work > start_work_)) return force(start_approach_);
-  const auto [piece, t] = locate_work(work, force);
-  const double approach = piece->lower * std::exp2(0.5 * (t + 1));
+  const Located found = locate_work(work, force);
+  const double approach = found.piece->lower * std::exp2(0.5 * (found.t + 1));
   // G(t) = F(x) x ln(2) / 2.
-  return chebyshev_sum(piece->density.data(), piece->size, t) / (approach * half_log_two);
+  return found.density / (approach * half_log_two);
 }
 
 double OctaveWorkTable::work_below(double approach_max, double distance,

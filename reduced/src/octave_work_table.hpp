@@ -71,8 +71,13 @@ private:
   // The octave that holds x (built with those below it).
   const Octave& octave_of(double approach, const Force& force) const;
   const Octave& octave(std::size_t index, const Force& force) const;
-  // The octave that holds W = work (built up to it) and t there.
-  std::pair<const Octave*, double> locate_work(double work, const Force& force) const;
+  // The octave that holds W = work (built up to it), t there and the series' G(t).
+  struct Located {
+    const Octave* piece;
+    double t;
+    double density;
+  };
+  Located locate_work(double work, const Force& force) const;
   // Builds octaves up to `index` (under the mutex).
   void build_up_to(std::size_t index, const Force& force) const;
   Octave build(double lower, double work_start, const Force& force) const;
