@@ -197,6 +197,11 @@ double GhaedniaContact::loading_force_at_work(double work) const {
   return work_table_->force_at_work(work, [this](double x) { return fit_force(x); });
 }
 
+std::pair<double, double> GhaedniaContact::loading_force_and_stiffness_at_work(double work) const {
+  if (!(work > transition_work_)) return loading_force_and_stiffness(loading_approach(work));
+  return work_table_->force_and_slope_at_work(work, [this](double x) { return fit_force(x); });
+}
+
 double GhaedniaContact::loading_work_below(double approach_max, double distance) const {
   if (!(distance > 0)) return 0.0;
   const double stiffness = hertz_coefficient_;

@@ -467,9 +467,8 @@ double HuntCrossleyImpact::peak_distance() const {
   // dF/dt = 0  <=>  m f'(x) v = b f(x)^2 (while compressing). In the distance u = V - v
   // the left side dominates near first contact and the right side at x_max.
   auto condition = [this](double distance) {
-    const double approach =
-        elastic_force().approach_at_potential(mass_ * compression_energy(distance));
-    const auto [elastic, slope] = elastic_force().force_and_slope(approach);
+    const auto [elastic, slope] =
+        elastic_force().force_and_slope_at_potential(mass_ * compression_energy(distance));
     return mass_ * (velocity_ - distance) * slope / elastic - damping_ * elastic;
   };
   boost::uintmax_t iterations = 200;

@@ -33,6 +33,9 @@ public:
   double force_at_potential(double work) const override {
     return spring_->loading_force_at_work(work);
   }
+  std::pair<double, double> force_and_slope_at_potential(double work) const override {
+    return spring_->loading_force_and_stiffness_at_work(work);
+  }
   std::vector<double> breakpoints() const override { return spring_->loading_breakpoints(); }
   std::optional<PowerLawCoefficients> initial_power_law() const override {
     return spring_->loading_power_law();

@@ -285,6 +285,19 @@ double OctaveWorkTable::force_at_work(double work, const Force& force) const {
   return found.density / (approach * half_log_two);
 }
 
+std::pair<double, double> OctaveWorkTable::force_and_slope_at_work(double work,
+                                                                  const Force& force) const {
+  const Located found = locate_work(std::max(work, start_work_), force);
+  const double t = found.t;
+  const OctavePoint point = evaluate_octave(*found.piece, t);
+  const double approach = found.piece->lower * std::exp2(0.5 * (t + 1));
+  // G = F x h and dG/dt = (F' x + F) x h^2, h = ln(2) / 2.
+  const double force_value = point.density / (approach * half_log_two);
+  const double slope =
+      (point.density_slope / (approach * half_log_two * half_log_two) - force_value) / approach;
+  return {force_value, slope};
+}
+
 double OctaveWorkTable::work_below(double approach_max, double distance,
                                    const Force& force) const {
   if (!(distance > 0)) return 0.0;

@@ -46,6 +46,9 @@ public:
   /// relative to the octave's largest, measured in tests/reduced/test_octave_work_table.cpp):
   /// for the time integrals, which need F only where W is given.
   double force_at_work(double work, const Force& force) const;
+  /// {F, dF/dx} there from the series of F x and its derivative (dF/dx within 1.5e-13
+  /// relative: the derivative of the interpolant), for the force peak's search.
+  std::pair<double, double> force_and_slope_at_work(double work, const Force& force) const;
   /// W(x_max) - W(x_max - d) [J] for x_max - d >= x_0, d >= 0, without cancellation for
   /// small d: on each octave the difference of the series is summed term by term,
   /// T_m(a) - T_m(b) by its own recurrence from a - b (formed from d, not from a and b).

@@ -149,10 +149,10 @@ TEST(OctaveWorkTable, WorkBelowMatchesTheQuadratureOfTheForce) {
   EXPECT_LE(worst, 4e-15);
 }
 
-// F at a given work from the series of F x (what the time integrals use) against the fit's
-// formula at the inverse.
+// F at a given work from the series of F x (what the time integrals use), and F with dF/dx
+// (what the force peak's search uses), against the fit's formulas at the inverse.
 TEST(OctaveWorkTable, ForceAtWorkMatchesTheFitAtTheInverse) {
-  double worst = 0;
+  double worst = 0, worst_pair = 0, worst_slope = 0;
   for (const auto& contact : contacts()) {
     const JacksonGreenContact jackson_green(contact);
     const double youngs = 2.1e11;
@@ -169,10 +169,17 @@ TEST(OctaveWorkTable, ForceAtWorkMatchesTheFitAtTheInverse) {
         const double work = law->loading_work(x);
         const double reference = law->loading_force(law->loading_approach(work));
         worst = std::max(worst, std::abs(law->loading_force_at_work(work) - reference) / reference);
+        const double slope = law->loading_stiffness(law->loading_approach(work));
+        const auto [pair_force, pair_slope] = law->loading_force_and_stiffness_at_work(work);
+        worst_pair = std::max(worst_pair, std::abs(pair_force - reference) / reference);
+        worst_slope = std::max(worst_slope, std::abs(pair_slope - slope) / std::abs(slope));
       }
   }
-  std::printf("worst relative difference: %.2e\n", worst);
+  std::printf("worst relative difference: F %.2e, (F, dF/dx) %.2e, %.2e\n", worst, worst_pair,
+              worst_slope);
   EXPECT_LE(worst, 3e-15);
+  EXPECT_LE(worst_pair, 3e-15);
+  EXPECT_LE(worst_slope, 2e-13);
 }
 
 TEST(OctaveWorkTable, PowerLawWorkIsExact) {

@@ -40,6 +40,12 @@ public:
   virtual double force_at_potential(double potential) const {
     return force(approach_at_potential(potential));
   }
+  /// {f, f'} at the approach where P = potential (the force peak's search needs only these):
+  /// force_and_slope(approach_at_potential(potential)) by default; a law that tabulates P may
+  /// return them from its table.
+  virtual std::pair<double, double> force_and_slope_at_potential(double potential) const {
+    return force_and_slope(approach_at_potential(potential));
+  }
   /// Approaches where f or its slope jumps: the time integrals split there. Default: none.
   virtual std::vector<double> breakpoints() const { return {}; }
   /// If f is exactly a power law c x^n from x = 0 to its first breakpoint: its coefficients

@@ -74,6 +74,11 @@ public:
   virtual double loading_force_at_work(double work) const {
     return loading_force(loading_approach(work));
   }
+  /// {F_L, dF_L/dx} at the approach where W_L = work: loading_force_and_stiffness of
+  /// loading_approach by default; laws that tabulate W_L return them from the table.
+  virtual std::pair<double, double> loading_force_and_stiffness_at_work(double work) const {
+    return loading_force_and_stiffness(loading_approach(work));
+  }
   /// The loading work between x_max - d and x_max [J], integral of F_L, for 0 <= d <= x_max,
   /// without cancellation for small d (the time integrals need it where d << x_max). The
   /// default integrates F_L by 30-point Gauss-Legendre on [x_max - d, x_max] split at the

@@ -124,6 +124,8 @@ public:
   double loading_approach(double work) const override;
   /// As JacksonGreenContact's: F from the octave's series above the transition.
   double loading_force_at_work(double work) const override;
+  /// Likewise F and dF/dx from the series.
+  std::pair<double, double> loading_force_and_stiffness_at_work(double work) const override;
   /// W(x_max) - W(x_max - d) without cancellation for small d (as JacksonGreenContact's).
   double loading_work_below(double approach_max, double distance) const override;
   /// dF/dx [N/m], analytic; the fit's (right) slope at x = 1.9 delta_c.
