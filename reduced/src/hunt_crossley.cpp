@@ -18,6 +18,7 @@
 #include <functional>
 #include <limits>
 #include <sstream>
+#include <stdexcept>
 
 namespace impact::reduced {
 
@@ -425,7 +426,14 @@ double HuntCrossleyImpact::compression_time_from(double distance) const {
 
 double HuntCrossleyImpact::compression_time() const {
   if (!splits_compression_at_peak()) return compression_time_until(velocity_);
-  const double peak = peak_distance();
+  double peak;
+  try {
+    peak = peak_distance();
+  } catch (const std::runtime_error&) {
+    // A law whose force peak cannot be located (force_peak() throws for it): the compression
+    // time in one integral, as without damping.
+    return compression_time_until(velocity_);
+  }
   return compression_time_until(peak) + compression_time_from(peak);
 }
 
