@@ -1,7 +1,8 @@
 // Cost of one elastic-plastic impact, the unit of work of a calibration loop that fits p_y or
 // Y: Thornton's closed forms, the same law through the generic quadrature, and the
-// Jackson-Green law (loading work by composite Gauss-Legendre, x_max by TOMS 748, the
-// compression time by tanh-sinh).
+// Jackson-Green law (loading work from its octave series, the work below x_max differenced
+// term by term, x_max by TOMS 748, the compression time by Gauss-Kronrod above the Hertz
+// piece, which is an incomplete Beta function).
 
 #include "impact_reduced/sphere_flat_fits.hpp"
 #include "impact_reduced/thornton.hpp"

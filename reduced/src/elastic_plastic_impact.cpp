@@ -3,6 +3,7 @@
 #include "impact_reduced/invalid_input.hpp"
 
 #include <boost/math/quadrature/gauss.hpp>
+#include <boost/math/quadrature/gauss_kronrod.hpp>
 #include <boost/math/quadrature/tanh_sinh.hpp>
 #include <boost/math/special_functions/beta.hpp>
 #include <boost/math/tools/roots.hpp>
@@ -63,12 +64,25 @@ double ElasticPlasticContact::loading_approach(double work) const {
   return 0.5 * (low + high);
 }
 
+double detail::hertz_work_below(double stiffness, double approach, double distance) {
+  if (!(distance > 0)) return 0.0;
+  distance = std::min(distance, approach);
+  // x^(5/2) (1 - (1 - d/x)^(5/2)) = -x^(5/2) expm1((5/2) log1p(-d/x)).
+  return -0.4 * stiffness * approach * approach * std::sqrt(approach) *
+         std::expm1(2.5 * std::log1p(-distance / approach));
+}
+
+double ElasticPlasticContact::loading_work_below(double approach_max, double distance) const {
+  if (distance <= 0) return 0.0;
+  if (distance > 0.5 * approach_max)
+    return loading_work(approach_max) - loading_work(approach_max - distance);
+  return local_work(*this, approach_max, distance);
+}
+
 double loading_work_below(const ElasticPlasticContact& contact, double approach_max,
                           double distance) {
   if (distance <= 0) return 0.0;
-  if (distance > 0.5 * approach_max)
-    return contact.loading_work(approach_max) - contact.loading_work(approach_max - distance);
-  return local_work(contact, approach_max, distance);
+  return contact.loading_work_below(approach_max, distance);
 }
 
 namespace {
@@ -95,11 +109,10 @@ public:
         iterations);
     approach_max_ = 0.5 * (low + high);
     force_max_ = contact.loading_force(approach_max_);
-    work_max_ = contact.loading_work(approach_max_);
     for (const double breakpoint : contact.loading_breakpoints())
-      if (breakpoint > 0 && breakpoint < approach_max_)
-        ends_.push_back(std::sqrt((approach_max_ - breakpoint) / approach_max_));
-    std::sort(ends_.begin(), ends_.end());
+      if (breakpoint > 0 && breakpoint < approach_max_) breaks_.push_back(breakpoint);
+    std::sort(breaks_.begin(), breaks_.end());
+    power_law_ = contact.loading_power_law();
 
     // Restitution: the Hertzian branch k_u (x - x_r)^(3/2) releases (2/5) F_max (x_max - x_r)
     // down to x_r. If x_r < 0 (a loading fit above Hertz) the surfaces part at x = 0 first:
@@ -115,21 +128,21 @@ public:
   double separation_approach() const { return separation_approach_; }
   const HertzianUnloading& unloading() const { return unloading_; }
 
-  // Time from first contact to approach x on the loading branch: x = x_max (1 - s^2),
-  // dt = 2 x_max s ds / x' with x'^2 = (2/m) * (work of F_L between x and x_max), finite at
-  // s = 0; split at the breakpoints.
+  // Time from first contact to approach x on the loading branch, piece by piece between the
+  // breakpoints. The first piece, from x = 0, where x' -> V and the force vanishes like a
+  // power of x: Hertz's incomplete Beta function where the law is a power law there
+  // (loading_power_law), else tanh-sinh in s, x = x_max (1 - s^2). The others by adaptive
+  // Gauss-Kronrod in sigma, x = x_max exp(-sigma^2): smooth on every piece, the
+  // inverse-square-root singularity at x_max removed (dt/dsigma finite there) and the
+  // fits' branch points at x = 0 sent to sigma = infinity.
   double compression_time_to(double approach) const {
-    const double s_lower = std::sqrt(std::max(0.0, (approach_max_ - approach) / approach_max_));
-    std::vector<double> ends{s_lower};
-    for (const double end : ends_)
-      if (end > s_lower) ends.push_back(end);
-    ends.push_back(1.0);
-    thread_local boost::math::quadrature::tanh_sinh<double> quadrature;
-    double time = 0;
-    for (std::size_t i = 0; i + 1 < ends.size(); ++i)
-      if (ends[i + 1] > ends[i])
-        time += quadrature.integrate([&](double s) { return time_density(s); }, ends[i],
-                                     ends[i + 1], 1e-14);
+    approach = std::clamp(approach, 0.0, approach_max_);
+    const double first_end = breaks_.empty() ? approach_max_ : breaks_.front();
+    double time = first_piece_time(std::min(approach, first_end));
+    for (std::size_t i = 0; i < breaks_.size() && breaks_[i] < approach; ++i) {
+      const double end = i + 1 < breaks_.size() ? std::min(breaks_[i + 1], approach) : approach;
+      time += sigma_piece_time(breaks_[i], end);
+    }
     return time;
   }
   double compression_time() const { return compression_time_to(approach_max_); }
@@ -184,10 +197,44 @@ private:
   // Loading work between x_max - d and x_max, without cancellation for small d.
   double work_below(double distance) const {
     if (distance <= 0) return 0.0;
-    return distance > 0.5 * approach_max_
-               ? work_max_ - contact_.loading_work(approach_max_ - distance)
-               : local_work(contact_, approach_max_, distance);
+    return contact_.loading_work_below(approach_max_, distance);
   }
+  // Time from x = 0 to x on the first piece.
+  double first_piece_time(double approach) const {
+    if (!(approach > 0)) return 0.0;
+    if (power_law_) {
+      // f = c x^n from x = 0 at speed V: t = (x_H / V) / (n + 1) B(z; 1/(n+1), 1/2),
+      // z = (x / x_H)^(n+1), x_H the approach at which c x^(n+1) / (n+1) = m V^2 / 2.
+      const double n = power_law_->exponent;
+      const double hertz_approach = std::pow(
+          (n + 1) * mass_ * velocity_ * velocity_ / (2 * power_law_->stiffness), 1 / (n + 1));
+      const double z = std::min(1.0, std::pow(approach / hertz_approach, n + 1));
+      return hertz_approach / velocity_ / (n + 1) * boost::math::beta(1 / (n + 1), 0.5, z);
+    }
+    thread_local boost::math::quadrature::tanh_sinh<double> quadrature;
+    const double s_lower = std::sqrt(std::max(0.0, (approach_max_ - approach) / approach_max_));
+    return quadrature.integrate([&](double s) { return time_density(s); }, s_lower, 1.0, 1e-14);
+  }
+
+  // Time from x = a to x = b (a < b) on a piece between breakpoints, in sigma.
+  double sigma_piece_time(double lower, double upper) const {
+    if (!(upper > lower)) return 0.0;
+    const auto sigma = [this](double x) {
+      return std::sqrt(std::max(0.0, -std::log1p(-(approach_max_ - x) / approach_max_)));
+    };
+    return boost::math::quadrature::gauss_kronrod<double, 31>::integrate(
+        [this](double s) { return sigma_density(s); }, sigma(upper), sigma(lower), 15, 1e-13);
+  }
+
+  // dt/dsigma = 2 sigma x / x' at x = x_max exp(-sigma^2): -> 2 x_max / sqrt(2 F_max x_max / m)
+  // as sigma -> 0 (relative error ~ sigma^2: exact below 1e-8).
+  double sigma_density(double sigma) const {
+    if (sigma < 1e-8) return 2 * approach_max_ / std::sqrt(2 * force_max_ * approach_max_ / mass_);
+    const double distance = -approach_max_ * std::expm1(-sigma * sigma); // x_max - x
+    const double approach = approach_max_ - distance;
+    return 2 * sigma * approach / std::sqrt(2 * work_below(distance) / mass_);
+  }
+
   double time_density(double s) const {
     // work / s^2 -> F_max x_max as s -> 0 (relative error ~ s^2: exact below 1e-8).
     if (s < 1e-8) return 2 * approach_max_ / std::sqrt(2 * force_max_ * approach_max_ / mass_);
@@ -200,8 +247,8 @@ private:
   const ElasticPlasticContact& contact_;
   double approach_max_ = 0;
   double force_max_ = 0;
-  double work_max_ = 0;
-  std::vector<double> ends_; // breakpoints in s
+  std::vector<double> breaks_; // breakpoints in (0, x_max), ascending
+  std::optional<PowerLawCoefficients> power_law_; // the loading below the first breakpoint
   HertzianUnloading unloading_{};
   double separation_approach_ = 0;
   double branch_length_ = 0;

@@ -66,13 +66,21 @@ public:
 
   /// One accepted step from (y, tau) with trial length dtau, all three updated (dtau to
   /// the controller's proposal for the next step). The step is recorded and returned.
+  /// `start_rate`: f(y) if the caller has it (else evaluated here).
   /// Throws std::runtime_error if the tolerance cannot be met or the state is non-finite.
-  const Step& step(State& y, double& tau, double& dtau) {
+  const Step& step(State& y, double& tau, double& dtau, const State* start_rate = nullptr) {
     const auto system = [this](const State& s, State& d, double) { system_(s, d); };
     const State start = y;
     const double start_time = tau;
+    // The derivative at the start, evaluated once for all the tries from it (the controller
+    // would evaluate it again after each rejection).
+    State rate;
+    if (start_rate)
+      rate = *start_rate;
+    else
+      system_(y, rate);
     std::size_t rejections = 0;
-    while (controlled_.try_step(system, y, tau, dtau) == boost::numeric::odeint::fail) {
+    while (controlled_.try_step(system, y, rate, tau, dtau) == boost::numeric::odeint::fail) {
       if (++rejections > rejection_limit || !(dtau > 1e-300))
         throw std::runtime_error("impact integration cannot satisfy the tolerance at t = " +
                                  describe(time_unit_ * tau) + " s");
@@ -87,6 +95,9 @@ public:
 
   /// Shortens the last recorded step to `length` (an event ends the integration in it).
   void truncate_last_step(double length) { steps_.back().length = length; }
+
+  /// Forgets the last recorded step (it is to be re-taken, the system having changed).
+  void drop_last_step() { steps_.pop_back(); }
 
   const std::vector<Step>& steps() const { return steps_; }
 
@@ -106,8 +117,13 @@ public:
   /// lower and h (or vanishes at h); returns h if it does not.
   template <class Event>
   double locate(const State& start, double lower, double h, Event event) const {
-    const double at_lower = event(advance(start, lower));
-    const double at_upper = event(advance(start, h));
+    return locate(start, lower, h, event, event(advance(start, lower)), event(advance(start, h)));
+  }
+
+  /// The same with the event's values at lower and h given.
+  template <class Event>
+  double locate(const State& start, double lower, double h, Event event, double at_lower,
+                double at_upper) const {
     if (at_upper == 0 || (at_upper > 0) == (at_lower > 0)) return h; // the sign change is at h
     if (at_lower == 0) return lower;
     std::uintmax_t iterations = 200;
@@ -150,6 +166,15 @@ public:
     std::vector<double> node_value(count + 1);
     for (std::size_t i = 0; i < count; ++i) node_value[i] = value(steps_[i].state);
     node_value[count] = value(end);
+    return locate_maximum(node_value, value, rate);
+  }
+
+  /// The same with the values at the nodes given: node_value[i] = value(steps()[i].state),
+  /// and the last one the value at the end.
+  template <class Value, class Rate>
+  std::pair<double, double> locate_maximum(const std::vector<double>& node_value, Value value,
+                                           Rate rate) const {
+    const std::size_t count = steps_.size();
     const std::size_t j = static_cast<std::size_t>(
         std::max_element(node_value.begin(), node_value.end()) - node_value.begin());
     double maximum = node_value[j];
@@ -157,8 +182,11 @@ public:
     for (std::size_t s = (j > 0 ? j - 1 : 0); s <= j && s < count; ++s) {
       const Step& step = steps_[s];
       const auto rate_at = [&](double h) { return rate(advance(step.state, h)); };
-      if (!(rate_at(0) > 0 && rate_at(step.length) < 0)) continue;
-      const double h = locate(step.state, 0.0, step.length, rate);
+      const double at_start = rate_at(0);
+      if (!(at_start > 0)) continue;
+      const double at_end = rate_at(step.length);
+      if (!(at_end < 0)) continue;
+      const double h = locate(step.state, 0.0, step.length, rate, at_start, at_end);
       const double candidate = value(advance(step.state, h));
       if (candidate > maximum) {
         maximum = candidate;

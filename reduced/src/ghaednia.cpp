@@ -147,7 +147,17 @@ double GhaedniaContact::loading_stiffness(double approach) const {
   require_non_negative("approach", approach);
   if (approach < transition_)
     return 2 * contact_.contact_modulus * std::sqrt(contact_.radius * approach);
-  const FitPoint p = fit(approach);
+  return fit_slope(approach, fit(approach));
+}
+
+std::pair<double, double> GhaedniaContact::loading_force_and_stiffness(double approach) const {
+  if (approach <= transition_) return {loading_force(approach), loading_stiffness(approach)};
+  const FitPoint p = fit(approach); // as fit_force and loading_stiffness form them
+  return {p.plastic_force + (p.hertz_force - p.plastic_force) * elastic_weight_,
+          fit_slope(approach, p)};
+}
+
+double GhaedniaContact::fit_slope(double approach, const FitPoint& p) const {
   const double w = p.ratio;
   const double hertz_radius_slope = p.hertz_radius / (2 * approach);
   const double plastic_radius_slope = p.plastic_radius * (1 + b_) / (2 * approach);
@@ -180,6 +190,28 @@ double GhaedniaContact::loading_approach(double work) const {
   if (!(work > 0)) return 0.0;
   if (work <= transition_work_) return std::pow(2.5 * work / hertz_coefficient_, 0.4);
   return work_table_->approach(work, [this](double x) { return fit_force(x); });
+}
+
+double GhaedniaContact::loading_force_at_work(double work) const {
+  if (!(work > transition_work_)) return loading_force(loading_approach(work));
+  return work_table_->force_at_work(work, [this](double x) { return fit_force(x); });
+}
+
+std::pair<double, double> GhaedniaContact::loading_force_and_stiffness_at_work(double work) const {
+  if (!(work > transition_work_)) return loading_force_and_stiffness(loading_approach(work));
+  return work_table_->force_and_slope_at_work(work, [this](double x) { return fit_force(x); });
+}
+
+double GhaedniaContact::loading_work_below(double approach_max, double distance) const {
+  if (!(distance > 0)) return 0.0;
+  const double stiffness = hertz_coefficient_;
+  if (approach_max <= transition_)
+    return detail::hertz_work_below(stiffness, approach_max, distance);
+  const auto force = [this](double x) { return fit_force(x); };
+  const double above = approach_max - transition_; // the part of d above the transition
+  if (distance <= above) return work_table_->work_below(approach_max, distance, force);
+  return work_table_->work_below(approach_max, above, force) +
+         detail::hertz_work_below(stiffness, transition_, distance - above);
 }
 
 HertzianUnloading GhaedniaContact::unloading(double approach_max) const {

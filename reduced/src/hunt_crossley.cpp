@@ -6,6 +6,7 @@
 #include "hunt_crossley_phases.hpp"
 #include "phase_time_map.hpp"
 
+#include <boost/math/quadrature/gauss_kronrod.hpp>
 #include <boost/math/quadrature/tanh_sinh.hpp>
 #include <boost/math/special_functions/lambert_w.hpp>
 #include <boost/math/tools/roots.hpp>
@@ -17,6 +18,7 @@
 #include <functional>
 #include <limits>
 #include <sstream>
+#include <stdexcept>
 
 namespace impact::reduced {
 
@@ -37,16 +39,51 @@ double integrate_density(const std::function<double(double)>& density, double lo
   return quadrature.integrate([&](double u) { return density(u); }, lower, upper, 1e-14);
 }
 
-// The integral over [0, upper], split at the ascending `breaks` inside.
-double integrate_from_zero(const std::function<double(double)>& density, double upper,
-                           const std::vector<double>& breaks) {
-  double integral = 0, lower = 0;
+// A piece [lower, upper] with lower > 0 between breakpoints, where the density is smooth but
+// may still feel the singularity at u = 0 (a piece that starts at a breakpoint close to 0):
+// adaptive Gauss-Kronrod 15/31 in s = ln u, where that singularity is at s = -infinity, to a
+// relative error estimate |K31 - G15| of 1e-12 (K31 itself is far closer; the tests find the
+// times within a few ulps of the 50-digit references).
+double integrate_smooth_piece(const std::function<double(double)>& density, double lower,
+                              double upper) {
+  if (upper <= lower) return 0.0;
+  const auto integrand = [&](double s) {
+    const double u = std::exp(s);
+    return density(u) * u;
+  };
+  const double from = std::log(lower), to = std::log(upper);
+  if (to - from < 0.25) {
+    // A short piece (from the force peak to x_max at small beta): 15 points usually meet the
+    // same estimate; else the 31-point rule as below.
+    double error = 0;
+    const double quick = boost::math::quadrature::gauss_kronrod<double, 15>::integrate(
+        integrand, from, to, 0, 0.0, &error);
+    if (error <= 1e-12 * std::abs(quick)) return quick;
+  }
+  return boost::math::quadrature::gauss_kronrod<double, 31>::integrate(integrand, from, to, 15,
+                                                                        1e-12);
+}
+
+// The integral over [lower, upper] (lower > 0), split at the ascending `breaks` inside.
+double integrate_between(const std::function<double(double)>& density, double lower, double upper,
+                         const std::vector<double>& breaks) {
+  double integral = 0;
   for (const double end : breaks) {
+    if (end <= lower) continue;
     if (end >= upper) break;
-    integral += integrate_density(density, lower, end);
+    integral += integrate_smooth_piece(density, lower, end);
     lower = end;
   }
-  return integral + integrate_density(density, lower, upper);
+  return integral + integrate_smooth_piece(density, lower, upper);
+}
+
+// The integral over [0, upper], split at the ascending `breaks` inside: the first piece, with
+// the singularity at u = 0, by tanh-sinh, the others by integrate_smooth_piece.
+double integrate_from_zero(const std::function<double(double)>& density, double upper,
+                           const std::vector<double>& breaks) {
+  if (!(upper > 0)) return 0.0;
+  const double first = breaks.empty() ? upper : std::min(breaks.front(), upper); // > 0
+  return integrate_density(density, 0.0, first) + integrate_between(density, first, upper, breaks);
 }
 
 // (t - log(1 + t)) / t^2 in quadruple precision (series near t = 0).
@@ -64,6 +101,10 @@ double velocity_work(double damping, double lower, double width) {
 // 1 + b v = 0, about 1/b beyond the phase: far enough for beta <= 1 (the accuracy tests
 // check 1e-13 there); larger beta takes the adaptive double-exponential rule.
 constexpr int singular_rule_points = 24;
+// On a first piece of a custom law no longer than a quarter of its phase, the nearest
+// singularity of g lies at least four times as far, relative to the piece, as for the whole
+// phase: 12 points reach what 24 reach there.
+constexpr int short_piece_rule_points = 12;
 constexpr double singular_rule_beta_limit = 1.0;
 
 } // namespace
@@ -229,6 +270,7 @@ HuntCrossleyImpact::HuntCrossleyImpact(double mass,
     separation_force_factor_ = -w_out;
   }
   if (!power_law_) {
+    initial_power_law_ = elastic_force().initial_power_law();
     for (const double breakpoint : elastic_force().breakpoints()) {
       if (!(breakpoint > 0 && breakpoint < approach_max_)) continue;
       compression_breaks_.push_back(velocity_ -
@@ -306,17 +348,15 @@ double HuntCrossleyImpact::restitution_span() const {
 
 // dt = -m dv / ((1 + b v) f(x(v))): Newton's law, with x(v) from the energy balance.
 double HuntCrossleyImpact::compression_time_density(double distance) const {
-  const double approach =
-      elastic_force().approach_at_potential(mass_ * compression_energy(distance));
-  return mass_ / ((1.0 + damping_ * (velocity_ - distance)) * elastic_force().force(approach));
+  const double elastic = elastic_force().force_at_potential(mass_ * compression_energy(distance));
+  return mass_ / ((1.0 + damping_ * (velocity_ - distance)) * elastic);
 }
 
 double HuntCrossleyImpact::restitution_time_density(double distance) const {
-  const double approach =
-      elastic_force().approach_at_potential(mass_ * restitution_energy(distance));
+  const double elastic = elastic_force().force_at_potential(mass_ * restitution_energy(distance));
   // dt = -m dv / ((1 + b v) f) = (m / b) dpsi / f.
-  if (restitution_in_log_rate_) return mass_ / (damping_ * elastic_force().force(approach));
-  return mass_ / ((1.0 + damping_ * restitution_rate(distance)) * elastic_force().force(approach));
+  if (restitution_in_log_rate_) return mass_ / (damping_ * elastic);
+  return mass_ / ((1.0 + damping_ * restitution_rate(distance)) * elastic);
 }
 
 bool HuntCrossleyImpact::uses_singular_rule() const {
@@ -327,11 +367,17 @@ bool HuntCrossleyImpact::uses_singular_rule() const {
 //   dt/du = m / ((1 + b v) c^(1/(n+1)) ((n+1) m E)^alpha) = K u^-alpha g(u),
 //   alpha = n / (n + 1),  g = e(u)^-alpha / (1 + b v),
 // so the end-point singularity is exactly the Jacobi weight.
-double HuntCrossleyImpact::singular_rule_time(ImpactPhase phase, double distance) const {
+// A custom law that is c x^n below its first breakpoint has this form on its first piece.
+double HuntCrossleyImpact::singular_rule_time(ImpactPhase phase, double distance,
+                                              const PowerLawCoefficients& law) const {
   if (distance <= 0) return 0.0;
-  const double exponent = power_law_->exponent();
+  const double exponent = law.exponent;
   const double alpha = exponent / (exponent + 1);
-  const auto& rule = detail::gauss_jacobi_rule(singular_rule_points, alpha);
+  // A custom law's first piece no longer than a quarter of its phase: the shorter rule.
+  const double extent = phase == ImpactPhase::compression ? velocity_ : restitution_span();
+  const int points = !power_law_ && distance <= 0.25 * extent ? short_piece_rule_points
+                                                              : singular_rule_points;
+  const auto& rule = detail::gauss_jacobi_rule(points, alpha);
   const bool compressing = phase == ImpactPhase::compression;
   double sum = 0.0;
   for (std::size_t i = 0; i < rule.nodes.size(); ++i) {
@@ -341,25 +387,69 @@ double HuntCrossleyImpact::singular_rule_time(ImpactPhase phase, double distance
     sum += rule.weights[i] * std::pow(energy / u, -alpha) / (1.0 + damping_ * rate);
   }
   // K = m / (c^(1/(n+1)) ((n+1) m)^alpha) [s (m/s)^(alpha - 1)]
-  const double time_scale = mass_ / (std::pow(power_law_->stiffness(), 1.0 / (exponent + 1)) *
+  const double time_scale = mass_ / (std::pow(law.stiffness, 1.0 / (exponent + 1)) *
                                      std::pow((exponent + 1) * mass_, alpha));
   return time_scale * std::pow(distance, 1.0 - alpha) * sum;
 }
 
+bool HuntCrossleyImpact::uses_initial_rule() const {
+  return !power_law_ && initial_power_law_ && impact_parameter() <= singular_rule_beta_limit;
+}
+
 double HuntCrossleyImpact::compression_time_until(double distance) const {
-  if (uses_singular_rule()) return singular_rule_time(ImpactPhase::compression, distance);
-  return integrate_from_zero([this](double u) { return compression_time_density(u); }, distance,
-                             compression_breaks_);
+  if (uses_singular_rule())
+    return singular_rule_time(ImpactPhase::compression, distance,
+                              {power_law_->stiffness(), power_law_->exponent()});
+  const auto density = [this](double u) { return compression_time_density(u); };
+  if (uses_initial_rule()) {
+    const double first = std::min(distance, compression_breaks_.empty()
+                                                ? distance
+                                                : compression_breaks_.front());
+    return singular_rule_time(ImpactPhase::compression, first, *initial_power_law_) +
+           integrate_between(density, first, distance, compression_breaks_);
+  }
+  return integrate_from_zero(density, distance, compression_breaks_);
 }
 
 double HuntCrossleyImpact::restitution_time_from(double distance) const {
-  if (uses_singular_rule()) return singular_rule_time(ImpactPhase::restitution, distance);
-  return integrate_from_zero([this](double u) { return restitution_time_density(u); }, distance,
-                             restitution_breaks_);
+  if (uses_singular_rule())
+    return singular_rule_time(ImpactPhase::restitution, distance,
+                              {power_law_->stiffness(), power_law_->exponent()});
+  const auto density = [this](double u) { return restitution_time_density(u); };
+  if (uses_initial_rule()) {
+    const double first = std::min(distance, restitution_breaks_.empty()
+                                                ? distance
+                                                : restitution_breaks_.front());
+    return singular_rule_time(ImpactPhase::restitution, first, *initial_power_law_) +
+           integrate_between(density, first, distance, restitution_breaks_);
+  }
+  return integrate_from_zero(density, distance, restitution_breaks_);
+}
+
+// The compression integral from a distance u to x_max (u = V), split at the breakpoints.
+double HuntCrossleyImpact::compression_time_from(double distance) const {
+  return integrate_between([this](double u) { return compression_time_density(u); }, distance,
+                           velocity_, compression_breaks_);
 }
 
 double HuntCrossleyImpact::compression_time() const {
-  return compression_time_until(velocity_);
+  if (!splits_compression_at_peak()) return compression_time_until(velocity_);
+  double peak;
+  try {
+    peak = peak_distance();
+  } catch (const std::runtime_error&) {
+    // A law whose force peak cannot be located (force_peak() throws for it): the compression
+    // time in one integral, as without damping.
+    return compression_time_until(velocity_);
+  }
+  return compression_time_until(peak) + compression_time_from(peak);
+}
+
+std::pair<ImpactState, double> HuntCrossleyImpact::force_peak_and_compression_time() const {
+  if (!splits_compression_at_peak()) return {force_peak(), compression_time()};
+  const double peak = peak_distance();
+  const double to_peak = compression_time_until(peak);
+  return {compression_state(to_peak, peak), to_peak + compression_time_from(peak)};
 }
 
 double HuntCrossleyImpact::contact_time() const {
@@ -385,14 +475,17 @@ double HuntCrossleyImpact::time_at_approach(double approach, ImpactPhase phase) 
 ImpactState HuntCrossleyImpact::force_peak() const {
   if (damping_ == 0.0)
     return {compression_time(), approach_max_, 0.0, elastic_force().force(approach_max_)};
+  const double distance = peak_distance();
+  return compression_state(compression_time_until(distance), distance);
+}
+
+double HuntCrossleyImpact::peak_distance() const {
   // dF/dt = 0  <=>  m f'(x) v = b f(x)^2 (while compressing). In the distance u = V - v
   // the left side dominates near first contact and the right side at x_max.
   auto condition = [this](double distance) {
-    const double approach =
-        elastic_force().approach_at_potential(mass_ * compression_energy(distance));
-    const double elastic = elastic_force().force(approach);
-    return mass_ * (velocity_ - distance) * elastic_force().slope(approach) / elastic -
-           damping_ * elastic;
+    const auto [elastic, slope] =
+        elastic_force().force_and_slope_at_potential(mass_ * compression_energy(distance));
+    return mass_ * (velocity_ - distance) * slope / elastic - damping_ * elastic;
   };
   boost::uintmax_t iterations = 200;
   const auto tolerance = boost::math::tools::eps_tolerance<double>();
@@ -406,19 +499,19 @@ ImpactState HuntCrossleyImpact::force_peak() const {
     const auto [low, high] =
         boost::math::tools::toms748_solve(power_law_condition, 0.0, velocity_, exponent * velocity_,
                                           power_law_condition(velocity_), tolerance, iterations);
-    const double distance = 0.5 * (low + high);
-    return compression_state(compression_time_until(distance), distance);
+    return 0.5 * (low + high);
   }
   double lower = velocity_ * 1e-6;
-  while (!(condition(lower) > 0)) {
+  double at_lower = condition(lower);
+  while (!(at_lower > 0)) {
     lower *= 1e-3;
     if (lower < velocity_ * 1e-290)
       throw std::runtime_error("the force peak could not be bracketed");
+    at_lower = condition(lower);
   }
-  const auto [low, high] =
-      boost::math::tools::toms748_solve(condition, lower, velocity_, tolerance, iterations);
-  const double distance = 0.5 * (low + high);
-  return compression_state(compression_time_until(distance), distance);
+  const auto [low, high] = boost::math::tools::toms748_solve(
+      condition, lower, velocity_, at_lower, condition(velocity_), tolerance, iterations);
+  return 0.5 * (low + high);
 }
 
 ImpactState HuntCrossleyImpact::compression_state(double time, double distance) const {
@@ -436,8 +529,7 @@ ImpactState HuntCrossleyImpact::restitution_state(double time, double distance) 
 }
 
 ImpactResponse HuntCrossleyImpact::response() const {
-  const ImpactState peak = force_peak();
-  const double compression = compression_time();
+  const auto [peak, compression] = force_peak_and_compression_time();
   return {approach_max_,
           peak.force,
           peak.time,

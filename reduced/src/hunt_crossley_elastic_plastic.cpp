@@ -24,10 +24,22 @@ public:
   double force(double approach) const override { return spring_->loading_force(approach); }
   double potential(double approach) const override { return spring_->loading_work(approach); }
   double slope(double approach) const override { return spring_->loading_stiffness(approach); }
+  std::pair<double, double> force_and_slope(double approach) const override {
+    return spring_->loading_force_and_stiffness(approach);
+  }
   double approach_at_potential(double work) const override {
     return spring_->loading_approach(work);
   }
+  double force_at_potential(double work) const override {
+    return spring_->loading_force_at_work(work);
+  }
+  std::pair<double, double> force_and_slope_at_potential(double work) const override {
+    return spring_->loading_force_and_stiffness_at_work(work);
+  }
   std::vector<double> breakpoints() const override { return spring_->loading_breakpoints(); }
+  std::optional<PowerLawCoefficients> initial_power_law() const override {
+    return spring_->loading_power_law();
+  }
 
 private:
   std::shared_ptr<const ElasticPlasticContact> spring_;
@@ -129,8 +141,7 @@ double HuntCrossleyElasticPlasticImpact::contact_time() const {
 }
 
 HuntCrossleyElasticPlasticResponse HuntCrossleyElasticPlasticImpact::response() const {
-  const ImpactState peak = force_peak();
-  const double compression = compression_time();
+  const auto [peak, compression] = loading_.force_peak_and_compression_time();
   return {approach_max(),
           peak.force,
           peak.time,

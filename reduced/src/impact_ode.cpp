@@ -12,6 +12,7 @@
 #include "impact_reduced/invalid_input.hpp"
 
 #include "event_stepping.hpp"
+#include "switched_impact.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -64,8 +65,9 @@ double characteristic_length(double mass, double velocity, const ContactForceLaw
 class ImpactIntegration {
 public:
   ImpactIntegration(double mass, double velocity, const ContactForceLaw& force,
-                    double relative_tolerance, ContactEnd end)
-      : mass_(mass), velocity_(velocity), force_(force), end_(end) {
+                    double relative_tolerance, ContactEnd end,
+                    const detail::LawAtMaximum& at_maximum = nullptr)
+      : mass_(mass), velocity_(velocity), force_(&force), end_(end), at_maximum_(at_maximum) {
     require_positive("mass", mass);
     require_positive("velocity", velocity);
     if (!(relative_tolerance >= 1e-14 && relative_tolerance <= 1e-3))
@@ -108,7 +110,7 @@ private:
   double force_at(const State& y) const {
     const double approach = std::max(length_ * y[0], 0.0);
     const double rate = velocity_ * y[1];
-    const double value = force_(approach, rate);
+    const double value = (*force_)(approach, rate);
     if (!std::isfinite(value))
       throw std::runtime_error("contact force law returned a non-finite force (" + describe(value) +
                                ") at approach " + describe(approach) + " m, approach rate " +
@@ -133,6 +135,9 @@ private:
     double tau = 0;
     double dtau = 1e-3;
     bool compressing = true;
+    // The force at y, carried from the check after a step to the start of the next one, where
+    // it gives the stepper its first derivative and the force maximum its node value.
+    double force_at_y = force_at(y);
     while (true) {
       if (stepper_->steps().size() >= step_limit || tau > time_limit) {
         std::ostringstream message;
@@ -144,11 +149,31 @@ private:
                 << " m/s; the contact force law sticks";
         throw ContactDoesNotEnd(message.str());
       }
-      const auto& step = stepper_->step(y, tau, dtau);
+      const State before = y;
+      const double before_time = tau, before_trial = dtau;
+      const State start_rate{y[1], -force_at_y * time_ / (mass_ * velocity_)}; // rhs(y)
+      node_forces_.push_back(force_at_y);
+      const auto& step = stepper_->step(y, tau, dtau, &start_rate);
       const State start = step.state;
       const double start_time = step.start;
       const double length = step.length;
       double event_start = 0; // where the search for a later event in this step begins
+      if (compressing && y[1] <= 0 && at_maximum_ && !switched_) {
+        // x_max is reached in this step: switch to the law of that x_max and re-take the
+        // step from its start with it, as an integration with that law from t = 0 would
+        // (the two laws agree while x' >= 0).
+        const double h = locate(start, 0.0, length, [](const State& s) { return s[1]; });
+        switched_law_ = at_maximum_(length_ * advance(start, h)[0]);
+        force_ = &switched_law_;
+        switched_ = true;
+        stepper_->drop_last_step();
+        node_forces_.pop_back();
+        y = before;
+        tau = before_time;
+        dtau = before_trial;
+        force_at_y = force_at(y); // the switched law's (equal while x' >= 0)
+        continue;
+      }
       if (compressing && y[1] <= 0) {
         const double h = locate(start, 0.0, length, [](const State& s) { return s[1]; });
         compression_time_ = start_time + h;
@@ -157,7 +182,8 @@ private:
         event_start = h;
       }
       // End of contact: x back at 0, or (no tension) the force back at 0, whichever first.
-      const bool released = !compressing && end_ == ContactEnd::zero_force && force_at(y) <= 0;
+      force_at_y = force_at(y);
+      const bool released = !compressing && end_ == ContactEnd::zero_force && force_at_y <= 0;
       if (!compressing && (y[0] <= 0 || released)) {
         double h = length;
         bool at_zero_approach = y[0] <= 0;
@@ -217,15 +243,21 @@ private:
   // The force maximum lies next to the largest node value, in one of the two adjacent
   // steps (or at that node): located where dF/dt = 0 by re-stepping.
   void locate_force_maximum() {
+    std::vector<double> node_value = node_forces_;
+    node_value.push_back(force_at(separation_));
     std::tie(force_max_, time_force_max_) = stepper_->locate_maximum(
-        separation_, [this](const State& y) { return force_at(y); },
+        node_value, [this](const State& y) { return force_at(y); },
         [this](const State& y) { return force_rate(y); });
   }
 
   double mass_;
   double velocity_;
-  const ContactForceLaw& force_;
+  const ContactForceLaw* force_; // the law in use
   ContactEnd end_;
+  detail::LawAtMaximum at_maximum_; // if set: the law from x_max on, given x_max
+  ContactForceLaw switched_law_;
+  bool switched_ = false;
+  std::vector<double> node_forces_; // the force at the start of each recorded step
   double length_ = 0;
   double time_ = 0;
   std::optional<Stepper> stepper_;
@@ -255,3 +287,27 @@ std::vector<ImpactSample> integrate_impact_history(double mass, double velocity,
 }
 
 } // namespace impact::reduced
+
+namespace impact::reduced::detail {
+
+OdeImpactResult integrate_switched_impact(double mass, double velocity,
+                                          const ContactForceLaw& loading,
+                                          const LawAtMaximum& at_maximum,
+                                          double relative_tolerance, ContactEnd end) {
+  return ImpactIntegration(mass, velocity, loading, relative_tolerance, end, at_maximum).result();
+}
+
+std::vector<ImpactSample> integrate_switched_impact_history(double mass, double velocity,
+                                                            const ContactForceLaw& loading,
+                                                            const LawAtMaximum& at_maximum,
+                                                            std::size_t points,
+                                                            double relative_tolerance,
+                                                            ContactEnd end) {
+  if (points < 2)
+    throw InvalidInput("points",
+                       "points must be a whole number >= 2 (got " + std::to_string(points) + ")");
+  return ImpactIntegration(mass, velocity, loading, relative_tolerance, end, at_maximum)
+      .history(points);
+}
+
+} // namespace impact::reduced::detail

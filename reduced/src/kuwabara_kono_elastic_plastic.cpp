@@ -1,6 +1,7 @@
 #include "impact_reduced/kuwabara_kono_elastic_plastic.hpp"
 
 #include "impact_reduced/invalid_input.hpp"
+#include "switched_impact.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -10,9 +11,10 @@ namespace impact::reduced {
 double kuwabara_kono_elastic_plastic_force(const ElasticPlasticContact& spring,
                                            double dissipative_constant, double approach,
                                            double approach_rate, double approach_max) {
-  if (approach_rate >= 0 || approach_max <= 0)
-    return spring.loading_force(approach) +
-           dissipative_constant * spring.loading_stiffness(approach) * approach_rate;
+  if (approach_rate >= 0 || approach_max <= 0) {
+    const auto [force, stiffness] = spring.loading_force_and_stiffness(approach);
+    return force + dissipative_constant * stiffness * approach_rate;
+  }
   const HertzianUnloading branch = spring.unloading(approach_max);
   const double stretch = std::max(0.0, approach - branch.residual_approach);
   const double root = std::sqrt(stretch);
@@ -36,35 +38,45 @@ ContactForceLaw switched_law(const ElasticPlasticContact& spring, double dissipa
                              double approach_max) {
   const HertzianUnloading branch = spring.unloading(approach_max);
   return [&spring, dissipative_constant, branch](double x, double rate) {
-    if (rate >= 0)
-      return spring.loading_force(x) + dissipative_constant * spring.loading_stiffness(x) * rate;
+    if (rate >= 0) {
+      const auto [force, stiffness] = spring.loading_force_and_stiffness(x);
+      return force + dissipative_constant * stiffness * rate;
+    }
     const double stretch = x - branch.residual_approach;
     return branch.stiffness * std::sqrt(std::abs(stretch)) *
            (stretch + 1.5 * dissipative_constant * rate);
   };
 }
 
-// x_max from the compression on the loading branch (identical in both integrations).
-double approach_max_of(double mass, double velocity, const ElasticPlasticContact& spring,
-                       double dissipative_constant, double relative_tolerance) {
-  const ContactForceLaw loading = [&spring, dissipative_constant](double x, double rate) {
-    return spring.loading_force(x) + dissipative_constant * spring.loading_stiffness(x) * rate;
+// The loading branch's law (identical to the switched law while x' >= 0).
+ContactForceLaw loading_law(const ElasticPlasticContact& spring, double dissipative_constant) {
+  return [&spring, dissipative_constant](double x, double rate) {
+    const auto [force, stiffness] = spring.loading_force_and_stiffness(x);
+    return force + dissipative_constant * stiffness * rate;
   };
-  return integrate_impact(mass, velocity, loading, relative_tolerance, ContactEnd::zero_force)
-      .approach_max;
+}
+
+detail::LawAtMaximum unloading_law(const ElasticPlasticContact& spring,
+                                   double dissipative_constant) {
+  return [&spring, dissipative_constant](double approach_max) {
+    return switched_law(spring, dissipative_constant, approach_max);
+  };
 }
 
 } // namespace
 
+// One integration: the compression on the loading branch gives x_max, where the law switches
+// to the unloading branch of that x_max and the step that holds x_max is re-taken
+// (switched_impact.hpp); the same impact as integrating the switched law from t = 0.
 OdeImpactResult kuwabara_kono_elastic_plastic_impact(double mass, double velocity,
                                                      const ElasticPlasticContact& spring,
                                                      double dissipative_constant,
                                                      double relative_tolerance) {
   validate(mass, velocity, dissipative_constant);
-  const double approach_max =
-      approach_max_of(mass, velocity, spring, dissipative_constant, relative_tolerance);
-  return integrate_impact(mass, velocity, switched_law(spring, dissipative_constant, approach_max),
-                          relative_tolerance, ContactEnd::zero_force);
+  return detail::integrate_switched_impact(mass, velocity,
+                                           loading_law(spring, dissipative_constant),
+                                           unloading_law(spring, dissipative_constant),
+                                           relative_tolerance, ContactEnd::zero_force);
 }
 
 std::vector<ImpactSample> kuwabara_kono_elastic_plastic_history(double mass, double velocity,
@@ -73,11 +85,10 @@ std::vector<ImpactSample> kuwabara_kono_elastic_plastic_history(double mass, dou
                                                                 std::size_t points,
                                                                 double relative_tolerance) {
   validate(mass, velocity, dissipative_constant);
-  const double approach_max =
-      approach_max_of(mass, velocity, spring, dissipative_constant, relative_tolerance);
-  return integrate_impact_history(mass, velocity,
-                                  switched_law(spring, dissipative_constant, approach_max), points,
-                                  relative_tolerance, ContactEnd::zero_force);
+  return detail::integrate_switched_impact_history(
+      mass, velocity, loading_law(spring, dissipative_constant),
+      unloading_law(spring, dissipative_constant), points, relative_tolerance,
+      ContactEnd::zero_force);
 }
 
 } // namespace impact::reduced

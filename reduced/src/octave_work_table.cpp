@@ -36,10 +36,96 @@ const std::array<double, 128>& lobatto_cosines() {
   return table;
 }
 
+// sum_m c_m (T_m(a) - T_m(b)) for a - b = gap >= 0 given: D_m = T_m(a) - T_m(b) satisfies
+// D_(m+1) = 2 a D_m + 2 gap T_m(b) - D_(m-1), D_0 = 0, D_1 = gap, so that every term is
+// formed from the gap and no difference of two close sums is taken.
+double chebyshev_difference(const double* coefficients, std::size_t n, double a, double b,
+                            double gap) {
+  if (n < 2 || gap == 0) return 0.0;
+  double previous_difference = 0, difference = gap; // D_0, D_1
+  double previous_value = 1, value = b;              // T_0(b), T_1(b)
+  double sum = coefficients[1] * difference;
+  for (std::size_t m = 1; m + 1 < n; ++m) {
+    const double next_difference = 2 * a * difference + 2 * gap * value - previous_difference;
+    const double next_value = 2 * b * value - previous_value;
+    previous_difference = difference;
+    difference = next_difference;
+    previous_value = value;
+    value = next_value;
+    sum += coefficients[m + 1] * difference;
+  }
+  return sum;
+}
+
+constexpr double two_over_log_two = 2.8853900817779268147; // dt/d(ln x) = 2 / ln 2
+
+// An octave's series at t in one pass: W - W(lower), G = dW/dt and G' = dG/dt, from the
+// forward recurrences T_(k+1) = 2 t T_k - T_(k-1) and U_(k+1) = 2 t U_k - U_(k-1)
+// (T_k' = k U_(k-1)), stable on [-1, 1]; the three sums share them.
+struct OctavePoint {
+  double work;
+  double density;
+  double density_slope;
+};
+
+template <class Piece>
+OctavePoint evaluate_octave(const Piece& piece, double t) {
+  const std::size_t n = piece.size; // density: c_0 .. c_(n-1); integral: C_0 .. C_n
+  double work = piece.integral[0] + piece.integral[1] * t;
+  double density = piece.density[0] + piece.density[1] * t;
+  double density_slope = piece.density[1];
+  double previous = 1, current = t;             // T_(k-1), T_k for k = 1
+  double previous_u = 1, current_u = 2 * t;     // U_(k-2), U_(k-1) for k = 2
+  for (std::size_t k = 2; k <= n; ++k) {
+    const double next = 2 * t * current - previous; // T_k
+    previous = current;
+    current = next;
+    work += piece.integral[k] * next;
+    if (k < n) {
+      density += piece.density[k] * next;
+      density_slope += piece.density[k] * static_cast<double>(k) * current_u; // k U_(k-1)
+    }
+    const double next_u = 2 * t * current_u - previous_u; // U_k
+    previous_u = current_u;
+    current_u = next_u;
+  }
+  return {work, density, density_slope};
+}
+
+// Newton in t on an octave's series of W - W(lower) (increasing: its slope G > 0) for the
+// value `target`, from `guess`, safeguarded by bisection on [low, high]. It stops once a step
+// is within a few ulps of t, a Newton step is below 1e-9 (its error is then of order
+// (G' / 2G) 1e-18: the series grow like exp(t), so G' / G is of order 1), or the residual is 0.
+// Returns t and G there (after a Newton step d, G + G' d: its error is of order d^2).
+template <class Piece>
+std::pair<double, double> solve_octave(const Piece& piece, double target, double guess) {
+  double low = -1, high = 1;
+  double t = std::clamp(guess, -1.0, 1.0);
+  for (int iteration = 0; iteration < 100; ++iteration) {
+    const OctavePoint point = evaluate_octave(piece, t);
+    const double residual = point.work - target;
+    if (residual == 0) return {t, point.density};
+    (residual < 0 ? low : high) = t;
+    double next = t - residual / point.density;
+    const bool newton = next > low && next < high;
+    if (!newton) next = 0.5 * (low + high);
+    const bool done = std::abs(next - t) <= 4 * std::numeric_limits<double>::epsilon() ||
+                      high - low <= 4 * std::numeric_limits<double>::epsilon() ||
+                      (newton && std::abs(next - t) <= 1e-9);
+    if (done) return {next, point.density + point.density_slope * (next - t)};
+    t = next;
+  }
+  return {t, evaluate_octave(piece, t).density};
+}
+
 } // namespace
 
 OctaveWorkTable::OctaveWorkTable(double start_approach, double start_work)
-    : start_approach_(start_approach), start_work_(start_work) {}
+    : start_approach_(start_approach),
+      start_work_(start_work),
+      published_(new std::atomic<const Octave*>[max_octaves]) {
+  for (std::size_t k = 0; k < max_octaves; ++k) published_[k].store(nullptr);
+}
 
 // Chebyshev-Lobatto interpolation of G(t) = F(x(t)) dx/dt, x = lower 2^((t + 1) / 2), at
 // 17, 33, then 65 points (nested: each doubling reuses the values), until the last two
@@ -94,18 +180,53 @@ OctaveWorkTable::Octave OctaveWorkTable::build(double lower, double work_start,
     at_minus_one += (m % 2 == 0 ? 1.0 : -1.0) * result.integral[m];
   result.integral[0] = -at_minus_one;
   result.work_end = work_start + chebyshev_sum(result.integral.data(), n + 1, 1.0);
+  // The inverse's guess: on each of eight equal parts of the octave's work, t at the 9
+  // Chebyshev-Lobatto points of the part's normalised work (by Newton from the linear guess),
+  // and their series.
+  const double span = result.work_end - result.work_start;
+  constexpr std::size_t m = inverse_size - 1, stride = 64 / m;
+  for (std::size_t part = 0; part < inverse_parts; ++part) {
+    std::array<double, inverse_size> times{};
+    for (std::size_t j = 0; j <= m; ++j) {
+      const double w = cosines[j * stride]; // in the part, [-1, 1]
+      const double target =
+          span * (static_cast<double>(part) + 0.5 * (w + 1)) / static_cast<double>(inverse_parts);
+      times[j] = solve_octave(result, target, 2 * target / span - 1).first;
+    }
+    auto& coefficients = result.inverse[part];
+    for (std::size_t k = 0; k <= m; ++k) {
+      double sum = 0;
+      for (std::size_t j = 0; j <= m; ++j) {
+        const double term = times[j] * cosines[(k * j % (2 * m)) * stride];
+        sum += j == 0 || j == m ? 0.5 * term : term;
+      }
+      coefficients[k] = 2 * sum / static_cast<double>(m);
+    }
+    coefficients[0] *= 0.5;
+    coefficients[m] *= 0.5;
+  }
   return result;
 }
 
-const OctaveWorkTable::Octave& OctaveWorkTable::octave(std::size_t index,
-                                                       const Force& force) const {
+void OctaveWorkTable::build_up_to(std::size_t index, const Force& force) const {
+  if (index >= max_octaves)
+    throw std::runtime_error("the loading curve never absorbs the impact energy");
   std::lock_guard<std::mutex> lock(mutex_);
   while (octaves_.size() <= index) {
     const double lower = octaves_.empty() ? start_approach_ : 2 * octaves_.back().lower;
     const double work = octaves_.empty() ? start_work_ : octaves_.back().work_end;
     octaves_.push_back(build(lower, work, force));
+    published_[octaves_.size() - 1].store(&octaves_.back(), std::memory_order_release);
+    built_.store(octaves_.size(), std::memory_order_release);
   }
-  return octaves_[index];
+}
+
+const OctaveWorkTable::Octave& OctaveWorkTable::octave(std::size_t index,
+                                                       const Force& force) const {
+  if (index < max_octaves)
+    if (const Octave* built = published_[index].load(std::memory_order_acquire)) return *built;
+  build_up_to(index, force);
+  return *published_[index].load(std::memory_order_acquire);
 }
 
 const OctaveWorkTable::Octave& OctaveWorkTable::octave_of(double approach,
@@ -122,41 +243,88 @@ double OctaveWorkTable::work(double approach, const Force& force) const {
   return piece.work_start + chebyshev_sum(piece.integral.data(), piece.size + 1, t);
 }
 
+OctaveWorkTable::Located OctaveWorkTable::locate_work(
+    double work, const Force& force) const {
+  // The octave whose works bracket the target: built up to it, then a binary search.
+  std::size_t count = built_.load(std::memory_order_acquire);
+  while (count == 0 || published_[count - 1].load(std::memory_order_acquire)->work_end < work) {
+    build_up_to(count, force);
+    count = built_.load(std::memory_order_acquire);
+  }
+  std::size_t first = 0, last = count - 1; // the first octave with work_end >= work
+  while (first < last) {
+    const std::size_t middle = first + (last - first) / 2;
+    if (published_[middle].load(std::memory_order_acquire)->work_end < work)
+      first = middle + 1;
+    else
+      last = middle;
+  }
+  const Octave& piece = *published_[first].load(std::memory_order_acquire);
+  const double target = work - piece.work_start;
+  // The part of the work that holds the target, and the normalised work in it.
+  const double scaled =
+      std::clamp(target / (piece.work_end - piece.work_start), 0.0, 1.0) * inverse_parts;
+  const std::size_t part = std::min(static_cast<std::size_t>(scaled), inverse_parts - 1);
+  const double normalised = 2 * (scaled - static_cast<double>(part)) - 1;
+  const auto [t, density] = solve_octave(
+      piece, target, chebyshev_sum(piece.inverse[part].data(), inverse_size, normalised));
+  return {&piece, t, density};
+}
+
 double OctaveWorkTable::approach(double work, const Force& force) const {
   if (!(work > start_work_)) return start_approach_;
-  // The octave whose works bracket the target: built up to it, then a binary search.
-  const Octave* found = nullptr;
-  {
-    std::lock_guard<std::mutex> lock(mutex_);
-    while (octaves_.empty() || octaves_.back().work_end < work) {
-      if (octaves_.size() > 4000)
-        throw std::runtime_error("the loading curve never absorbs the impact energy");
-      const double lower = octaves_.empty() ? start_approach_ : 2 * octaves_.back().lower;
-      const double start = octaves_.empty() ? start_work_ : octaves_.back().work_end;
-      octaves_.push_back(build(lower, start, force));
-    }
-    found = &*std::lower_bound(octaves_.begin(), octaves_.end(), work,
-                               [](const Octave& o, double w) { return o.work_end < w; });
+  const Located found = locate_work(work, force);
+  return found.piece->lower * std::exp2(0.5 * (found.t + 1));
+}
+
+double OctaveWorkTable::force_at_work(double work, const Force& force) const {
+  if (!(work > start_work_)) return force(start_approach_);
+  const Located found = locate_work(work, force);
+  const double approach = found.piece->lower * std::exp2(0.5 * (found.t + 1));
+  // G(t) = F(x) x ln(2) / 2.
+  return found.density / (approach * half_log_two);
+}
+
+std::pair<double, double> OctaveWorkTable::force_and_slope_at_work(double work,
+                                                                  const Force& force) const {
+  const Located found = locate_work(std::max(work, start_work_), force);
+  const double t = found.t;
+  const OctavePoint point = evaluate_octave(*found.piece, t);
+  const double approach = found.piece->lower * std::exp2(0.5 * (t + 1));
+  // G = F x h and dG/dt = (F' x + F) x h^2, h = ln(2) / 2.
+  const double force_value = point.density / (approach * half_log_two);
+  const double slope =
+      (point.density_slope / (approach * half_log_two * half_log_two) - force_value) / approach;
+  return {force_value, slope};
+}
+
+double OctaveWorkTable::work_below(double approach_max, double distance,
+                                   const Force& force) const {
+  if (!(distance > 0)) return 0.0;
+  const double approach = approach_max - distance;
+  const Octave& top = octave_of(approach_max, force);
+  const Octave& bottom = octave_of(std::max(approach, start_approach_), force);
+  const auto position = [](const Octave& piece, double x) {
+    return std::clamp(2 * std::log2(x / piece.lower) - 1, -1.0, 1.0);
+  };
+  const double top_t = position(top, approach_max);
+  if (&top == &bottom) // t(x_max) - t(x) = (2 / ln 2) ln(x_max / x)
+    return chebyshev_difference(top.integral.data(), top.size + 1, top_t,
+                                position(top, approach),
+                                -two_over_log_two * std::log1p(-distance / approach_max));
+  // From x to the end of its octave, the octaves between, and from the start of x_max's.
+  const double bottom_end = 2 * bottom.lower;
+  const double bottom_gap = distance - (approach_max - bottom_end); // 2 lower - x
+  double work = chebyshev_difference(bottom.integral.data(), bottom.size + 1, 1.0,
+                                     position(bottom, approach),
+                                     two_over_log_two * std::log1p(bottom_gap / approach));
+  for (double lower = bottom_end; lower < top.lower; lower *= 2) {
+    const Octave& piece = octave_of(lower, force);
+    work += chebyshev_sum(piece.integral.data(), piece.size + 1, 1.0);
   }
-  const Octave& piece = *found;
-  // Newton in t on the octave's series (increasing: its slope G > 0), safeguarded by
-  // bisection on [low, high]; it stops once a step is within a few ulps of t.
-  const double target = work - piece.work_start;
-  double low = -1, high = 1;
-  double t = -1 + 2 * target / (piece.work_end - piece.work_start);
-  for (int iteration = 0; iteration < 100; ++iteration) {
-    const double residual = chebyshev_sum(piece.integral.data(), piece.size + 1, t) - target;
-    if (residual == 0) break;
-    (residual < 0 ? low : high) = t;
-    const double slope = chebyshev_sum(piece.density.data(), piece.size, t);
-    double next = t - residual / slope;
-    if (!(next > low && next < high)) next = 0.5 * (low + high);
-    const bool done = std::abs(next - t) <= 4 * std::numeric_limits<double>::epsilon() ||
-                      high - low <= 4 * std::numeric_limits<double>::epsilon();
-    t = next;
-    if (done) break;
-  }
-  return piece.lower * std::exp2(0.5 * (t + 1));
+  return work + chebyshev_difference(
+                    top.integral.data(), top.size + 1, top_t, -1.0,
+                    two_over_log_two * std::log1p((approach_max - top.lower) / top.lower));
 }
 
 } // namespace impact::reduced::detail

@@ -13,14 +13,23 @@
 // the largest degree throws, rather than returning a less accurate work). Measured against
 // composite 30-point Gauss-Legendre in x (tests/reduced/test_octave_work_table.cpp).
 //
+// The inverse starts Newton's method from Chebyshev series of t(W) on eight equal parts of
+// each octave's work (9 points each, built with the octave), so that one Newton step usually
+// ends it: a step below 1e-9 in t
+// leaves an error of about (G'/2G) 1e-18, far below the rounding of t.
+//
 // Thread safety: const member functions may be called concurrently (the octaves are built
-// under a mutex and never move once built).
+// under a mutex, never move once built, and are published through atomic pointers, so that
+// reading a built octave takes no lock).
 
 #include <array>
+#include <atomic>
 #include <cstddef>
 #include <deque>
 #include <functional>
+#include <memory>
 #include <mutex>
+#include <utility>
 
 namespace impact::reduced::detail {
 
@@ -33,8 +42,23 @@ public:
   double work(double approach, const Force& force) const;
   /// The x >= x_0 with W(x) = work (work >= W(x_0)).
   double approach(double work, const Force& force) const;
+  /// F at that x from the octave's series of F(x) x (within a few 1e-16 of `force`'s value
+  /// relative to the octave's largest, measured in tests/reduced/test_octave_work_table.cpp):
+  /// for the time integrals, which need F only where W is given.
+  double force_at_work(double work, const Force& force) const;
+  /// {F, dF/dx} there from the series of F x and its derivative (dF/dx within 1.5e-13
+  /// relative: the derivative of the interpolant), for the force peak's search.
+  std::pair<double, double> force_and_slope_at_work(double work, const Force& force) const;
+  /// W(x_max) - W(x_max - d) [J] for x_max - d >= x_0, d >= 0, without cancellation for
+  /// small d: on each octave the difference of the series is summed term by term,
+  /// T_m(a) - T_m(b) by its own recurrence from a - b (formed from d, not from a and b).
+  double work_below(double approach_max, double distance, const Force& force) const;
 
   static constexpr std::size_t max_degree = 65; // coefficients of the longest series
+  static constexpr std::size_t inverse_parts = 8; // pieces of the inverse's guess
+  static constexpr std::size_t inverse_size = 9;  // coefficients of each piece
+  // Octaves x_0 2^k, k < max_octaves: beyond, x_0 2^k overflows for any x_0 >= 1e-300.
+  static constexpr std::size_t max_octaves = 2100;
 
 private:
   struct Octave {
@@ -44,16 +68,30 @@ private:
     std::size_t size;                            // number of coefficients in use
     std::array<double, max_degree> density;      // Chebyshev coefficients of dW/dt
     std::array<double, max_degree + 1> integral; // of W - W(lower), zero at t = -1
+    // t on part k of the work as a series in its own normalised work in [-1, 1]
+    std::array<std::array<double, inverse_size>, inverse_parts> inverse;
   };
   // The octave that holds x (built with those below it).
   const Octave& octave_of(double approach, const Force& force) const;
   const Octave& octave(std::size_t index, const Force& force) const;
+  // The octave that holds W = work (built up to it), t there and the series' G(t).
+  struct Located {
+    const Octave* piece;
+    double t;
+    double density;
+  };
+  Located locate_work(double work, const Force& force) const;
+  // Builds octaves up to `index` (under the mutex).
+  void build_up_to(std::size_t index, const Force& force) const;
   Octave build(double lower, double work_start, const Force& force) const;
 
   double start_approach_;
   double start_work_;
   mutable std::mutex mutex_;
   mutable std::deque<Octave> octaves_; // deque: references stay valid while it grows
+  // octaves_[k] once built, else null; built_ counts them (release after the pointer).
+  std::unique_ptr<std::atomic<const Octave*>[]> published_;
+  mutable std::atomic<std::size_t> built_{0};
 };
 
 } // namespace impact::reduced::detail

@@ -31,10 +31,14 @@ double hertz_load(double interference, const SphereFlatContact& contact) {
          std::pow(interference, 1.5);
 }
 
-// P / P_c of the Jackson-Green fit (omega* > 1.9) without validation.
-double jackson_green_fit(double ratio, const SphereFlatContact& contact, double c) {
+// B = 0.14 exp(23 Y / E*), the exponent of the contact radius's growth.
+double jackson_green_b(const SphereFlatContact& contact) {
+  return 0.14 * std::exp(23 * (contact.yield_strength / contact.contact_modulus));
+}
+
+// P / P_c of the Jackson-Green fit (omega* > 1.9) without validation, B given.
+double jackson_green_fit(double ratio, const SphereFlatContact& contact, double c, double b) {
   const double yield_strain = contact.yield_strength / contact.contact_modulus;
-  const double b = 0.14 * std::exp(23 * yield_strain);
   // a / R = sqrt(omega / R) (omega*/1.9)^(B/2), omega / R = omega* (pi C Y / (2 E*))^2.
   const double relative_radius = std::sqrt(ratio) * pi * c * yield_strain / 2 *
                                  std::pow(ratio / jackson_green_transition, b / 2);
@@ -48,9 +52,9 @@ double jackson_green_fit(double ratio, const SphereFlatContact& contact, double 
 //   d/dw [(4 H / C) G w] = (4 / C) (H' G w + H G' w + H G),  G = 1 - exp(-w^(5/9) / 25),
 //   G' w = exp(-w^(5/9) / 25) w^(5/9) / 45,  a/R = rho ~ w^((1 + B) / 2),
 //   H' w = -2.84 (0.82 * 0.7) rho^(-0.7) exp(-0.82 rho^(-0.7)) (1 + B) / 2.
-double jackson_green_fit_slope(double ratio, const SphereFlatContact& contact, double c) {
+double jackson_green_fit_slope(double ratio, const SphereFlatContact& contact, double c,
+                               double b) {
   const double yield_strain = contact.yield_strength / contact.contact_modulus;
-  const double b = 0.14 * std::exp(23 * yield_strain);
   const double relative_radius = std::sqrt(ratio) * pi * c * yield_strain / 2 *
                                  std::pow(ratio / jackson_green_transition, b / 2);
   const double decay = std::exp(-0.82 * std::pow(relative_radius, -0.7));
@@ -65,6 +69,33 @@ double jackson_green_fit_slope(double ratio, const SphereFlatContact& contact, d
   return hertz_like + 4 / c *
                           (hardness_slope_times_ratio * shape +
                            hardness_ratio * shape_slope_times_ratio + hardness_ratio * shape);
+}
+
+// P / P_c and its slope in omega* at once (omega* > 1.9): the terms of jackson_green_fit and
+// jackson_green_fit_slope evaluated once, each result formed exactly as there.
+std::pair<double, double> jackson_green_fit_and_slope(double ratio, const SphereFlatContact& contact,
+                                                      double c, double b) {
+  const double yield_strain = contact.yield_strength / contact.contact_modulus;
+  const double relative_radius = std::sqrt(ratio) * pi * c * yield_strain / 2 *
+                                 std::pow(ratio / jackson_green_transition, b / 2);
+  const double radius_power = std::pow(relative_radius, -0.7);
+  const double decay = std::exp(-0.82 * radius_power);
+  const double hardness_ratio = 2.84 * (1 - decay);
+  const double hardness_slope_times_ratio = -2.84 * 0.82 * 0.7 * radius_power * decay * (1 + b) / 2;
+  const double power = std::pow(ratio, 5.0 / 9.0);
+  const double shape_decay = std::exp(-power / 25);
+  const double shape = 1 - shape_decay;
+  const double shape_slope_times_ratio = shape_decay * power / 45;
+  const double twelfth = std::pow(ratio, 5.0 / 12.0);
+  const double hertz_decay = std::exp(-0.25 * twelfth);
+  const double ratio_power = hertz_decay * std::pow(ratio, 1.5) +
+                             4 * hardness_ratio / c * shape * ratio;
+  const double hertz_like = hertz_decay * std::sqrt(ratio) * (1.5 - 5.0 / 48.0 * twelfth);
+  const double slope = hertz_like + 4 / c *
+                                        (hardness_slope_times_ratio * shape +
+                                         hardness_ratio * shape_slope_times_ratio +
+                                         hardness_ratio * shape);
+  return {ratio_power, slope};
 }
 
 } // namespace
@@ -96,7 +127,8 @@ double jackson_green_load_ratio(double interference_ratio, const SphereFlatConta
   validate(contact);
   require_non_negative("interference_ratio", interference_ratio);
   if (interference_ratio <= jackson_green_transition) return std::pow(interference_ratio, 1.5);
-  return jackson_green_fit(interference_ratio, contact, jackson_green_c(contact.poisson_ratio));
+  return jackson_green_fit(interference_ratio, contact, jackson_green_c(contact.poisson_ratio),
+                           jackson_green_b(contact));
 }
 
 double jackson_green_load(double interference, const SphereFlatContact& contact) {
@@ -146,12 +178,13 @@ JacksonGreenContact::JacksonGreenContact(const SphereFlatContact& contact,
       critical_interference_(jackson_green_critical_interference(contact)),
       transition_(jackson_green_transition * critical_interference_),
       transition_work_(0.4 * hertz_load(transition_, contact) * transition_),
+      critical_load_(jackson_green_critical_load(contact)),
+      c_(jackson_green_c(contact.poisson_ratio)),
+      b_(jackson_green_b(contact)),
       work_table_(std::make_shared<detail::OctaveWorkTable>(transition_, transition_work_)) {}
 
 double JacksonGreenContact::fit_force(double approach) const {
-  return jackson_green_critical_load(contact_) *
-         jackson_green_fit(approach / critical_interference_, contact_,
-                           jackson_green_c(contact_.poisson_ratio));
+  return critical_load_ * jackson_green_fit(approach / critical_interference_, contact_, c_, b_);
 }
 
 double JacksonGreenContact::loading_force(double approach) const {
@@ -162,9 +195,15 @@ double JacksonGreenContact::loading_force(double approach) const {
 double JacksonGreenContact::loading_stiffness(double approach) const {
   if (approach < transition_)
     return 2 * contact_.contact_modulus * std::sqrt(contact_.radius * approach);
-  return jackson_green_critical_load(contact_) / critical_interference_ *
-         jackson_green_fit_slope(approach / critical_interference_, contact_,
-                                 jackson_green_c(contact_.poisson_ratio));
+  return critical_load_ / critical_interference_ *
+         jackson_green_fit_slope(approach / critical_interference_, contact_, c_, b_);
+}
+
+std::pair<double, double> JacksonGreenContact::loading_force_and_stiffness(double approach) const {
+  if (approach <= transition_) return {loading_force(approach), loading_stiffness(approach)};
+  const auto [ratio_power, slope] =
+      jackson_green_fit_and_slope(approach / critical_interference_, contact_, c_, b_);
+  return {critical_load_ * ratio_power, critical_load_ / critical_interference_ * slope};
 }
 
 double JacksonGreenContact::loading_work(double approach) const {
@@ -179,6 +218,34 @@ double JacksonGreenContact::loading_approach(double work) const {
     return std::pow(2.5 * work / stiffness, 0.4);
   }
   return work_table_->approach(work, [this](double x) { return fit_force(x); });
+}
+
+double JacksonGreenContact::loading_force_at_work(double work) const {
+  if (!(work > transition_work_)) return loading_force(loading_approach(work));
+  return work_table_->force_at_work(work, [this](double x) { return fit_force(x); });
+}
+
+std::pair<double, double> JacksonGreenContact::loading_force_and_stiffness_at_work(double work) const {
+  if (!(work > transition_work_)) return loading_force_and_stiffness(loading_approach(work));
+  return work_table_->force_and_slope_at_work(work, [this](double x) { return fit_force(x); });
+}
+
+double JacksonGreenContact::loading_work_below(double approach_max, double distance) const {
+  if (!(distance > 0)) return 0.0;
+  const double stiffness = 4.0 / 3.0 * contact_.contact_modulus * std::sqrt(contact_.radius);
+  if (approach_max <= transition_)
+    return detail::hertz_work_below(stiffness, approach_max, distance);
+  const auto force = [this](double x) { return fit_force(x); };
+  const double above = approach_max - transition_; // the part of d above the transition
+  if (distance <= above) return work_table_->work_below(approach_max, distance, force);
+  return work_table_->work_below(approach_max, above, force) +
+         detail::hertz_work_below(stiffness, transition_, distance - above);
+}
+
+std::optional<PowerLawCoefficients> JacksonGreenContact::loading_power_law() const {
+  // The stiffness exactly as hertz_load forms it, so that c x^(3/2) is loading_force.
+  return PowerLawCoefficients{4.0 / 3.0 * contact_.contact_modulus * std::sqrt(contact_.radius),
+                              1.5};
 }
 
 HertzianUnloading JacksonGreenContact::unloading(double approach_max) const {

@@ -57,6 +57,12 @@ double ThorntonContact::loading_stiffness(double approach) const {
   return plastic_stiffness_;
 }
 
+std::pair<double, double> ThorntonContact::loading_force_and_stiffness(double approach) const {
+  if (approach < yield_approach_)
+    return {hertz_stiffness_ * std::pow(approach, 1.5), 1.5 * hertz_stiffness_ * std::sqrt(approach)};
+  return {loading_force(approach), plastic_stiffness_};
+}
+
 double ThorntonContact::loading_approach(double work) const {
   if (!(work > 0)) return 0.0;
   const double yield_work = 0.4 * yield_force_ * yield_approach_;
@@ -66,6 +72,18 @@ double ThorntonContact::loading_approach(double work) const {
   return yield_approach_ + 2 * excess /
                                (yield_force_ + std::sqrt(yield_force_ * yield_force_ +
                                                          2 * plastic_stiffness_ * excess));
+}
+
+double ThorntonContact::loading_work_below(double approach_max, double distance) const {
+  if (!(distance > 0)) return 0.0;
+  if (approach_max <= yield_approach_)
+    return detail::hertz_work_below(hertz_stiffness_, approach_max, distance);
+  // Plastic branch: F_y d + (k/2) (p_max^2 - p^2) = d (F_y + k (p_max - d/2)), p = x - x_y.
+  const double plastic = approach_max - yield_approach_;
+  if (distance <= plastic)
+    return distance * (yield_force_ + plastic_stiffness_ * (plastic - 0.5 * distance));
+  return plastic * (yield_force_ + 0.5 * plastic_stiffness_ * plastic) +
+         detail::hertz_work_below(hertz_stiffness_, yield_approach_, distance - plastic);
 }
 
 double ThorntonContact::unloading_radius(double approach_max) const {

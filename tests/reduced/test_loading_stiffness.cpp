@@ -1,6 +1,7 @@
 // The loading stiffness dF_L/dx of the elastic-plastic contact laws against a fourth-order
 // central difference of their loading force (independent of the analytic derivatives).
 
+#include "impact_reduced/ghaednia.hpp"
 #include "impact_reduced/sphere_flat_fits.hpp"
 #include "impact_reduced/thornton.hpp"
 
@@ -45,6 +46,29 @@ TEST(LoadingStiffness, JacksonGreenOnBothBranches) {
       const double critical = contact.critical_interference();
       for (const double ratio : {0.2, 1.0, 1.85, 1.95, 3.0, 10.0, 100.0, 1e3, 1e4})
         expect_stiffness_matches(contact, ratio * critical);
+    }
+}
+
+// loading_force_and_stiffness (one evaluation of the fit's terms, for Kuwabara-Kono) gives
+// exactly the values of the two separate calls, on both sides of the transition.
+TEST(LoadingStiffness, ForceAndStiffnessAtOnceAreTheSeparateValues) {
+  for (const double poisson : {0.0, 0.3, 0.45})
+    for (const double yield_strain : {1e-3, 5e-3, 1e-2}) {
+      const SphereFlatContact sphere{5e-3, 1.1e11, yield_strain * 1.1e11, poisson};
+      const JacksonGreenContact jackson_green(sphere);
+      const GhaedniaContact ghaednia({sphere.radius, 2.1e11 / (1 - poisson * poisson),
+                                      sphere.yield_strength, poisson},
+                                     2.1e11, 0.02 * 2.1e11);
+      const double critical = jackson_green.critical_interference();
+      for (const ElasticPlasticContact* law :
+           {static_cast<const ElasticPlasticContact*>(&jackson_green),
+            static_cast<const ElasticPlasticContact*>(&ghaednia)})
+        for (const double ratio : {0.2, 1.0, 1.85, 1.9, 1.95, 3.0, 10.0, 100.0, 1e3}) {
+          const double x = ratio * critical;
+          const auto [force, stiffness] = law->loading_force_and_stiffness(x);
+          EXPECT_EQ(force, law->loading_force(x)) << "x = " << x;
+          EXPECT_EQ(stiffness, law->loading_stiffness(x)) << "x = " << x;
+        }
     }
 }
 

@@ -5,6 +5,8 @@
 // yield strains 1e-4 .. 2e-2, interferences 1.9 omega_c .. min(1e6 omega_c, R / 5).
 
 #include "impact_reduced/ghaednia.hpp"
+#include "impact_reduced/hertz_contact.hpp"
+#include "impact_reduced/thornton.hpp"
 #include "impact_reduced/sphere_flat_fits.hpp"
 #include "octave_work_table.hpp"
 
@@ -105,6 +107,79 @@ TEST(OctaveWorkTable, ConcurrentUseGivesTheSameWork) {
   a.join();
   b.join();
   EXPECT_EQ(first, second);
+}
+
+// W(x_max) - W(x_max - d) of the laws (their series' differences term by term, closed forms:
+// Jackson-Green, Ghaednia, Thornton, Hertz)
+// against the base class's quadrature, the former implementation (30-point Gauss-Legendre on
+// [x_max - d, x_max] split at the breakpoints, differences of W beyond d = x_max / 2), for d
+// from 1e-14 x_max to x_max, x_max on both sides of the transition.
+template <class Law>
+double worst_work_below(const Law& law, double transition) {
+  double worst = 0;
+  for (const double ratio : {0.3, 0.99, 1.0001, 1.3, 2.0, 2.0001, 7.7, 100.0, 3e3})
+    for (double fraction = 1e-14; fraction <= 1.0; fraction *= 3.7) {
+      const double x_max = ratio * transition;
+      for (const double d : {fraction * x_max, std::min(x_max, std::abs(x_max - transition) * 1.01)}) {
+        const double reference = law.ElasticPlasticContact::loading_work_below(x_max, d);
+        worst = std::max(worst, std::abs(law.loading_work_below(x_max, d) - reference) / reference);
+      }
+    }
+  return worst;
+}
+
+TEST(OctaveWorkTable, WorkBelowMatchesTheQuadratureOfTheForce) {
+  double worst = 0;
+  for (const auto& contact : contacts()) {
+    const JacksonGreenContact jackson_green(contact);
+    worst = std::max(worst, worst_work_below(jackson_green, 1.9 * jackson_green.critical_interference()));
+    const double youngs = 2.1e11;
+    const GhaedniaContact ghaednia({contact.radius,
+                                    youngs / (1 - contact.poisson_ratio * contact.poisson_ratio),
+                                    contact.yield_strength, contact.poisson_ratio},
+                                   youngs, 0.02 * youngs);
+    worst = std::max(worst, worst_work_below(ghaednia, ghaednia.transition_approach()));
+    const ThorntonContact thornton(contact.radius, contact.contact_modulus,
+                                   1.6 * contact.yield_strength);
+    worst = std::max(worst, worst_work_below(thornton, thornton.yield_approach()));
+    const HertzContact hertz(thornton.hertz_stiffness());
+    worst = std::max(worst, worst_work_below(hertz, thornton.yield_approach()));
+  }
+  std::printf("worst relative difference: %.2e\n", worst);
+  EXPECT_LE(worst, 4e-15);
+}
+
+// F at a given work from the series of F x (what the time integrals use), and F with dF/dx
+// (what the force peak's search uses), against the fit's formulas at the inverse.
+TEST(OctaveWorkTable, ForceAtWorkMatchesTheFitAtTheInverse) {
+  double worst = 0, worst_pair = 0, worst_slope = 0;
+  for (const auto& contact : contacts()) {
+    const JacksonGreenContact jackson_green(contact);
+    const double youngs = 2.1e11;
+    const GhaedniaContact ghaednia({contact.radius,
+                                    youngs / (1 - contact.poisson_ratio * contact.poisson_ratio),
+                                    contact.yield_strength, contact.poisson_ratio},
+                                   youngs, 0.02 * youngs);
+    for (const double w : ratios())
+      for (const ElasticPlasticContact* law :
+           {static_cast<const ElasticPlasticContact*>(&jackson_green),
+            static_cast<const ElasticPlasticContact*>(&ghaednia)}) {
+        const double x = w * jackson_green.critical_interference();
+        if (x > 0.2 * contact.radius) break;
+        const double work = law->loading_work(x);
+        const double reference = law->loading_force(law->loading_approach(work));
+        worst = std::max(worst, std::abs(law->loading_force_at_work(work) - reference) / reference);
+        const double slope = law->loading_stiffness(law->loading_approach(work));
+        const auto [pair_force, pair_slope] = law->loading_force_and_stiffness_at_work(work);
+        worst_pair = std::max(worst_pair, std::abs(pair_force - reference) / reference);
+        worst_slope = std::max(worst_slope, std::abs(pair_slope - slope) / std::abs(slope));
+      }
+  }
+  std::printf("worst relative difference: F %.2e, (F, dF/dx) %.2e, %.2e\n", worst, worst_pair,
+              worst_slope);
+  EXPECT_LE(worst, 3e-15);
+  EXPECT_LE(worst_pair, 3e-15);
+  EXPECT_LE(worst_slope, 2e-13);
 }
 
 TEST(OctaveWorkTable, PowerLawWorkIsExact) {

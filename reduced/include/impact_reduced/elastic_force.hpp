@@ -3,6 +3,8 @@
 /// The elastic part f(x) of a Hunt-Crossley contact law F = f(x) (1 + b dx/dt).
 
 #include <functional>
+#include <optional>
+#include <utility>
 #include <vector>
 
 namespace impact::reduced {
@@ -10,6 +12,12 @@ namespace impact::reduced {
 /// An increasing elastic force f(x) [N] of the approach x [m], f(0) = 0, with its
 /// potential P(x) = integral_0^x f [J]. The impact formulas work with P, so a law is
 /// fully described by f, P and the slope f' (used only to locate the force maximum).
+/// The coefficients of a power law f(x) = c x^n: stiffness c [N/m^n], exponent n > 0.
+struct PowerLawCoefficients {
+  double stiffness;
+  double exponent;
+};
+
 class ElasticForce {
 public:
   virtual ~ElasticForce() = default;
@@ -19,11 +27,31 @@ public:
   virtual double potential(double approach) const = 0;
   /// f'(x) [N/m] for x > 0.
   virtual double slope(double approach) const = 0;
+  /// {force(x), slope(x)} at once, the same values (the force peak's search needs both).
+  virtual std::pair<double, double> force_and_slope(double approach) const {
+    return {force(approach), slope(approach)};
+  }
   /// The approach x >= 0 with P(x) = potential (potential >= 0). The default solves
   /// P(x) = potential by bracketing and TOMS 748 to full double precision.
   virtual double approach_at_potential(double potential) const;
+  /// f at the approach where P = potential: f(approach_at_potential(potential)) by default.
+  /// The time integrals need only this pair; a law that tabulates P may return f from its
+  /// table (to the table's accuracy) instead of evaluating f again.
+  virtual double force_at_potential(double potential) const {
+    return force(approach_at_potential(potential));
+  }
+  /// {f, f'} at the approach where P = potential (the force peak's search needs only these):
+  /// force_and_slope(approach_at_potential(potential)) by default; a law that tabulates P may
+  /// return them from its table.
+  virtual std::pair<double, double> force_and_slope_at_potential(double potential) const {
+    return force_and_slope(approach_at_potential(potential));
+  }
   /// Approaches where f or its slope jumps: the time integrals split there. Default: none.
   virtual std::vector<double> breakpoints() const { return {}; }
+  /// If f is exactly a power law c x^n from x = 0 to its first breakpoint: its coefficients
+  /// (the time integrals then take the power law's Gauss-Jacobi rule on that piece). Default:
+  /// none.
+  virtual std::optional<PowerLawCoefficients> initial_power_law() const { return std::nullopt; }
 };
 
 /// The power law f(x) = c x^n (Hertz: n = 3/2), the fast path: P and its inverse are

@@ -14,18 +14,24 @@
 /// Model: m x'' = -F(x), x(0) = 0, x'(0) = V > 0. With no rate dependence the impact follows
 /// from energy: x_max from W_L(x_max) = m V^2 / 2 (W_L the loading work), the rebound speed
 /// from the energy stored in the unloading branch, (2/5) F_max (x_max - x_r) = m V_out^2 / 2,
-/// and the times from t = integral dx / |x'| over each phase, evaluated by tanh-sinh
-/// quadrature in a variable that removes the inverse-square-root singularity at x_max, with
-/// the work near x_max integrated locally (Gauss-Legendre) so that it does not cancel.
+/// and the times from t = integral dx / |x'| over each phase: the loading piece from x = 0 by
+/// Hertz's incomplete Beta function where the law is a power law there (loading_power_law;
+/// else tanh-sinh), the pieces above it by adaptive Gauss-Kronrod in sigma, x = x_max
+/// exp(-sigma^2), which removes the inverse-square-root singularity at x_max, with the work
+/// near x_max from the law's loading_work_below (closed forms, the fits' series differenced
+/// term by term, or local Gauss-Legendre) so that it does not cancel.
 ///
 /// Accuracy (measured, tests/reduced/test_elastic_plastic_impact.cpp, against Thornton's
 /// closed forms and an independent long-double Runge-Kutta-Fehlberg 7(8) integration):
 /// restitution, x_max, F_max, x_r within 1e-13 relative; compression and contact time
 /// within 1e-12.
 
+#include "impact_reduced/elastic_force.hpp"
 #include "impact_reduced/impact_ode.hpp"
 
 #include <cstddef>
+#include <optional>
+#include <utility>
 #include <vector>
 
 namespace impact::reduced {
@@ -35,6 +41,12 @@ struct HertzianUnloading {
   double stiffness;         ///< k_u = (4/3) E* sqrt(R_u) [N/m^1.5], R_u the unloading radius
   double residual_approach; ///< x_r [m], the permanent approach after the impact
 };
+
+namespace detail {
+/// (2/5) c (x^(5/2) - (x - d)^(5/2)), the work of the Hertz force c x^(3/2) between x - d and
+/// x (0 <= d <= x), without cancellation for small d.
+double hertz_work_below(double stiffness, double approach, double distance);
+} // namespace detail
 
 /// An elastic-plastic contact law. Approach x in m, forces in N, work in J.
 class ElasticPlasticContact {
@@ -47,10 +59,35 @@ public:
   /// Loading stiffness dF_L/dx [N/m] for x > 0 (the right derivative at a breakpoint): the
   /// slope that locates the force peak of a damped impact and scales Kuwabara-Kono damping.
   virtual double loading_stiffness(double approach) const = 0;
+  /// {loading_force(x), loading_stiffness(x)} at once, the same values (the Kuwabara-Kono
+  /// law needs both at every evaluation; the fitted laws share their terms).
+  virtual std::pair<double, double> loading_force_and_stiffness(double approach) const {
+    return {loading_force(approach), loading_stiffness(approach)};
+  }
   /// The approach x >= 0 with W_L(x) = work (work >= 0). The default brackets the root from
   /// the Hertz-like guess and solves by TOMS 748 to full double precision; laws with an
   /// inverse in closed form override it.
   virtual double loading_approach(double work) const;
+  /// F_L at the approach where W_L = work: loading_force(loading_approach(work)) by default;
+  /// laws that tabulate W_L return it from the table (the time integrals of
+  /// hunt_crossley_elastic_plastic.hpp need only this pair).
+  virtual double loading_force_at_work(double work) const {
+    return loading_force(loading_approach(work));
+  }
+  /// {F_L, dF_L/dx} at the approach where W_L = work: loading_force_and_stiffness of
+  /// loading_approach by default; laws that tabulate W_L return them from the table.
+  virtual std::pair<double, double> loading_force_and_stiffness_at_work(double work) const {
+    return loading_force_and_stiffness(loading_approach(work));
+  }
+  /// The loading work between x_max - d and x_max [J], integral of F_L, for 0 <= d <= x_max,
+  /// without cancellation for small d (the time integrals need it where d << x_max). The
+  /// default integrates F_L by 30-point Gauss-Legendre on [x_max - d, x_max] split at the
+  /// breakpoints for d <= x_max / 2, and subtracts loading_work beyond; laws override it
+  /// with their closed forms or tables.
+  virtual double loading_work_below(double approach_max, double distance) const;
+  /// If F_L is exactly a power law c x^n from x = 0 to its first breakpoint (Hertz's below
+  /// yield): its coefficients, for the damped impact's time integrals. Default: none.
+  virtual std::optional<PowerLawCoefficients> loading_power_law() const { return std::nullopt; }
   /// Approaches where F_L or its slope jumps (the quadratures split there). Default: none.
   virtual std::vector<double> loading_breakpoints() const { return {}; }
   /// The unloading branch from the maximum approach x_max > 0.
@@ -91,8 +128,8 @@ std::vector<ImpactSample> elastic_plastic_impact_loop(double mass, double veloci
                                                       std::size_t points_per_phase);
 
 /// The work of the loading curve between x_max - d and x_max, integral of F_L [J], evaluated
-/// without cancellation for small d (0 <= d <= x_max). Used by the time integrals; exposed
-/// for tests.
+/// without cancellation for small d (0 <= d <= x_max; 0 for d <= 0): the law's
+/// ElasticPlasticContact::loading_work_below. Used by the time integrals; exposed for tests.
 double loading_work_below(const ElasticPlasticContact& contact, double approach_max,
                           double distance);
 

@@ -97,6 +97,7 @@
 #include "impact_reduced/sphere_flat_fits.hpp"
 
 #include <memory>
+#include <utility>
 #include <vector>
 
 namespace impact::reduced {
@@ -121,9 +122,21 @@ public:
   double loading_work(double approach) const override;
   /// The inverse of loading_work: Hertz's in closed form, then Newton on the octave's series.
   double loading_approach(double work) const override;
+  /// As JacksonGreenContact's: F from the octave's series above the transition.
+  double loading_force_at_work(double work) const override;
+  /// Likewise F and dF/dx from the series.
+  std::pair<double, double> loading_force_and_stiffness_at_work(double work) const override;
+  /// W(x_max) - W(x_max - d) without cancellation for small d (as JacksonGreenContact's).
+  double loading_work_below(double approach_max, double distance) const override;
   /// dF/dx [N/m], analytic; the fit's (right) slope at x = 1.9 delta_c.
   double loading_stiffness(double approach) const override;
+  /// Both from one evaluation of the fit (the same values as the two calls).
+  std::pair<double, double> loading_force_and_stiffness(double approach) const override;
   std::vector<double> loading_breakpoints() const override { return {transition_}; }
+  /// Hertz's up to 1.9 delta_c.
+  std::optional<PowerLawCoefficients> loading_power_law() const override {
+    return PowerLawCoefficients{hertz_coefficient_, 1.5};
+  }
   /// The radius-preserving Hertzian unloading from x_max > 0 ("approach_max").
   HertzianUnloading unloading(double approach_max) const override;
 
@@ -144,6 +157,7 @@ private:
   struct FitPoint;
   FitPoint fit(double approach) const;
   double fit_force(double approach) const; // Eq. 30 above the transition
+  double fit_slope(double approach, const FitPoint& point) const; // its dF/dx
 
   SphereFlatContact contact_;
   double c_;                     // C(nu)

@@ -17,6 +17,15 @@ public:
   double loading_force(double approach) const override;
   double loading_work(double approach) const override;
   double loading_stiffness(double approach) const override;
+  /// Both with one square root (the same values as the two calls).
+  std::pair<double, double> loading_force_and_stiffness(double approach) const override;
+  /// In closed form: (5 W / (2 c))^(2/5).
+  double loading_approach(double work) const override;
+  /// In closed form, without cancellation for small d.
+  double loading_work_below(double approach_max, double distance) const override;
+  std::optional<PowerLawCoefficients> loading_power_law() const override {
+    return PowerLawCoefficients{stiffness_, 1.5};
+  }
   /// The loading branch itself: stiffness c, residual approach 0.
   HertzianUnloading unloading(double approach_max) const override;
 

@@ -8,7 +8,12 @@
 ///     ln(1 + b v) - b v = ln(1 + beta) - beta + (b^2/m) P(x),
 /// solved with Lambert W through a formulation that stays exact at the branch point
 /// (x -> x_max, beta -> 0) and continuous at b = 0 (Hertz). Times are integrals over the
-/// approach rate, evaluated by tanh-sinh quadrature, so there is no ODE and no step size.
+/// approach rate, so there is no ODE and no step size: for the power law by Gauss-Jacobi
+/// (beta <= 1) or tanh-sinh; for a custom law the piece from the singular end by tanh-sinh
+/// (by the power law's Gauss-Jacobi rule if the law is one there, initial_power_law), the
+/// pieces between its breakpoints by adaptive Gauss-Kronrod in ln u (estimate 1e-12), and
+/// the compression split at the force peak, so that the peak's time and the compression time
+/// share one integral.
 
 #include "impact_reduced/elastic_force.hpp"
 #include "impact_reduced/impact_figures.hpp"
@@ -16,6 +21,7 @@
 #include <cstddef>
 #include <memory>
 #include <optional>
+#include <utility>
 #include <vector>
 
 namespace impact::reduced {
@@ -71,8 +77,9 @@ struct ImpactResponse {
 /// time_force_max 1e-13 and compression_time, contact_time 1e-12 (beta <= 1e3);
 /// approach_rate(x) 1e-12 on both branches, also within 1e-10 x_max of x_max (the power law
 /// evaluates the energy balance in quadruple precision there). A custom elastic law is as
-/// accurate as its callables, except approach_rate close to x_max, where the cancellation
-/// in P(x_max) - P(x) limits it to about 1e-16 x_max / (x_max - x).
+/// accurate as its callables (its times to 1e-12 or better: tests/reduced/
+/// test_hunt_crossley_elastic_plastic.cpp finds 1.5e-15), except approach_rate close to x_max,
+/// where the cancellation in P(x_max) - P(x) limits it to about 1e-16 x_max / (x_max - x).
 class HuntCrossleyImpact {
 public:
   /// Power law f = c x^n: mass m > 0 [kg], stiffness c > 0 [N/m^n], exponent n > 0,
@@ -115,6 +122,10 @@ public:
   /// phase: the inverse of the history's approach, integrated from the nearer singular end
   /// of the phase (same accuracy as compression_time). Throws InvalidInput for x outside.
   double time_at_approach(double approach, ImpactPhase phase) const;
+  /// force_peak() and compression_time() at once, with the same values: one peak search, and
+  /// for a custom law with damping the compression integral continued from the peak (as
+  /// compression_time() integrates it) instead of integrated again from first contact.
+  std::pair<ImpactState, double> force_peak_and_compression_time() const;
   /// Everything at once (one peak search, two integrals).
   ImpactResponse response() const;
 
@@ -171,10 +182,19 @@ private:
   double compression_time_density(double distance_from_impact_velocity) const;
   double restitution_time_density(double distance_from_separation) const;
   double compression_time_until(double distance_from_impact_velocity) const;
+  // The distance u of the force peak (b > 0), and whether the compression time of this law
+  // is integrated in two parts split there (custom laws with b > 0).
+  double peak_distance() const;
+  bool splits_compression_at_peak() const { return !power_law_ && damping_ > 0; }
+  double compression_time_from(double distance_from_impact_velocity) const;
   double restitution_time_from(double distance_from_rebound_velocity) const;
   // Power-law fast path: dt/du = K u^-alpha g(u) with g smooth, integrated by Gauss-Jacobi.
   bool uses_singular_rule() const;
-  double singular_rule_time(ImpactPhase phase, double distance) const;
+  double singular_rule_time(ImpactPhase phase, double distance,
+                            const PowerLawCoefficients& law) const;
+  // A custom law that is a power law below its first breakpoint (initial_power_law): the
+  // same rule on the first piece of each phase, for beta <= 1.
+  bool uses_initial_rule() const;
   ImpactState compression_state(double time, double distance) const;
   ImpactState restitution_state(double time, double distance) const;
   // The power law's linear-time history (see history()). Each phase is measured by a
@@ -210,6 +230,7 @@ private:
   // the time integrals split there, where the density jumps or kinks.
   std::vector<double> compression_breaks_;
   std::vector<double> restitution_breaks_;
+  std::optional<PowerLawCoefficients> initial_power_law_; // custom laws only
 };
 
 } // namespace impact::reduced

@@ -27,8 +27,10 @@
 ///     The phase is the restitution phase of a Hunt-Crossley impact on F_U in the shifted
 ///     approach x - x_r at the velocity that stores the same energy,
 ///     V_U = u q(-b u) (the lower branch W_-1).
-/// The times are those phases' integrals (tanh-sinh / Gauss-Jacobi quadrature in the
-/// approach rate), the history their inversion. There is no ODE and no step size.
+/// The times are those phases' integrals in the approach rate (HuntCrossleyImpact's
+/// quadratures: Gauss-Jacobi on the spring's Hertz piece, Gauss-Kronrod above it, the
+/// compression split at the force peak), the history their inversion. There is no ODE and no
+/// step size.
 ///
 /// Edge cases: where the unloading branch would release more energy than the loading
 /// absorbed (x_r < 0 on a fitted loading curve just above Hertz, E > W_L(x_max)), the spring

@@ -18,9 +18,10 @@
 /// There is no closed form: the impact m x'' = -F, x(0) = 0, x'(0) = V is integrated by
 /// integrate_impact (impact_ode.hpp) with the contact ending where F returns to 0
 /// (ContactEnd::zero_force: a contact cannot pull; the approach at separation is then
-/// above x_r). The unloading branch depends on x_max, so the impact is integrated twice:
-/// the compression alone (on the loading branch) gives x_max, the whole impact with the
-/// branch switched at x' = 0 (an event the integrator locates exactly) gives the rest.
+/// above x_r). The unloading branch depends on x_max: the impact is integrated once, on the
+/// loading branch until the step in which x' = 0 (an event the integrator locates exactly),
+/// where the branch of that x_max takes over and the step is re-taken from its start with
+/// it, which is the integration of the switched law from t = 0.
 ///
 /// Accuracy (tests/reduced/test_kuwabara_kono_elastic_plastic.cpp, against an independent
 /// long-double Runge-Kutta-Fehlberg 7(8) integration with exact event location, Hertz and

@@ -128,9 +128,22 @@ public:
   /// tests/reduced/test_octave_work_table.cpp).
   double loading_work(double approach) const override;
   double loading_stiffness(double approach) const override;
+  /// Both from one evaluation of the fit's terms (the same values as the two calls).
+  std::pair<double, double> loading_force_and_stiffness(double approach) const override;
   /// Hertz's inverse below the transition; above it Newton's method on the octave's series.
   double loading_approach(double work) const override;
+  /// Hertz's in closed form; above the transition F from the octave's series of F x at the
+  /// inverse (within 3e-15 of the fit's, tests/reduced/test_octave_work_table.cpp).
+  double loading_force_at_work(double work) const override;
+  /// Likewise F and dF/dx (the latter within 1.5e-13 of the fit's, measured; the peak's
+  /// search only locates the root with it, F_max is the fit's force there).
+  std::pair<double, double> loading_force_and_stiffness_at_work(double work) const override;
+  /// Hertz's difference in closed form (expm1, log1p), the series' differences term by term
+  /// above the transition: the loading work's accuracy also for d << x_max.
+  double loading_work_below(double approach_max, double distance) const override;
   std::vector<double> loading_breakpoints() const override { return {transition_}; }
+  /// Hertz's (4/3) E* sqrt(R) x^(3/2) up to the transition.
+  std::optional<PowerLawCoefficients> loading_power_law() const override;
   HertzianUnloading unloading(double approach_max) const override;
   double critical_interference() const { return critical_interference_; }
 
@@ -140,6 +153,9 @@ private:
   double critical_interference_;
   double transition_;                                         // 1.9 omega_c
   double transition_work_;                                    // Hertz work up to the transition
+  double critical_load_;                                      // P_c
+  double c_;                                                  // C(nu)
+  double b_;                                                  // B(Y / E*)
   std::shared_ptr<const detail::OctaveWorkTable> work_table_; // the work above the transition
   double fit_force(double approach) const; // the fit's force above the transition
 };

@@ -52,9 +52,17 @@ public:
   double loading_force(double approach) const override;
   double loading_work(double approach) const override;
   double loading_stiffness(double approach) const override;
+  /// Both at once (the same values as the two calls).
+  std::pair<double, double> loading_force_and_stiffness(double approach) const override;
   /// In closed form: Hertz's inverse below W_L(x_y), the root of the quadratic above.
   double loading_approach(double work) const override;
+  /// In closed form, without cancellation for small d.
+  double loading_work_below(double approach_max, double distance) const override;
   std::vector<double> loading_breakpoints() const override { return {yield_approach_}; }
+  /// Hertz's up to the yield approach.
+  std::optional<PowerLawCoefficients> loading_power_law() const override {
+    return PowerLawCoefficients{hertz_stiffness_, 1.5};
+  }
   HertzianUnloading unloading(double approach_max) const override;
 
   double yield_approach() const { return yield_approach_; }
