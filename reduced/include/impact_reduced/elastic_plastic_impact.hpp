@@ -21,8 +21,9 @@
 /// near x_max from the law's loading_work_below (closed forms, the fits' series differenced
 /// term by term, or local Gauss-Legendre) so that it does not cancel.
 ///
-/// Accuracy (measured, tests/reduced/test_elastic_plastic_impact.cpp, against Thornton's
-/// closed forms and an independent long-double Runge-Kutta-Fehlberg 7(8) integration):
+/// Accuracy (measured in tests/reduced/test_thornton.cpp, test_sphere_flat_fits.cpp and
+/// test_ghaednia.cpp against Thornton's closed forms and an independent long-double
+/// Runge-Kutta-Fehlberg 7(8) integration, tests/reduced/plastic_impact_reference.hpp):
 /// restitution, x_max, F_max, x_r within 1e-13 relative; compression and contact time
 /// within 1e-12.
 

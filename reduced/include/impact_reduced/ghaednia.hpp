@@ -89,8 +89,8 @@
 /// a = 2.25 R there). F increases up to x = R for every E_t tested.
 ///
 /// Accuracy: F, a and dF/dx within 1e-15 relative of the formulas (against mpmath and a
-/// long-double re-writing); the loading work (Hertz in closed form, then composite
-/// 30-point Gauss-Legendre on pieces [x, 2x)) within 5e-16 relative of 50-digit tanh-sinh.
+/// long-double re-writing); the loading work (Hertz in closed form, then a Chebyshev series
+/// in ln x per octave) within 5e-16 relative of 50-digit tanh-sinh.
 /// All in SI units.
 
 #include "impact_reduced/elastic_plastic_impact.hpp"

@@ -53,7 +53,8 @@
 /// All functions: SI units; InvalidInput naming the parameter for non-positive radius,
 /// modulus, strength, negative or non-finite interference, Poisson ratio outside (-1, 0.5).
 /// Accuracy: a few ulps for the closed forms; the loading work of the Jackson-Green fit
-/// (composite Gauss-Legendre) to about 1e-15 relative.
+/// (a Chebyshev series in ln x per octave, JacksonGreenContact::loading_work) to about 1e-15
+/// relative.
 
 #include "impact_reduced/elastic_plastic_impact.hpp"
 
