@@ -206,8 +206,9 @@ private:
       // f = c x^n from x = 0 at speed V: t = (x_H / V) / (n + 1) B(z; 1/(n+1), 1/2),
       // z = (x / x_H)^(n+1), x_H the approach at which c x^(n+1) / (n+1) = m V^2 / 2.
       const double n = power_law_->exponent;
-      const double hertz_approach = std::pow(
-          (n + 1) * mass_ * velocity_ * velocity_ / (2 * power_law_->stiffness), 1 / (n + 1));
+      const double hertz_approach =
+          std::pow((n + 1) * mass_ * velocity_ * velocity_ / (2 * power_law_->stiffness),
+                   1 / (n + 1));
       const double z = std::min(1.0, std::pow(approach / hertz_approach, n + 1));
       return hertz_approach / velocity_ / (n + 1) * boost::math::beta(1 / (n + 1), 0.5, z);
     }
@@ -247,7 +248,7 @@ private:
   const ElasticPlasticContact& contact_;
   double approach_max_ = 0;
   double force_max_ = 0;
-  std::vector<double> breaks_; // breakpoints in (0, x_max), ascending
+  std::vector<double> breaks_;                    // breakpoints in (0, x_max), ascending
   std::optional<PowerLawCoefficients> power_law_; // the loading below the first breakpoint
   HertzianUnloading unloading_{};
   double separation_approach_ = 0;

@@ -203,15 +203,8 @@ std::pair<double, double> GhaedniaContact::loading_force_and_stiffness_at_work(d
 }
 
 double GhaedniaContact::loading_work_below(double approach_max, double distance) const {
-  if (!(distance > 0)) return 0.0;
-  const double stiffness = hertz_coefficient_;
-  if (approach_max <= transition_)
-    return detail::hertz_work_below(stiffness, approach_max, distance);
-  const auto force = [this](double x) { return fit_force(x); };
-  const double above = approach_max - transition_; // the part of d above the transition
-  if (distance <= above) return work_table_->work_below(approach_max, distance, force);
-  return work_table_->work_below(approach_max, above, force) +
-         detail::hertz_work_below(stiffness, transition_, distance - above);
+  return work_table_->work_below_over_hertz(hertz_coefficient_, approach_max, distance,
+                                            [this](double x) { return fit_force(x); });
 }
 
 HertzianUnloading GhaedniaContact::unloading(double approach_max) const {

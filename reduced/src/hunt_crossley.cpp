@@ -56,12 +56,13 @@ double integrate_smooth_piece(const std::function<double(double)>& density, doub
     // A short piece (from the force peak to x_max at small beta): 15 points usually meet the
     // same estimate; else the 31-point rule as below.
     double error = 0;
-    const double quick = boost::math::quadrature::gauss_kronrod<double, 15>::integrate(
-        integrand, from, to, 0, 0.0, &error);
+    const double quick =
+        boost::math::quadrature::gauss_kronrod<double, 15>::integrate(integrand, from, to, 0, 0.0,
+                                                                      &error);
     if (error <= 1e-12 * std::abs(quick)) return quick;
   }
   return boost::math::quadrature::gauss_kronrod<double, 31>::integrate(integrand, from, to, 15,
-                                                                        1e-12);
+                                                                       1e-12);
 }
 
 // The integral over [lower, upper] (lower > 0), split at the ascending `breaks` inside.
@@ -375,8 +376,8 @@ double HuntCrossleyImpact::singular_rule_time(ImpactPhase phase, double distance
   const double alpha = exponent / (exponent + 1);
   // A custom law's first piece no longer than a quarter of its phase: the shorter rule.
   const double extent = phase == ImpactPhase::compression ? velocity_ : restitution_span();
-  const int points = !power_law_ && distance <= 0.25 * extent ? short_piece_rule_points
-                                                              : singular_rule_points;
+  const int points =
+      !power_law_ && distance <= 0.25 * extent ? short_piece_rule_points : singular_rule_points;
   const auto& rule = detail::gauss_jacobi_rule(points, alpha);
   const bool compressing = phase == ImpactPhase::compression;
   double sum = 0.0;
@@ -402,9 +403,8 @@ double HuntCrossleyImpact::compression_time_until(double distance) const {
                               {power_law_->stiffness(), power_law_->exponent()});
   const auto density = [this](double u) { return compression_time_density(u); };
   if (uses_initial_rule()) {
-    const double first = std::min(distance, compression_breaks_.empty()
-                                                ? distance
-                                                : compression_breaks_.front());
+    const double first =
+        std::min(distance, compression_breaks_.empty() ? distance : compression_breaks_.front());
     return singular_rule_time(ImpactPhase::compression, first, *initial_power_law_) +
            integrate_between(density, first, distance, compression_breaks_);
   }
@@ -417,9 +417,8 @@ double HuntCrossleyImpact::restitution_time_from(double distance) const {
                               {power_law_->stiffness(), power_law_->exponent()});
   const auto density = [this](double u) { return restitution_time_density(u); };
   if (uses_initial_rule()) {
-    const double first = std::min(distance, restitution_breaks_.empty()
-                                                ? distance
-                                                : restitution_breaks_.front());
+    const double first =
+        std::min(distance, restitution_breaks_.empty() ? distance : restitution_breaks_.front());
     return singular_rule_time(ImpactPhase::restitution, first, *initial_power_law_) +
            integrate_between(density, first, distance, restitution_breaks_);
   }
@@ -509,8 +508,9 @@ double HuntCrossleyImpact::peak_distance() const {
       throw std::runtime_error("the force peak could not be bracketed");
     at_lower = condition(lower);
   }
-  const auto [low, high] = boost::math::tools::toms748_solve(
-      condition, lower, velocity_, at_lower, condition(velocity_), tolerance, iterations);
+  const auto [low, high] =
+      boost::math::tools::toms748_solve(condition, lower, velocity_, at_lower, condition(velocity_),
+                                        tolerance, iterations);
   return 0.5 * (low + high);
 }
 

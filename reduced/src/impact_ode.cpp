@@ -292,17 +292,14 @@ namespace impact::reduced::detail {
 
 OdeImpactResult integrate_switched_impact(double mass, double velocity,
                                           const ContactForceLaw& loading,
-                                          const LawAtMaximum& at_maximum,
-                                          double relative_tolerance, ContactEnd end) {
+                                          const LawAtMaximum& at_maximum, double relative_tolerance,
+                                          ContactEnd end) {
   return ImpactIntegration(mass, velocity, loading, relative_tolerance, end, at_maximum).result();
 }
 
-std::vector<ImpactSample> integrate_switched_impact_history(double mass, double velocity,
-                                                            const ContactForceLaw& loading,
-                                                            const LawAtMaximum& at_maximum,
-                                                            std::size_t points,
-                                                            double relative_tolerance,
-                                                            ContactEnd end) {
+std::vector<ImpactSample> integrate_switched_impact_history(
+    double mass, double velocity, const ContactForceLaw& loading, const LawAtMaximum& at_maximum,
+    std::size_t points, double relative_tolerance, ContactEnd end) {
   if (points < 2)
     throw InvalidInput("points",
                        "points must be a whole number >= 2 (got " + std::to_string(points) + ")");

@@ -85,10 +85,11 @@ std::vector<ImpactSample> kuwabara_kono_elastic_plastic_history(double mass, dou
                                                                 std::size_t points,
                                                                 double relative_tolerance) {
   validate(mass, velocity, dissipative_constant);
-  return detail::integrate_switched_impact_history(
-      mass, velocity, loading_law(spring, dissipative_constant),
-      unloading_law(spring, dissipative_constant), points, relative_tolerance,
-      ContactEnd::zero_force);
+  return detail::integrate_switched_impact_history(mass, velocity,
+                                                   loading_law(spring, dissipative_constant),
+                                                   unloading_law(spring, dissipative_constant),
+                                                   points, relative_tolerance,
+                                                   ContactEnd::zero_force);
 }
 
 } // namespace impact::reduced

@@ -1,5 +1,7 @@
 #include "octave_work_table.hpp"
 
+#include "impact_reduced/elastic_plastic_impact.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -43,7 +45,7 @@ double chebyshev_difference(const double* coefficients, std::size_t n, double a,
                             double gap) {
   if (n < 2 || gap == 0) return 0.0;
   double previous_difference = 0, difference = gap; // D_0, D_1
-  double previous_value = 1, value = b;              // T_0(b), T_1(b)
+  double previous_value = 1, value = b;             // T_0(b), T_1(b)
   double sum = coefficients[1] * difference;
   for (std::size_t m = 1; m + 1 < n; ++m) {
     const double next_difference = 2 * a * difference + 2 * gap * value - previous_difference;
@@ -74,8 +76,8 @@ OctavePoint evaluate_octave(const Piece& piece, double t) {
   double work = piece.integral[0] + piece.integral[1] * t;
   double density = piece.density[0] + piece.density[1] * t;
   double density_slope = piece.density[1];
-  double previous = 1, current = t;             // T_(k-1), T_k for k = 1
-  double previous_u = 1, current_u = 2 * t;     // U_(k-2), U_(k-1) for k = 2
+  double previous = 1, current = t;         // T_(k-1), T_k for k = 1
+  double previous_u = 1, current_u = 2 * t; // U_(k-2), U_(k-1) for k = 2
   for (std::size_t k = 2; k <= n; ++k) {
     const double next = 2 * t * current - previous; // T_k
     previous = current;
@@ -243,8 +245,7 @@ double OctaveWorkTable::work(double approach, const Force& force) const {
   return piece.work_start + chebyshev_sum(piece.integral.data(), piece.size + 1, t);
 }
 
-OctaveWorkTable::Located OctaveWorkTable::locate_work(
-    double work, const Force& force) const {
+OctaveWorkTable::Located OctaveWorkTable::locate_work(double work, const Force& force) const {
   // The octave whose works bracket the target: built up to it, then a binary search.
   std::size_t count = built_.load(std::memory_order_acquire);
   while (count == 0 || published_[count - 1].load(std::memory_order_acquire)->work_end < work) {
@@ -266,8 +267,9 @@ OctaveWorkTable::Located OctaveWorkTable::locate_work(
       std::clamp(target / (piece.work_end - piece.work_start), 0.0, 1.0) * inverse_parts;
   const std::size_t part = std::min(static_cast<std::size_t>(scaled), inverse_parts - 1);
   const double normalised = 2 * (scaled - static_cast<double>(part)) - 1;
-  const auto [t, density] = solve_octave(
-      piece, target, chebyshev_sum(piece.inverse[part].data(), inverse_size, normalised));
+  const auto [t, density] =
+      solve_octave(piece, target,
+                   chebyshev_sum(piece.inverse[part].data(), inverse_size, normalised));
   return {&piece, t, density};
 }
 
@@ -286,7 +288,7 @@ double OctaveWorkTable::force_at_work(double work, const Force& force) const {
 }
 
 std::pair<double, double> OctaveWorkTable::force_and_slope_at_work(double work,
-                                                                  const Force& force) const {
+                                                                   const Force& force) const {
   const Located found = locate_work(std::max(work, start_work_), force);
   const double t = found.t;
   const OctavePoint point = evaluate_octave(*found.piece, t);
@@ -298,8 +300,7 @@ std::pair<double, double> OctaveWorkTable::force_and_slope_at_work(double work,
   return {force_value, slope};
 }
 
-double OctaveWorkTable::work_below(double approach_max, double distance,
-                                   const Force& force) const {
+double OctaveWorkTable::work_below(double approach_max, double distance, const Force& force) const {
   if (!(distance > 0)) return 0.0;
   const double approach = approach_max - distance;
   const Octave& top = octave_of(approach_max, force);
@@ -309,22 +310,32 @@ double OctaveWorkTable::work_below(double approach_max, double distance,
   };
   const double top_t = position(top, approach_max);
   if (&top == &bottom) // t(x_max) - t(x) = (2 / ln 2) ln(x_max / x)
-    return chebyshev_difference(top.integral.data(), top.size + 1, top_t,
-                                position(top, approach),
+    return chebyshev_difference(top.integral.data(), top.size + 1, top_t, position(top, approach),
                                 -two_over_log_two * std::log1p(-distance / approach_max));
   // From x to the end of its octave, the octaves between, and from the start of x_max's.
   const double bottom_end = 2 * bottom.lower;
   const double bottom_gap = distance - (approach_max - bottom_end); // 2 lower - x
-  double work = chebyshev_difference(bottom.integral.data(), bottom.size + 1, 1.0,
-                                     position(bottom, approach),
-                                     two_over_log_two * std::log1p(bottom_gap / approach));
+  double work =
+      chebyshev_difference(bottom.integral.data(), bottom.size + 1, 1.0, position(bottom, approach),
+                           two_over_log_two * std::log1p(bottom_gap / approach));
   for (double lower = bottom_end; lower < top.lower; lower *= 2) {
     const Octave& piece = octave_of(lower, force);
     work += chebyshev_sum(piece.integral.data(), piece.size + 1, 1.0);
   }
-  return work + chebyshev_difference(
-                    top.integral.data(), top.size + 1, top_t, -1.0,
-                    two_over_log_two * std::log1p((approach_max - top.lower) / top.lower));
+  return work + chebyshev_difference(top.integral.data(), top.size + 1, top_t, -1.0,
+                                     two_over_log_two *
+                                         std::log1p((approach_max - top.lower) / top.lower));
+}
+
+double OctaveWorkTable::work_below_over_hertz(double hertz_stiffness, double approach_max,
+                                              double distance, const Force& force) const {
+  if (!(distance > 0)) return 0.0;
+  if (approach_max <= start_approach_)
+    return hertz_work_below(hertz_stiffness, approach_max, distance);
+  const double above = approach_max - start_approach_; // the part of d above x_0
+  if (distance <= above) return work_below(approach_max, distance, force);
+  return work_below(approach_max, above, force) +
+         hertz_work_below(hertz_stiffness, start_approach_, distance - above);
 }
 
 } // namespace impact::reduced::detail

@@ -53,8 +53,13 @@ public:
   /// small d: on each octave the difference of the series is summed term by term,
   /// T_m(a) - T_m(b) by its own recurrence from a - b (formed from d, not from a and b).
   double work_below(double approach_max, double distance, const Force& force) const;
+  /// The same for a law that is Hertz's c x^(3/2) below x_0 (c = `hertz_stiffness`
+  /// [N/m^1.5]) and this table above: any x_max >= 0 and 0 <= d <= x_max, the part of d
+  /// below x_0 by Hertz's closed form (hertz_work_below).
+  double work_below_over_hertz(double hertz_stiffness, double approach_max, double distance,
+                               const Force& force) const;
 
-  static constexpr std::size_t max_degree = 65; // coefficients of the longest series
+  static constexpr std::size_t max_degree = 65;   // coefficients of the longest series
   static constexpr std::size_t inverse_parts = 8; // pieces of the inverse's guess
   static constexpr std::size_t inverse_size = 9;  // coefficients of each piece
   // Octaves x_0 2^k, k < max_octaves: beyond, x_0 2^k overflows for any x_0 >= 1e-300.

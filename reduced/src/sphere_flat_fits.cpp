@@ -52,8 +52,7 @@ double jackson_green_fit(double ratio, const SphereFlatContact& contact, double 
 //   d/dw [(4 H / C) G w] = (4 / C) (H' G w + H G' w + H G),  G = 1 - exp(-w^(5/9) / 25),
 //   G' w = exp(-w^(5/9) / 25) w^(5/9) / 45,  a/R = rho ~ w^((1 + B) / 2),
 //   H' w = -2.84 (0.82 * 0.7) rho^(-0.7) exp(-0.82 rho^(-0.7)) (1 + B) / 2.
-double jackson_green_fit_slope(double ratio, const SphereFlatContact& contact, double c,
-                               double b) {
+double jackson_green_fit_slope(double ratio, const SphereFlatContact& contact, double c, double b) {
   const double yield_strain = contact.yield_strength / contact.contact_modulus;
   const double relative_radius = std::sqrt(ratio) * pi * c * yield_strain / 2 *
                                  std::pow(ratio / jackson_green_transition, b / 2);
@@ -73,8 +72,9 @@ double jackson_green_fit_slope(double ratio, const SphereFlatContact& contact, d
 
 // P / P_c and its slope in omega* at once (omega* > 1.9): the terms of jackson_green_fit and
 // jackson_green_fit_slope evaluated once, each result formed exactly as there.
-std::pair<double, double> jackson_green_fit_and_slope(double ratio, const SphereFlatContact& contact,
-                                                      double c, double b) {
+std::pair<double, double> jackson_green_fit_and_slope(double ratio,
+                                                      const SphereFlatContact& contact, double c,
+                                                      double b) {
   const double yield_strain = contact.yield_strength / contact.contact_modulus;
   const double relative_radius = std::sqrt(ratio) * pi * c * yield_strain / 2 *
                                  std::pow(ratio / jackson_green_transition, b / 2);
@@ -88,13 +88,13 @@ std::pair<double, double> jackson_green_fit_and_slope(double ratio, const Sphere
   const double shape_slope_times_ratio = shape_decay * power / 45;
   const double twelfth = std::pow(ratio, 5.0 / 12.0);
   const double hertz_decay = std::exp(-0.25 * twelfth);
-  const double ratio_power = hertz_decay * std::pow(ratio, 1.5) +
-                             4 * hardness_ratio / c * shape * ratio;
+  const double ratio_power =
+      hertz_decay * std::pow(ratio, 1.5) + 4 * hardness_ratio / c * shape * ratio;
   const double hertz_like = hertz_decay * std::sqrt(ratio) * (1.5 - 5.0 / 48.0 * twelfth);
-  const double slope = hertz_like + 4 / c *
-                                        (hardness_slope_times_ratio * shape +
-                                         hardness_ratio * shape_slope_times_ratio +
-                                         hardness_ratio * shape);
+  const double slope =
+      hertz_like + 4 / c *
+                       (hardness_slope_times_ratio * shape +
+                        hardness_ratio * shape_slope_times_ratio + hardness_ratio * shape);
   return {ratio_power, slope};
 }
 
@@ -225,21 +225,17 @@ double JacksonGreenContact::loading_force_at_work(double work) const {
   return work_table_->force_at_work(work, [this](double x) { return fit_force(x); });
 }
 
-std::pair<double, double> JacksonGreenContact::loading_force_and_stiffness_at_work(double work) const {
+std::pair<double, double> JacksonGreenContact::loading_force_and_stiffness_at_work(
+    double work) const {
   if (!(work > transition_work_)) return loading_force_and_stiffness(loading_approach(work));
   return work_table_->force_and_slope_at_work(work, [this](double x) { return fit_force(x); });
 }
 
 double JacksonGreenContact::loading_work_below(double approach_max, double distance) const {
-  if (!(distance > 0)) return 0.0;
-  const double stiffness = 4.0 / 3.0 * contact_.contact_modulus * std::sqrt(contact_.radius);
-  if (approach_max <= transition_)
-    return detail::hertz_work_below(stiffness, approach_max, distance);
-  const auto force = [this](double x) { return fit_force(x); };
-  const double above = approach_max - transition_; // the part of d above the transition
-  if (distance <= above) return work_table_->work_below(approach_max, distance, force);
-  return work_table_->work_below(approach_max, above, force) +
-         detail::hertz_work_below(stiffness, transition_, distance - above);
+  return work_table_->work_below_over_hertz(4.0 / 3.0 * contact_.contact_modulus *
+                                                std::sqrt(contact_.radius),
+                                            approach_max, distance,
+                                            [this](double x) { return fit_force(x); });
 }
 
 std::optional<PowerLawCoefficients> JacksonGreenContact::loading_power_law() const {

@@ -23,15 +23,12 @@ using LawAtMaximum = std::function<ContactForceLaw(double approach_max)>;
 /// As integrate_impact, the law switched at x_max.
 OdeImpactResult integrate_switched_impact(double mass, double velocity,
                                           const ContactForceLaw& loading,
-                                          const LawAtMaximum& at_maximum,
-                                          double relative_tolerance, ContactEnd end);
+                                          const LawAtMaximum& at_maximum, double relative_tolerance,
+                                          ContactEnd end);
 
 /// As integrate_impact_history, the law switched at x_max.
-std::vector<ImpactSample> integrate_switched_impact_history(double mass, double velocity,
-                                                            const ContactForceLaw& loading,
-                                                            const LawAtMaximum& at_maximum,
-                                                            std::size_t points,
-                                                            double relative_tolerance,
-                                                            ContactEnd end);
+std::vector<ImpactSample> integrate_switched_impact_history(
+    double mass, double velocity, const ContactForceLaw& loading, const LawAtMaximum& at_maximum,
+    std::size_t points, double relative_tolerance, ContactEnd end);
 
 } // namespace impact::reduced::detail

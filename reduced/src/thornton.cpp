@@ -59,7 +59,8 @@ double ThorntonContact::loading_stiffness(double approach) const {
 
 std::pair<double, double> ThorntonContact::loading_force_and_stiffness(double approach) const {
   if (approach < yield_approach_)
-    return {hertz_stiffness_ * std::pow(approach, 1.5), 1.5 * hertz_stiffness_ * std::sqrt(approach)};
+    return {hertz_stiffness_ * std::pow(approach, 1.5),
+            1.5 * hertz_stiffness_ * std::sqrt(approach)};
   return {loading_force(approach), plastic_stiffness_};
 }
 

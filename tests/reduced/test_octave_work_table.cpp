@@ -120,7 +120,8 @@ double worst_work_below(const Law& law, double transition) {
   for (const double ratio : {0.3, 0.99, 1.0001, 1.3, 2.0, 2.0001, 7.7, 100.0, 3e3})
     for (double fraction = 1e-14; fraction <= 1.0; fraction *= 3.7) {
       const double x_max = ratio * transition;
-      for (const double d : {fraction * x_max, std::min(x_max, std::abs(x_max - transition) * 1.01)}) {
+      for (const double d :
+           {fraction * x_max, std::min(x_max, std::abs(x_max - transition) * 1.01)}) {
         const double reference = law.ElasticPlasticContact::loading_work_below(x_max, d);
         worst = std::max(worst, std::abs(law.loading_work_below(x_max, d) - reference) / reference);
       }
@@ -132,7 +133,8 @@ TEST(OctaveWorkTable, WorkBelowMatchesTheQuadratureOfTheForce) {
   double worst = 0;
   for (const auto& contact : contacts()) {
     const JacksonGreenContact jackson_green(contact);
-    worst = std::max(worst, worst_work_below(jackson_green, 1.9 * jackson_green.critical_interference()));
+    worst = std::max(worst,
+                     worst_work_below(jackson_green, 1.9 * jackson_green.critical_interference()));
     const double youngs = 2.1e11;
     const GhaedniaContact ghaednia({contact.radius,
                                     youngs / (1 - contact.poisson_ratio * contact.poisson_ratio),

@@ -156,7 +156,7 @@ public:
 private:
   struct FitPoint;
   FitPoint fit(double approach) const;
-  double fit_force(double approach) const; // Eq. 30 above the transition
+  double fit_force(double approach) const;                        // Eq. 30 above the transition
   double fit_slope(double approach, const FitPoint& point) const; // its dF/dx
 
   SphereFlatContact contact_;
