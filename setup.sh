@@ -14,6 +14,7 @@ packages=(
   libssl-dev                                # SHA-256 checksums of campaign runs (libcrypto)
   numdiff                                   # tolerant comparison of outputs in tests
   clang-format                              # the code's style (.clang-format), checked by a test
+  universal-ctags                           # the functions' lengths (at most 100 lines), checked by a test
   python3 python3-matplotlib python3-h5py   # figures of the report, HDF5 checks in fem tests
   chromium fonts-dejavu-core                # the report's rendering test (headless screenshot)
   libsimbody-dev libmujoco-dev lammps       # the exports run in Simbody, MuJoCo, LAMMPS (tests/consumers)

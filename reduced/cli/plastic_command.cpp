@@ -8,12 +8,11 @@
 #include "output.hpp"
 #include "ranges.hpp"
 
-#include "impact_reduced/hertz_stiffness.hpp"
+#include "impact_reduced/contact_formulas.hpp"
 #include "impact_reduced/invalid_input.hpp"
 #include "impact_reduced/jackson_green_marghitu.hpp"
 #include "impact_reduced/sphere_flat_fits.hpp"
 #include "impact_reduced/thornton.hpp"
-#include "impact_reduced/yield_velocity.hpp"
 
 #include <cmath>
 #include <limits>

@@ -2,7 +2,7 @@
 
 #include "ranges.hpp"
 
-#include "impact_reduced/hertz_stiffness.hpp"
+#include "impact_reduced/contact_formulas.hpp"
 
 #include <sstream>
 

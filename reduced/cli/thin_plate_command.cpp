@@ -9,7 +9,7 @@
 #include "ranges.hpp"
 #include "sphere_flat_options.hpp"
 
-#include "impact_reduced/hertz_stiffness.hpp"
+#include "impact_reduced/contact_formulas.hpp"
 #include "impact_reduced/thin_plate.hpp"
 
 #include <sstream>
@@ -25,11 +25,16 @@ std::string text_of(double value) {
   return text.str();
 }
 
-int run_thin_plate(CommandLine& options, std::ostream& out) {
-  using namespace impact::reduced;
-  const KirchhoffPlate plate{options.real("plate-modulus"), options.real("plate-poisson"),
-                             options.real("plate-density"), options.real("thickness")};
+// The sphere's side of the impact: the contact law's c and n and the sphere's mass, given
+// directly or from the sphere's material and radius (Hertz on the plate's material).
+struct Sphere {
+  double stiffness = 0;
+  double exponent = 1.5;
+  double mass = 0;
+};
 
+Sphere read_sphere(CommandLine& options, const reduced::KirchhoffPlate& plate) {
+  using namespace impact::reduced;
   require_one_of(options, "stiffness", "sphere-modulus",
                  "the contact either by --stiffness [--exponent] or by --sphere-modulus, "
                  "--sphere-poisson and --radius");
@@ -37,36 +42,31 @@ int run_thin_plate(CommandLine& options, std::ostream& out) {
                  "the sphere's mass either by --mass or by --sphere-density and --radius");
   const bool needs_radius = options.has("sphere-modulus") || options.has("sphere-density");
   const double radius = needs_radius ? options.real("radius") : 0.0;
-  double stiffness = 0;
-  double exponent = 1.5;
+  Sphere sphere;
   if (options.has("stiffness")) {
-    stiffness = options.real("stiffness");
-    exponent = options.real("exponent");
+    sphere.stiffness = options.real("stiffness");
+    sphere.exponent = options.real("exponent");
   } else {
     options.require_absent("exponent",
                            "applies to --stiffness only (the Hertz contact of "
                            "--sphere-modulus and the plate has n = 3/2)");
-    const ElasticBody sphere{options.real("sphere-modulus"), options.real("sphere-poisson"),
-                             radius};
-    stiffness = hertz_stiffness(sphere, {plate.youngs_modulus, plate.poisson_ratio});
-    options.require_within("stiffness", stiffness,
+    const ElasticBody body{options.real("sphere-modulus"), options.real("sphere-poisson"), radius};
+    sphere.stiffness = hertz_stiffness(body, {plate.youngs_modulus, plate.poisson_ratio});
+    options.require_within("stiffness", sphere.stiffness,
                            "the Hertz contact of --sphere-modulus, --sphere-poisson, --radius "
                            "and the plate has a stiffness c of");
   }
-  const double mass = options.has("mass")
-                          ? options.real("mass")
-                          : solid_sphere_mass(radius, options.real("sphere-density"));
+  sphere.mass = options.has("mass") ? options.real("mass")
+                                    : solid_sphere_mass(radius, options.real("sphere-density"));
   if (!options.has("mass"))
-    options.require_within("mass", mass,
+    options.require_within("mass", sphere.mass,
                            "the solid sphere of --radius and --sphere-density has a mass of");
-  const double damping = options.real("damping");
-  const std::vector<double> velocities = options.reals("velocity");
-  const double tolerance = options.real("tolerance");
-  const std::string format = options.choice("format");
-  options.finish();
+  return sphere;
+}
 
-  const double impedance = plate_point_impedance(plate);
-  const ThinPlateImpact model(stiffness, exponent, damping, mass, impedance);
+// Zener's model holds for a plate stiff enough that lambda stays in the validated range.
+void require_stiff_enough_plate(const reduced::ThinPlateImpact& model,
+                                const std::vector<double>& velocities) {
   for (const double velocity : velocities)
     if (model.zener_lambda(velocity) > ranges::largest_zener_lambda)
       throw UsageError("--velocity " + text_of(velocity) +
@@ -75,48 +75,66 @@ int run_thin_plate(CommandLine& options, std::ostream& out) {
                        ", the largest accepted: the plate is too compliant for this sphere "
                        "(lambda grows with --mass, --stiffness and the velocity, falls with "
                        "--thickness and --plate-modulus)");
+}
+
+const std::vector<std::string> result_keys = {"velocity",
+                                              "zener_lambda",
+                                              "restitution",
+                                              "contact_time",
+                                              "force_max",
+                                              "time_force_max",
+                                              "approach_max",
+                                              "time_approach_max",
+                                              "plate_energy_fraction",
+                                              "damping_energy_fraction",
+                                              "plate_deflection",
+                                              "number_of_contacts"};
+
+std::vector<double> result_values(double velocity, const reduced::ThinPlateImpactResult& r) {
+  return {velocity,
+          r.zener_lambda,
+          r.restitution,
+          r.contact_time,
+          r.force_max,
+          r.time_force_max,
+          r.approach_max,
+          r.time_approach_max,
+          r.plate_energy_fraction,
+          r.damping_energy_fraction,
+          r.plate_deflection,
+          static_cast<double>(r.number_of_contacts)};
+}
+
+int run_thin_plate(CommandLine& options, std::ostream& out) {
+  using namespace impact::reduced;
+  const KirchhoffPlate plate{options.real("plate-modulus"), options.real("plate-poisson"),
+                             options.real("plate-density"), options.real("thickness")};
+  const Sphere sphere = read_sphere(options, plate);
+  const double damping = options.real("damping");
+  const std::vector<double> velocities = options.reals("velocity");
+  const double tolerance = options.real("tolerance");
+  const std::string format = options.choice("format");
+  options.finish();
+
+  const double impedance = plate_point_impedance(plate);
+  const ThinPlateImpact model(sphere.stiffness, sphere.exponent, damping, sphere.mass, impedance);
+  require_stiff_enough_plate(model, velocities);
   std::vector<ThinPlateImpactResult> results;
   for (const double velocity : velocities) results.push_back(model.impact(velocity, tolerance));
 
-  const std::vector<std::string> keys = {"velocity",
-                                         "zener_lambda",
-                                         "restitution",
-                                         "contact_time",
-                                         "force_max",
-                                         "time_force_max",
-                                         "approach_max",
-                                         "time_approach_max",
-                                         "plate_energy_fraction",
-                                         "damping_energy_fraction",
-                                         "plate_deflection",
-                                         "number_of_contacts"};
-  const auto values = [](double velocity, const ThinPlateImpactResult& r) {
-    return std::vector<double>{velocity,
-                               r.zener_lambda,
-                               r.restitution,
-                               r.contact_time,
-                               r.force_max,
-                               r.time_force_max,
-                               r.approach_max,
-                               r.time_approach_max,
-                               r.plate_energy_fraction,
-                               r.damping_energy_fraction,
-                               r.plate_deflection,
-                               static_cast<double>(r.number_of_contacts)};
-  };
   if (format == "csv") {
     std::vector<std::vector<double>> rows;
     for (std::size_t i = 0; i < velocities.size(); ++i)
-      rows.push_back(values(velocities[i], results[i]));
-    print_csv(out, keys, rows);
+      rows.push_back(result_values(velocities[i], results[i]));
+    print_csv(out, result_keys, rows);
     return 0;
   }
   Json result = Json::object();
   result["model"] = "Zener: sphere on an infinite Kirchhoff plate, Hunt-Crossley contact";
-  result["stiffness"] = stiffness;
-  result["exponent"] = exponent;
+  result["stiffness"] = sphere.stiffness;
+  result["exponent"] = sphere.exponent;
   result["damping"] = damping;
-  result["mass"] = mass;
+  result["mass"] = sphere.mass;
   result["plate_modulus"] = plate.youngs_modulus;
   result["plate_poisson"] = plate.poisson_ratio;
   result["plate_density"] = plate.density;
@@ -127,8 +145,8 @@ int run_thin_plate(CommandLine& options, std::ostream& out) {
   Json impacts = Json::array();
   for (std::size_t i = 0; i < velocities.size(); ++i) {
     Json entry = Json::object();
-    const auto row = values(velocities[i], results[i]);
-    for (std::size_t k = 0; k < keys.size(); ++k) entry[keys[k]] = row[k];
+    const auto row = result_values(velocities[i], results[i]);
+    for (std::size_t k = 0; k < result_keys.size(); ++k) entry[result_keys[k]] = row[k];
     entry["number_of_contacts"] = results[i].number_of_contacts;
     impacts.push_back(entry);
   }

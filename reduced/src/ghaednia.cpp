@@ -1,5 +1,6 @@
 #include "impact_reduced/ghaednia.hpp"
 
+#include "impact_reduced/contact_formulas.hpp"
 #include "impact_reduced/invalid_input.hpp"
 #include "octave_work_table.hpp"
 
@@ -70,14 +71,14 @@ GhaedniaContact::GhaedniaContact(const SphereFlatContact& contact, double youngs
 
   const double e_star = contact.contact_modulus;
   const double yield_strength = contact.yield_strength;
-  c_ = 1.295 * std::exp(0.736 * contact.poisson_ratio);
+  c_ = jackson_green_yield_coefficient(contact.poisson_ratio);
   b_ = 0.14 * std::exp(23 * yield_strength / e_star);
   const double critical_strain = pi * c_ * yield_strength / (2 * e_star);
   critical_interference_ = critical_strain * critical_strain * contact.radius;
   const double radius_ratio = contact.radius / e_star;
   const double pressure = c_ * pi * yield_strength / 2;
   critical_load_ = 4.0 / 3.0 * radius_ratio * radius_ratio * pressure * pressure * pressure;
-  hertz_coefficient_ = 4.0 / 3.0 * e_star * std::sqrt(contact.radius);
+  hertz_coefficient_ = hertz_coefficient(e_star, contact.radius);
 
   modulus_ratio_ = tangent_modulus / youngs_modulus;
   log_modulus_ratio_ = modulus_ratio_ > 0 ? std::log(modulus_ratio_) : 0.0;
@@ -216,7 +217,7 @@ HertzianUnloading GhaedniaContact::unloading(double approach_max) const {
   const double radius = contact_radius(approach_max);
   const double unloading_radius = 4 * e_star * radius * radius * radius / (3 * force);
   const double elastic_approach = 3 * force / (4 * e_star * radius);
-  return {4.0 / 3.0 * e_star * std::sqrt(unloading_radius), approach_max - elastic_approach};
+  return {hertz_coefficient(e_star, unloading_radius), approach_max - elastic_approach};
 }
 
 } // namespace impact::reduced

@@ -1,5 +1,6 @@
 #include "impact_reduced/sphere_flat_fits.hpp"
 
+#include "impact_reduced/contact_formulas.hpp"
 #include "impact_reduced/invalid_input.hpp"
 #include "octave_work_table.hpp"
 
@@ -22,13 +23,8 @@ void validate(const SphereFlatContact& contact) {
   require_open_interval("poisson_ratio", contact.poisson_ratio, -1.0, 0.5);
 }
 
-double jackson_green_c(double poisson_ratio) {
-  return 1.295 * std::exp(0.736 * poisson_ratio);
-}
-
 double hertz_load(double interference, const SphereFlatContact& contact) {
-  return 4.0 / 3.0 * contact.contact_modulus * std::sqrt(contact.radius) *
-         std::pow(interference, 1.5);
+  return hertz_coefficient(contact.contact_modulus, contact.radius) * std::pow(interference, 1.5);
 }
 
 // B = 0.14 exp(23 Y / E*), the exponent of the contact radius's growth.
@@ -102,15 +98,16 @@ std::pair<double, double> jackson_green_fit_and_slope(double ratio,
 
 double jackson_green_critical_interference(const SphereFlatContact& contact) {
   validate(contact);
-  const double ratio = pi * jackson_green_c(contact.poisson_ratio) * contact.yield_strength /
-                       (2 * contact.contact_modulus);
+  const double ratio = pi * jackson_green_yield_coefficient(contact.poisson_ratio) *
+                       contact.yield_strength / (2 * contact.contact_modulus);
   return ratio * ratio * contact.radius;
 }
 
 double jackson_green_critical_load(const SphereFlatContact& contact) {
   validate(contact);
   const double radius_ratio = contact.radius / contact.contact_modulus;
-  const double pressure = jackson_green_c(contact.poisson_ratio) * pi * contact.yield_strength / 2;
+  const double pressure =
+      jackson_green_yield_coefficient(contact.poisson_ratio) * pi * contact.yield_strength / 2;
   return 4.0 / 3.0 * radius_ratio * radius_ratio * pressure * pressure * pressure;
 }
 
@@ -127,7 +124,8 @@ double jackson_green_load_ratio(double interference_ratio, const SphereFlatConta
   validate(contact);
   require_non_negative("interference_ratio", interference_ratio);
   if (interference_ratio <= jackson_green_transition) return std::pow(interference_ratio, 1.5);
-  return jackson_green_fit(interference_ratio, contact, jackson_green_c(contact.poisson_ratio),
+  return jackson_green_fit(interference_ratio, contact,
+                           jackson_green_yield_coefficient(contact.poisson_ratio),
                            jackson_green_b(contact));
 }
 
@@ -179,7 +177,7 @@ JacksonGreenContact::JacksonGreenContact(const SphereFlatContact& contact,
       transition_(jackson_green_transition * critical_interference_),
       transition_work_(0.4 * hertz_load(transition_, contact) * transition_),
       critical_load_(jackson_green_critical_load(contact)),
-      c_(jackson_green_c(contact.poisson_ratio)),
+      c_(jackson_green_yield_coefficient(contact.poisson_ratio)),
       b_(jackson_green_b(contact)),
       work_table_(std::make_shared<detail::OctaveWorkTable>(transition_, transition_work_)) {}
 
@@ -214,7 +212,7 @@ double JacksonGreenContact::loading_work(double approach) const {
 double JacksonGreenContact::loading_approach(double work) const {
   if (!(work > 0)) return 0.0;
   if (work <= transition_work_) {
-    const double stiffness = 4.0 / 3.0 * contact_.contact_modulus * std::sqrt(contact_.radius);
+    const double stiffness = hertz_coefficient(contact_.contact_modulus, contact_.radius);
     return std::pow(2.5 * work / stiffness, 0.4);
   }
   return work_table_->approach(work, [this](double x) { return fit_force(x); });
@@ -232,23 +230,22 @@ std::pair<double, double> JacksonGreenContact::loading_force_and_stiffness_at_wo
 }
 
 double JacksonGreenContact::loading_work_below(double approach_max, double distance) const {
-  return work_table_->work_below_over_hertz(4.0 / 3.0 * contact_.contact_modulus *
-                                                std::sqrt(contact_.radius),
+  return work_table_->work_below_over_hertz(hertz_coefficient(contact_.contact_modulus,
+                                                              contact_.radius),
                                             approach_max, distance,
                                             [this](double x) { return fit_force(x); });
 }
 
 std::optional<PowerLawCoefficients> JacksonGreenContact::loading_power_law() const {
   // The stiffness exactly as hertz_load forms it, so that c x^(3/2) is loading_force.
-  return PowerLawCoefficients{4.0 / 3.0 * contact_.contact_modulus * std::sqrt(contact_.radius),
-                              1.5};
+  return PowerLawCoefficients{hertz_coefficient(contact_.contact_modulus, contact_.radius), 1.5};
 }
 
 HertzianUnloading JacksonGreenContact::unloading(double approach_max) const {
   require_positive("approach_max", approach_max);
   const double force = loading_force(approach_max);
   if (approach_max <= transition_) // Hertz: R_u = R, no residual, exactly.
-    return {4.0 / 3.0 * contact_.contact_modulus * std::sqrt(contact_.radius), 0.0};
+    return {hertz_coefficient(contact_.contact_modulus, contact_.radius), 0.0};
   if (rule_ == JacksonGreenUnloading::brake) {
     // Elastic recovery x_max P_m / P_Hertz(x_max); F = P_m at x_max fixes the stiffness.
     const double recovery = approach_max * force / hertz_load(approach_max, contact_);
@@ -258,7 +255,7 @@ HertzianUnloading JacksonGreenContact::unloading(double approach_max) const {
   const double unloading_radius =
       4 * contact_.contact_modulus * radius * radius * radius / (3 * force);
   const double elastic_approach = 3 * force / (4 * contact_.contact_modulus * radius);
-  return {4.0 / 3.0 * contact_.contact_modulus * std::sqrt(unloading_radius),
+  return {hertz_coefficient(contact_.contact_modulus, unloading_radius),
           approach_max - elastic_approach};
 }
 

@@ -10,7 +10,7 @@
 
 #include "impact_reduced/thin_plate.hpp"
 
-#include "impact_reduced/hertz_stiffness.hpp"
+#include "impact_reduced/contact_formulas.hpp"
 #include "impact_reduced/invalid_input.hpp"
 
 #include "event_stepping.hpp"

@@ -1,7 +1,7 @@
 #include "impact_reduced/thornton.hpp"
 
 #include "impact_reduced/invalid_input.hpp"
-#include "impact_reduced/yield_velocity.hpp"
+#include "impact_reduced/contact_formulas.hpp"
 
 #include <boost/math/special_functions/beta.hpp>
 
@@ -37,7 +37,7 @@ ThorntonContact::ThorntonContact(double radius, double contact_modulus, double y
   yield_approach_ = reduced::yield_approach(yield_pressure, contact_modulus, radius);
   yield_force_ = reduced::yield_force(yield_pressure, contact_modulus, radius);
   plastic_stiffness_ = pi * yield_pressure * radius;
-  hertz_stiffness_ = 4.0 / 3.0 * contact_modulus * std::sqrt(radius);
+  hertz_stiffness_ = hertz_coefficient(contact_modulus, radius);
 }
 
 double ThorntonContact::loading_force(double approach) const {
@@ -100,7 +100,7 @@ HertzianUnloading ThorntonContact::unloading(double approach_max) const {
   if (approach_max <= yield_approach_) return {hertz_stiffness_, 0.0};
   const double delta = (approach_max - yield_approach_) / yield_approach_;
   const double unloading_radius = radius_ * std::pow(1 + delta, 1.5) / (1 + 1.5 * delta);
-  return {4.0 / 3.0 * contact_modulus_ * std::sqrt(unloading_radius),
+  return {hertz_coefficient(contact_modulus_, unloading_radius),
           yield_approach_ * plastic_excess(delta) / std::sqrt(1 + delta)};
 }
 
@@ -116,7 +116,7 @@ ThorntonImpact::ThorntonImpact(const ThorntonParameters& parameters, double velo
   const double c = contact_.hertz_stiffness();
   const double hertz_factor = 0.4 * boost::math::beta(0.4, 0.5); // (2/5) B(2/5, 1/2)
   // The Hertz approach x_H that the velocity would reach elastically, and its phase time.
-  const double hertz_approach = std::pow(1.25 * mass * velocity * velocity / c, 0.4);
+  const double hertz_approach = hertz_peak_approach(c, mass, velocity);
 
   ElasticPlasticImpactResponse& out = response_;
   if (velocity <= yield_velocity_) {

@@ -21,7 +21,7 @@
 #include "impact_postprocess/report/report.hpp"
 #include "impact_postprocess/run/scenario_materials.hpp"
 
-#include <impact_reduced/hertz_stiffness.hpp>
+#include <impact_reduced/contact_formulas.hpp>
 #include <impact_reduced/hunt_crossley.hpp>
 #include <impact_reduced/thin_plate.hpp>
 

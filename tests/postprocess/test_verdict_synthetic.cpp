@@ -18,7 +18,7 @@
 #include "impact_postprocess/run/fem_run.hpp"
 #include "impact_postprocess/report/report.hpp"
 
-#include <impact_reduced/hertz_stiffness.hpp>
+#include <impact_reduced/contact_formulas.hpp>
 #include <impact_reduced/hunt_crossley.hpp>
 
 #include <gtest/gtest.h>

@@ -4,7 +4,7 @@
 
 #include "cli_runner.hpp"
 
-#include "impact_reduced/hertz_stiffness.hpp"
+#include "impact_reduced/contact_formulas.hpp"
 #include "impact_reduced/hunt_crossley.hpp"
 
 #include <gtest/gtest.h>

@@ -3,7 +3,7 @@
 // (The accuracy table of the spec, against 50-digit references, is in
 // test_hunt_crossley_accuracy.cpp.)
 
-#include "impact_reduced/hertz_stiffness.hpp"
+#include "impact_reduced/contact_formulas.hpp"
 #include "impact_reduced/hunt_crossley.hpp"
 #include "impact_reduced/impact_ode.hpp"
 #include "impact_reduced/invalid_input.hpp"

@@ -5,7 +5,7 @@
 
 #include "impact_reduced/invalid_input.hpp"
 #include "impact_reduced/jackson_green_marghitu.hpp"
-#include "impact_reduced/yield_velocity.hpp"
+#include "impact_reduced/contact_formulas.hpp"
 
 #include <gtest/gtest.h>
 

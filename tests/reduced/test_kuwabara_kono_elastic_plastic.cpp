@@ -14,7 +14,7 @@
 #include "impact_reduced/invalid_input.hpp"
 #include "impact_reduced/kuwabara_kono_elastic_plastic.hpp"
 #include "impact_reduced/thornton.hpp"
-#include "impact_reduced/yield_velocity.hpp"
+#include "impact_reduced/contact_formulas.hpp"
 
 #include <boost/numeric/odeint/stepper/runge_kutta_fehlberg78.hpp>
 

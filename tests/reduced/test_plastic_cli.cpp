@@ -4,11 +4,10 @@
 
 #include "cli_runner.hpp"
 
-#include "impact_reduced/hertz_stiffness.hpp"
+#include "impact_reduced/contact_formulas.hpp"
 #include "impact_reduced/jackson_green_marghitu.hpp"
 #include "impact_reduced/sphere_flat_fits.hpp"
 #include "impact_reduced/thornton.hpp"
-#include "impact_reduced/yield_velocity.hpp"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>

@@ -4,7 +4,7 @@
 
 #include "cli_runner.hpp"
 
-#include "impact_reduced/hertz_stiffness.hpp"
+#include "impact_reduced/contact_formulas.hpp"
 #include "impact_reduced/thin_plate.hpp"
 
 #include <gtest/gtest.h>

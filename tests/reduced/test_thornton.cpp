@@ -4,7 +4,7 @@
 
 #include "impact_reduced/invalid_input.hpp"
 #include "impact_reduced/thornton.hpp"
-#include "impact_reduced/yield_velocity.hpp"
+#include "impact_reduced/contact_formulas.hpp"
 #include "plastic_impact_reference.hpp"
 
 #include <gtest/gtest.h>

@@ -1,6 +1,8 @@
 #ifndef IMPACT_FEM_HERTZ_H
 #define IMPACT_FEM_HERTZ_H
 
+#include <impact_reduced/contact_formulas.hpp>
+
 #include <cmath>
 
 namespace impact_fem
@@ -9,6 +11,7 @@ namespace impact_fem
    * Hertz's quasi-static theory of a sphere (radius R, mass m) hitting a
    * half-space at speed V. The model uses it only for estimates: the time
    * step, the expected end of the run and the extent of the contact zone.
+   * The formulas are the reduced library's (impact_reduced/contact_formulas.hpp).
    * Units SI.
    */
   struct HertzImpact
@@ -22,22 +25,21 @@ namespace impact_fem
     double
     stiffness() const
     {
-      return 4.0 / 3.0 * effective_modulus * std::sqrt(radius);
+      return impact::reduced::hertz_coefficient(effective_modulus, radius);
     }
 
     /// Peak approach [m].
     double
     approach_max() const
     {
-      return std::pow(5.0 * mass * velocity * velocity / (4.0 * stiffness()),
-                      0.4);
+      return impact::reduced::hertz_peak_approach(stiffness(), mass, velocity);
     }
 
     /// Peak force [N].
     double
     force_max() const
     {
-      return stiffness() * std::pow(approach_max(), 1.5);
+      return impact::reduced::hertz_peak_force(stiffness(), mass, velocity);
     }
 
     /// Contact radius at peak force [m].
@@ -47,7 +49,11 @@ namespace impact_fem
       return std::sqrt(radius * approach_max());
     }
 
-    /// Contact time [s]: 2.94 delta_max / V (exact constant 2.9432).
+    /// Contact time [s]: 2.9432 delta_max / V, Hertz's factor rounded to
+    /// five digits (impact::reduced::hertz_contact_time has it exact,
+    /// 2.943275). Every run's time step is a fraction of this estimate, so
+    /// the rounded factor stays: runs and campaigns keep their steps;
+    /// tests/fem/test_hertz_estimates.cpp ties the two within 3e-5.
     double
     contact_time() const
     {

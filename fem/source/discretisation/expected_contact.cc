@@ -2,7 +2,7 @@
 
 #include <impact_reduced/elastic_plastic_impact.hpp>
 #include <impact_reduced/sphere_flat_fits.hpp>
-#include <impact_reduced/yield_velocity.hpp>
+#include <impact_reduced/contact_formulas.hpp>
 
 #include <cmath>
 #include <iomanip>

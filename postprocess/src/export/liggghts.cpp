@@ -9,7 +9,7 @@
 
 #include <impact_reduced/liggghts_thornton.hpp>
 #include <impact_reduced/thornton.hpp>
-#include <impact_reduced/yield_velocity.hpp>
+#include <impact_reduced/contact_formulas.hpp>
 
 #include <cmath>
 #include <sstream>

@@ -8,7 +8,7 @@
 
 #include <impact_reduced/invalid_input.hpp>
 #include <impact_reduced/sphere_flat_fits.hpp>
-#include <impact_reduced/yield_velocity.hpp>
+#include <impact_reduced/contact_formulas.hpp>
 
 #include <cmath>
 #include <memory>
@@ -132,11 +132,10 @@ std::optional<SphereFlatScenario> sphere_flat_scenario(const std::vector<FemRun>
 std::optional<MaterialJacksonGreen> material_jackson_green(const std::vector<FemRun>& runs) {
   const auto scenario = sphere_flat_scenario(runs);
   if (!scenario || !scenario->yield_strength || !scenario->contact_modulus) return std::nullopt;
-  return MaterialJacksonGreen{4.0 / 3.0 * *scenario->contact_modulus * std::sqrt(scenario->radius),
-                              *scenario->yield_strength,
-                              jackson_green_model(scenario->radius, scenario->poisson_ratio),
-                              "no fit: " + scenario->basis + "; c = (4/3) E* sqrt(R); " +
-                                  hardening_note(runs.front())};
+  return MaterialJacksonGreen{
+      reduced::hertz_coefficient(*scenario->contact_modulus, scenario->radius),
+      *scenario->yield_strength, jackson_green_model(scenario->radius, scenario->poisson_ratio),
+      "no fit: " + scenario->basis + "; c = (4/3) E* sqrt(R); " + hardening_note(runs.front())};
 }
 
 } // namespace impact::postprocess

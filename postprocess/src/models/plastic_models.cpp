@@ -8,6 +8,7 @@
 #include "impact_postprocess/run/scenario_plastic_contact.hpp"
 
 #include <impact_reduced/comparison_laws.hpp>
+#include <impact_reduced/contact_formulas.hpp>
 #include <impact_reduced/invalid_input.hpp>
 #include <impact_reduced/thornton.hpp>
 
@@ -19,8 +20,6 @@
 namespace impact::postprocess {
 
 namespace {
-
-constexpr double pi = 3.14159265358979323846;
 
 // Thornton's law for c and x_y: any radius gives the same law (plastic_models.hpp); R = 1 m,
 // E* = 3 c / 4, p_y = 3 c sqrt(x_y) / (2 pi).
@@ -168,24 +167,16 @@ std::vector<std::string> comparison_model_names() {
 }
 
 double thornton_yield_pressure(double stiffness, double yield_approach, double radius) {
-  reduced::require_positive("stiffness", stiffness);
   reduced::require_positive("yield_approach", yield_approach);
-  reduced::require_positive("radius", radius);
-  return 3 * stiffness * std::sqrt(yield_approach) / (2 * pi * radius);
+  return reduced::hertz_peak_pressure(stiffness, radius, yield_approach);
 }
 
 double thornton_yield_approach(double yield_velocity, double mass, double stiffness) {
-  reduced::require_non_negative("yield_velocity", yield_velocity);
-  reduced::require_positive("mass", mass);
-  reduced::require_positive("stiffness", stiffness);
-  return std::pow(1.25 * mass * yield_velocity * yield_velocity / stiffness, 0.4);
+  return reduced::hertz_peak_approach(stiffness, mass, yield_velocity);
 }
 
 double thornton_yield_velocity(double yield_approach, double mass, double stiffness) {
-  reduced::require_non_negative("yield_approach", yield_approach);
-  reduced::require_positive("mass", mass);
-  reduced::require_positive("stiffness", stiffness);
-  return std::sqrt(0.8 * stiffness * std::pow(yield_approach, 2.5) / mass);
+  return reduced::hertz_impact_velocity(stiffness, mass, yield_approach);
 }
 
 std::optional<MaterialThornton> material_thornton(const std::vector<FemRun>& runs) {
@@ -199,13 +190,13 @@ std::optional<MaterialThornton> material_thornton(const std::vector<FemRun>& run
   const auto radius = text_number(runs.front(), fem_format::sphere_radius.path);
   if (!contact || !radius || !(*radius > 0)) return std::nullopt;
   const double e_star = contact->contact_modulus;
-  const double ratio = pi * contact->yield_pressure / (2 * e_star);
   std::ostringstream basis;
   basis.precision(6);
   basis << "no fit: E* = " << e_star << " Pa, R = " << *radius
         << " m, p_y = " << contact->yield_pressure << " Pa from " << contact->yield_basis
         << "; c = (4/3) E* sqrt(R), x_y = R (pi p_y / (2 E*))^2; " << hardening_note(runs.front());
-  return MaterialThornton{4.0 / 3.0 * e_star * std::sqrt(*radius), *radius * ratio * ratio,
+  return MaterialThornton{reduced::hertz_coefficient(e_star, *radius),
+                          reduced::yield_approach(contact->yield_pressure, e_star, *radius),
                           basis.str()};
 }
 

@@ -1,6 +1,6 @@
 #include "impact_postprocess/run/scenario_materials.hpp"
 
-#include <impact_reduced/hertz_stiffness.hpp>
+#include <impact_reduced/contact_formulas.hpp>
 #include <impact_reduced/viscoelastic_dissipation.hpp>
 
 #include <sstream>

@@ -3,7 +3,7 @@
 #include "impact_postprocess/run/scenario_plastic_contact.hpp"
 #include "impact_postprocess/run/scenario_materials.hpp"
 
-#include <impact_reduced/yield_velocity.hpp>
+#include <impact_reduced/contact_formulas.hpp>
 
 #include <sstream>
 #include <utility>

@@ -11,7 +11,7 @@ namespace impact::reduced {
 
 class HertzContact final : public ElasticPlasticContact {
 public:
-  /// c > 0 [N/m^1.5] (hertz_stiffness.hpp). Throws InvalidInput("stiffness") otherwise.
+  /// c > 0 [N/m^1.5] (contact_formulas.hpp). Throws InvalidInput("stiffness") otherwise.
   explicit HertzContact(double stiffness);
   double stiffness() const { return stiffness_; }
   double loading_force(double approach) const override;

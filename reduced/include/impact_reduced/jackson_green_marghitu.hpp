@@ -12,7 +12,7 @@
 /// tools; it labels the line with the title of Jackson & Green's 2005 paper, not of JGM 2010):
 ///   e = 1 - 0.0361 eps_y^(-0.114) ln(V*) (V* - 1)^(9.5 eps_y),   V* = V / V_c,
 /// with V_c the impact velocity whose Hertz impact reaches Jackson-Green's critical interference
-/// omega_c = (pi C Y / (2 E*))^2 R, C = C(nu) = 1.295 exp(0.736 nu) (yield_velocity.hpp,
+/// omega_c = (pi C Y / (2 E*))^2 R, C = C(nu) = 1.295 exp(0.736 nu) (contact_formulas.hpp,
 /// criterion jackson_green), and eps_y = C Y / E*. THE CONSTANTS 0.0361, -0.114 AND 9.5 COULD
 /// NOT BE CONFIRMED against the paper or a second source, nor could the definition of eps_y
 /// (the script divides C Y, not Y, by E*; it hard-codes C = 1.6 beside a commented-out C(nu),

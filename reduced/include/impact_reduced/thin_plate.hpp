@@ -161,7 +161,7 @@ private:
 /// ratio nu_s in (-1, 0.5), on `plate`, at impact velocity V [m/s] > 0:
 ///
 ///     lambda = m^(3/5) c^(2/5) V^(1/5) / Z,   m = (4/3) pi R^3 rho_s,
-///     c = (4/3) E* sqrt(R) (hertz_stiffness.hpp),   Z = plate_point_impedance(plate),
+///     c = (4/3) E* sqrt(R) (contact_formulas.hpp),   Z = plate_point_impedance(plate),
 ///
 /// which in material terms is (with 1/E* = (1 - nu_s^2)/E_s + (1 - nu_p^2)/E_p)
 ///

@@ -8,7 +8,7 @@
 /// agree with the formulas below, and every closed form below is derived here from them
 /// (README "Elastic-plastic impact laws" gives the derivation).
 ///
-/// Contact of effective radius R and contact modulus E* (yield_velocity.hpp), limiting
+/// Contact of effective radius R and contact modulus E* (contact_formulas.hpp), limiting
 /// contact pressure p_y (Johnson's 1.6 Y, or C(nu) Y):
 ///   - Hertz loading F = (4/3) E* sqrt(R) x^(3/2) until the peak pressure reaches p_y at
 ///     x_y = R (pi p_y / (2 E*))^2, F_y = pi^3 R^2 p_y^3 / (6 E*^2);

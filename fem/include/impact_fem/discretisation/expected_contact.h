@@ -36,7 +36,7 @@ namespace impact_fem
       double      contact_radius = 0; ///< a at x_max [m]
       double      contact_time   = 0; ///< [s], 0 for a static load
       /// V / V_y, V_y = sqrt(pi^5 R^3 p_y^5 / (30 m E*^4)) with p_y = C(nu)
-      /// Y (impact_reduced/yield_velocity.hpp); 0 for Hertz.
+      /// Y (impact_reduced/contact_formulas.hpp); 0 for Hertz.
       double velocity_ratio = 0;
 
       /// A body that can yield: its name, yield strength Y [Pa] and

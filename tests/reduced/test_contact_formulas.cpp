@@ -1,8 +1,10 @@
-// Yield velocity of a Hertz contact for both criteria, against values worked out here from
-// the formulas with numbers (and 30-digit values from mpmath, command in the comment).
+// The contact formulas: E*, effective radius and mass, the Hertz impact (coefficient, peak
+// approach, peak force, contact time) and the yield velocity for both criteria, against values
+// worked out here from the formulas with numbers (and 30-digit values from mpmath, command in
+// the comment).
 
 #include "impact_reduced/invalid_input.hpp"
-#include "impact_reduced/yield_velocity.hpp"
+#include "impact_reduced/contact_formulas.hpp"
 
 #include <gtest/gtest.h>
 
@@ -79,6 +81,42 @@ TEST(YieldVelocity, TwoSpheresUseEffectiveRadiusAndMass) {
   const double v_y =
       yield_velocity(1.6e9, e_star, effective_radius(0.01, 0.02), effective_mass(m1, m2));
   EXPECT_NEAR(v_y, 0.0784631906015166711, 1e-15);
+}
+
+// mpmath, mp.dps = 30: Es = 1/(2 (1 - 0.3^2)/210e9), c = 4/3 Es sqrt(0.01),
+// m = 4/3 pi 0.01^3 7800, x = (5 m / (4 c))^0.4, F = c x^1.5, t = 0.8 beta(0.4, 0.5) x
+// (and 2 quad(1/sqrt(1 - u^2.5), [0, 1]) = 2.9432751843247046... for the factor).
+TEST(HertzImpact, AgainstMpmath) {
+  const double e_star = contact_modulus(youngs, poisson, youngs, poisson);
+  const double c = hertz_coefficient(e_star, radius);
+  EXPECT_NEAR(c / 15384615384.6153846153846153846, 1.0, 4e-16);
+  const double mass = solid_sphere_mass(radius, density);
+  EXPECT_NEAR(hertz_peak_approach(c, mass, 1.0) / 0.0000234208489227732190356612054841, 1.0, 1e-15);
+  EXPECT_NEAR(hertz_peak_force(c, mass, 1.0) / 1743.77558351251172447323665832, 1.0, 1e-15);
+  EXPECT_NEAR(hertz_contact_time(c, mass, 1.0) / 0.0000689340034302164078340830985446, 1.0, 1e-15);
+  // The body-level stiffness is the same c.
+  EXPECT_NEAR(hertz_stiffness({youngs, poisson, radius}, {youngs, poisson}) / c, 1.0, 4e-16);
+  // x_max scales as V^(4/5), t_c as V^(-1/5).
+  EXPECT_NEAR(hertz_peak_approach(c, mass, 2.0) / hertz_peak_approach(c, mass, 1.0),
+              std::pow(2.0, 0.8), 1e-15);
+  EXPECT_NEAR(hertz_contact_time(c, mass, 2.0) / hertz_contact_time(c, mass, 1.0),
+              std::pow(2.0, -0.2), 1e-15);
+}
+
+TEST(HertzImpact, InvalidInputNamesTheParameter) {
+  const auto names = [](auto call, const char* parameter) {
+    try {
+      call();
+      ADD_FAILURE() << "no throw for " << parameter;
+    } catch (const InvalidInput& error) {
+      EXPECT_EQ(error.parameter(), parameter);
+    }
+  };
+  names([] { hertz_coefficient(0.0, 0.01); }, "contact_modulus");
+  names([] { hertz_coefficient(1e11, -1.0); }, "radius");
+  names([] { hertz_peak_approach(1e10, 0.0, 1.0); }, "mass");
+  names([] { hertz_peak_force(1e10, 1.0, std::nan("")); }, "velocity");
+  names([] { hertz_contact_time(-1.0, 1.0, 1.0); }, "coefficient");
 }
 
 TEST(YieldVelocity, InvalidInputNamesTheParameter) {
