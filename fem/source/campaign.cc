@@ -190,11 +190,16 @@ namespace impact_fem
     directory = directory_entry.get(prm);
     verify    = verification::enabled(prm);
 
-    // The points, the velocity the fastest-varying axis.
-    std::vector<std::string> original;
-    for (const auto &axis : axes)
-      original.push_back(axis.parameter.get(prm));
-    const std::string         original_velocity = velocity_entry.get(prm);
+    enumerate_points();
+    set_expected_parameters(velocity_entry, directory_entry);
+  }
+
+
+  // The points, the velocity the fastest-varying axis; each has a run
+  // directory of its own.
+  void
+  Campaign::enumerate_points()
+  {
     std::vector<unsigned int> indices(axes.size(), 0);
     std::set<std::string>     paths;
     while (true)
@@ -217,10 +222,21 @@ namespace impact_fem
         if (a == 0)
           break;
       }
+  }
 
-    // The parameters each run is to have, as text: the campaign's own
-    // entries and Verify left out (a campaign extended by a velocity or
-    // verified later keeps its complete runs).
+
+  // The parameters each run is to have, as text: the campaign's own
+  // entries and Verify left out (a campaign extended by a velocity or
+  // verified later keeps its complete runs). The handler is left as it was.
+  void
+  Campaign::set_expected_parameters(const ParameterPath &velocity_entry,
+                                    const ParameterPath &directory_entry)
+  {
+    std::vector<std::string> original;
+    for (const auto &axis : axes)
+      original.push_back(axis.parameter.get(prm));
+    const std::string original_velocity = velocity_entry.get(prm);
+
     const std::pair<const char *, const char *> normalised[] = {
       {"Campaign", "Impact velocities"},
       {"Campaign", "Sweep"},

@@ -78,6 +78,14 @@ namespace impact_fem
       std::string               parameters; ///< expected parameters.prm
     };
 
+    /// The points of the axes and the velocities, in the campaign's order.
+    void
+    enumerate_points();
+    /// Each point's expected parameters.prm, every point checked.
+    void
+    set_expected_parameters(const ParameterPath &velocity_entry,
+                            const ParameterPath &directory_entry);
+
     /// Sets the point's values, velocity and run directory in prm.
     void
     apply(const Point &point);
