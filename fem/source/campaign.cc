@@ -190,11 +190,16 @@ namespace impact_fem
     directory = directory_entry.get(prm);
     verify    = verification::enabled(prm);
 
-    // The points, the velocity the fastest-varying axis.
-    std::vector<std::string> original;
-    for (const auto &axis : axes)
-      original.push_back(axis.parameter.get(prm));
-    const std::string         original_velocity = velocity_entry.get(prm);
+    enumerate_points();
+    set_expected_parameters(velocity_entry, directory_entry);
+  }
+
+
+  // The points, the velocity the fastest-varying axis; each has a run
+  // directory of its own.
+  void
+  Campaign::enumerate_points()
+  {
     std::vector<unsigned int> indices(axes.size(), 0);
     std::set<std::string>     paths;
     while (true)
@@ -217,10 +222,21 @@ namespace impact_fem
         if (a == 0)
           break;
       }
+  }
 
-    // The parameters each run is to have, as text: the campaign's own
-    // entries and Verify left out (a campaign extended by a velocity or
-    // verified later keeps its complete runs).
+
+  // The parameters each run is to have, as text: the campaign's own
+  // entries and Verify left out (a campaign extended by a velocity or
+  // verified later keeps its complete runs). The handler is left as it was.
+  void
+  Campaign::set_expected_parameters(const ParameterPath &velocity_entry,
+                                    const ParameterPath &directory_entry)
+  {
+    std::vector<std::string> original;
+    for (const auto &axis : axes)
+      original.push_back(axis.parameter.get(prm));
+    const std::string original_velocity = velocity_entry.get(prm);
+
     const std::pair<const char *, const char *> normalised[] = {
       {"Campaign", "Impact velocities"},
       {"Campaign", "Sweep"},
@@ -440,29 +456,9 @@ namespace impact_fem
     const unsigned int group = std::min(rank / group_size, n_groups);
     MPI_Comm           group_comm;
     MPI_Comm_split(comm, group, rank, &group_comm);
-    const bool group_root = Utilities::MPI::this_mpi_process(group_comm) == 0;
 
     if (rank == 0)
-      {
-        std::filesystem::create_directories(directory);
-        std::cout << "impact-fem campaign: ";
-        if (axes.empty())
-          std::cout << velocities.size() << " velocities";
-        else
-          {
-            std::cout << points.size() << " runs (";
-            for (const auto &axis : axes)
-              std::cout << axis.parameter.entry << " x " << axis.values.size()
-                        << ", ";
-            std::cout << "velocities x " << velocities.size() << ")";
-          }
-        std::cout << " into " << directory;
-        if (!shard.whole())
-          std::cout << ", shard " << shard.name() << ": "
-                    << shard.n_points(points.size()) << " of them";
-        std::cout << ", " << n_groups << " group(s) of " << group_size
-                  << " rank(s)" << std::endl;
-      }
+      announce(n_groups, group_size);
     MPI_Barrier(comm);
 
     // The shard's points, taken by the rank groups in turn.
@@ -474,133 +470,193 @@ namespace impact_fem
     for (unsigned int j = group; j < share.size() && group < n_groups;
          j += n_groups)
       {
-        const unsigned int i             = share[j];
-        const Point       &point         = points[i];
-        const std::string  run_directory = directory + "/" + point.path;
-        const std::string  line = "  run " + std::to_string(i + 1) + "/" +
-                                 std::to_string(points.size()) + "  " +
-                                 label(point);
         // A signal received during an earlier run stops the campaign here
         // (a restart does the remaining runs).
         if (Utilities::MPI::max(ImpactProblem::interrupt_received(),
                                 group_comm) != 0)
           break;
-        bool        verified = false;
-        std::string status = group_root ? restart_status(point, verified) : "";
-        status             = Utilities::MPI::broadcast(group_comm, status, 0);
-        verified           = Utilities::MPI::broadcast(group_comm, verified, 0);
-        const bool complete = status.empty();
-        if (complete && (!verify || verified))
-          {
-            if (group_root)
-              std::cout << line << ": complete, skipped" << std::endl;
-            continue;
-          }
-        if (group_root)
-          {
-            std::cout << line << ": "
-                      << (complete ? "complete, verifying" : status)
-                      << std::endl;
-            std::filesystem::create_directories(run_directory);
-            if (!complete)
-              {
-                // The checksums first: whatever stays behind is not
-                // certified.
-                std::filesystem::remove(run_directory + "/" +
-                                        checksums::manifest_name);
-                for (const char *name : {"summary.json", "history.h5"})
-                  std::filesystem::remove(run_directory + "/" + name);
-                write_file_atomically(run_directory + "/parameters.prm",
-                                      point.parameters);
-              }
-            std::filesystem::remove(run_directory + "/verification.json");
-          }
-        MPI_Barrier(group_comm);
-        apply(point);
-        const auto    start = std::chrono::steady_clock::now();
-        std::ofstream log;
-        if (group_root)
-          log.open(run_directory + "/run.log",
-                   complete ? std::ios::app : std::ios::out);
-        // The problem outlives the try block: its destructor (collective
-        // over the group) must not run while an exception unwinds.
-        std::unique_ptr<ImpactProblem> problem;
-        try
-          {
-            if (verify)
-              verification::verify(prm,
-                                   group_comm,
-                                   group_root ? log : std::cout,
-                                   complete);
-            else
-              {
-                problem =
-                  std::make_unique<ImpactProblem>(prm,
-                                                  group_comm,
-                                                  group_root ? log : std::cout);
-                problem->run();
-                problem.reset();
-              }
-          }
-        catch (const std::exception &error)
-          {
-            problem.reset();
-            if (group_root)
-              {
-                log << "\nimpact-fem: error: " << error.what() << std::endl;
-                std::cout << line << ": FAILED (" << run_directory
-                          << "/run.log)" << std::endl;
-              }
-            ++failed;
-            if (ImpactProblem::interrupt_received() != 0)
-              break; // interrupted: stop; a restart redoes this run
-            continue;
-          }
-        if (group_root)
-          try
-            {
-              // The files are final: certify them.
-              std::vector<std::string> files = {"parameters.prm",
-                                                "history.h5",
-                                                "summary.json"};
-              if (verify)
-                files.push_back("verification.json");
-              checksums::write_manifest(run_directory, files);
-              const auto summary = nlohmann::json::parse(
-                read_file(run_directory + "/summary.json"));
-              std::cout << line << ": done in " << std::setprecision(3)
-                        << std::chrono::duration<double>(
-                             std::chrono::steady_clock::now() - start)
-                             .count()
-                        << " s, restitution " << std::setprecision(6)
-                        << summary["restitution"] << std::endl;
-              write_index();
-            }
-          catch (const std::exception &error)
-            {
-              std::cout << line << ": FAILED (" << error.what() << ")"
-                        << std::endl;
-              ++failed;
-            }
+        const RunOutcome outcome = run_point(share[j], group_comm);
+        if (outcome != RunOutcome::complete)
+          ++failed;
+        if (outcome == RunOutcome::interrupted)
+          break; // a restart redoes this run
       }
     MPI_Comm_free(&group_comm);
     failed = Utilities::MPI::sum(failed, comm);
     MPI_Barrier(comm);
     if (rank == 0)
-      {
-        write_index();
-        // With shards, the index is complete once the last shard ends.
-        const auto listed =
-          std::count_if(points.begin(), points.end(), [this](const Point &p) {
-            return listed_in_index(p);
-          });
-        std::cout << "impact-fem campaign: index " << directory << "/index.json"
-                  << " (" << listed << " of " << points.size() << " runs)"
-                  << (failed > 0 ? ", " + std::to_string(failed) +
-                                     " run(s) failed or interrupted" :
-                                   std::string())
-                  << std::endl;
-      }
+      finish_index(failed);
     return failed;
+  }
+
+
+  void
+  Campaign::announce(const unsigned int n_groups,
+                     const unsigned int group_size) const
+  {
+    std::filesystem::create_directories(directory);
+    std::cout << "impact-fem campaign: ";
+    if (axes.empty())
+      std::cout << velocities.size() << " velocities";
+    else
+      {
+        std::cout << points.size() << " runs (";
+        for (const auto &axis : axes)
+          std::cout << axis.parameter.entry << " x " << axis.values.size()
+                    << ", ";
+        std::cout << "velocities x " << velocities.size() << ")";
+      }
+    std::cout << " into " << directory;
+    if (!shard.whole())
+      std::cout << ", shard " << shard.name() << ": "
+                << shard.n_points(points.size()) << " of them";
+    std::cout << ", " << n_groups << " group(s) of " << group_size << " rank(s)"
+              << std::endl;
+  }
+
+
+  // A complete run is skipped, or only verified when the campaign verifies
+  // and it was not; any other is (re)done from the start.
+  Campaign::RunOutcome
+  Campaign::run_point(const unsigned int i, const MPI_Comm group_comm)
+  {
+    const bool   group_root = Utilities::MPI::this_mpi_process(group_comm) == 0;
+    const Point &point      = points[i];
+    const std::string run_directory = directory + "/" + point.path;
+    const std::string line          = "  run " + std::to_string(i + 1) + "/" +
+                             std::to_string(points.size()) + "  " +
+                             label(point);
+    bool        verified = false;
+    std::string status   = group_root ? restart_status(point, verified) : "";
+    status               = Utilities::MPI::broadcast(group_comm, status, 0);
+    verified             = Utilities::MPI::broadcast(group_comm, verified, 0);
+    const bool complete  = status.empty();
+    if (complete && (!verify || verified))
+      {
+        if (group_root)
+          std::cout << line << ": complete, skipped" << std::endl;
+        return RunOutcome::complete;
+      }
+    if (group_root)
+      {
+        std::cout << line << ": " << (complete ? "complete, verifying" : status)
+                  << std::endl;
+        prepare_run_directory(point, complete);
+      }
+    MPI_Barrier(group_comm);
+    apply(point);
+    const auto    start = std::chrono::steady_clock::now();
+    std::ofstream log;
+    if (group_root)
+      log.open(run_directory + "/run.log",
+               complete ? std::ios::app : std::ios::out);
+    // The problem outlives the try block: its destructor (collective
+    // over the group) must not run while an exception unwinds.
+    std::unique_ptr<ImpactProblem> problem;
+    try
+      {
+        if (verify)
+          verification::verify(prm,
+                               group_comm,
+                               group_root ? log : std::cout,
+                               complete);
+        else
+          {
+            problem =
+              std::make_unique<ImpactProblem>(prm,
+                                              group_comm,
+                                              group_root ? log : std::cout);
+            problem->run();
+            problem.reset();
+          }
+      }
+    catch (const std::exception &error)
+      {
+        problem.reset();
+        if (group_root)
+          {
+            log << "\nimpact-fem: error: " << error.what() << std::endl;
+            std::cout << line << ": FAILED (" << run_directory << "/run.log)"
+                      << std::endl;
+          }
+        return ImpactProblem::interrupt_received() != 0 ?
+                 RunOutcome::interrupted :
+                 RunOutcome::failed;
+      }
+    if (group_root && !certify(point, line, start))
+      return RunOutcome::failed;
+    return RunOutcome::complete;
+  }
+
+
+  // A run (re)done from the start leaves nothing of its previous attempt
+  // that could pass for its result; a verified one keeps its run.
+  void
+  Campaign::prepare_run_directory(const Point &point, const bool complete) const
+  {
+    const std::string run_directory = directory + "/" + point.path;
+    std::filesystem::create_directories(run_directory);
+    if (!complete)
+      {
+        // The checksums first: whatever stays behind is not certified.
+        std::filesystem::remove(run_directory + "/" + checksums::manifest_name);
+        for (const char *name : {"summary.json", "history.h5"})
+          std::filesystem::remove(run_directory + "/" + name);
+        write_file_atomically(run_directory + "/parameters.prm",
+                              point.parameters);
+      }
+    std::filesystem::remove(run_directory + "/verification.json");
+  }
+
+
+  // The files are final: certify them, and list the run in the index.
+  bool
+  Campaign::certify(const Point                                 &point,
+                    const std::string                           &line,
+                    const std::chrono::steady_clock::time_point &start) const
+  {
+    const std::string run_directory = directory + "/" + point.path;
+    try
+      {
+        std::vector<std::string> files = {"parameters.prm",
+                                          "history.h5",
+                                          "summary.json"};
+        if (verify)
+          files.push_back("verification.json");
+        checksums::write_manifest(run_directory, files);
+        const auto summary =
+          nlohmann::json::parse(read_file(run_directory + "/summary.json"));
+        std::cout << line << ": done in " << std::setprecision(3)
+                  << std::chrono::duration<double>(
+                       std::chrono::steady_clock::now() - start)
+                       .count()
+                  << " s, restitution " << std::setprecision(6)
+                  << summary["restitution"] << std::endl;
+        write_index();
+        return true;
+      }
+    catch (const std::exception &error)
+      {
+        std::cout << line << ": FAILED (" << error.what() << ")" << std::endl;
+        return false;
+      }
+  }
+
+
+  // With shards, the index is complete once the last shard ends.
+  void
+  Campaign::finish_index(const unsigned int failed) const
+  {
+    write_index();
+    const auto listed =
+      std::count_if(points.begin(), points.end(), [this](const Point &p) {
+        return listed_in_index(p);
+      });
+    std::cout << "impact-fem campaign: index " << directory << "/index.json"
+              << " (" << listed << " of " << points.size() << " runs)"
+              << (failed > 0 ? ", " + std::to_string(failed) +
+                                 " run(s) failed or interrupted" :
+                               std::string())
+              << std::endl;
   }
 } // namespace impact_fem

@@ -7,6 +7,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 
+#include <chrono>
 #include <string>
 #include <vector>
 
@@ -77,6 +78,42 @@ namespace impact_fem
       std::string               path;       ///< relative to the campaign
       std::string               parameters; ///< expected parameters.prm
     };
+
+    /// How a point's turn ended: complete (skipped, done or verified),
+    /// failed, or failed by an interrupt (the campaign stops).
+    enum class RunOutcome
+    {
+      complete,
+      failed,
+      interrupted
+    };
+
+    /// The points of the axes and the velocities, in the campaign's order.
+    void
+    enumerate_points();
+    /// Each point's expected parameters.prm, every point checked.
+    void
+    set_expected_parameters(const ParameterPath &velocity_entry,
+                            const ParameterPath &directory_entry);
+
+    /// The campaign's first line (rank 0), its directory made.
+    void
+    announce(const unsigned int n_groups, const unsigned int group_size) const;
+    /// Point @p i on the rank group @p group_comm.
+    RunOutcome
+    run_point(const unsigned int i, const MPI_Comm group_comm);
+    void
+    prepare_run_directory(const Point &point, const bool complete) const;
+    /// The checksums of the point's files and the index; false if either
+    /// fails (reported on @p line's behalf).
+    bool
+    certify(const Point                                 &point,
+            const std::string                           &line,
+            const std::chrono::steady_clock::time_point &start) const;
+    /// The index once the job's points are done, and the campaign's last
+    /// line.
+    void
+    finish_index(const unsigned int failed) const;
 
     /// Sets the point's values, velocity and run directory in prm.
     void

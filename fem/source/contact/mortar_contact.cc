@@ -62,62 +62,103 @@ namespace impact_fem
   }
 
 
+  namespace
+  {
+    /// The faces of both contact surfaces, gathered from all ranks.
+    struct ContactSurfaces
+    {
+      std::vector<ContactFace> sphere;
+      std::vector<ContactFace> plate;
+    };
+
+
+    // Each face as a 1D element of the vertical displacement: the nodes'
+    // parameters, their mapped positions, their global dofs.
+    ContactSurfaces
+    gather_contact_surfaces(const DoFHandler<2>             &dof_handler,
+                            const Mapping<2>                &mapping,
+                            const AffineConstraints<double> &constraints)
+    {
+      const auto &fe = dof_handler.get_fe();
+
+      std::map<types::global_dof_index, Point<2>> support_points;
+      DoFTools::map_dofs_to_support_points(mapping,
+                                           dof_handler,
+                                           support_points);
+
+      const auto &unit_points = fe.get_unit_face_support_points();
+      std::vector<types::global_dof_index> face_dofs(fe.n_dofs_per_face());
+
+      std::vector<double> sphere_buffer, plate_buffer;
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          for (const auto &face : cell->face_iterators())
+            if (face->at_boundary() &&
+                (face->boundary_id() == boundary_ids::sphere_contact ||
+                 face->boundary_id() == boundary_ids::plate_contact))
+              {
+                face->get_dof_indices(face_dofs);
+                ContactFace contact_face;
+                for (unsigned int i = 0; i < face_dofs.size(); ++i)
+                  if (fe.face_system_to_component_index(i).first == 1)
+                    {
+                      AssertThrow(!constraints.is_constrained(face_dofs[i]),
+                                  ExcMessage("A contact node is constrained "
+                                             "(hanging node on a contact "
+                                             "surface)."));
+                      contact_face.xi.push_back(unit_points[i][0]);
+                      contact_face.x.push_back(support_points.at(face_dofs[i]));
+                      contact_face.z_dofs.push_back(face_dofs[i]);
+                    }
+                pack(contact_face,
+                     face->boundary_id() == boundary_ids::sphere_contact ?
+                       sphere_buffer :
+                       plate_buffer);
+              }
+
+      const MPI_Comm comm = dof_handler.get_communicator();
+      return {unpack(Utilities::MPI::all_gather(comm, sphere_buffer)),
+              unpack(Utilities::MPI::all_gather(comm, plate_buffer))};
+    }
+
+
+    /// The ends of the mortar segments: the face ends of both surfaces, in
+    /// ascending radius; within a segment both sides are one face each.
+    std::vector<double>
+    segment_ends(const std::vector<ContactFace> &sphere_faces,
+                 const std::vector<ContactFace> &plate_faces)
+    {
+      std::vector<double> breaks;
+      for (const auto *faces : {&sphere_faces, &plate_faces})
+        for (const auto &face : *faces)
+          {
+            breaks.push_back(face.r_min());
+            breaks.push_back(face.r_max());
+          }
+      std::sort(breaks.begin(), breaks.end());
+      return breaks;
+    }
+  } // namespace
+
+
   void
   MortarContact::setup(const DoFHandler<2>             &dof_handler,
                        const Mapping<2>                &mapping,
                        const AffineConstraints<double> &constraints,
                        const bool                       rigid_flat)
   {
-    const MPI_Comm comm = dof_handler.get_communicator();
-    const auto    &fe   = dof_handler.get_fe();
-
-    std::map<types::global_dof_index, Point<2>> support_points;
-    DoFTools::map_dofs_to_support_points(mapping, dof_handler, support_points);
-
-    const auto &unit_points = fe.get_unit_face_support_points();
-    std::vector<types::global_dof_index> face_dofs(fe.n_dofs_per_face());
-
-    std::vector<double> sphere_buffer, plate_buffer;
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        for (const auto &face : cell->face_iterators())
-          if (face->at_boundary() &&
-              (face->boundary_id() == boundary_ids::sphere_contact ||
-               face->boundary_id() == boundary_ids::plate_contact))
-            {
-              face->get_dof_indices(face_dofs);
-              ContactFace contact_face;
-              for (unsigned int i = 0; i < face_dofs.size(); ++i)
-                if (fe.face_system_to_component_index(i).first == 1)
-                  {
-                    AssertThrow(!constraints.is_constrained(face_dofs[i]),
-                                ExcMessage("A contact node is constrained "
-                                           "(hanging node on a contact "
-                                           "surface)."));
-                    contact_face.xi.push_back(unit_points[i][0]);
-                    contact_face.x.push_back(support_points.at(face_dofs[i]));
-                    contact_face.z_dofs.push_back(face_dofs[i]);
-                  }
-              pack(contact_face,
-                   face->boundary_id() == boundary_ids::sphere_contact ?
-                     sphere_buffer :
-                     plate_buffer);
-            }
-
-    const std::vector<ContactFace> sphere_faces =
-      unpack(Utilities::MPI::all_gather(comm, sphere_buffer));
-    const std::vector<ContactFace> plate_faces =
-      unpack(Utilities::MPI::all_gather(comm, plate_buffer));
+    const ContactSurfaces surfaces =
+      gather_contact_surfaces(dof_handler, mapping, constraints);
     if (rigid_flat)
       {
-        AssertThrow(!sphere_faces.empty() && plate_faces.empty(),
+        AssertThrow(!surfaces.sphere.empty() && surfaces.plate.empty(),
                     ExcMessage("A rigid plate needs a mesh of the sphere "
                                "alone (no physical group 4), with its contact "
                                "surface (physical group 2)."));
-        setup_rigid_flat(sphere_faces);
+        setup_rigid_flat(surfaces.sphere);
         return;
       }
-    AssertThrow(!sphere_faces.empty() && !plate_faces.empty(),
+    AssertThrow(!surfaces.sphere.empty() && !surfaces.plate.empty(),
                 ExcMessage("The mesh has no sphere or no plate contact "
                            "surface (physical groups 2 and 4)."));
 
@@ -127,25 +168,31 @@ namespace impact_fem
     // would change sign (and vanish on the axis), and weighted gaps with
     // such weights do not keep the bodies apart.
     const std::map<types::global_dof_index, unsigned int> row_of =
-      number_contact_nodes(plate_faces);
-    const unsigned int n_nodes = node_radius.size();
-
-    // Mortar segments: between consecutive face ends of both surfaces.
-    std::vector<double> breaks;
-    for (const auto *faces : {&sphere_faces, &plate_faces})
-      for (const auto &face : *faces)
-        {
-          breaks.push_back(face.r_min());
-          breaks.push_back(face.r_max());
-        }
+      number_contact_nodes(surfaces.plate);
+    // The contact surface ends where the shorter of the two ends.
     const double r_end =
-      std::min(sphere_faces.back().r_max(), plate_faces.back().r_max());
-    std::sort(breaks.begin(), breaks.end());
+      std::min(surfaces.sphere.back().r_max(), surfaces.plate.back().r_max());
+    assemble_weighted_gaps(surfaces.sphere, surfaces.plate, row_of, r_end);
+    setup_pointwise_gaps(surfaces.sphere, surfaces.plate, r_end);
+    active.assign(n_contact_nodes(), false);
+  }
 
-    RowsUnderAssembly rows(n_nodes);
+
+  // Segment by segment, a Gauss rule in r integrates the plate's hat
+  // functions times the gap between the sphere and the plate face over it.
+  void
+  MortarContact::assemble_weighted_gaps(
+    const std::vector<ContactFace>                        &sphere_faces,
+    const std::vector<ContactFace>                        &plate_faces,
+    const std::map<types::global_dof_index, unsigned int> &row_of,
+    const double                                           r_end)
+  {
+    const unsigned int n_nodes = n_contact_nodes();
+    RowsUnderAssembly  rows(n_nodes);
     reference_gaps.reinit(n_nodes);
     node_area.assign(n_nodes, 0.);
 
+    const std::vector<double> breaks = segment_ends(sphere_faces, plate_faces);
     const QGauss<1> quadrature(2 * sphere_faces.front().xi.size() + 2);
     for (unsigned int b = 0; b + 1 < breaks.size(); ++b)
       {
@@ -178,43 +225,31 @@ namespace impact_fem
       }
 
     store_rows(rows);
+  }
 
-    // Pointwise gaps at all nodes of both contact surfaces: the measure of
-    // penetration (the constraint itself is imposed in the weighted sense).
+
+  // Pointwise gaps at all nodes of both contact surfaces: the measure of
+  // penetration (the constraint itself is imposed in the weighted sense).
+  // Each node is paired with the point of the other surface at its radius.
+  void
+  MortarContact::setup_pointwise_gaps(
+    const std::vector<ContactFace> &sphere_faces,
+    const std::vector<ContactFace> &plate_faces,
+    const double                    r_end)
+  {
     point_dofs.clear();
     point_values.clear();
     point_reference_gaps.clear();
-    auto add_point = [&](const ContactFace &upper,
-                         const double       s_upper,
-                         const ContactFace &lower,
-                         const double       s_lower) {
-      std::vector<types::global_dof_index> dofs;
-      std::vector<double>                  values;
-      for (unsigned int k = 0; k < upper.xi.size(); ++k)
-        {
-          dofs.push_back(upper.z_dofs[k]);
-          values.push_back(upper.shape(k, s_upper));
-        }
-      for (unsigned int k = 0; k < lower.xi.size(); ++k)
-        {
-          dofs.push_back(lower.z_dofs[k]);
-          values.push_back(-lower.shape(k, s_lower));
-        }
-      point_dofs.push_back(dofs);
-      point_values.push_back(values);
-      point_reference_gaps.push_back(upper.position(s_upper)[1] -
-                                     lower.position(s_lower)[1]);
-    };
     for (const auto &plate : plate_faces)
       for (unsigned int i = 0; i < plate.xi.size(); ++i)
         if (plate.x[i][0] <= r_end)
           {
             const ContactFace &sphere =
               face_containing(sphere_faces, plate.x[i][0]);
-            add_point(sphere,
-                      sphere.parameter_at_radius(plate.x[i][0]),
-                      plate,
-                      plate.xi[i]);
+            add_pointwise_gap(sphere,
+                              sphere.parameter_at_radius(plate.x[i][0]),
+                              plate,
+                              plate.xi[i]);
           }
     for (const auto &sphere : sphere_faces)
       for (unsigned int i = 0; i < sphere.xi.size(); ++i)
@@ -222,12 +257,36 @@ namespace impact_fem
           {
             const ContactFace &plate =
               face_containing(plate_faces, sphere.x[i][0]);
-            add_point(sphere,
-                      sphere.xi[i],
-                      plate,
-                      plate.parameter_at_radius(sphere.x[i][0]));
+            add_pointwise_gap(sphere,
+                              sphere.xi[i],
+                              plate,
+                              plate.parameter_at_radius(sphere.x[i][0]));
           }
-    active.assign(n_nodes, false);
+  }
+
+
+  void
+  MortarContact::add_pointwise_gap(const ContactFace &upper,
+                                   const double       s_upper,
+                                   const ContactFace &lower,
+                                   const double       s_lower)
+  {
+    std::vector<types::global_dof_index> dofs;
+    std::vector<double>                  values;
+    for (unsigned int k = 0; k < upper.xi.size(); ++k)
+      {
+        dofs.push_back(upper.z_dofs[k]);
+        values.push_back(upper.shape(k, s_upper));
+      }
+    for (unsigned int k = 0; k < lower.xi.size(); ++k)
+      {
+        dofs.push_back(lower.z_dofs[k]);
+        values.push_back(-lower.shape(k, s_lower));
+      }
+    point_dofs.push_back(dofs);
+    point_values.push_back(values);
+    point_reference_gaps.push_back(upper.position(s_upper)[1] -
+                                   lower.position(s_lower)[1]);
   }
 
 

@@ -10,6 +10,8 @@
 #include <cmath>
 #include <cstdlib>
 #include <sstream>
+#include <string>
+#include <vector>
 
 namespace impact_fem
 {
@@ -171,6 +173,160 @@ namespace impact_fem
     }
 
 
+    namespace
+    {
+      /// The table's material of the body's Material entry; null if none.
+      const TableMaterial *
+      table_material(const std::string &body, const std::string &table_name)
+      {
+        if (table_name.empty())
+          return nullptr;
+        const auto found = material_table().find(table_name);
+        AssertThrow(found != material_table().end(),
+                    ExcMessage(body + "/Material = " + table_name +
+                               " is not in the material table; known: " +
+                               material_table_names() +
+                               " (fem/materials/materials.json)."));
+        return &found->second;
+      }
+
+
+      /// The table's value of @p entry; null without a table or without the
+      /// constant in it.
+      const TableMaterial::Constant *
+      table_constant(const TableMaterial *table, const std::string &entry)
+      {
+        if (table == nullptr)
+          return nullptr;
+        const auto constant = table->constants.find(entry);
+        return constant == table->constants.end() ? nullptr : &constant->second;
+      }
+
+
+      // A fixed rigid plane has no constants: a material or a yield strength
+      // given for it is a mistake, not something to ignore.
+      void
+      check_rigid(const BodyMaterial &result, const std::string &yield_text)
+      {
+        const std::string &body = result.body;
+        AssertThrow(result.table_name.empty(),
+                    ExcMessage(body + "/Material = " + result.table_name +
+                               " has no meaning with " + body +
+                               "/Material model = rigid (a fixed rigid "
+                               "plane has no constants); leave it empty."));
+        AssertThrow(yield_text.empty() || std::stod(yield_text) == 0,
+                    ExcMessage(body + "/Yield strength = " + yield_text +
+                               " has no meaning with " + body +
+                               "/Material model = rigid (the plate is a "
+                               "fixed rigid plane, not meshed); leave it at "
+                               "its default."));
+      }
+
+
+      /// The yield strength: the scenario's, else the table's; required by
+      /// the elastic-plastic model.
+      void
+      read_yield_strength(BodyMaterial        &result,
+                          const std::string   &yield_text,
+                          const TableMaterial *table)
+      {
+        const std::string yield_parameter =
+          result_files::body_parameter(result.body,
+                                       result_files::yield_strength);
+        if (!yield_text.empty())
+          {
+            result.yield_strength = std::stod(yield_text);
+            result.constants.push_back(
+              {yield_parameter, result.yield_strength, "Pa", "scenario", ""});
+          }
+        else if (const auto *constant =
+                   table_constant(table, result_files::yield_strength.entry))
+          {
+            result.yield_strength = constant->value;
+            result.constants.push_back({yield_parameter,
+                                        constant->value,
+                                        "Pa",
+                                        "table",
+                                        constant->source});
+          }
+        AssertThrow(result.model != result_files::elastic_plastic_model ||
+                      result.yield_strength > 0,
+                    ExcMessage(
+                      yield_parameter +
+                      (yield_text.empty() ?
+                         " is not given: the elastic-plastic model needs it "
+                         "[Pa], > 0; " +
+                           how_to_give(result.body) + "." :
+                         " must be > 0 Pa for the elastic-plastic model, "
+                         "got " +
+                           yield_text + ".")));
+      }
+
+
+      /**
+       * The model's constants: the scenario's, else the table's; the model
+       * is created only when none is missing (the caller says which are).
+       * The table's values are written into the model's subsection for its
+       * parse_parameters() and taken out again, whatever happens, so that
+       * the handler stays the scenario's.
+       */
+      std::vector<std::string>
+      read_model_constants(ParameterHandler    &prm,
+                           BodyMaterial        &result,
+                           const TableMaterial *table)
+      {
+        const std::string subsection =
+          result_files::material_subsection(result.model);
+        std::vector<std::string> filled, missing;
+        prm.enter_subsection(result.body);
+        prm.enter_subsection(subsection);
+        const auto leave = [&]() {
+          for (const auto &entry : filled)
+            prm.set(entry, "");
+          prm.leave_subsection();
+          prm.leave_subsection();
+        };
+        for (const auto &entry : constants_without_default(result.model))
+          {
+            const std::string parameter =
+              result.body + "/" + subsection + "/" + entry;
+            const std::string text = Utilities::trim(prm.get(entry));
+            if (!text.empty())
+              result.constants.push_back(
+                {parameter, std::stod(text), unit_of(entry), "scenario", ""});
+            else if (const auto *constant = table_constant(table, entry))
+              {
+                prm.set(entry, as_written(constant->value));
+                filled.push_back(entry);
+                result.constants.push_back({parameter,
+                                            constant->value,
+                                            unit_of(entry),
+                                            "table",
+                                            constant->source});
+              }
+            else
+              missing.push_back(parameter);
+          }
+        if (missing.empty())
+          {
+            result.material = Kinds::get(result.model).create();
+            result.material->set_yield_strength(result.yield_strength);
+            try
+              {
+                result.material->parse_parameters(prm);
+              }
+            catch (...)
+              {
+                leave();
+                throw;
+              }
+          }
+        leave();
+        return missing;
+      }
+    } // namespace
+
+
     BodyMaterial
     read_body_material(ParameterHandler &prm, const std::string &body)
     {
@@ -195,120 +351,16 @@ namespace impact_fem
                     "every material model): write 'set Yield strength = " +
                     replaced_yield + "' in subsection " + body +
                     ", outside its subsection Elastic-plastic."));
-      const TableMaterial *table = nullptr;
-      if (!result.table_name.empty())
-        {
-          const auto found = material_table().find(result.table_name);
-          AssertThrow(found != material_table().end(),
-                      ExcMessage(body + "/Material = " + result.table_name +
-                                 " is not in the material table; known: " +
-                                 material_table_names() +
-                                 " (fem/materials/materials.json)."));
-          table = &found->second;
-        }
-      const auto from_table =
-        [&](const std::string &entry) -> const TableMaterial::Constant * {
-        if (table == nullptr)
-          return nullptr;
-        const auto constant = table->constants.find(entry);
-        return constant == table->constants.end() ? nullptr : &constant->second;
-      };
-
+      const TableMaterial *table = table_material(body, result.table_name);
       if (result.model == rigid_model_name)
         {
-          AssertThrow(table == nullptr,
-                      ExcMessage(body + "/Material = " + result.table_name +
-                                 " has no meaning with " + body +
-                                 "/Material model = rigid (a fixed rigid "
-                                 "plane has no constants); leave it empty."));
-          AssertThrow(yield_text.empty() || std::stod(yield_text) == 0,
-                      ExcMessage(body + "/Yield strength = " + yield_text +
-                                 " has no meaning with " + body +
-                                 "/Material model = rigid (the plate is a "
-                                 "fixed rigid plane, not meshed); leave it at "
-                                 "its default."));
+          check_rigid(result, yield_text);
           return result;
         }
+      read_yield_strength(result, yield_text, table);
 
-      // The yield strength: the scenario's, else the table's.
-      const std::string yield_parameter =
-        result_files::body_parameter(body, result_files::yield_strength);
-      const bool plastic = result.model == result_files::elastic_plastic_model;
-      if (!yield_text.empty())
-        {
-          result.yield_strength = std::stod(yield_text);
-          result.constants.push_back(
-            {yield_parameter, result.yield_strength, "Pa", "scenario", ""});
-        }
-      else if (const auto *constant =
-                 from_table(result_files::yield_strength.entry))
-        {
-          result.yield_strength = constant->value;
-          result.constants.push_back({yield_parameter,
-                                      constant->value,
-                                      "Pa",
-                                      "table",
-                                      constant->source});
-        }
-      AssertThrow(!plastic || result.yield_strength > 0,
-                  ExcMessage(
-                    yield_parameter +
-                    (yield_text.empty() ?
-                       " is not given: the elastic-plastic model needs it "
-                       "[Pa], > 0; " +
-                         how_to_give(body) + "." :
-                       " must be > 0 Pa for the elastic-plastic model, got " +
-                         yield_text + ".")));
-
-      // The model's constants: the scenario's, else the table's; none
-      // missing.
-      const std::string subsection =
-        result_files::material_subsection(result.model);
-      std::vector<std::string> filled, missing;
-      prm.enter_subsection(body);
-      prm.enter_subsection(subsection);
-      for (const auto &entry : constants_without_default(result.model))
-        {
-          const std::string parameter = body + "/" + subsection + "/" + entry;
-          const std::string text      = Utilities::trim(prm.get(entry));
-          if (!text.empty())
-            result.constants.push_back(
-              {parameter, std::stod(text), unit_of(entry), "scenario", ""});
-          else if (const auto *constant = from_table(entry))
-            {
-              prm.set(entry, as_written(constant->value));
-              filled.push_back(entry);
-              result.constants.push_back({parameter,
-                                          constant->value,
-                                          unit_of(entry),
-                                          "table",
-                                          constant->source});
-            }
-          else
-            missing.push_back(parameter);
-        }
-      if (missing.empty())
-        {
-          result.material = Kinds::get(result.model).create();
-          result.material->set_yield_strength(result.yield_strength);
-          try
-            {
-              result.material->parse_parameters(prm);
-            }
-          catch (...)
-            {
-              for (const auto &entry : filled)
-                prm.set(entry, "");
-              prm.leave_subsection();
-              prm.leave_subsection();
-              throw;
-            }
-        }
-      for (const auto &entry : filled)
-        prm.set(entry, "");
-      prm.leave_subsection();
-      prm.leave_subsection();
-
+      const std::vector<std::string> missing =
+        read_model_constants(prm, result, table);
       std::string list;
       for (const auto &parameter : missing)
         list += (list.empty() ? "" : ", ") + parameter;

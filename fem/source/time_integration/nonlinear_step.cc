@@ -5,9 +5,11 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
+#include <algorithm>
 #include <cmath>
 #include <deque>
 #include <sstream>
+#include <vector>
 
 namespace impact_fem
 {
@@ -85,6 +87,120 @@ namespace impact_fem
     }
 
 
+    namespace
+    {
+      using VectorType = NonlinearStep::VectorType;
+
+      /**
+       * Anderson's mixing of depth m (Walker & Ni's algorithm AA): the next
+       * plastic force is the map value g minus the combination of the last m
+       * map-value differences whose residual differences best cancel the
+       * residual r.
+       */
+      class AndersonMixing
+      {
+      public:
+        explicit AndersonMixing(const unsigned int depth)
+          : depth(depth)
+        {}
+
+        /// The force of the next iteration from this iteration's residual
+        /// @p r and map value @p g.
+        void
+        next_force(const VectorType &r, const VectorType &g, VectorType &x);
+
+      private:
+        /// The differences to the previous iteration join the history, the
+        /// oldest leaving beyond the depth.
+        void
+        add_differences(const VectorType &r, const VectorType &g);
+
+        /// x -= dG gamma, gamma = argmin ||r - dR gamma||.
+        void
+        mix(const VectorType &r, VectorType &x) const;
+
+        const unsigned int depth;
+        bool               first = true;
+        // Differences of the last m residuals and map values (Walker & Ni's
+        // Delta F and Delta G), oldest first, and the Gram matrix of the
+        // residual differences, gram[i][j] = dR[i] . dR[j]: each difference
+        // enters it once (m products per iteration instead of m^2 / 2, each
+        // a global reduction), with the same products as a fresh
+        // computation.
+        std::deque<VectorType>          dR, dG;
+        std::deque<std::vector<double>> gram;
+        VectorType                      last_r, last_g;
+      };
+
+
+      void
+      AndersonMixing::next_force(const VectorType &r,
+                                 const VectorType &g,
+                                 VectorType       &x)
+      {
+        if (!first)
+          add_differences(r, g);
+        first  = false;
+        last_r = r;
+        last_g = g;
+        x      = g;
+        if (!dR.empty())
+          mix(r, x);
+      }
+
+
+      void
+      AndersonMixing::add_differences(const VectorType &r, const VectorType &g)
+      {
+        last_r.sadd(-1., 1., r); // r_k - r_{k-1}
+        last_g.sadd(-1., 1., g);
+        if (dR.size() == depth)
+          {
+            dR.pop_front();
+            dG.pop_front();
+            gram.pop_front();
+            for (auto &row : gram)
+              row.erase(row.begin());
+          }
+        std::vector<double> row(dR.size() + 1);
+        for (unsigned int j = 0; j < dR.size(); ++j)
+          {
+            row[j] = dR[j] * last_r;
+            gram[j].push_back(row[j]);
+          }
+        row.back() = last_r * last_r;
+        gram.push_back(std::move(row));
+        dR.push_back(last_r);
+        dG.push_back(last_g);
+      }
+
+
+      // The normal equations, with a relative regularisation against nearly
+      // dependent differences.
+      void
+      AndersonMixing::mix(const VectorType &r, VectorType &x) const
+      {
+        const unsigned int n = dR.size();
+        FullMatrix<double> A(n, n);
+        Vector<double>     b(n), gamma(n);
+        double             largest = 0;
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            b(i) = dR[i] * r;
+            for (unsigned int j = 0; j <= i; ++j)
+              A(i, j) = A(j, i) = gram[i][j];
+            largest = std::max(largest, A(i, i));
+          }
+        for (unsigned int i = 0; i < n; ++i)
+          A(i, i) += 1e-12 * largest;
+        A.gauss_jordan();
+        A.vmult(gamma, b);
+        for (unsigned int i = 0; i < n; ++i)
+          x.add(-gamma(i), dG[i]);
+      }
+    } // namespace
+
+
     NonlinearStep::Result
     NonlinearStep::solve(const VectorType   &start_force,
                          const VectorType   &u_start,
@@ -92,18 +208,11 @@ namespace impact_fem
                          const LinearSolve  &linear_solve,
                          const PlasticForce &plastic_force) const
     {
-      const unsigned int m = strategy == "anderson" ? depth : 0;
-      Result             result;
-      VectorType         x(start_force), g(start_force), r(start_force),
+      const bool     anderson = strategy == "anderson";
+      AndersonMixing mixing(depth);
+      Result         result;
+      VectorType     x(start_force), g(start_force), r(start_force),
         previous_u(u_start), step(u_start);
-      // Differences of the last m residuals and map values (Walker & Ni's
-      // Delta F and Delta G), oldest first, and the Gram matrix of the
-      // residual differences, gram[i][j] = dR[i] . dR[j]: each difference
-      // enters it once (m products per iteration instead of m^2 / 2, each a
-      // global reduction), with the same products as a fresh computation.
-      std::deque<VectorType>          dR, dG;
-      std::deque<std::vector<double>> gram;
-      VectorType                      last_r, last_g;
 
       for (unsigned int k = 1; k <= max_iterations; ++k)
         {
@@ -132,58 +241,10 @@ namespace impact_fem
             }
 
           // Next plastic force: g (modified Newton) or Anderson's mixing.
-          if (m == 0)
-            {
-              x = g;
-              continue;
-            }
-          if (k > 1)
-            {
-              last_r.sadd(-1., 1., r); // r_k - r_{k-1}
-              last_g.sadd(-1., 1., g);
-              if (dR.size() == m)
-                {
-                  dR.pop_front();
-                  dG.pop_front();
-                  gram.pop_front();
-                  for (auto &row : gram)
-                    row.erase(row.begin());
-                }
-              std::vector<double> row(dR.size() + 1);
-              for (unsigned int j = 0; j < dR.size(); ++j)
-                {
-                  row[j] = dR[j] * last_r;
-                  gram[j].push_back(row[j]);
-                }
-              row.back() = last_r * last_r;
-              gram.push_back(std::move(row));
-              dR.push_back(last_r);
-              dG.push_back(last_g);
-            }
-          last_r               = r;
-          last_g               = g;
-          x                    = g;
-          const unsigned int n = dR.size();
-          if (n == 0)
-            continue;
-          // gamma = argmin ||r - dR gamma|| by the normal equations, with a
-          // relative regularisation against nearly dependent differences.
-          FullMatrix<double> A(n, n);
-          Vector<double>     b(n), gamma(n);
-          double             largest = 0;
-          for (unsigned int i = 0; i < n; ++i)
-            {
-              b(i) = dR[i] * r;
-              for (unsigned int j = 0; j <= i; ++j)
-                A(i, j) = A(j, i) = gram[i][j];
-              largest = std::max(largest, A(i, i));
-            }
-          for (unsigned int i = 0; i < n; ++i)
-            A(i, i) += 1e-12 * largest;
-          A.gauss_jordan();
-          A.vmult(gamma, b);
-          for (unsigned int i = 0; i < n; ++i)
-            x.add(-gamma(i), dG[i]);
+          if (anderson)
+            mixing.next_force(r, g, x);
+          else
+            x = g;
         }
       return result;
     }

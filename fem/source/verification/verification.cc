@@ -14,7 +14,10 @@
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
+#include <memory>
 #include <sstream>
+#include <utility>
+#include <vector>
 
 namespace impact_fem
 {
@@ -71,6 +74,360 @@ namespace impact_fem
         prm.leave_subsection();
         return value;
       }
+
+
+      /// The discretisation of the fine level (the run itself), from which
+      /// the coarser levels are derived.
+      struct FineLevel
+      {
+        double      r;           ///< refinement ratio
+        bool        nested;      ///< Verification/Meshes = nested
+        int         refinements; ///< Mesh/Contact refinements
+        std::string directory;   ///< Output/Directory
+        double      hc;          ///< contact element size, "auto" resolved
+        double      hmax;
+        double      g;      ///< growth factor
+        double      across; ///< elements across the plate thickness
+        double      dt;     ///< time step, 0: steps per contact time
+        double      n;      ///< steps per contact time, "auto" resolved
+      };
+
+
+      // "auto" resolved as the run resolves it (the coarser levels scale
+      // the number).
+      double
+      fine_contact_element_size(ParameterHandler &prm,
+                                const Parameters &scenario)
+      {
+        bool automatic = false;
+        prm.enter_subsection("Mesh");
+        double hc = discretisation::number_or_auto(prm,
+                                                   "Contact element size",
+                                                   "Mesh/Contact element size",
+                                                   0,
+                                                   automatic);
+        prm.leave_subsection();
+        if (automatic)
+          hc = discretisation::AutomaticDiscretisation(
+                 scenario.expected_contact,
+                 scenario.geometry.sphere_radius,
+                 scenario.hertz.contact_time())
+                 .contact_element_size;
+        return hc;
+      }
+
+
+      // Checked before any level runs: a coarse level that cannot be made
+      // is known before the fine one is paid for.
+      FineLevel
+      read_fine_level(ParameterHandler &prm)
+      {
+        FineLevel fine;
+        fine.r = get_number(prm, "Verification", "Refinement ratio");
+        AssertThrow(fine.r >= 1.5 && fine.r <= 3,
+                    ExcMessage("Verification/Refinement ratio must lie in "
+                               "[1.5, 3], got " +
+                               as_written(fine.r) + "."));
+        prm.enter_subsection("Verification");
+        fine.nested = prm.get("Meshes") == "nested";
+        prm.leave_subsection();
+        prm.enter_subsection("Mesh");
+        fine.refinements = prm.get_integer("Contact refinements");
+        prm.leave_subsection();
+        AssertThrow(!fine.nested || fine.r == 2,
+                    ExcMessage("Verification/Refinement ratio must be 2 with "
+                               "Verification/Meshes = nested (each coarser "
+                               "level has one contact refinement fewer), "
+                               "got " +
+                               as_written(fine.r) + "."));
+        AssertThrow(!fine.nested || fine.refinements >= 2,
+                    ExcMessage("Verification/Meshes = nested needs "
+                               "Mesh/Contact refinements >= 2 on the fine "
+                               "level (the coarsest has two fewer), got " +
+                               std::to_string(fine.refinements) + "."));
+        prm.enter_subsection("Output");
+        fine.directory = prm.get("Directory");
+        prm.leave_subsection();
+
+        const Parameters scenario(prm);
+        fine.hc   = fine_contact_element_size(prm, scenario);
+        fine.hmax = get_number(prm, "Mesh", "Maximum element size");
+        fine.g    = get_number(prm, "Mesh", "Growth factor");
+        fine.across =
+          get_number(prm, "Mesh", "Elements across the plate thickness");
+        fine.dt = get_number(prm, "Time integration", "Time step");
+        fine.n  = scenario.steps_per_contact_time;
+        AssertThrow(fine.dt > 0 || fine.n / (fine.r * fine.r) >= 10,
+                    ExcMessage("Verification: the coarsest level would have "
+                               "fewer than 10 steps per contact time; raise "
+                               "Time integration/Steps per contact time to "
+                               "at least " +
+                               as_written(10 * fine.r * fine.r) + "."));
+        return fine;
+      }
+
+
+      /// One level of the three: 0 fine (the run), 1 medium, 2 coarse.
+      struct Level
+      {
+        unsigned int index;
+        double       scale; ///< r^index
+        std::string  relative_directory;
+        std::string  directory;
+        int          refinements; ///< contact refinements when nested
+        double       hc;
+        double       hmax;
+        double       g;
+      };
+
+
+      // Nested levels drop contact refinements of one mesh, remeshed ones
+      // scale the size field.
+      Level
+      level_of(const FineLevel &fine, const unsigned int index)
+      {
+        Level level;
+        level.index = index;
+        level.scale = std::pow(fine.r, index);
+        level.relative_directory =
+          index == 0 ? "." : "verification/level" + std::to_string(index);
+        level.directory   = index == 0 ?
+                              fine.directory :
+                              fine.directory + "/" + level.relative_directory;
+        level.refinements = fine.refinements - static_cast<int>(index);
+        level.hc   = fine.nested ? fine.hc / std::pow(2., level.refinements) :
+                                   fine.hc * level.scale;
+        level.hmax = fine.nested ? fine.hmax : fine.hmax * level.scale;
+        level.g    = fine.nested ? fine.g : 1 + (fine.g - 1) * level.scale;
+        return level;
+      }
+
+
+      /// A coarser level's entries: its mesh, its time step, its directory.
+      void
+      set_level_parameters(ParameterHandler &prm,
+                           const FineLevel  &fine,
+                           const Level      &level)
+      {
+        if (fine.nested)
+          {
+            prm.enter_subsection("Mesh");
+            prm.set("Contact refinements", std::to_string(level.refinements));
+            prm.leave_subsection();
+          }
+        else
+          {
+            set_number(prm, "Mesh", "Contact element size", level.hc);
+            set_number(prm, "Mesh", "Maximum element size", level.hmax);
+            set_number(prm, "Mesh", "Growth factor", level.g);
+            set_number(prm,
+                       "Mesh",
+                       "Elements across the plate thickness",
+                       std::max(1.0, fine.across / level.scale));
+          }
+        if (fine.dt > 0)
+          set_number(prm,
+                     "Time integration",
+                     "Time step",
+                     fine.dt * level.scale);
+        else
+          set_number(prm,
+                     "Time integration",
+                     "Steps per contact time",
+                     fine.n / level.scale);
+        prm.enter_subsection("Output");
+        prm.set("Directory", level.directory);
+        prm.leave_subsection();
+      }
+
+
+      /// The entries the levels change, kept as text to restore them exactly
+      /// after each level (the caller's handler is the fine level's).
+      class ChangedEntries
+      {
+      public:
+        explicit ChangedEntries(ParameterHandler &prm)
+          : prm(prm)
+        {
+          for (const auto &[section, entry] : entries)
+            {
+              prm.enter_subsection(section);
+              original.push_back(prm.get(entry));
+              prm.leave_subsection();
+            }
+        }
+
+        void
+        restore()
+        {
+          for (unsigned int i = 0; i < original.size(); ++i)
+            {
+              prm.enter_subsection(entries[i].first);
+              prm.set(entries[i].second, original[i]);
+              prm.leave_subsection();
+            }
+        }
+
+      private:
+        static constexpr std::pair<const char *, const char *> entries[] = {
+          {"Mesh", "Contact element size"},
+          {"Mesh", "Maximum element size"},
+          {"Mesh", "Growth factor"},
+          {"Mesh", "Elements across the plate thickness"},
+          {"Mesh", "Contact refinements"},
+          {"Time integration", "Time step"},
+          {"Time integration", "Steps per contact time"},
+          {"Output", "Directory"}};
+
+        ParameterHandler        &prm;
+        std::vector<std::string> original;
+      };
+
+
+      /// Runs one level into its directory; the entries are restored however
+      /// the run ends.
+      void
+      run_level(ParameterHandler &prm,
+                const MPI_Comm    comm,
+                std::ostream     &log,
+                const FineLevel  &fine,
+                const Level      &level,
+                ChangedEntries   &changed)
+      {
+        if (level.index > 0)
+          set_level_parameters(prm, fine, level);
+        if (Utilities::MPI::this_mpi_process(comm) == 0)
+          log << "verification: level " << level.index
+              << (fine.nested ?
+                    " (contact refinements " +
+                      std::to_string(level.refinements) + ", step x " :
+                    std::string(" (sizes and step x "))
+              << level.scale << ") -> " << level.directory << std::endl;
+        std::unique_ptr<ImpactProblem> problem;
+        try
+          {
+            problem = std::make_unique<ImpactProblem>(prm, comm, log);
+            problem->run();
+            problem.reset();
+          }
+        catch (...)
+          {
+            problem.reset();
+            changed.restore();
+            throw;
+          }
+        changed.restore();
+      }
+
+
+      /// The level's entry of verification.json: its discretisation and
+      /// its summary.
+      nlohmann::json
+      level_record(const Level &level, const nlohmann::json &summary)
+      {
+        return {{"name",
+                 level.index == 0 ? "fine" :
+                 level.index == 1 ? "medium" :
+                                    "coarse"},
+                {"directory", level.relative_directory},
+                {"scale", level.scale},
+                {"contact_element_size", level.hc},
+                {"maximum_element_size", level.hmax},
+                {"growth_factor", level.g},
+                {"time_step", summary["time_step"]},
+                {"cells", summary["cells"]},
+                {"dofs", summary["dofs"]},
+                {"steps", summary["steps"]},
+                {"wall_time", summary["wall_time"]},
+                {"summary", summary}};
+      }
+
+
+      /// One quantity's grid convergence over the three levels, as its entry
+      /// of verification.json and its row of the table; undefined unless
+      /// every level has the quantity.
+      nlohmann::json
+      grid_convergence_of(const char                        *name,
+                          const char                        *unit,
+                          const std::vector<nlohmann::json> &levels,
+                          const double                       r,
+                          std::ostream                      &table)
+      {
+        nlohmann::json entry = {{"unit", unit}};
+        double         f[3];
+        bool           finite = true;
+        for (unsigned int level = 0; level < 3; ++level)
+          {
+            const auto &value = levels[level]["summary"][name];
+            finite &= value.is_number();
+            f[level] = value.is_number() ? value.get<double>() : 0.;
+          }
+        entry["fine"]   = number(finite ? f[0] : NAN);
+        entry["medium"] = number(finite ? f[1] : NAN);
+        entry["coarse"] = number(finite ? f[2] : NAN);
+        if (finite)
+          {
+            const GridConvergence c =
+              grid_convergence(f[0], f[1], f[2], r, formal_order);
+            entry["observed_order"]    = number(c.observed_order);
+            entry["extrapolated"]      = number(c.extrapolated);
+            entry["gci_fine"]          = number(c.gci_relative);
+            entry["gci_fine_absolute"] = number(c.gci_absolute);
+            entry["convergence"]       = c.convergence;
+            table << std::setprecision(8) << std::setw(16) << name
+                  << std::setw(16) << f[0] << std::setw(16) << f[1]
+                  << std::setw(16) << f[2] << std::setprecision(3)
+                  << std::setw(8) << c.observed_order << std::setprecision(8)
+                  << std::setw(16) << c.extrapolated << std::setprecision(3)
+                  << std::setw(11) << c.gci_relative * 100 << "%  "
+                  << c.convergence << "\n";
+          }
+        else
+          {
+            for (const char *key : {"observed_order",
+                                    "extrapolated",
+                                    "gci_fine",
+                                    "gci_fine_absolute"})
+              entry[key] = nullptr;
+            entry["convergence"] = "undefined";
+            table << std::setw(16) << name << "  not defined on every level\n";
+          }
+        return entry;
+      }
+
+
+      /// verification.json and the grid-convergence table of the log.
+      void
+      write_verification(const FineLevel                   &fine,
+                         const std::vector<nlohmann::json> &levels,
+                         std::ostream                      &log)
+      {
+        nlohmann::json     result = {{"format", "impact-verification"},
+                                     {"format_version", 1},
+                                     {"refinement_ratio", fine.r},
+                                     {"meshes",
+                                  fine.nested ? "nested" : "remeshed"},
+                                     {"formal_order", formal_order},
+                                     {"levels", levels}};
+        std::ostringstream table;
+        table << "verification (r = " << fine.r
+              << "; GCI of the fine level, Fs = 1.25):\n"
+              << std::setw(16) << "quantity" << std::setw(16) << "fine"
+              << std::setw(16) << "medium" << std::setw(16) << "coarse"
+              << std::setw(8) << "order" << std::setw(16) << "extrapolated"
+              << std::setw(12) << "GCI"
+              << "  convergence\n";
+        for (const auto &[name, unit] : quantities)
+          result["quantities"][name] =
+            grid_convergence_of(name, unit, levels, fine.r, table);
+        const std::string file = fine.directory + "/verification.json";
+        {
+          std::ofstream out(file + ".tmp");
+          out << std::setw(2) << result << std::endl;
+        }
+        std::filesystem::rename(file + ".tmp", file);
+        log << table.str() << "verification: " << file << std::endl;
+      }
     } // namespace
 
 
@@ -125,255 +482,21 @@ namespace impact_fem
            std::ostream     &log,
            const bool        fine_done)
     {
-      const bool   root = Utilities::MPI::this_mpi_process(comm) == 0;
-      const double r    = get_number(prm, "Verification", "Refinement ratio");
-      AssertThrow(r >= 1.5 && r <= 3,
-                  ExcMessage("Verification/Refinement ratio must lie in [1.5, "
-                             "3], got " +
-                             as_written(r) + "."));
-      prm.enter_subsection("Verification");
-      const bool nested = prm.get("Meshes") == "nested";
-      prm.leave_subsection();
-      prm.enter_subsection("Mesh");
-      const int refinements = prm.get_integer("Contact refinements");
-      prm.leave_subsection();
-      AssertThrow(!nested || r == 2,
-                  ExcMessage("Verification/Refinement ratio must be 2 with "
-                             "Verification/Meshes = nested (each coarser "
-                             "level has one contact refinement fewer), got " +
-                             as_written(r) + "."));
-      AssertThrow(!nested || refinements >= 2,
-                  ExcMessage("Verification/Meshes = nested needs Mesh/Contact "
-                             "refinements >= 2 on the fine level (the coarsest "
-                             "has two fewer), got " +
-                             std::to_string(refinements) + "."));
-      prm.enter_subsection("Output");
-      const std::string directory = prm.get("Directory");
-      prm.leave_subsection();
-
-      // The fine level's contact element size and step count, "auto"
-      // resolved as the run resolves them (the coarser levels scale them).
-      const Parameters scenario(prm);
-      double           hc = 0;
-      {
-        bool automatic = false;
-        prm.enter_subsection("Mesh");
-        hc = discretisation::number_or_auto(prm,
-                                            "Contact element size",
-                                            "Mesh/Contact element size",
-                                            0,
-                                            automatic);
-        prm.leave_subsection();
-        if (automatic)
-          hc = discretisation::AutomaticDiscretisation(
-                 scenario.expected_contact,
-                 scenario.geometry.sphere_radius,
-                 scenario.hertz.contact_time())
-                 .contact_element_size;
-      }
-      const double hmax = get_number(prm, "Mesh", "Maximum element size");
-      const double g    = get_number(prm, "Mesh", "Growth factor");
-      const double across =
-        get_number(prm, "Mesh", "Elements across the plate thickness");
-      const double dt = get_number(prm, "Time integration", "Time step");
-      const double n  = scenario.steps_per_contact_time;
-      AssertThrow(dt > 0 || n / (r * r) >= 10,
-                  ExcMessage("Verification: the coarsest level would have "
-                             "fewer than 10 steps per contact time; raise "
-                             "Time integration/Steps per contact time to at "
-                             "least " +
-                             as_written(10 * r * r) + "."));
-
-      // The entries the levels change, as text, to restore them exactly.
-      const std::pair<const char *, const char *> changed[] = {
-        {"Mesh", "Contact element size"},
-        {"Mesh", "Maximum element size"},
-        {"Mesh", "Growth factor"},
-        {"Mesh", "Elements across the plate thickness"},
-        {"Mesh", "Contact refinements"},
-        {"Time integration", "Time step"},
-        {"Time integration", "Steps per contact time"},
-        {"Output", "Directory"}};
-      std::vector<std::string> original;
-      for (const auto &[section, entry] : changed)
-        {
-          prm.enter_subsection(section);
-          original.push_back(prm.get(entry));
-          prm.leave_subsection();
-        }
-      auto restore = [&]() {
-        for (unsigned int i = 0; i < original.size(); ++i)
-          {
-            prm.enter_subsection(changed[i].first);
-            prm.set(changed[i].second, original[i]);
-            prm.leave_subsection();
-          }
-      };
+      const FineLevel fine = read_fine_level(prm);
+      ChangedEntries  changed(prm);
 
       std::vector<nlohmann::json> levels;
-      for (unsigned int level = 0; level < 3; ++level)
+      for (unsigned int index = 0; index < 3; ++index)
         {
-          const double      scale = std::pow(r, level);
-          const std::string level_directory =
-            level == 0 ?
-              directory :
-              directory + "/verification/level" + std::to_string(level);
-          // The level's discretisation: nested levels drop contact
-          // refinements of one mesh, remeshed ones scale the size field.
-          const int level_refinements = refinements - static_cast<int>(level);
-          const double level_hc =
-            nested ? hc / std::pow(2., level_refinements) : hc * scale;
-          const double level_hmax = nested ? hmax : hmax * scale;
-          const double level_g    = nested ? g : 1 + (g - 1) * scale;
-          if (!(level == 0 && fine_done))
-            {
-              if (level > 0)
-                {
-                  if (nested)
-                    {
-                      prm.enter_subsection("Mesh");
-                      prm.set("Contact refinements",
-                              std::to_string(level_refinements));
-                      prm.leave_subsection();
-                    }
-                  else
-                    {
-                      set_number(prm, "Mesh", "Contact element size", level_hc);
-                      set_number(prm,
-                                 "Mesh",
-                                 "Maximum element size",
-                                 level_hmax);
-                      set_number(prm, "Mesh", "Growth factor", level_g);
-                      set_number(prm,
-                                 "Mesh",
-                                 "Elements across the plate thickness",
-                                 std::max(1.0, across / scale));
-                    }
-                  if (dt > 0)
-                    set_number(prm,
-                               "Time integration",
-                               "Time step",
-                               dt * scale);
-                  else
-                    set_number(prm,
-                               "Time integration",
-                               "Steps per contact time",
-                               n / scale);
-                  prm.enter_subsection("Output");
-                  prm.set("Directory", level_directory);
-                  prm.leave_subsection();
-                }
-              if (root)
-                log << "verification: level " << level
-                    << (nested ?
-                          " (contact refinements " +
-                            std::to_string(level_refinements) + ", step x " :
-                          std::string(" (sizes and step x "))
-                    << scale << ") -> " << level_directory << std::endl;
-              std::unique_ptr<ImpactProblem> problem;
-              try
-                {
-                  problem = std::make_unique<ImpactProblem>(prm, comm, log);
-                  problem->run();
-                  problem.reset();
-                }
-              catch (...)
-                {
-                  problem.reset();
-                  restore();
-                  throw;
-                }
-              restore();
-            }
+          const Level level = level_of(fine, index);
+          if (!(index == 0 && fine_done))
+            run_level(prm, comm, log, fine, level, changed);
           MPI_Barrier(comm);
-          const nlohmann::json summary =
-            read_json(level_directory + "/summary.json");
           levels.push_back(
-            {{"name",
-              level == 0 ? "fine" :
-              level == 1 ? "medium" :
-                           "coarse"},
-             {"directory",
-              level == 0 ? "." : "verification/level" + std::to_string(level)},
-             {"scale", scale},
-             {"contact_element_size", level_hc},
-             {"maximum_element_size", level_hmax},
-             {"growth_factor", level_g},
-             {"time_step", summary["time_step"]},
-             {"cells", summary["cells"]},
-             {"dofs", summary["dofs"]},
-             {"steps", summary["steps"]},
-             {"wall_time", summary["wall_time"]},
-             {"summary", summary}});
+            level_record(level, read_json(level.directory + "/summary.json")));
         }
-      if (!root)
-        return;
-
-      nlohmann::json     result = {{"format", "impact-verification"},
-                                   {"format_version", 1},
-                                   {"refinement_ratio", r},
-                                   {"meshes", nested ? "nested" : "remeshed"},
-                                   {"formal_order", formal_order},
-                                   {"levels", levels}};
-      std::ostringstream table;
-      table << "verification (r = " << r
-            << "; GCI of the fine level, Fs = 1.25):\n"
-            << std::setw(16) << "quantity" << std::setw(16) << "fine"
-            << std::setw(16) << "medium" << std::setw(16) << "coarse"
-            << std::setw(8) << "order" << std::setw(16) << "extrapolated"
-            << std::setw(12) << "GCI"
-            << "  convergence\n";
-      for (const auto &[name, unit] : quantities)
-        {
-          nlohmann::json entry = {{"unit", unit}};
-          double         f[3];
-          bool           finite = true;
-          for (unsigned int level = 0; level < 3; ++level)
-            {
-              const auto &value = levels[level]["summary"][name];
-              finite &= value.is_number();
-              f[level] = value.is_number() ? value.get<double>() : 0.;
-            }
-          entry["fine"]   = number(finite ? f[0] : NAN);
-          entry["medium"] = number(finite ? f[1] : NAN);
-          entry["coarse"] = number(finite ? f[2] : NAN);
-          if (finite)
-            {
-              const GridConvergence c =
-                grid_convergence(f[0], f[1], f[2], r, formal_order);
-              entry["observed_order"]    = number(c.observed_order);
-              entry["extrapolated"]      = number(c.extrapolated);
-              entry["gci_fine"]          = number(c.gci_relative);
-              entry["gci_fine_absolute"] = number(c.gci_absolute);
-              entry["convergence"]       = c.convergence;
-              table << std::setprecision(8) << std::setw(16) << name
-                    << std::setw(16) << f[0] << std::setw(16) << f[1]
-                    << std::setw(16) << f[2] << std::setprecision(3)
-                    << std::setw(8) << c.observed_order << std::setprecision(8)
-                    << std::setw(16) << c.extrapolated << std::setprecision(3)
-                    << std::setw(11) << c.gci_relative * 100 << "%  "
-                    << c.convergence << "\n";
-            }
-          else
-            {
-              for (const char *key : {"observed_order",
-                                      "extrapolated",
-                                      "gci_fine",
-                                      "gci_fine_absolute"})
-                entry[key] = nullptr;
-              entry["convergence"] = "undefined";
-              table << std::setw(16) << name
-                    << "  not defined on every level\n";
-            }
-          result["quantities"][name] = entry;
-        }
-      const std::string file = directory + "/verification.json";
-      {
-        std::ofstream out(file + ".tmp");
-        out << std::setw(2) << result << std::endl;
-      }
-      std::filesystem::rename(file + ".tmp", file);
-      log << table.str() << "verification: " << file << std::endl;
+      if (Utilities::MPI::this_mpi_process(comm) == 0)
+        write_verification(fine, levels, log);
     }
   } // namespace verification
 } // namespace impact_fem

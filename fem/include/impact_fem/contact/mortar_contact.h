@@ -151,6 +151,30 @@ namespace impact_fem
     std::map<types::global_dof_index, unsigned int>
     number_contact_nodes(const std::vector<contact_faces::ContactFace> &faces);
 
+    /// B, g_0 and the nodes' areas of the two-body mortar discretisation,
+    /// up to the radius @p r_end where the shorter surface ends.
+    void
+    assemble_weighted_gaps(
+      const std::vector<contact_faces::ContactFace>         &sphere_faces,
+      const std::vector<contact_faces::ContactFace>         &plate_faces,
+      const std::map<types::global_dof_index, unsigned int> &row_of,
+      const double                                           r_end);
+
+    /// The pointwise gaps at the nodes of both surfaces within @p r_end.
+    void
+    setup_pointwise_gaps(
+      const std::vector<contact_faces::ContactFace> &sphere_faces,
+      const std::vector<contact_faces::ContactFace> &plate_faces,
+      const double                                   r_end);
+
+    /// The gap between @p upper at its parameter @p s_upper and @p lower
+    /// at @p s_lower joins the pointwise gaps.
+    void
+    add_pointwise_gap(const contact_faces::ContactFace &upper,
+                      const double                      s_upper,
+                      const contact_faces::ContactFace &lower,
+                      const double                      s_lower);
+
     /// Sparse rows of B while they are assembled, by global dof index.
     using RowsUnderAssembly =
       std::vector<std::map<types::global_dof_index, double>>;
