@@ -1,5 +1,8 @@
 #include <impact_fem/as_written.h>
 #include <impact_fem/analysis/indentation.h>
+#include <impact_fem/analysis/interface.h>
+#include <impact_fem/campaign.h>
+#include <impact_fem/verification/verification.h>
 #include <impact_fem/impact_problem.h>
 #include <impact_fem/result_files.h>
 
@@ -634,4 +637,58 @@ namespace impact_fem
           << dof_handler.n_dofs() << ", steps " << step << ", wall time "
           << wall_time << " s" << std::endl;
   }
+
+
+  /**
+   * `Scenario/Analysis = indentation`: the quasi-static load program of
+   * IndentationControl on the bodies of the impact.
+   */
+  class IndentationAnalysis : public analysis::Interface
+  {
+  public:
+    static void
+    declare_parameters(ParameterHandler &prm)
+    {
+      IndentationControl::declare_parameters(prm);
+    }
+
+    void
+    parse_parameters(ParameterHandler           &prm,
+                     const analysis::Invocation &invocation,
+                     const MPI_Comm              comm) override
+    {
+      // One load program per run: campaigns and the verification's
+      // grid-convergence study are built on impact results.
+      AssertThrow(!Campaign::requested(prm,
+                                       invocation.velocity_list,
+                                       invocation.sweep_items) &&
+                    !verification::enabled(prm),
+                  ExcMessage("Scenario/Analysis = indentation runs alone: "
+                             "campaigns (--velocities, --sweep, Campaign/"
+                             "...) and --verify (Verification/Verify) are "
+                             "for impacts; run each indentation by "
+                             "itself (fem/bench/indentation.sh shows the "
+                             "mesh convergence)."));
+      problem = std::make_unique<ImpactProblem>(prm, comm);
+    }
+
+    int
+    run() override
+    {
+      problem->run();
+      return 0;
+    }
+
+  private:
+    std::unique_ptr<ImpactProblem> problem;
+  };
+
+  IMPACT_FEM_REGISTER_ANALYSIS(
+    IndentationAnalysis,
+    "indentation",
+    2,
+    "quasi-static, displacement-controlled: the base (equatorial plane) of a "
+    "hemisphere is pushed towards the plate by the approach of the subsection "
+    "'Indentation' in steps and back until the force vanishes (use with a "
+    "rigid plate or a plate bottom that is clamped or supported).")
 } // namespace impact_fem

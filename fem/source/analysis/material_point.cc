@@ -8,6 +8,7 @@
 #include <impact_fem/output/history.h>
 
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/symmetric_tensor.h>
 
 #include <cmath>
@@ -79,15 +80,22 @@ namespace impact_fem
   }
 
 
-  MaterialPointTest::MaterialPointTest(ParameterHandler &prm)
-    : parameters(prm)
-  {}
-
-
   void
+  MaterialPointTest::parse_parameters(ParameterHandler &prm,
+                                      const analysis::Invocation &,
+                                      const MPI_Comm comm)
+  {
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
+      parameters = &prm;
+  }
+
+
+  int
   MaterialPointTest::run()
   {
-    const Loading               input      = read_loading(parameters);
+    if (parameters == nullptr)
+      return 0;
+    const Loading               input      = read_loading(*parameters);
     const auto                 &material   = input.material;
     const std::string          &directory  = input.directory;
     const std::string          &loading    = input.loading;
@@ -255,5 +263,13 @@ namespace impact_fem
     std::cout << "material point (" << loading << "): " << n_steps
               << " steps of " << dt << " s, final stress zz " << stress[1][1]
               << " Pa -> " << directory << "/history.h5" << std::endl;
+    return 0;
   }
+
+  IMPACT_FEM_REGISTER_ANALYSIS(
+    MaterialPointTest,
+    "material point",
+    3,
+    "the sphere's material at one point under the history of the subsection "
+    "'Material point' (no mesh, no contact).")
 } // namespace impact_fem

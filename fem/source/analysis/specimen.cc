@@ -9,6 +9,7 @@
 #include <impact_fem/quadrature.h>
 
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/function.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/quadrature_point_data.h>
@@ -462,15 +463,22 @@ namespace impact_fem
   } // namespace
 
 
-  SpecimenTest::SpecimenTest(ParameterHandler &prm)
-    : parameters(prm)
-  {}
-
-
   void
+  SpecimenTest::parse_parameters(ParameterHandler &prm,
+                                 const analysis::Invocation &,
+                                 const MPI_Comm comm)
+  {
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
+      parameters = &prm;
+  }
+
+
+  int
   SpecimenTest::run()
   {
-    ParameterHandler  &prm        = parameters;
+    if (parameters == nullptr)
+      return 0;
+    ParameterHandler  &prm        = *parameters;
     const Loading      input      = read_loading(prm);
     const auto        &material   = input.material;
     const std::string &directory  = input.directory;
@@ -495,7 +503,7 @@ namespace impact_fem
                       "theta-theta = rr and no rz component; set "
                       "Material point/Strain accordingly."));
         run_general_specimen(input, degree);
-        return;
+        return 0;
       }
     AssertThrow(stress_controlled ||
                   (strain_hat[2] == strain_hat[0] && strain_hat[3] == 0),
@@ -758,5 +766,13 @@ namespace impact_fem
               << "): " << triangulation.n_active_cells() << " cells, "
               << dof_handler.n_dofs() << " dofs, " << n_steps << " steps of "
               << dt << " s -> " << directory << "/history.h5" << std::endl;
+    return 0;
   }
+
+  IMPACT_FEM_REGISTER_ANALYSIS(
+    SpecimenTest,
+    "specimen",
+    4,
+    "the same history on a homogeneous cylinder of the sphere's material, "
+    "finite elements, quasi-static.")
 } // namespace impact_fem
