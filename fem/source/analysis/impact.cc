@@ -32,7 +32,7 @@ namespace impact_fem
                                             invocation.sweep_items,
                                             invocation.shard);
     else if (!verification::enabled(prm))
-      problem = create_problem(prm, comm);
+      problem = std::make_unique<ImpactProblem>(prm, comm);
   }
 
 
@@ -50,12 +50,6 @@ namespace impact_fem
     return 0;
   }
 
-
-  std::unique_ptr<ImpactProblem>
-  ImpactAnalysis::create_problem(ParameterHandler &prm, const MPI_Comm comm)
-  {
-    return std::make_unique<ImpactProblem>(prm, comm);
-  }
 
   IMPACT_FEM_REGISTER_ANALYSIS(
     ImpactAnalysis,

@@ -34,11 +34,6 @@ namespace impact_fem
       return true;
     }
 
-  protected:
-    /// The problem of a single run.
-    virtual std::unique_ptr<ImpactProblem>
-    create_problem(ParameterHandler &prm, const MPI_Comm comm);
-
   private:
     ParameterHandler              *parameters   = nullptr;
     MPI_Comm                       communicator = MPI_COMM_WORLD;
