@@ -35,6 +35,7 @@ namespace impact_fem
       interrupt_signal = signal;
     }
 
+
     // Parameters flattened to "Section/Entry" -> value, from the JSON print.
     void
     flatten(const nlohmann::json               &node,
@@ -63,7 +64,6 @@ namespace impact_fem
              std::getenv("OMPI_COMM_WORLD_SIZE") == nullptr &&
              std::getenv("PMI_RANK") == nullptr;
     }
-
 
 
     // The cell's share of M, K, C_boundary, C_material, K_internal, of the
