@@ -4,8 +4,7 @@
 // parameter file, an entry or its value: the message names it, nothing is
 // written); 1 a failure of the run (or of a campaign's run).
 
-#include <impact_fem/analysis/material_point.h>
-#include <impact_fem/analysis/specimen.h>
+#include <impact_fem/analysis/interface.h>
 #include <impact_fem/campaign.h>
 #include <impact_fem/impact_problem.h>
 #include <impact_fem/parameter_path.h>
@@ -83,6 +82,161 @@ namespace
                                    " (see impact-fem --print-parameters for "
                                    "entries, units and ranges)."));
   }
+  /// What the command line asks for beyond the parameter entries.
+  struct CommandLine
+  {
+    std::string                      parameter_file, shard_option;
+    std::vector<std::string>         assignments;
+    impact_fem::analysis::Invocation invocation;
+    bool                             verify = false;
+    /// --help or --print-parameters: print and exit.
+    bool help = false, print_parameters = false;
+  };
+
+
+  // The value of an option that takes one ("--set X" or "--set=X"); @p i
+  // moves past it.
+  bool
+  option_value(const std::string &option,
+               int               &i,
+               const int          argc,
+               char              *argv[],
+               const std::string &missing,
+               std::string       &value)
+  {
+    const std::string arg = argv[i];
+    if (arg == option)
+      {
+        AssertThrow(i + 1 < argc, dealii::ExcMessage(missing));
+        value = argv[++i];
+        return true;
+      }
+    if (arg.rfind(option + "=", 0) == 0)
+      {
+        value = arg.substr(option.size() + 1);
+        return true;
+      }
+    return false;
+  }
+
+
+  CommandLine
+  parse_command_line(const int argc, char *argv[])
+  {
+    using dealii::ExcMessage;
+    CommandLine command;
+    auto       &invocation = command.invocation;
+    std::string value;
+    for (int i = 1; i < argc; ++i)
+      {
+        const std::string arg = argv[i];
+        if (arg == "--help" || arg == "-h")
+          command.help = true;
+        else if (arg == "--print-parameters")
+          command.print_parameters = true;
+        if (command.help || command.print_parameters)
+          return command;
+        if (option_value("--set",
+                         i,
+                         argc,
+                         argv,
+                         "--set needs an argument \"Section/Entry=value\".",
+                         value))
+          command.assignments.push_back(value);
+        else if (arg == "--velocities")
+          {
+            option_value(arg,
+                         i,
+                         argc,
+                         argv,
+                         "--velocities needs a list, e.g. --velocities "
+                         "0.5,1,2.",
+                         invocation.velocity_list);
+            AssertThrow(!invocation.velocity_list.empty(),
+                        ExcMessage("--velocities: empty list."));
+          }
+        else if (option_value("--sweep",
+                              i,
+                              argc,
+                              argv,
+                              "--sweep needs an axis, e.g. --sweep "
+                              "\"Scenario/Plate thickness=0.01,0.02\".",
+                              value))
+          invocation.sweep_items.push_back(value);
+        else if (arg == "--verify")
+          command.verify = true;
+        else if (option_value("--shard",
+                              i,
+                              argc,
+                              argv,
+                              "--shard needs K/N, e.g. --shard 1/4 (share K "
+                              "of a campaign split into N jobs, 1 <= K <= N).",
+                              command.shard_option))
+          {
+            invocation.shard =
+              impact_fem::CampaignShard::parse(command.shard_option, "--shard");
+            invocation.sharded = true;
+          }
+        else if (arg.rfind("--velocities=", 0) == 0)
+          invocation.velocity_list = arg.substr(13);
+        else if (!arg.empty() && arg[0] == '-')
+          {
+            AssertThrow(false, ExcMessage("Unknown option <" + arg + ">."));
+          }
+        else
+          {
+            AssertThrow(command.parameter_file.empty(),
+                        ExcMessage("Only one parameter file may be given."));
+            command.parameter_file = arg;
+          }
+      }
+    return command;
+  }
+
+
+  // The parameter file, then the --set assignments and --verify.
+  void
+  read_parameters(dealii::ParameterHandler &prm, const CommandLine &command)
+  {
+    if (!command.parameter_file.empty())
+      {
+        std::ifstream probe(command.parameter_file);
+        AssertThrow(probe,
+                    dealii::ExcMessage("Cannot open the parameter file <" +
+                                       command.parameter_file + ">."));
+        prm.parse_input(command.parameter_file);
+      }
+    for (const auto &assignment : command.assignments)
+      set_entry(prm, assignment);
+    if (command.verify)
+      set_entry(prm, "Verification/Verify=true");
+  }
+
+
+  // The analysis Scenario/Analysis names; refuses --shard for one that
+  // is not a campaign.
+  std::unique_ptr<impact_fem::analysis::Interface>
+  create_analysis(dealii::ParameterHandler &prm, const CommandLine &command)
+  {
+    prm.enter_subsection("Scenario");
+    const std::string name = prm.get("Analysis");
+    prm.leave_subsection();
+    auto        analysis   = impact_fem::analysis::create(name);
+    const auto &invocation = command.invocation;
+    AssertThrow(!invocation.sharded ||
+                  (analysis->runs_campaigns() &&
+                   impact_fem::Campaign::requested(prm,
+                                                   invocation.velocity_list,
+                                                   invocation.sweep_items)),
+                dealii::ExcMessage(
+                  "--shard " + command.shard_option +
+                  ": only a campaign of impacts is shared among "
+                  "jobs (--velocities, --sweep, Campaign/Impact "
+                  "velocities or Campaign/Sweep); this command "
+                  "runs one " +
+                  name + "."));
+    return analysis;
+  }
 } // namespace
 
 
@@ -93,176 +247,34 @@ main(int argc, char *argv[])
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const bool is_root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
 
-  // The problem outlives the try block, so that an error is reported before
-  // the problem's MPI-collective destructors run.
-  std::unique_ptr<impact_fem::ImpactProblem> problem;
-  ParameterHandler                           prm;
+  // The analysis outlives the try block, so that an error is reported before
+  // its MPI-collective destructors run.
+  std::unique_ptr<impact_fem::analysis::Interface> analysis;
+  ParameterHandler                                 prm;
   // Until the run starts, an error is one of the input: the command line, the
-  // parameter file and entries, their values as the problem reads them.
+  // parameter file and entries, their values as the analysis reads them.
   bool reading_input = true;
   try
     {
       impact_fem::ImpactProblem::declare_parameters(prm);
-      impact_fem::MaterialPointTest::declare_parameters(prm);
+      impact_fem::analysis::declare_parameters(prm);
       impact_fem::Campaign::declare_parameters(prm);
       impact_fem::verification::declare_parameters(prm);
 
-      std::string               parameter_file, velocity_list, shard_option;
-      impact_fem::CampaignShard shard;
-      std::vector<std::string>  assignments, sweep_items;
-      bool                      verify = false;
-      for (int i = 1; i < argc; ++i)
+      const CommandLine command = parse_command_line(argc, argv);
+      if (command.help || command.print_parameters)
         {
-          const std::string arg = argv[i];
-          if (arg == "--help" || arg == "-h")
-            {
-              if (is_root)
-                print_usage(std::cout);
-              return 0;
-            }
-          else if (arg == "--print-parameters")
-            {
-              if (is_root)
-                prm.print_parameters(std::cout, ParameterHandler::PRM);
-              return 0;
-            }
-          else if (arg == "--set")
-            {
-              AssertThrow(i + 1 < argc,
-                          ExcMessage("--set needs an argument "
-                                     "\"Section/Entry=value\"."));
-              assignments.push_back(argv[++i]);
-            }
-          else if (arg.rfind("--set=", 0) == 0)
-            assignments.push_back(arg.substr(6));
-          else if (arg == "--velocities")
-            {
-              AssertThrow(i + 1 < argc,
-                          ExcMessage("--velocities needs a list, e.g. "
-                                     "--velocities 0.5,1,2."));
-              velocity_list = argv[++i];
-              AssertThrow(!velocity_list.empty(),
-                          ExcMessage("--velocities: empty list."));
-            }
-          else if (arg == "--sweep")
-            {
-              AssertThrow(i + 1 < argc,
-                          ExcMessage(
-                            "--sweep needs an axis, e.g. --sweep "
-                            "\"Scenario/Plate thickness=0.01,0.02\"."));
-              sweep_items.push_back(argv[++i]);
-            }
-          else if (arg.rfind("--sweep=", 0) == 0)
-            sweep_items.push_back(arg.substr(8));
-          else if (arg == "--verify")
-            verify = true;
-          else if (arg == "--shard" || arg.rfind("--shard=", 0) == 0)
-            {
-              AssertThrow(arg != "--shard" || i + 1 < argc,
-                          ExcMessage("--shard needs K/N, e.g. --shard 1/4 "
-                                     "(share K of a campaign split into N "
-                                     "jobs, 1 <= K <= N)."));
-              shard_option = arg == "--shard" ? argv[++i] : arg.substr(8);
-              shard = impact_fem::CampaignShard::parse(shard_option, "--shard");
-            }
-          else if (arg.rfind("--velocities=", 0) == 0)
-            velocity_list = arg.substr(13);
-          else if (!arg.empty() && arg[0] == '-')
-            {
-              AssertThrow(false, ExcMessage("Unknown option <" + arg + ">."));
-            }
-          else
-            {
-              AssertThrow(parameter_file.empty(),
-                          ExcMessage("Only one parameter file may be given."));
-              parameter_file = arg;
-            }
+          if (is_root && command.help)
+            print_usage(std::cout);
+          else if (is_root)
+            prm.print_parameters(std::cout, ParameterHandler::PRM);
+          return 0;
         }
-
-      if (!parameter_file.empty())
-        {
-          std::ifstream probe(parameter_file);
-          AssertThrow(probe,
-                      ExcMessage("Cannot open the parameter file <" +
-                                 parameter_file + ">."));
-          prm.parse_input(parameter_file);
-        }
-      for (const auto &assignment : assignments)
-        set_entry(prm, assignment);
-      if (verify)
-        set_entry(prm, "Verification/Verify=true");
-
-      prm.enter_subsection("Scenario");
-      const std::string analysis = prm.get("Analysis");
-      prm.leave_subsection();
-      const bool alone = analysis == "material point" ||
-                         analysis == "specimen" || analysis == "indentation";
-      AssertThrow(shard_option.empty() ||
-                    (!alone && impact_fem::Campaign::requested(prm,
-                                                               velocity_list,
-                                                               sweep_items)),
-                  ExcMessage("--shard " + shard_option +
-                             ": only a campaign of impacts is shared among "
-                             "jobs (--velocities, --sweep, Campaign/Impact "
-                             "velocities or Campaign/Sweep); this command "
-                             "runs one " +
-                             analysis + "."));
-      if (analysis == "material point")
-        {
-          if (is_root)
-            {
-              impact_fem::MaterialPointTest test(prm);
-              reading_input = false;
-              test.run();
-            }
-        }
-      else if (analysis == "specimen")
-        {
-          if (is_root)
-            {
-              impact_fem::SpecimenTest test(prm);
-              reading_input = false;
-              test.run();
-            }
-        }
-      else if (analysis == "indentation")
-        {
-          // One load program per run: campaigns and the verification's
-          // grid-convergence study are built on impact results.
-          AssertThrow(!impact_fem::Campaign::requested(prm,
-                                                       velocity_list,
-                                                       sweep_items) &&
-                        !impact_fem::verification::enabled(prm),
-                      ExcMessage("Scenario/Analysis = indentation runs alone: "
-                                 "campaigns (--velocities, --sweep, Campaign/"
-                                 "...) and --verify (Verification/Verify) are "
-                                 "for impacts; run each indentation by "
-                                 "itself (fem/bench/indentation.sh shows the "
-                                 "mesh convergence)."));
-          problem =
-            std::make_unique<impact_fem::ImpactProblem>(prm, MPI_COMM_WORLD);
-          reading_input = false;
-          problem->run();
-        }
-      else if (impact_fem::Campaign::requested(prm, velocity_list, sweep_items))
-        {
-          impact_fem::Campaign campaign(prm, velocity_list, sweep_items, shard);
-          reading_input = false;
-          if (campaign.run(MPI_COMM_WORLD) > 0)
-            return 1;
-        }
-      else if (impact_fem::verification::enabled(prm))
-        {
-          reading_input = false;
-          impact_fem::verification::verify(prm, MPI_COMM_WORLD, std::cout);
-        }
-      else
-        {
-          problem =
-            std::make_unique<impact_fem::ImpactProblem>(prm, MPI_COMM_WORLD);
-          reading_input = false;
-          problem->run();
-        }
+      read_parameters(prm, command);
+      analysis = create_analysis(prm, command);
+      analysis->parse_parameters(prm, command.invocation, MPI_COMM_WORLD);
+      reading_input = false;
+      return analysis->run();
     }
   catch (ExceptionBase &exc)
     {

@@ -1,4 +1,4 @@
-#include <impact_fem/analysis/indentation.h>
+#include <impact_fem/analysis/interface.h>
 #include <impact_fem/contact/mortar_contact.h>
 #include <impact_fem/materials/body_material.h>
 #include <impact_fem/discretisation/automatic_discretisation.h>
@@ -29,108 +29,106 @@ namespace impact_fem
              condition == FaceCondition::absorbing ? "absorbing" :
                                                      "support";
     }
+
+
+    // The entries of subsection Scenario.
+    void
+    declare_scenario(ParameterHandler &prm)
+    {
+      // The entries the result files' reader interprets carry the
+      // contract's names and units.
+      namespace contract = result_files;
+      const auto unit    = [](const contract::Parameter &parameter) {
+        return std::string(" [") + parameter.unit + "]";
+      };
+      prm.enter_subsection(contract::scenario_subsection);
+      // The analyses registered (analysis/interface.h), in their order.
+      prm.declare_entry("Analysis",
+                        "impact",
+                        Patterns::Selection(analysis::selection()),
+                        analysis::descriptions());
+      prm.declare_entry("Static force",
+                        "1000",
+                        Patterns::Double(),
+                        "Resultant of the body force pressing the sphere in "
+                        "the 'static press' analysis [N], > 0.");
+      prm.declare_entry(contract::impact_velocity.entry,
+                        "1",
+                        Patterns::Double(),
+                        "Speed of the sphere towards the plate at t = 0" +
+                          unit(contract::impact_velocity) +
+                          ", in [1e-6, 100].");
+      prm.declare_entry(contract::initial_gap.entry,
+                        "0",
+                        Patterns::Double(),
+                        "Distance between sphere and plate at t = 0" +
+                          unit(contract::initial_gap) + ", in [0, 10 R].");
+      prm.declare_entry(contract::sphere_radius.entry,
+                        "0.01452",
+                        Patterns::Double(),
+                        "Radius R of the sphere" +
+                          unit(contract::sphere_radius) +
+                          ", > 0 (0.01452 m: a 0.1 kg steel ball).");
+      prm.declare_entry(contract::plate_radius.entry,
+                        "0.35",
+                        Patterns::Double(),
+                        "Radius Rp of the plate" +
+                          unit(contract::plate_radius) +
+                          ", in (2 R, 1000 R] (not used with a rigid plate).");
+      prm.declare_entry(contract::plate_thickness.entry,
+                        "0.35",
+                        Patterns::Double(),
+                        "Thickness H of the plate" +
+                          unit(contract::plate_thickness) +
+                          ", in (0, 1000 R] (not used with a rigid plate).");
+      prm.declare_entry(
+        "Plate side",
+        "absorbing",
+        Patterns::Selection("free|clamped|absorbing"),
+        "Condition on the plate's side face r = Rp: 'free' "
+        "(traction-free), 'clamped' (zero displacement) or "
+        "'absorbing' (Lysmer-Kuhlemeyer dashpots rho c_p on the "
+        "normal and rho c_s on the tangential velocity: the "
+        "finite plate stands in for an infinite one).");
+      prm.declare_entry("Plate bottom",
+                        "absorbing",
+                        Patterns::Selection("free|clamped|absorbing|support"),
+                        "Condition on the plate's bottom face z = -H: 'free', "
+                        "'clamped', 'absorbing' (as Plate side: the plate "
+                        "stands in for a half-space) or 'support' (an elastic "
+                        "foundation pushing back on the normal displacement "
+                        "with Support stiffness per area).");
+      prm.declare_entry(
+        "Support stiffness",
+        "0",
+        Patterns::Double(0),
+        "Normal stiffness per area k of a Plate bottom = "
+        "support [N/m^3 = Pa/m], > 0 (read only then): traction -k u_z on "
+        "the bottom (Winkler foundation; e.g. E/t of a soft "
+        "layer of modulus E and thickness t on a rigid floor).");
+      // Replaced by Plate side and Plate bottom: declared only to
+      // refuse it with a message saying what to write instead.
+      prm.declare_entry("Far boundary",
+                        "",
+                        Patterns::Anything(),
+                        "Replaced by 'Plate side' and 'Plate bottom'; must not "
+                        "be set.");
+      prm.declare_entry("Gravity",
+                        "0",
+                        Patterns::Double(),
+                        "Gravitational acceleration acting on the sphere "
+                        "[m/s^2], >= 0 (the plate is taken as pre-stressed "
+                        "by its own weight).");
+      prm.leave_subsection();
+    }
   } // namespace
 
 
   void
   Parameters::declare_parameters(ParameterHandler &prm)
   {
-    // The entries the result files' reader interprets carry the contract's names and units.
     namespace contract = result_files;
-    const auto unit    = [](const contract::Parameter &parameter) {
-      return std::string(" [") + parameter.unit + "]";
-    };
-    prm.enter_subsection(contract::scenario_subsection);
-    prm.declare_entry(
-      "Analysis",
-      "impact",
-      Patterns::Selection(
-        "impact|static press|indentation|material point|specimen"),
-      "'material point': the sphere's material at one point "
-      "under the history of the subsection 'Material point' "
-      "(no mesh, no contact). 'specimen': the same history "
-      "on a homogeneous cylinder of the sphere's material, "
-      "finite elements, quasi-static. "
-      "'impact': the sphere hits the plate at the impact "
-      "velocity. 'static press': the sphere, at rest, is "
-      "pressed into the plate by a uniform body force of "
-      "resultant 'Static force' (use with a clamped far "
-      "boundary); one quasi-static solve, the Hertz check. "
-      "'indentation': quasi-static, displacement-controlled: "
-      "the base (equatorial plane) of a hemisphere is pushed "
-      "towards the plate by the approach of the subsection "
-      "'Indentation' in steps and back until the force "
-      "vanishes (use with a rigid plate or a plate bottom "
-      "that is clamped or supported).");
-    prm.declare_entry("Static force",
-                      "1000",
-                      Patterns::Double(),
-                      "Resultant of the body force pressing the sphere in "
-                      "the 'static press' analysis [N], > 0.");
-    prm.declare_entry(contract::impact_velocity.entry,
-                      "1",
-                      Patterns::Double(),
-                      "Speed of the sphere towards the plate at t = 0" +
-                        unit(contract::impact_velocity) + ", in [1e-6, 100].");
-    prm.declare_entry(contract::initial_gap.entry,
-                      "0",
-                      Patterns::Double(),
-                      "Distance between sphere and plate at t = 0" +
-                        unit(contract::initial_gap) + ", in [0, 10 R].");
-    prm.declare_entry(contract::sphere_radius.entry,
-                      "0.01452",
-                      Patterns::Double(),
-                      "Radius R of the sphere" + unit(contract::sphere_radius) +
-                        ", > 0 (0.01452 m: a 0.1 kg steel ball).");
-    prm.declare_entry(contract::plate_radius.entry,
-                      "0.35",
-                      Patterns::Double(),
-                      "Radius Rp of the plate" + unit(contract::plate_radius) +
-                        ", in (2 R, 1000 R] (not used with a rigid plate).");
-    prm.declare_entry(contract::plate_thickness.entry,
-                      "0.35",
-                      Patterns::Double(),
-                      "Thickness H of the plate" +
-                        unit(contract::plate_thickness) +
-                        ", in (0, 1000 R] (not used with a rigid plate).");
-    prm.declare_entry("Plate side",
-                      "absorbing",
-                      Patterns::Selection("free|clamped|absorbing"),
-                      "Condition on the plate's side face r = Rp: 'free' "
-                      "(traction-free), 'clamped' (zero displacement) or "
-                      "'absorbing' (Lysmer-Kuhlemeyer dashpots rho c_p on the "
-                      "normal and rho c_s on the tangential velocity: the "
-                      "finite plate stands in for an infinite one).");
-    prm.declare_entry("Plate bottom",
-                      "absorbing",
-                      Patterns::Selection("free|clamped|absorbing|support"),
-                      "Condition on the plate's bottom face z = -H: 'free', "
-                      "'clamped', 'absorbing' (as Plate side: the plate "
-                      "stands in for a half-space) or 'support' (an elastic "
-                      "foundation pushing back on the normal displacement "
-                      "with Support stiffness per area).");
-    prm.declare_entry(
-      "Support stiffness",
-      "0",
-      Patterns::Double(0),
-      "Normal stiffness per area k of a Plate bottom = "
-      "support [N/m^3 = Pa/m], > 0 (read only then): traction -k u_z on "
-      "the bottom (Winkler foundation; e.g. E/t of a soft "
-      "layer of modulus E and thickness t on a rigid floor).");
-    // Replaced by Plate side and Plate bottom: declared only to
-    // refuse it with a message saying what to write instead.
-    prm.declare_entry("Far boundary",
-                      "",
-                      Patterns::Anything(),
-                      "Replaced by 'Plate side' and 'Plate bottom'; must not "
-                      "be set.");
-    prm.declare_entry("Gravity",
-                      "0",
-                      Patterns::Double(),
-                      "Gravitational acceleration acting on the sphere "
-                      "[m/s^2], >= 0 (the plate is taken as pre-stressed "
-                      "by its own weight).");
-    prm.leave_subsection();
+    declare_scenario(prm);
 
     for (const auto *body : {contract::sphere_body, contract::plate_body})
       {
@@ -185,7 +183,6 @@ namespace impact_fem
                       "summary.json, mesh, snapshots); created if needed.");
     prm.leave_subsection();
 
-    IndentationControl::declare_parameters(prm);
     SpherePlateMesh::declare_parameters(prm);
     MortarContact::declare_parameters(prm);
     time_integration::declare_parameters(prm);
@@ -194,6 +191,18 @@ namespace impact_fem
 
 
   Parameters::Parameters(ParameterHandler &prm)
+  {
+    read_scenario(prm);
+    check_scenario();
+    read_bodies(prm);
+    read_run_control(prm);
+    derive_estimates(prm);
+  }
+
+
+  // Subsection Scenario.
+  void
+  Parameters::read_scenario(ParameterHandler &prm)
   {
     namespace contract = result_files;
     prm.enter_subsection(contract::scenario_subsection);
@@ -225,7 +234,13 @@ namespace impact_fem
     plate_faces.support_stiffness = prm.get_double("Support stiffness");
     gravity                       = prm.get_double("Gravity");
     prm.leave_subsection();
+  }
 
+
+  // The bounds of the scenario.
+  void
+  Parameters::check_scenario()
+  {
     // The bounds keep a run finite: below 1e-6 m/s the Hertz contact time,
     // and with it the time step, grows without bound (the solver fails at
     // 1e-300 m/s); a gap, plate or step count far beyond the sphere's scale
@@ -263,6 +278,15 @@ namespace impact_fem
                 ExcMessage("Scenario/Support stiffness must be positive for "
                            "Plate bottom = support, got " +
                            text(plate_faces.support_stiffness) + " N/m^3."));
+  }
+
+
+  // Sphere and Plate: the materials, a rigid plate and what each analysis
+  // allows.
+  void
+  Parameters::read_bodies(ParameterHandler &prm)
+  {
+    namespace contract = result_files;
     for (const unsigned int body : {sphere, plate})
       {
         materials::BodyMaterial read = materials::read_body_material(
@@ -342,7 +366,13 @@ namespace impact_fem
                            "elastic or elastic-plastic with Elastic-plastic/"
                            "Retardation time = 0 (Kelvin-Voigt and Maxwell "
                            "materials need a loading rate)."));
+  }
 
+
+  // Time integration, Solver, Output.
+  void
+  Parameters::read_run_control(ParameterHandler &prm)
+  {
     prm.enter_subsection("Time integration");
     scheme                = prm.get("Scheme");
     prescribed_time_step  = prm.get_double("Time step");
@@ -370,9 +400,17 @@ namespace impact_fem
     prm.leave_subsection();
     AssertThrow(!output_directory.empty(),
                 ExcMessage("Output/Directory must not be empty."));
+  }
 
-    const double R = geometry.sphere_radius;
-    sphere_mass    = material[sphere]->density() * 4. / 3. * M_PI * R * R * R;
+
+  // The sphere's mass, the Hertz estimates and the contact the sizes and
+  // the step left "auto" are made for.
+  void
+  Parameters::derive_estimates(ParameterHandler &prm)
+  {
+    namespace contract = result_files;
+    const double R     = geometry.sphere_radius;
+    sphere_mass = material[sphere]->density() * 4. / 3. * M_PI * R * R * R;
     // A rigid plate has no compliance: E* is the sphere's E/(1 - nu^2).
     auto compliance = [](const materials::Interface *m) {
       return m ? (1 - m->poissons_ratio() * m->poissons_ratio()) /

@@ -138,6 +138,19 @@ namespace impact_fem
     has_material_damping() const;
     bool
     has_internal_variables() const;
+
+  private:
+    // The steps of the constructor, in their order.
+    void
+    read_scenario(ParameterHandler &prm);
+    void
+    check_scenario();
+    void
+    read_bodies(ParameterHandler &prm);
+    void
+    read_run_control(ParameterHandler &prm);
+    void
+    derive_estimates(ParameterHandler &prm);
   };
 } // namespace impact_fem
 

@@ -8,6 +8,7 @@
 #include <impact_fem/output/history.h>
 
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/symmetric_tensor.h>
 
 #include <cmath>
@@ -79,48 +80,110 @@ namespace impact_fem
   }
 
 
-  MaterialPointTest::MaterialPointTest(ParameterHandler &prm)
-    : parameters(prm)
-  {}
-
-
   void
-  MaterialPointTest::run()
+  MaterialPointTest::parse_parameters(ParameterHandler &prm,
+                                      const analysis::Invocation &,
+                                      const MPI_Comm comm)
   {
-    const Loading               input      = read_loading(parameters);
-    const auto                 &material   = input.material;
-    const std::string          &directory  = input.directory;
-    const std::string          &loading    = input.loading;
-    const SymmetricTensor<2, 3> strain_hat = tensor_from(input.strain_hat);
-    const SymmetricTensor<2, 3> stress_hat = tensor_from(input.stress_hat);
-    const double                ramp_time  = input.ramp_time;
-    const double                duration   = input.duration;
-    const double                dt         = input.dt;
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
+      parameters = &prm;
+  }
 
-    const SymmetricTensor<4, 3> C          = material->stiffness_tangent();
-    const SymmetricTensor<4, 3> D          = material->damping_tangent();
-    const SymmetricTensor<4, 3> C_internal = material->internal_tangent(dt);
-    std::vector<SymmetricTensor<2, 3>> internal(
-      material->n_internal_variables());
-    const bool stress_controlled = loading == "stress step";
-    AssertThrow(loading != "axial strain path",
-                ExcMessage(
-                  "Material point: the 'axial strain path' loading "
-                  "(uniaxial stress, lateral faces free) is one of "
-                  "Scenario/Analysis = specimen; at a material point "
-                  "prescribe the lateral strains with 'strain path'."));
-    AssertThrow(!stress_controlled || D.norm() > 0,
-                ExcMessage("Material point: the 'stress step' (creep) "
-                           "loading needs a viscous material (Kelvin-Voigt), "
-                           "whose strain starts continuous."));
 
-    const auto &path = input.path;
-    AssertThrow(loading != "strain path" || !path.empty(),
-                ExcMessage("Material point/Strain path is empty."));
-    // The segment of the strain path at time t and the position in it.
-    auto path_segment = [&](const double t, double &w) {
-      const double       x = t / ramp_time;
-      const unsigned int i = static_cast<unsigned int>(std::floor(x));
+  namespace
+  {
+    /**
+     * One run of the material point: the checked loading, the material's
+     * constant tangents and the state (strain, its rate, stress, internal
+     * variables or the plastic quadrature-point state) with its history.
+     */
+    class MaterialPointRun
+    {
+    public:
+      explicit MaterialPointRun(ParameterHandler &prm);
+
+      /// The steps of the loading; returns their number.
+      unsigned int
+      run();
+
+      /// history.h5 in Output/Directory, and the line on the console.
+      void
+      write(const unsigned int n_steps) const;
+
+    private:
+      /// The segment of the strain path at time t and the position w in it.
+      unsigned int
+      path_segment(const double t, double &w) const;
+      SymmetricTensor<2, 3>
+      prescribed_strain(const double t) const;
+      SymmetricTensor<2, 3>
+      prescribed_strain_rate(const double t) const;
+      void
+      declare_history();
+      void
+      record(const double t);
+      /// The step to time t.
+      void
+      step(const double t);
+
+      const Loading               input;
+      const materials::Interface &material;
+      const std::string          &loading;
+      const SymmetricTensor<2, 3> strain_hat, stress_hat;
+      const double                ramp_time, dt;
+      const SymmetricTensor<4, 3> C, D, C_internal;
+      const bool                  stress_controlled;
+      // A nonlinear (elastic-plastic) material goes through the general
+      // constitutive update; the linear ones keep their closed algebra.
+      const bool                         nonlinear;
+      std::vector<SymmetricTensor<2, 3>> internal;
+      materials::QuadraturePointState    point, point_end;
+      SymmetricTensor<4, 3>              tangent;
+      History                            history;
+      double                             plastic_work = 0, dissipated = 0;
+      SymmetricTensor<2, 3>              strain, strain_rate, stress;
+    };
+
+
+    MaterialPointRun::MaterialPointRun(ParameterHandler &prm)
+      : input(read_loading(prm))
+      , material(*input.material)
+      , loading(input.loading)
+      , strain_hat(tensor_from(input.strain_hat))
+      , stress_hat(tensor_from(input.stress_hat))
+      , ramp_time(input.ramp_time)
+      , dt(input.dt)
+      , C(material.stiffness_tangent())
+      , D(material.damping_tangent())
+      , C_internal(material.internal_tangent(dt))
+      , stress_controlled(loading == "stress step")
+      , nonlinear(!material.is_linear())
+      , internal(material.n_internal_variables())
+    {
+      AssertThrow(loading != "axial strain path",
+                  ExcMessage(
+                    "Material point: the 'axial strain path' loading "
+                    "(uniaxial stress, lateral faces free) is one of "
+                    "Scenario/Analysis = specimen; at a material point "
+                    "prescribe the lateral strains with 'strain path'."));
+      AssertThrow(!stress_controlled || D.norm() > 0,
+                  ExcMessage("Material point: the 'stress step' (creep) "
+                             "loading needs a viscous material (Kelvin-Voigt), "
+                             "whose strain starts continuous."));
+      AssertThrow(loading != "strain path" || !input.path.empty(),
+                  ExcMessage("Material point/Strain path is empty."));
+      AssertThrow(!nonlinear || !stress_controlled,
+                  ExcMessage("Material point: the 'stress step' loading needs "
+                             "a linear viscous material."));
+    }
+
+
+    unsigned int
+    MaterialPointRun::path_segment(const double t, double &w) const
+    {
+      const auto        &path = input.path;
+      const double       x    = t / ramp_time;
+      const unsigned int i    = static_cast<unsigned int>(std::floor(x));
       if (i >= path.size())
         {
           w = 1;
@@ -128,8 +191,13 @@ namespace impact_fem
         }
       w = x - i;
       return i;
-    };
-    auto prescribed_strain = [&](const double t) {
+    }
+
+
+    SymmetricTensor<2, 3>
+    MaterialPointRun::prescribed_strain(const double t) const
+    {
+      const auto &path = input.path;
       if (loading == "strain path")
         {
           double             w;
@@ -138,8 +206,13 @@ namespace impact_fem
           return start + w * (path[i] - start);
         }
       return strain_factor(input, t) * strain_hat;
-    };
-    auto prescribed_strain_rate = [&](const double t) {
+    }
+
+
+    SymmetricTensor<2, 3>
+    MaterialPointRun::prescribed_strain_rate(const double t) const
+    {
+      const auto &path = input.path;
       if (loading == "strain path")
         {
           if (t >= path.size() * ramp_time)
@@ -150,44 +223,33 @@ namespace impact_fem
           return (path[i] - start) / ramp_time;
         }
       return strain_factor_rate(input, t) * strain_hat;
-    };
-    // A nonlinear (elastic-plastic) material goes through the general
-    // constitutive update; the linear ones keep their closed algebra.
-    const bool nonlinear = !material->is_linear();
-    AssertThrow(!nonlinear || !stress_controlled,
-                ExcMessage("Material point: the 'stress step' loading needs "
-                           "a linear viscous material."));
-    materials::QuadraturePointState point, point_end;
-    SymmetricTensor<4, 3>           tangent;
+    }
 
-    History history;
-    declare_components(history, "", "");
-    history.declare("internal_energy",
-                    "J/m^3",
-                    "energy stored in the Maxwell arms");
-    history.declare("dissipated_energy",
-                    "J/m^3",
-                    "cumulative dissipation in the Maxwell arms");
-    if (nonlinear)
-      history.declare(
-        {{"accumulated_plastic_strain", "1", "accumulated plastic strain"},
-         {"plastic_work",
-          "J/m^3",
-          "cumulative plastic work, trapezoidal in the stress"}});
-    double plastic_work = 0;
 
-    // Initial state: unstrained; under a stress step the dashpot takes the
-    // load at t = 0+, d eps/dt = D^-1 sigma_hat.
-    SymmetricTensor<2, 3> strain, strain_rate, stress;
-    if (stress_controlled)
-      {
-        strain_rate = invert(D) * stress_hat;
-        stress      = stress_hat;
-      }
-    double dissipated = 0;
-    auto   record     = [&](const double t) {
+    void
+    MaterialPointRun::declare_history()
+    {
+      declare_components(history, "", "");
+      history.declare("internal_energy",
+                      "J/m^3",
+                      "energy stored in the Maxwell arms");
+      history.declare("dissipated_energy",
+                      "J/m^3",
+                      "cumulative dissipation in the Maxwell arms");
+      if (nonlinear)
+        history.declare(
+          {{"accumulated_plastic_strain", "1", "accumulated plastic strain"},
+           {"plastic_work",
+            "J/m^3",
+            "cumulative plastic work, trapezoidal in the stress"}});
+    }
+
+
+    void
+    MaterialPointRun::record(const double t)
+    {
       append_components(history, t, strain, stress);
-      history.append("internal_energy", material->internal_energy(internal));
+      history.append("internal_energy", material.internal_energy(internal));
       history.append("dissipated_energy", dissipated);
       if (nonlinear)
         {
@@ -195,65 +257,109 @@ namespace impact_fem
                          point.accumulated_plastic_strain);
           history.append("plastic_work", plastic_work);
         }
-    };
-    record(0);
+    }
 
-    const unsigned int n_steps =
-      static_cast<unsigned int>(std::lround(duration / dt));
-    for (unsigned int step = 1; step <= n_steps; ++step)
-      {
-        const double                t = step * dt;
-        const SymmetricTensor<2, 3> predictor =
-          material->internal_stress_predictor(internal, strain, dt);
-        SymmetricTensor<2, 3> new_strain, new_rate;
-        if (stress_controlled)
-          {
-            // C eps + D d eps/dt + C_int eps + predictor = sigma_hat with the
-            // trapezoidal rule of the Newmark step for d eps/dt.
-            new_strain =
-              invert(C + 2 / dt * D + C_internal) *
-              (stress_hat + D * (2 / dt * strain + strain_rate) - predictor);
-            new_rate = 2 / dt * (new_strain - strain) - strain_rate;
-          }
-        else
-          {
-            new_strain = prescribed_strain(t);
-            new_rate   = prescribed_strain_rate(t);
-          }
-        if (nonlinear)
-          {
-            const SymmetricTensor<2, 3> elastic_start =
-              C * (strain - point.plastic_strain);
-            const SymmetricTensor<2, 3> elastic_end = material->stress_update(
-              point, new_strain, dt, point_end, tangent);
-            plastic_work += 0.5 * (elastic_start + elastic_end) *
-                            (point_end.plastic_strain - point.plastic_strain);
-            point  = point_end;
-            stress = elastic_end + D * new_rate;
-          }
-        else
-          {
-            stress = C * new_strain + D * new_rate + C_internal * new_strain +
-                     predictor;
-            dissipated += material->update_internal_variables(internal,
-                                                              strain,
-                                                              new_strain,
-                                                              dt);
-          }
-        strain      = new_strain;
-        strain_rate = new_rate;
-        record(t);
-      }
 
-    std::filesystem::create_directories(directory);
-    std::map<std::string, std::string> text;
-    text["Scenario/Analysis"]      = "material point";
-    text["Material point/Loading"] = loading;
-    std::map<std::string, double> numbers;
-    numbers["time_step [s]"] = dt;
-    history.write_hdf5(directory + "/history.h5", text, numbers, true);
-    std::cout << "material point (" << loading << "): " << n_steps
-              << " steps of " << dt << " s, final stress zz " << stress[1][1]
-              << " Pa -> " << directory << "/history.h5" << std::endl;
+    void
+    MaterialPointRun::step(const double t)
+    {
+      const SymmetricTensor<2, 3> predictor =
+        material.internal_stress_predictor(internal, strain, dt);
+      SymmetricTensor<2, 3> new_strain, new_rate;
+      if (stress_controlled)
+        {
+          // C eps + D d eps/dt + C_int eps + predictor = sigma_hat with the
+          // trapezoidal rule of the Newmark step for d eps/dt.
+          new_strain =
+            invert(C + 2 / dt * D + C_internal) *
+            (stress_hat + D * (2 / dt * strain + strain_rate) - predictor);
+          new_rate = 2 / dt * (new_strain - strain) - strain_rate;
+        }
+      else
+        {
+          new_strain = prescribed_strain(t);
+          new_rate   = prescribed_strain_rate(t);
+        }
+      if (nonlinear)
+        {
+          const SymmetricTensor<2, 3> elastic_start =
+            C * (strain - point.plastic_strain);
+          const SymmetricTensor<2, 3> elastic_end =
+            material.stress_update(point, new_strain, dt, point_end, tangent);
+          plastic_work += 0.5 * (elastic_start + elastic_end) *
+                          (point_end.plastic_strain - point.plastic_strain);
+          point  = point_end;
+          stress = elastic_end + D * new_rate;
+        }
+      else
+        {
+          stress =
+            C * new_strain + D * new_rate + C_internal * new_strain + predictor;
+          dissipated += material.update_internal_variables(internal,
+                                                           strain,
+                                                           new_strain,
+                                                           dt);
+        }
+      strain      = new_strain;
+      strain_rate = new_rate;
+      record(t);
+    }
+
+
+    unsigned int
+    MaterialPointRun::run()
+    {
+      declare_history();
+      // Initial state: unstrained; under a stress step the dashpot takes the
+      // load at t = 0+, d eps/dt = D^-1 sigma_hat.
+      if (stress_controlled)
+        {
+          strain_rate = invert(D) * stress_hat;
+          stress      = stress_hat;
+        }
+      record(0);
+      const unsigned int n_steps =
+        static_cast<unsigned int>(std::lround(input.duration / dt));
+      for (unsigned int step_number = 1; step_number <= n_steps; ++step_number)
+        step(step_number * dt);
+      return n_steps;
+    }
+
+
+    void
+    MaterialPointRun::write(const unsigned int n_steps) const
+    {
+      const std::string &directory = input.directory;
+      std::filesystem::create_directories(directory);
+      std::map<std::string, std::string> text;
+      text["Scenario/Analysis"]      = "material point";
+      text["Material point/Loading"] = loading;
+      std::map<std::string, double> numbers;
+      numbers["time_step [s]"] = dt;
+      history.write_hdf5(directory + "/history.h5", text, numbers, true);
+      std::cout << "material point (" << loading << "): " << n_steps
+                << " steps of " << dt << " s, final stress zz " << stress[1][1]
+                << " Pa -> " << directory << "/history.h5" << std::endl;
+    }
+  } // namespace
+
+
+  int
+  MaterialPointTest::run()
+  {
+    if (parameters == nullptr)
+      return 0;
+    MaterialPointRun   point(*parameters);
+    const unsigned int n_steps = point.run();
+    point.write(n_steps);
+    return 0;
   }
+
+
+  IMPACT_FEM_REGISTER_ANALYSIS(
+    MaterialPointTest,
+    "material point",
+    3,
+    "the sphere's material at one point under the history of the subsection "
+    "'Material point' (no mesh, no contact).")
 } // namespace impact_fem

@@ -9,6 +9,7 @@
 #include <impact_fem/quadrature.h>
 
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/function.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/quadrature_point_data.h>
@@ -168,6 +169,36 @@ namespace impact_fem
     }
 
 
+    // The cylinder 0 <= r <= 1 mm, 0 <= z <= 1 mm of 2 x 2 cells and its
+    // finite elements of degree @p degree; boundary ids of hyper_rectangle:
+    // 0 axis, 1 side, 2 bottom, 3 top.
+    struct SpecimenMesh
+    {
+      explicit SpecimenMesh(const unsigned int degree)
+        : fe(FE_Q<2>(degree), 2)
+        , quadrature(cell_quadrature(fe))
+      {
+        GridGenerator::hyper_rectangle(triangulation,
+                                       Point<2>(0, 0),
+                                       Point<2>(size, size),
+                                       true);
+        triangulation.refine_global(1);
+        dof_handler.reinit(triangulation);
+        dof_handler.distribute_dofs(fe);
+        DynamicSparsityPattern dsp(dof_handler.n_dofs());
+        DoFTools::make_sparsity_pattern(dof_handler, dsp);
+        sparsity.copy_from(dsp);
+      }
+
+      static constexpr double size = 1e-3;
+      Triangulation<2>        triangulation;
+      const FESystem<2>       fe;
+      DoFHandler<2>           dof_handler;
+      const QGauss<2>         quadrature;
+      SparsityPattern         sparsity;
+    };
+
+
     // The specimen with the general constitutive update (an elastic-plastic
     // material, or any material under the axial strain path): at each step
     // Newton iterations on the quasi-static equilibrium
@@ -179,179 +210,233 @@ namespace impact_fem
     // point follows the same path, so the mean stress is the material's
     // response to the mean strain and 'inhomogeneity' shows whether it
     // stayed homogeneous.
-    void
-    run_general_specimen(const Loading &input, const unsigned int degree)
+    class GeneralSpecimen
     {
-      const auto        &material   = input.material;
-      const std::string &loading    = input.loading;
-      const auto        &strain_hat = input.strain_hat;
-      const double       dt         = input.dt;
-      const bool         uniaxial   = loading == "axial strain path";
-      AssertThrow(!uniaxial || !input.axial_path.empty(),
-                  ExcMessage("Material point/Axial strain path is empty."));
-      AssertThrow(loading != "stress step",
-                  ExcMessage(
-                    "Specimen: the 'stress step' (creep) loading "
-                    "needs a linear viscous material (Kelvin-Voigt)."));
+    public:
+      /// Refuses the loadings it cannot run, naming the entry.
+      static void
+      check(const Loading &input);
 
-      const double     size = 1e-3;
-      Triangulation<2> triangulation;
-      GridGenerator::hyper_rectangle(triangulation,
-                                     Point<2>(0, 0),
-                                     Point<2>(size, size),
-                                     true);
-      triangulation.refine_global(1);
-      const FESystem<2> fe(FE_Q<2>(degree), 2);
-      DoFHandler<2>     dof_handler(triangulation);
-      dof_handler.distribute_dofs(fe);
-      const QGauss<2>                  quadrature = cell_quadrature(fe);
-      FEValues<2>                      fe_values(fe,
-                            quadrature,
-                            update_values | update_gradients |
-                              update_quadrature_points | update_JxW_values);
-      const FEValuesExtractors::Vector u(0);
-      const unsigned int               dofs_per_cell = fe.n_dofs_per_cell();
-      const unsigned int               n_q           = quadrature.size();
+      GeneralSpecimen(const Loading &input, const unsigned int degree);
 
-      CellDataStorage<Triangulation<2>::cell_iterator,
-                      materials::QuadraturePointState>
-        states;
-      for (const auto &cell : triangulation.active_cell_iterators())
-        {
-          states.initialize(cell, n_q);
-          for (const auto &state : states.get_data(cell))
-            state->internal.assign(material->n_internal_variables(),
-                                   SymmetricTensor<2, 3>());
-        }
-      const SymmetricTensor<4, 3> D = material->damping_tangent();
+      void
+      run();
 
-      DynamicSparsityPattern dsp(dof_handler.n_dofs());
-      DoFTools::make_sparsity_pattern(dof_handler, dsp);
-      SparsityPattern sparsity;
-      sparsity.copy_from(dsp);
-      SparseMatrix<double> tangent_matrix(sparsity);
-      const unsigned int   n_dofs = dof_handler.n_dofs();
-      Vector<double> displacement(n_dofs), velocity(n_dofs), previous(n_dofs),
-        previous_velocity(n_dofs), residual(n_dofs), internal_force(n_dofs),
-        increment(n_dofs);
-
+    private:
       // Boundary ids of hyper_rectangle: 0 axis, 1 side, 2 bottom, 3 top.
       // Uniaxial: u_r = 0 on the axis, u_z = 0 at the bottom, u_z = eps h
       // at the top, the side free. Otherwise the homogeneous strain on the
       // whole boundary, as in the linear specimen.
-      auto make_constraints = [&](const double t, const bool homogeneous) {
-        AffineConstraints<double> constraints;
-        if (uniaxial)
-          {
-            const double top =
-              homogeneous ?
-                0. :
-                axial_strain(input.axial_path, input.ramp_time, t) * size;
-            constrain_rollers(dof_handler, fe, constraints);
-            VectorTools::interpolate_boundary_values(
-              dof_handler,
-              3,
-              Functions::ConstantFunction<2>(top, 2),
-              constraints,
-              fe.component_mask(FEValuesExtractors::Scalar(1)));
-          }
-        else
-          {
-            const double factor = homogeneous ? 0. : strain_factor(input, t);
-            constrain_homogeneous_strain(dof_handler,
-                                         factor * strain_hat[0],
-                                         factor * strain_hat[1],
-                                         constraints);
-          }
-        constraints.close();
-        return constraints;
-      };
-
+      AffineConstraints<double>
+      make_constraints(const double t, const bool homogeneous) const;
       // Assembles the tangent and the out-of-balance force -r(u) (condensed
       // with the homogeneous constraints) and the unconstrained internal
-      // force (its norm scales the convergence test); with commit, stores the
-      // updated states instead, and returns the step's plastic work [J]
+      // force (its norm scales the convergence test); with commit, stores
+      // the updated states instead, and returns the step's plastic work [J]
       // (trapezoidal in the stress).
+      double
+      assemble(const AffineConstraints<double> &constraints, const bool commit);
+      void
+      declare_history();
+      void
+      record(const double t, const unsigned int iterations);
+      // Initial strain rate (the trapezoidal rule needs it with a viscous
+      // part): the prescribed one; under the axial path the elastic lateral
+      // contraction -nu times the axial rate.
+      void
+      set_initial_rate();
+      // The Newton iterations of step @p step; returns their number.
+      unsigned int
+      solve_step(const unsigned int step);
+
+      const Loading                   &input;
+      const materials::Interface      &material;
+      const std::vector<double>       &strain_hat;
+      const double                     dt;
+      const bool                       uniaxial;
+      SpecimenMesh                     mesh;
+      FEValues<2>                      fe_values;
+      const FEValuesExtractors::Vector u;
+      const unsigned int               dofs_per_cell, n_q;
+      const SymmetricTensor<4, 3>      D;
+      CellDataStorage<Triangulation<2>::cell_iterator,
+                      materials::QuadraturePointState>
+                           states;
+      SparseMatrix<double> tangent_matrix;
+      Vector<double>       displacement, velocity, previous, previous_velocity,
+        residual, internal_force, increment;
       std::vector<SymmetricTensor<2, 3>> strains, stresses;
       std::vector<double>                plastic_strains;
-      auto assemble = [&](const AffineConstraints<double> &constraints,
-                          const bool                       commit) {
-        tangent_matrix = 0;
-        residual       = 0;
-        internal_force = 0;
-        strains.clear();
-        stresses.clear();
-        plastic_strains.clear();
-        double             step_plastic_work = 0;
-        FullMatrix<double> cell_matrix(dofs_per_cell, dofs_per_cell);
-        Vector<double>     cell_rhs(dofs_per_cell);
-        std::vector<types::global_dof_index> dofs(dofs_per_cell);
-        std::vector<SymmetricTensor<2, 3>>   shape_strain(dofs_per_cell);
-        std::vector<Tensor<1, 2>>            values(n_q), rates(n_q);
-        std::vector<Tensor<2, 2>>   gradients(n_q), rate_gradients(n_q);
-        const SymmetricTensor<4, 3> C = material->stiffness_tangent();
-        for (const auto &cell : dof_handler.active_cell_iterators())
-          {
-            fe_values.reinit(cell);
-            fe_values[u].get_function_values(displacement, values);
-            fe_values[u].get_function_gradients(displacement, gradients);
-            fe_values[u].get_function_values(velocity, rates);
-            fe_values[u].get_function_gradients(velocity, rate_gradients);
-            cell_matrix             = 0;
-            cell_rhs                = 0;
-            const auto point_states = states.get_data(cell);
-            for (unsigned int q = 0; q < n_q; ++q)
-              {
-                const double r  = fe_values.quadrature_point(q)[0];
-                const double dV = 2 * M_PI * r * fe_values.JxW(q);
-                materials::QuadraturePointState &start = *point_states[q];
-                const SymmetricTensor<2, 3>      eps =
-                  axisymmetric_strain(values[q], gradients[q], r);
-                materials::QuadraturePointState end;
-                SymmetricTensor<4, 3>           tangent;
-                const SymmetricTensor<2, 3>     elastic_plastic =
-                  material->stress_update(start, eps, dt, end, tangent);
-                const SymmetricTensor<2, 3> sigma =
-                  elastic_plastic +
-                  D * axisymmetric_strain(rates[q], rate_gradients[q], r);
-                const SymmetricTensor<4, 3> A = tangent + 2 / dt * D;
-                for (unsigned int i = 0; i < dofs_per_cell; ++i)
-                  shape_strain[i] =
-                    axisymmetric_strain(fe_values[u].value(i, q),
-                                        fe_values[u].gradient(i, q),
-                                        r);
-                for (unsigned int i = 0; i < dofs_per_cell; ++i)
-                  {
-                    for (unsigned int j = 0; j < dofs_per_cell; ++j)
-                      cell_matrix(i, j) +=
-                        (A * shape_strain[j]) * shape_strain[i] * dV;
-                    cell_rhs(i) -= (sigma * shape_strain[i]) * dV;
-                  }
-                if (commit)
-                  {
-                    const SymmetricTensor<2, 3> elastic_start =
-                      C * (start.strain - start.plastic_strain);
-                    step_plastic_work +=
-                      0.5 *
-                      ((elastic_start + elastic_plastic) *
-                       (end.plastic_strain - start.plastic_strain)) *
-                      dV;
-                    start = end;
-                  }
-                strains.push_back(eps);
-                stresses.push_back(sigma);
-                plastic_strains.push_back(end.accumulated_plastic_strain);
-              }
-            cell->get_dof_indices(dofs);
-            for (unsigned int i = 0; i < dofs_per_cell; ++i)
-              internal_force(dofs[i]) -= cell_rhs(i);
-            constraints.distribute_local_to_global(
-              cell_matrix, cell_rhs, dofs, tangent_matrix, residual);
-          }
-        return step_plastic_work;
-      };
+      History                            history;
+      double                             plastic_work = 0;
+    };
 
-      History history;
+
+    GeneralSpecimen::GeneralSpecimen(const Loading     &input,
+                                     const unsigned int degree)
+      : input(input)
+      , material(*input.material)
+      , strain_hat(input.strain_hat)
+      , dt(input.dt)
+      , uniaxial(input.loading == "axial strain path")
+      , mesh(degree)
+      , fe_values(mesh.fe,
+                  mesh.quadrature,
+                  update_values | update_gradients | update_quadrature_points |
+                    update_JxW_values)
+      , u(0)
+      , dofs_per_cell(mesh.fe.n_dofs_per_cell())
+      , n_q(mesh.quadrature.size())
+      , D(material.damping_tangent())
+      , tangent_matrix(mesh.sparsity)
+    {
+      for (const auto &cell : mesh.triangulation.active_cell_iterators())
+        {
+          states.initialize(cell, n_q);
+          for (const auto &state : states.get_data(cell))
+            state->internal.assign(material.n_internal_variables(),
+                                   SymmetricTensor<2, 3>());
+        }
+      const unsigned int n_dofs = mesh.dof_handler.n_dofs();
+      for (auto *vector : {&displacement,
+                           &velocity,
+                           &previous,
+                           &previous_velocity,
+                           &residual,
+                           &internal_force,
+                           &increment})
+        vector->reinit(n_dofs);
+    }
+
+
+    void
+    GeneralSpecimen::check(const Loading &input)
+    {
+      AssertThrow(input.loading != "axial strain path" ||
+                    !input.axial_path.empty(),
+                  ExcMessage("Material point/Axial strain path is empty."));
+      AssertThrow(input.loading != "stress step",
+                  ExcMessage(
+                    "Specimen: the 'stress step' (creep) loading "
+                    "needs a linear viscous material (Kelvin-Voigt)."));
+    }
+
+
+    AffineConstraints<double>
+    GeneralSpecimen::make_constraints(const double t,
+                                      const bool   homogeneous) const
+    {
+      AffineConstraints<double> constraints;
+      if (uniaxial)
+        {
+          const double top =
+            homogeneous ?
+              0. :
+              axial_strain(input.axial_path, input.ramp_time, t) * mesh.size;
+          constrain_rollers(mesh.dof_handler, mesh.fe, constraints);
+          VectorTools::interpolate_boundary_values(
+            mesh.dof_handler,
+            3,
+            Functions::ConstantFunction<2>(top, 2),
+            constraints,
+            mesh.fe.component_mask(FEValuesExtractors::Scalar(1)));
+        }
+      else
+        {
+          const double factor = homogeneous ? 0. : strain_factor(input, t);
+          constrain_homogeneous_strain(mesh.dof_handler,
+                                       factor * strain_hat[0],
+                                       factor * strain_hat[1],
+                                       constraints);
+        }
+      constraints.close();
+      return constraints;
+    }
+
+
+    double
+    GeneralSpecimen::assemble(const AffineConstraints<double> &constraints,
+                              const bool                       commit)
+    {
+      tangent_matrix = 0;
+      residual       = 0;
+      internal_force = 0;
+      strains.clear();
+      stresses.clear();
+      plastic_strains.clear();
+      double             step_plastic_work = 0;
+      FullMatrix<double> cell_matrix(dofs_per_cell, dofs_per_cell);
+      Vector<double>     cell_rhs(dofs_per_cell);
+      std::vector<types::global_dof_index> dofs(dofs_per_cell);
+      std::vector<SymmetricTensor<2, 3>>   shape_strain(dofs_per_cell);
+      std::vector<Tensor<1, 2>>            values(n_q), rates(n_q);
+      std::vector<Tensor<2, 2>>            gradients(n_q), rate_gradients(n_q);
+      const SymmetricTensor<4, 3>          C = material.stiffness_tangent();
+      for (const auto &cell : mesh.dof_handler.active_cell_iterators())
+        {
+          fe_values.reinit(cell);
+          fe_values[u].get_function_values(displacement, values);
+          fe_values[u].get_function_gradients(displacement, gradients);
+          fe_values[u].get_function_values(velocity, rates);
+          fe_values[u].get_function_gradients(velocity, rate_gradients);
+          cell_matrix             = 0;
+          cell_rhs                = 0;
+          const auto point_states = states.get_data(cell);
+          for (unsigned int q = 0; q < n_q; ++q)
+            {
+              const double r  = fe_values.quadrature_point(q)[0];
+              const double dV = 2 * M_PI * r * fe_values.JxW(q);
+              materials::QuadraturePointState &start = *point_states[q];
+              const SymmetricTensor<2, 3>      eps =
+                axisymmetric_strain(values[q], gradients[q], r);
+              materials::QuadraturePointState end;
+              SymmetricTensor<4, 3>           tangent;
+              const SymmetricTensor<2, 3>     elastic_plastic =
+                material.stress_update(start, eps, dt, end, tangent);
+              const SymmetricTensor<2, 3> sigma =
+                elastic_plastic +
+                D * axisymmetric_strain(rates[q], rate_gradients[q], r);
+              const SymmetricTensor<4, 3> A = tangent + 2 / dt * D;
+              for (unsigned int i = 0; i < dofs_per_cell; ++i)
+                shape_strain[i] =
+                  axisymmetric_strain(fe_values[u].value(i, q),
+                                      fe_values[u].gradient(i, q),
+                                      r);
+              for (unsigned int i = 0; i < dofs_per_cell; ++i)
+                {
+                  for (unsigned int j = 0; j < dofs_per_cell; ++j)
+                    cell_matrix(i, j) +=
+                      (A * shape_strain[j]) * shape_strain[i] * dV;
+                  cell_rhs(i) -= (sigma * shape_strain[i]) * dV;
+                }
+              if (commit)
+                {
+                  const SymmetricTensor<2, 3> elastic_start =
+                    C * (start.strain - start.plastic_strain);
+                  step_plastic_work +=
+                    0.5 *
+                    ((elastic_start + elastic_plastic) *
+                     (end.plastic_strain - start.plastic_strain)) *
+                    dV;
+                  start = end;
+                }
+              strains.push_back(eps);
+              stresses.push_back(sigma);
+              plastic_strains.push_back(end.accumulated_plastic_strain);
+            }
+          cell->get_dof_indices(dofs);
+          for (unsigned int i = 0; i < dofs_per_cell; ++i)
+            internal_force(dofs[i]) -= cell_rhs(i);
+          constraints.distribute_local_to_global(
+            cell_matrix, cell_rhs, dofs, tangent_matrix, residual);
+        }
+      return step_plastic_work;
+    }
+
+
+    void
+    GeneralSpecimen::declare_history()
+    {
       declare_components(history, "mean ", " over the quadrature points");
       history.declare(
         "inhomogeneity",
@@ -366,217 +451,264 @@ namespace impact_fem
           "J",
           "cumulative plastic work in the specimen, trapezoidal in the stress"},
          {"newton_iterations", "1", "Newton iterations of the step"}});
-      double plastic_work = 0;
-      auto   record       = [&](const double t, const unsigned int iterations) {
-        double mean_plastic = 0;
-        for (const double p : plastic_strains)
-          mean_plastic += p / plastic_strains.size();
-        append_specimen_means(history, t, strains, stresses);
-        history.append("accumulated_plastic_strain", mean_plastic);
-        history.append("plastic_work", plastic_work);
-        history.append("newton_iterations", iterations);
-      };
-      // Initial strain rate (the trapezoidal rule needs it with a viscous
-      // part): the prescribed one; under the axial path the elastic lateral
-      // contraction -nu times the axial rate.
-      {
-        const double nu = material->poissons_ratio();
-        if (uniaxial)
-          {
-            const double rate = input.axial_path.front() / input.ramp_time;
-            VectorTools::interpolate(dof_handler,
-                                     HomogeneousDisplacement(-nu * rate, rate),
-                                     velocity);
-          }
-        else
-          {
-            const double rate = strain_factor_rate(input, 0);
-            VectorTools::interpolate(
-              dof_handler,
-              HomogeneousDisplacement(rate * strain_hat[0],
-                                      rate * strain_hat[1]),
-              velocity);
-          }
-      }
-      assemble(make_constraints(0, true), false);
-      record(0, 0);
+    }
 
-      // Convergence: the out-of-balance force on the free degrees of freedom
-      // below 1e-10 of the internal force (whose constrained entries are the
-      // reactions), or exactly zero.
+
+    void
+    GeneralSpecimen::record(const double t, const unsigned int iterations)
+    {
+      double mean_plastic = 0;
+      for (const double p : plastic_strains)
+        mean_plastic += p / plastic_strains.size();
+      append_specimen_means(history, t, strains, stresses);
+      history.append("accumulated_plastic_strain", mean_plastic);
+      history.append("plastic_work", plastic_work);
+      history.append("newton_iterations", iterations);
+    }
+
+
+    void
+    GeneralSpecimen::set_initial_rate()
+    {
+      const double nu = material.poissons_ratio();
+      if (uniaxial)
+        {
+          const double rate = input.axial_path.front() / input.ramp_time;
+          VectorTools::interpolate(mesh.dof_handler,
+                                   HomogeneousDisplacement(-nu * rate, rate),
+                                   velocity);
+        }
+      else
+        {
+          const double rate = strain_factor_rate(input, 0);
+          VectorTools::interpolate(
+            mesh.dof_handler,
+            HomogeneousDisplacement(rate * strain_hat[0], rate * strain_hat[1]),
+            velocity);
+        }
+    }
+
+
+    unsigned int
+    GeneralSpecimen::solve_step(const unsigned int step)
+    {
+      // Convergence: the out-of-balance force on the free degrees of
+      // freedom below 1e-10 of the internal force (whose constrained
+      // entries are the reactions), or exactly zero.
       const double       tolerance      = 1e-10;
       const unsigned int max_iterations = 50;
+      const double       t              = step * dt;
+      previous                          = displacement;
+      previous_velocity                 = velocity;
+      // Start from the last step's displacement with the new boundary
+      // values; the iterations then correct the free degrees of freedom.
+      make_constraints(t, false).distribute(displacement);
+      const AffineConstraints<double> homogeneous = make_constraints(t, true);
+      unsigned int                    iteration   = 0;
+      for (;; ++iteration)
+        {
+          // v_{n+1} = 2/dt (u_{n+1} - u_n) - v_n
+          velocity = displacement;
+          velocity -= previous;
+          velocity *= 2 / dt;
+          velocity -= previous_velocity;
+          assemble(homogeneous, false);
+          const double norm = residual.l2_norm();
+          if (norm <= tolerance * internal_force.l2_norm() || norm == 0)
+            break;
+          AssertThrow(iteration < max_iterations,
+                      ExcMessage("Specimen: the Newton iteration of step " +
+                                 std::to_string(step) + " (t = " +
+                                 as_written(t) + " s) did not converge in " +
+                                 std::to_string(max_iterations) +
+                                 " iterations: out-of-balance force " +
+                                 as_written(norm) + " N, criterion 1e-10 of " +
+                                 as_written(internal_force.l2_norm()) + " N."));
+          SparseDirectUMFPACK solver;
+          solver.initialize(tangent_matrix);
+          solver.vmult(increment, residual);
+          homogeneous.distribute(increment);
+          displacement += increment;
+        }
+      plastic_work += assemble(homogeneous, true);
+      record(t, iteration);
+      return iteration;
+    }
+
+
+    void
+    GeneralSpecimen::run()
+    {
+      declare_history();
+      set_initial_rate();
+      assemble(make_constraints(0, true), false);
+      record(0, 0);
+      const double       dt = input.dt;
       const unsigned int n_steps =
         static_cast<unsigned int>(std::lround(input.duration / dt));
       unsigned int total_iterations = 0;
       for (unsigned int step = 1; step <= n_steps; ++step)
-        {
-          const double t    = step * dt;
-          previous          = displacement;
-          previous_velocity = velocity;
-          // Start from the last step's displacement with the new boundary
-          // values; the iterations then correct the free degrees of freedom.
-          make_constraints(t, false).distribute(displacement);
-          const AffineConstraints<double> homogeneous =
-            make_constraints(t, true);
-          unsigned int iteration = 0;
-          for (;; ++iteration)
-            {
-              // v_{n+1} = 2/dt (u_{n+1} - u_n) - v_n
-              velocity = displacement;
-              velocity -= previous;
-              velocity *= 2 / dt;
-              velocity -= previous_velocity;
-              assemble(homogeneous, false);
-              const double norm = residual.l2_norm();
-              if (norm <= tolerance * internal_force.l2_norm() || norm == 0)
-                break;
-              AssertThrow(iteration < max_iterations,
-                          ExcMessage(
-                            "Specimen: the Newton iteration of step " +
-                            std::to_string(step) + " (t = " + as_written(t) +
-                            " s) did not converge in " +
-                            std::to_string(max_iterations) +
-                            " iterations: out-of-balance force " +
-                            as_written(norm) + " N, criterion 1e-10 of " +
-                            as_written(internal_force.l2_norm()) + " N."));
-              SparseDirectUMFPACK solver;
-              solver.initialize(tangent_matrix);
-              solver.vmult(increment, residual);
-              homogeneous.distribute(increment);
-              displacement += increment;
-            }
-          total_iterations += iteration;
-          plastic_work += assemble(homogeneous, true);
-          record(t, iteration);
-        }
+        total_iterations += solve_step(step);
 
       const std::string &directory = input.directory;
-      write_specimen_history(history, directory, loading, dt, dof_handler);
+      const std::string &loading   = input.loading;
+      write_specimen_history(history, directory, loading, dt, mesh.dof_handler);
       std::cout << "specimen (" << loading << ", general constitutive update): "
-                << triangulation.n_active_cells() << " cells, "
-                << dof_handler.n_dofs() << " dofs, " << n_steps << " steps of "
-                << dt << " s, " << total_iterations << " Newton iterations -> "
-                << directory << "/history.h5" << std::endl;
+                << mesh.triangulation.n_active_cells() << " cells, "
+                << mesh.dof_handler.n_dofs() << " dofs, " << n_steps
+                << " steps of " << dt << " s, " << total_iterations
+                << " Newton iterations -> " << directory << "/history.h5"
+                << std::endl;
     }
-  } // namespace
 
 
-  SpecimenTest::SpecimenTest(ParameterHandler &prm)
-    : parameters(prm)
-  {}
+    // The specimen of a linear material: per step one solve of
+    // K_eff u = rhs with the material's constant tangents, the Maxwell
+    // arms' history as a right-hand side from the quadrature-point states,
+    // updated after the step.
+    class LinearSpecimen
+    {
+    public:
+      /// Refuses the loadings it cannot run, naming the entry.
+      static void
+      check(const Loading &input);
+
+      LinearSpecimen(const Loading &input, const unsigned int degree);
+
+      void
+      run();
+
+    private:
+      AffineConstraints<double>
+      make_constraints(const double t, const bool homogeneous) const;
+      // One assembly: K_eff = C + C_internal + c D (c = 2/dt, or 1 and no C
+      // for the initial rate), rhs = traction - history + D (c u_n + v_n).
+      void
+      assemble(const AffineConstraints<double> &constraints,
+               const bool                       initial_rate);
+      void
+      declare_history();
+      // Evaluates the step's strain and stress at the quadrature points
+      // (stress from the state at the start of the step), then updates the
+      // states; appends the means to the history.
+      void
+      evaluate_and_update(const double t, const bool update);
+      // Initial state: unstrained; the initial rate from D v_0 = load
+      // (creep) or the prescribed rate.
+      void
+      set_initial_rate();
+      // The step to time t.
+      void
+      step(const double t);
+
+      const Loading                   &input;
+      const materials::Interface      &material;
+      const std::vector<double>       &strain_hat, &stress_hat;
+      const double                     dt;
+      const bool                       stress_controlled;
+      SpecimenMesh                     mesh;
+      const QGauss<1>                  face_rule;
+      FEValues<2>                      fe_values;
+      FEFaceValues<2>                  fe_face_values;
+      const FEValuesExtractors::Vector u;
+      const unsigned int               dofs_per_cell;
+      CellDataStorage<Triangulation<2>::cell_iterator, SpecimenPointState>
+                                  states;
+      const SymmetricTensor<4, 3> C, D, C_internal;
+      SparseMatrix<double>        system_matrix, damping_matrix;
+      Vector<double>              displacement, velocity, rhs;
+      History                     history;
+      double                      dissipated = 0;
+    };
 
 
-  void
-  SpecimenTest::run()
-  {
-    ParameterHandler  &prm        = parameters;
-    const Loading      input      = read_loading(prm);
-    const auto        &material   = input.material;
-    const std::string &directory  = input.directory;
-    const std::string &loading    = input.loading;
-    const auto        &strain_hat = input.strain_hat;
-    const auto        &stress_hat = input.stress_hat;
-    const double       duration   = input.duration;
-    const double       dt         = input.dt;
-    prm.enter_subsection("Mesh");
-    const unsigned int degree = prm.get_integer("Polynomial degree");
-    prm.leave_subsection();
-    const bool stress_controlled = loading == "stress step";
-    AssertThrow(loading != "strain path",
-                ExcMessage("Specimen: the 'strain path' loading is one of the "
-                           "material point analysis."));
-    if (!material->is_linear() || loading == "axial strain path")
-      {
-        AssertThrow(loading == "axial strain path" || stress_controlled ||
-                      (strain_hat[2] == strain_hat[0] && strain_hat[3] == 0),
-                    ExcMessage(
-                      "Specimen: a homogeneous axisymmetric strain has "
-                      "theta-theta = rr and no rz component; set "
-                      "Material point/Strain accordingly."));
-        run_general_specimen(input, degree);
-        return;
-      }
-    AssertThrow(stress_controlled ||
-                  (strain_hat[2] == strain_hat[0] && strain_hat[3] == 0),
-                ExcMessage("Specimen: a homogeneous axisymmetric strain has "
-                           "theta-theta = rr and no rz component; set "
-                           "Material point/Strain accordingly."));
-    AssertThrow(!stress_controlled ||
-                  (stress_hat[0] == 0 && stress_hat[2] == 0 &&
-                   stress_hat[3] == 0),
-                ExcMessage("Specimen: the stress step is uniaxial, only the "
-                           "zz component of Material point/Stress may be "
-                           "non-zero."));
-    AssertThrow(!stress_controlled || material->damping_tangent().norm() > 0,
-                ExcMessage("Specimen: the 'stress step' (creep) loading needs "
-                           "a viscous material (Kelvin-Voigt)."));
-    // Cylinder 0 <= r <= 1 mm, 0 <= z <= 1 mm; boundary ids of
-    // hyper_rectangle: 0 axis, 1 side, 2 bottom, 3 top.
-    const double     size = 1e-3;
-    Triangulation<2> triangulation;
-    GridGenerator::hyper_rectangle(triangulation,
-                                   Point<2>(0, 0),
-                                   Point<2>(size, size),
-                                   true);
-    triangulation.refine_global(1);
-    const FESystem<2> fe(FE_Q<2>(degree), 2);
-    DoFHandler<2>     dof_handler(triangulation);
-    dof_handler.distribute_dofs(fe);
-    const QGauss<2>                  quadrature = cell_quadrature(fe);
-    const QGauss<1>                  face_rule  = face_quadrature(fe);
-    FEValues<2>                      fe_values(fe,
-                          quadrature,
-                          update_values | update_gradients |
-                            update_quadrature_points | update_JxW_values);
-    FEFaceValues<2>                  fe_face_values(fe,
-                                   face_rule,
-                                   update_values | update_quadrature_points |
-                                     update_JxW_values);
-    const FEValuesExtractors::Vector u(0);
-    const unsigned int               dofs_per_cell = fe.n_dofs_per_cell();
+    void
+    LinearSpecimen::check(const Loading &input)
+    {
+      const bool  stress_controlled = input.loading == "stress step";
+      const auto &strain_hat        = input.strain_hat;
+      const auto &stress_hat        = input.stress_hat;
+      AssertThrow(stress_controlled ||
+                    (strain_hat[2] == strain_hat[0] && strain_hat[3] == 0),
+                  ExcMessage("Specimen: a homogeneous axisymmetric strain has "
+                             "theta-theta = rr and no rz component; set "
+                             "Material point/Strain accordingly."));
+      AssertThrow(!stress_controlled ||
+                    (stress_hat[0] == 0 && stress_hat[2] == 0 &&
+                     stress_hat[3] == 0),
+                  ExcMessage("Specimen: the stress step is uniaxial, only the "
+                             "zz component of Material point/Stress may be "
+                             "non-zero."));
+      AssertThrow(!stress_controlled ||
+                    input.material->damping_tangent().norm() > 0,
+                  ExcMessage("Specimen: the 'stress step' (creep) loading "
+                             "needs a viscous material (Kelvin-Voigt)."));
+    }
 
-    CellDataStorage<Triangulation<2>::cell_iterator, SpecimenPointState> states;
-    for (const auto &cell : triangulation.active_cell_iterators())
-      {
-        states.initialize(cell, quadrature.size());
-        for (const auto &state : states.get_data(cell))
-          state->internal.assign(material->n_internal_variables(),
-                                 SymmetricTensor<2, 3>());
-      }
 
-    const SymmetricTensor<4, 3> C          = material->stiffness_tangent();
-    const SymmetricTensor<4, 3> D          = material->damping_tangent();
-    const SymmetricTensor<4, 3> C_internal = material->internal_tangent(dt);
+    LinearSpecimen::LinearSpecimen(const Loading     &input,
+                                   const unsigned int degree)
+      : input(input)
+      , material(*input.material)
+      , strain_hat(input.strain_hat)
+      , stress_hat(input.stress_hat)
+      , dt(input.dt)
+      , stress_controlled(input.loading == "stress step")
+      , mesh(degree)
+      , face_rule(face_quadrature(mesh.fe))
+      , fe_values(mesh.fe,
+                  mesh.quadrature,
+                  update_values | update_gradients | update_quadrature_points |
+                    update_JxW_values)
+      , fe_face_values(mesh.fe,
+                       face_rule,
+                       update_values | update_quadrature_points |
+                         update_JxW_values)
+      , u(0)
+      , dofs_per_cell(mesh.fe.n_dofs_per_cell())
+      , C(material.stiffness_tangent())
+      , D(material.damping_tangent())
+      , C_internal(material.internal_tangent(dt))
+      , system_matrix(mesh.sparsity)
+      , damping_matrix(mesh.sparsity)
+      , displacement(mesh.dof_handler.n_dofs())
+      , velocity(mesh.dof_handler.n_dofs())
+      , rhs(mesh.dof_handler.n_dofs())
+    {
+      for (const auto &cell : mesh.triangulation.active_cell_iterators())
+        {
+          states.initialize(cell, mesh.quadrature.size());
+          for (const auto &state : states.get_data(cell))
+            state->internal.assign(material.n_internal_variables(),
+                                   SymmetricTensor<2, 3>());
+        }
+    }
 
-    DynamicSparsityPattern dsp(dof_handler.n_dofs());
-    DoFTools::make_sparsity_pattern(dof_handler, dsp);
-    SparsityPattern sparsity;
-    sparsity.copy_from(dsp);
-    SparseMatrix<double> system_matrix(sparsity), damping_matrix(sparsity);
-    Vector<double>       displacement(dof_handler.n_dofs()),
-      velocity(dof_handler.n_dofs()), rhs(dof_handler.n_dofs());
 
-    auto make_constraints = [&](const double t, const bool homogeneous) {
+    AffineConstraints<double>
+    LinearSpecimen::make_constraints(const double t,
+                                     const bool   homogeneous) const
+    {
       AffineConstraints<double> constraints;
       if (stress_controlled)
-        constrain_rollers(dof_handler, fe, constraints);
+        constrain_rollers(mesh.dof_handler, mesh.fe, constraints);
       else
         {
           const double factor = homogeneous ? 0 : strain_factor(input, t);
-          constrain_homogeneous_strain(dof_handler,
+          constrain_homogeneous_strain(mesh.dof_handler,
                                        factor * strain_hat[0],
                                        factor * strain_hat[1],
                                        constraints);
         }
       constraints.close();
       return constraints;
-    };
+    }
 
-    // One assembly: K_eff = C + C_internal + c D (c = 2/dt, or 1 and no C
-    // for the initial rate), rhs = traction - history + D (c u_n + v_n).
-    auto assemble = [&](const AffineConstraints<double> &constraints,
-                        const bool                       initial_rate) {
+
+    void
+    LinearSpecimen::assemble(const AffineConstraints<double> &constraints,
+                             const bool                       initial_rate)
+    {
       system_matrix  = 0;
       damping_matrix = 0;
       rhs            = 0;
@@ -587,14 +719,14 @@ namespace impact_fem
       std::vector<SymmetricTensor<2, 3>>   strain(dofs_per_cell);
       const SymmetricTensor<4, 3>          A =
         initial_rate ? D : C + C_internal + 2 / dt * D;
-      for (const auto &cell : dof_handler.active_cell_iterators())
+      for (const auto &cell : mesh.dof_handler.active_cell_iterators())
         {
           fe_values.reinit(cell);
           cell_matrix             = 0;
           cell_damping            = 0;
           cell_rhs                = 0;
           const auto point_states = states.get_data(cell);
-          for (unsigned int q = 0; q < quadrature.size(); ++q)
+          for (unsigned int q = 0; q < mesh.quadrature.size(); ++q)
             {
               const double r  = fe_values.quadrature_point(q)[0];
               const double dV = 2 * M_PI * r * fe_values.JxW(q);
@@ -605,9 +737,9 @@ namespace impact_fem
               const SymmetricTensor<2, 3> history =
                 initial_rate ?
                   SymmetricTensor<2, 3>() :
-                  material->internal_stress_predictor(point_states[q]->internal,
-                                                      point_states[q]->strain,
-                                                      dt);
+                  material.internal_stress_predictor(point_states[q]->internal,
+                                                     point_states[q]->strain,
+                                                     dt);
               for (unsigned int i = 0; i < dofs_per_cell; ++i)
                 {
                   for (unsigned int j = 0; j < dofs_per_cell; ++j)
@@ -636,33 +768,37 @@ namespace impact_fem
             cell_matrix, cell_rhs, dofs, system_matrix, rhs);
           damping_matrix.add(dofs, cell_damping);
         }
-    };
+    }
 
-    History history;
-    declare_components(history, "mean ", " over the quadrature points");
-    history.declare("inhomogeneity",
-                    "1",
-                    "largest deviation of a quadrature point's stress from the "
-                    "mean, relative to the largest mean component");
-    history.declare("internal_energy",
-                    "J",
-                    "energy stored in the Maxwell arms of the specimen");
-    history.declare("dissipated_energy",
-                    "J",
-                    "cumulative dissipation in the Maxwell arms");
 
-    // Evaluates the step's strain and stress at the quadrature points
-    // (stress from the state at the start of the step), then updates the
-    // states; appends the means to the history.
-    double dissipated          = 0;
-    auto   evaluate_and_update = [&](const double t, const bool update) {
+    void
+    LinearSpecimen::declare_history()
+    {
+      declare_components(history, "mean ", " over the quadrature points");
+      history.declare(
+        "inhomogeneity",
+        "1",
+        "largest deviation of a quadrature point's stress from the "
+        "mean, relative to the largest mean component");
+      history.declare("internal_energy",
+                      "J",
+                      "energy stored in the Maxwell arms of the specimen");
+      history.declare("dissipated_energy",
+                      "J",
+                      "cumulative dissipation in the Maxwell arms");
+    }
+
+
+    void
+    LinearSpecimen::evaluate_and_update(const double t, const bool update)
+    {
       std::vector<SymmetricTensor<2, 3>> strains, stresses;
-      std::vector<Tensor<1, 2>>          values(quadrature.size()),
-        rates(quadrature.size());
-      std::vector<Tensor<2, 2>> gradients(quadrature.size()),
-        rate_gradients(quadrature.size());
+      std::vector<Tensor<1, 2>>          values(mesh.quadrature.size()),
+        rates(mesh.quadrature.size());
+      std::vector<Tensor<2, 2>> gradients(mesh.quadrature.size()),
+        rate_gradients(mesh.quadrature.size());
       double stored = 0;
-      for (const auto &cell : dof_handler.active_cell_iterators())
+      for (const auto &cell : mesh.dof_handler.active_cell_iterators())
         {
           fe_values.reinit(cell);
           fe_values[u].get_function_values(displacement, values);
@@ -670,9 +806,9 @@ namespace impact_fem
           fe_values[u].get_function_values(velocity, rates);
           fe_values[u].get_function_gradients(velocity, rate_gradients);
           const auto point_states = states.get_data(cell);
-          for (unsigned int q = 0; q < quadrature.size(); ++q)
+          for (unsigned int q = 0; q < mesh.quadrature.size(); ++q)
             {
-              const double                r = fe_values.quadrature_point(q)[0];
+              const double                r  = fe_values.quadrature_point(q)[0];
               const double                dV = 2 * M_PI * r * fe_values.JxW(q);
               SpecimenPointState         &state = *point_states[q];
               const SymmetricTensor<2, 3> eps =
@@ -683,15 +819,15 @@ namespace impact_fem
               if (update)
                 {
                   sigma += C_internal * eps +
-                           material->internal_stress_predictor(state.internal,
-                                                               state.strain,
-                                                               dt);
-                  dissipated += material->update_internal_variables(
+                           material.internal_stress_predictor(state.internal,
+                                                              state.strain,
+                                                              dt);
+                  dissipated += material.update_internal_variables(
                                   state.internal, state.strain, eps, dt) *
                                 dV;
                   state.strain = eps;
                 }
-              stored += material->internal_energy(state.internal) * dV;
+              stored += material.internal_energy(state.internal) * dV;
               strains.push_back(eps);
               stresses.push_back(sigma);
             }
@@ -699,64 +835,136 @@ namespace impact_fem
       append_specimen_means(history, t, strains, stresses);
       history.append("internal_energy", stored);
       history.append("dissipated_energy", dissipated);
-    };
+    }
 
-    // Initial state: unstrained; the initial rate from D v_0 = load (creep)
-    // or the prescribed rate.
-    if (stress_controlled)
-      {
-        const AffineConstraints<double> constraints = make_constraints(0, true);
-        assemble(constraints, true);
-        SparseDirectUMFPACK solver;
-        solver.solve(system_matrix, rhs);
-        velocity = rhs;
-        constraints.distribute(velocity);
-      }
-    else
-      {
-        const double rate = strain_factor_rate(input, 0);
-        VectorTools::interpolate(dof_handler,
-                                 HomogeneousDisplacement(rate * strain_hat[0],
-                                                         rate * strain_hat[1]),
-                                 velocity);
-      }
-    evaluate_and_update(0, false);
 
-    const unsigned int n_steps =
-      static_cast<unsigned int>(std::lround(duration / dt));
-    Vector<double> previous(displacement.size()), tmp(displacement.size());
-    for (unsigned int step = 1; step <= n_steps; ++step)
-      {
-        const double                    t = step * dt;
-        const AffineConstraints<double> constraints =
-          make_constraints(t, false);
-        assemble(constraints, false);
-        // + D (2/dt u_n + v_n) for the trapezoidal strain rate.
-        tmp = displacement;
-        tmp *= 2 / dt;
-        tmp += velocity;
-        Vector<double> damping_force(displacement.size());
-        damping_matrix.vmult(damping_force, tmp);
-        constraints.condense(damping_force);
-        rhs += damping_force;
-        SparseDirectUMFPACK solver;
-        solver.initialize(system_matrix);
-        previous = displacement;
-        solver.vmult(displacement, rhs);
-        constraints.distribute(displacement);
-        // v_{n+1} = 2/dt (u_{n+1} - u_n) - v_n
-        tmp = displacement;
-        tmp -= previous;
-        tmp *= 2 / dt;
-        tmp -= velocity;
-        velocity = tmp;
-        evaluate_and_update(t, true);
-      }
+    void
+    LinearSpecimen::set_initial_rate()
+    {
+      if (stress_controlled)
+        {
+          const AffineConstraints<double> constraints =
+            make_constraints(0, true);
+          assemble(constraints, true);
+          SparseDirectUMFPACK solver;
+          solver.solve(system_matrix, rhs);
+          velocity = rhs;
+          constraints.distribute(velocity);
+        }
+      else
+        {
+          const double rate = strain_factor_rate(input, 0);
+          VectorTools::interpolate(
+            mesh.dof_handler,
+            HomogeneousDisplacement(rate * strain_hat[0], rate * strain_hat[1]),
+            velocity);
+        }
+    }
 
-    write_specimen_history(history, directory, loading, dt, dof_handler);
-    std::cout << "specimen (" << loading
-              << "): " << triangulation.n_active_cells() << " cells, "
-              << dof_handler.n_dofs() << " dofs, " << n_steps << " steps of "
-              << dt << " s -> " << directory << "/history.h5" << std::endl;
+
+    void
+    LinearSpecimen::step(const double t)
+    {
+      Vector<double> previous(displacement.size()), tmp(displacement.size());
+      const AffineConstraints<double> constraints = make_constraints(t, false);
+      assemble(constraints, false);
+      // + D (2/dt u_n + v_n) for the trapezoidal strain rate.
+      tmp = displacement;
+      tmp *= 2 / dt;
+      tmp += velocity;
+      Vector<double> damping_force(displacement.size());
+      damping_matrix.vmult(damping_force, tmp);
+      constraints.condense(damping_force);
+      rhs += damping_force;
+      SparseDirectUMFPACK solver;
+      solver.initialize(system_matrix);
+      previous = displacement;
+      solver.vmult(displacement, rhs);
+      constraints.distribute(displacement);
+      // v_{n+1} = 2/dt (u_{n+1} - u_n) - v_n
+      tmp = displacement;
+      tmp -= previous;
+      tmp *= 2 / dt;
+      tmp -= velocity;
+      velocity = tmp;
+      evaluate_and_update(t, true);
+    }
+
+
+    void
+    LinearSpecimen::run()
+    {
+      declare_history();
+      set_initial_rate();
+      evaluate_and_update(0, false);
+      const unsigned int n_steps =
+        static_cast<unsigned int>(std::lround(input.duration / dt));
+      for (unsigned int step_number = 1; step_number <= n_steps; ++step_number)
+        step(step_number * dt);
+
+      const std::string &directory = input.directory;
+      const std::string &loading   = input.loading;
+      write_specimen_history(history, directory, loading, dt, mesh.dof_handler);
+      std::cout << "specimen (" << loading
+                << "): " << mesh.triangulation.n_active_cells() << " cells, "
+                << mesh.dof_handler.n_dofs() << " dofs, " << n_steps
+                << " steps of " << dt << " s -> " << directory << "/history.h5"
+                << std::endl;
+    }
+  } // namespace
+
+
+  void
+  SpecimenTest::parse_parameters(ParameterHandler &prm,
+                                 const analysis::Invocation &,
+                                 const MPI_Comm comm)
+  {
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
+      parameters = &prm;
   }
+
+
+  int
+  SpecimenTest::run()
+  {
+    if (parameters == nullptr)
+      return 0;
+    ParameterHandler  &prm        = *parameters;
+    const Loading      input      = read_loading(prm);
+    const auto        &material   = input.material;
+    const std::string &loading    = input.loading;
+    const auto        &strain_hat = input.strain_hat;
+    prm.enter_subsection("Mesh");
+    const unsigned int degree = prm.get_integer("Polynomial degree");
+    prm.leave_subsection();
+    const bool stress_controlled = loading == "stress step";
+    AssertThrow(loading != "strain path",
+                ExcMessage("Specimen: the 'strain path' loading is one of the "
+                           "material point analysis."));
+    if (!material->is_linear() || loading == "axial strain path")
+      {
+        AssertThrow(loading == "axial strain path" || stress_controlled ||
+                      (strain_hat[2] == strain_hat[0] && strain_hat[3] == 0),
+                    ExcMessage(
+                      "Specimen: a homogeneous axisymmetric strain has "
+                      "theta-theta = rr and no rz component; set "
+                      "Material point/Strain accordingly."));
+        GeneralSpecimen::check(input);
+        GeneralSpecimen specimen(input, degree);
+        specimen.run();
+        return 0;
+      }
+    LinearSpecimen::check(input);
+    LinearSpecimen specimen(input, degree);
+    specimen.run();
+    return 0;
+  }
+
+
+  IMPACT_FEM_REGISTER_ANALYSIS(
+    SpecimenTest,
+    "specimen",
+    4,
+    "the same history on a homogeneous cylinder of the sphere's material, "
+    "finite elements, quasi-static.")
 } // namespace impact_fem

@@ -1,6 +1,8 @@
 #ifndef IMPACT_FEM_ANALYSIS_MATERIAL_POINT_H
 #define IMPACT_FEM_ANALYSIS_MATERIAL_POINT_H
 
+#include <impact_fem/analysis/interface.h>
+
 #include <deal.II/base/parameter_handler.h>
 
 #include <string>
@@ -22,19 +24,23 @@ namespace impact_fem
    * Writes `history.h5` (time, strain_* and stress_* in the (r, z, theta)
    * basis, internal_energy, dissipated_energy) to Output/Directory.
    */
-  class MaterialPointTest
+  class MaterialPointTest : public analysis::Interface
   {
   public:
     static void
     declare_parameters(ParameterHandler &prm);
 
-    explicit MaterialPointTest(ParameterHandler &prm);
-
+    /// Keeps @p prm; the first rank alone runs the test.
     void
-    run();
+    parse_parameters(ParameterHandler           &prm,
+                     const analysis::Invocation &invocation,
+                     const MPI_Comm              comm) override;
+
+    int
+    run() override;
 
   private:
-    ParameterHandler &parameters;
+    ParameterHandler *parameters = nullptr;
   };
 } // namespace impact_fem
 

@@ -1,6 +1,8 @@
 #ifndef IMPACT_FEM_ANALYSIS_SPECIMEN_H
 #define IMPACT_FEM_ANALYSIS_SPECIMEN_H
 
+#include <impact_fem/analysis/interface.h>
+
 #include <deal.II/base/parameter_handler.h>
 
 namespace impact_fem
@@ -34,16 +36,26 @@ namespace impact_fem
    * of a quadrature point's stress from the mean, relative to the mean's
    * largest component).
    */
-  class SpecimenTest
+  class SpecimenTest : public analysis::Interface
   {
   public:
-    explicit SpecimenTest(ParameterHandler &prm);
+    /// The entries are those of the material point (and Mesh/Polynomial
+    /// degree).
+    static void
+    declare_parameters(ParameterHandler &)
+    {}
 
+    /// Keeps @p prm; the first rank alone runs the test.
     void
-    run();
+    parse_parameters(ParameterHandler           &prm,
+                     const analysis::Invocation &invocation,
+                     const MPI_Comm              comm) override;
+
+    int
+    run() override;
 
   private:
-    ParameterHandler &parameters;
+    ParameterHandler *parameters = nullptr;
   };
 } // namespace impact_fem
 

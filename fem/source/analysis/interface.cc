@@ -1,0 +1,84 @@
+#include <impact_fem/analysis/interface.h>
+
+#include <deal.II/base/exceptions.h>
+
+#include <algorithm>
+#include <map>
+
+namespace impact_fem::analysis
+{
+  namespace
+  {
+    // Function-local static: safe to use from other translation units'
+    // static initialisers (the registrations).
+    std::map<std::string, Entry> &
+    entries()
+    {
+      static std::map<std::string, Entry> kinds;
+      return kinds;
+    }
+  } // namespace
+
+
+  bool
+  add(const Entry &entry)
+  {
+    entries()[entry.name] = entry;
+    return true;
+  }
+
+
+  std::vector<Entry>
+  all()
+  {
+    std::vector<Entry> kinds;
+    for (const auto &kind : entries())
+      kinds.push_back(kind.second);
+    std::stable_sort(kinds.begin(),
+                     kinds.end(),
+                     [](const Entry &a, const Entry &b) {
+                       return a.position < b.position;
+                     });
+    return kinds;
+  }
+
+
+  std::unique_ptr<Interface>
+  create(const std::string &name)
+  {
+    const auto kind = entries().find(name);
+    AssertThrow(kind != entries().end(),
+                ExcMessage("Unknown analysis <" + name +
+                           ">; known: " + selection() + "."));
+    return kind->second.create();
+  }
+
+
+  std::string
+  selection()
+  {
+    std::string names;
+    for (const auto &kind : all())
+      names += (names.empty() ? "" : "|") + kind.name;
+    return names;
+  }
+
+
+  std::string
+  descriptions()
+  {
+    std::string help;
+    for (const auto &kind : all())
+      help +=
+        (help.empty() ? "'" : " '") + kind.name + "': " + kind.description;
+    return help;
+  }
+
+
+  void
+  declare_parameters(ParameterHandler &prm)
+  {
+    for (const auto &kind : all())
+      kind.declare_parameters(prm);
+  }
+} // namespace impact_fem::analysis
