@@ -8,6 +8,7 @@
 #include <impact_fem/time_integration/interface.h>
 
 #include <cmath>
+#include <limits>
 
 namespace impact_fem
 {
@@ -411,17 +412,19 @@ namespace impact_fem
     namespace contract = result_files;
     const double R     = geometry.sphere_radius;
     sphere_mass = material[sphere]->density() * 4. / 3. * M_PI * R * R * R;
-    // A rigid plate has no compliance: E* is the sphere's E/(1 - nu^2).
-    auto compliance = [](const materials::Interface *m) {
-      return m ? (1 - m->poissons_ratio() * m->poissons_ratio()) /
-                   m->youngs_modulus() :
-                 0.;
-    };
-    hertz = HertzImpact{1 / (compliance(material[sphere].get()) +
-                             compliance(material[plate].get())),
-                        R,
-                        sphere_mass,
-                        impact_velocity};
+    // A rigid plate has no compliance (an infinite modulus): E* is the
+    // sphere's E/(1 - nu^2).
+    const materials::Interface *plate_material = material[plate].get();
+    hertz =
+      HertzImpact{impact::reduced::contact_modulus(
+                    material[sphere]->youngs_modulus(),
+                    material[sphere]->poissons_ratio(),
+                    plate_material ? plate_material->youngs_modulus() :
+                                     std::numeric_limits<double>::infinity(),
+                    plate_material ? plate_material->poissons_ratio() : 0.),
+                  R,
+                  sphere_mass,
+                  impact_velocity};
     // What the contact will be, for the sizes and the step left "auto".
     if (static_press)
       expected_contact =
