@@ -69,6 +69,15 @@ expect_failure("plastic_yield_strength_0", dict(plastic, **{"Sphere/Yield streng
 expect_failure("plastic_hardening_law", dict(plastic, **{"Plate/Material model": "elastic-plastic",
                                                          "Plate/Elastic-plastic/Hardening law": "voce"}),
                ["Hardening law", "voce"])
+# The static press is one quasi-static solve: a campaign or --verify of it would run impacts
+# instead, so both are refused, naming the analysis.
+static_press = [STEEL_PRM, "--set", "Scenario/Analysis=static press",
+                "--set", "Scenario/Static force=1000", "--set", "Scenario/Plate side=clamped",
+                "--set", "Scenario/Plate bottom=clamped"]
+expect_failure("static_press_verify", {}, ["static press runs alone", "--verify"],
+               extra_args=static_press + ["--verify"])
+expect_failure("static_press_campaign", {}, ["static press runs alone", "--velocities"],
+               extra_args=static_press + ["--velocities", "1,2"])
 # The quasi-static indentation takes elastic-plastic bodies, but not their
 # viscous part (a retardation time needs a loading rate).
 expect_failure("plastic_indentation_viscous",
