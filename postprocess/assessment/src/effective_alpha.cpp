@@ -1,5 +1,5 @@
 // The FEM's "effective alpha" (1 - e)/V against the measured range the seed paper compares
-// it with (report_parts.hpp).
+// it with (steps.hpp).
 
 #include "steps.hpp"
 

@@ -1,4 +1,4 @@
-// The thin-plate model of the validity map (report_parts.hpp): Zener's impact of a sphere on
+// The thin-plate model of the validity map (steps.hpp): Zener's impact of a sphere on
 // an infinite Kirchhoff plate (reduced/thin_plate.hpp) with the run's own materials and
 // plate thickness, and a given Hunt–Crossley damping b; with rigid = true the same contact on
 // a rigid support (the massive-plate model of the map).

@@ -1,4 +1,4 @@
-// The sections of the page on the data behind the verdict (report_parts.hpp): the FEM's
+// The sections of the page on the data behind the verdict (sections.hpp): the FEM's
 // quality, the runs, the models, the quantities, the errors, the energy balance.
 
 #include "sections.hpp"

@@ -1,4 +1,4 @@
-// The first screen of the page (report_parts.hpp): the verdict in three lines, the figure of
+// The first screen of the page (sections.hpp): the verdict in three lines, the figure of
 // every model's errors against V, and the recommended model with its parameters in a form to
 // copy. Everything it states is computed elsewhere (the verdict, the ranking, the trend, the
 // yield check); this file only chooses what a reader needs first and says it briefly.

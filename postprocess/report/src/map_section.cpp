@@ -1,4 +1,4 @@
-// The section "Validity map" (report_parts.hpp): the map of assessment/validity_map.cpp in
+// The section "Validity map" (sections.hpp): the map of assessment/validity_map.cpp in
 // words, figures and one table per model.
 
 #include "sections.hpp"

@@ -1,4 +1,4 @@
-// The section "Elastic-plastic laws" and its three figures, declared here (report_parts.hpp):
+// The section "Elastic-plastic laws" and its three figures, declared here (sections.hpp):
 // e against V/V_y in log-log with the laws and the FEM's uncertainty, the permanent approach
 // against V, and the force-approach loops with the plastic unloading branch. Only for a
 // campaign whose material is elastic-plastic (Report::plastic_laws).

@@ -1,4 +1,4 @@
-// The two renderings of the report's page (report_parts.hpp, Document): Markdown, with the
+// The two renderings of the report's page (document.hpp): Markdown, with the
 // figures referenced beside it, and one self-contained HTML file with the figures embedded.
 
 #include "sections.hpp"

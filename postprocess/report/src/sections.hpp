@@ -56,10 +56,10 @@ std::string range_text(const ToleranceVerdict& verdict, const Report& report);
 /// model's errors against V, the recommended model's parameters in a form to copy.
 void glance_section(Document& doc, const Report& report, const FigurePlacer& figure);
 
-/// The section "Validity map" (validity_map.cpp).
+/// The section "Validity map" (map_section.cpp).
 void map_section(Document& doc, const Report& report, const FigurePlacer& figure);
 
-/// The section "In your simulator" (report_simulators.cpp).
+/// The section "In your simulator" (simulators_section.cpp).
 void simulators_section(Document& doc, const Report& report);
 
 } // namespace impact::postprocess::detail

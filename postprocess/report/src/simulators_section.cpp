@@ -1,4 +1,4 @@
-// The section "In your simulator" (report_parts.hpp): the simulators' results judged in
+// The section "In your simulator" (sections.hpp): the simulators' results judged in
 // assessment/simulators.cpp, in words and tables, or the commands that make them.
 
 #include "sections.hpp"

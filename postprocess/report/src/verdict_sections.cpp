@@ -1,4 +1,4 @@
-// The sections of the page on the verdict and the model to use (report_parts.hpp): status,
+// The sections of the page on the verdict and the model to use (sections.hpp): status,
 // verdict, ranking, parameters, velocity trend, the model for users.
 
 #include "law_block.hpp"
