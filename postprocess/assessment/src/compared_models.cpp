@@ -350,6 +350,65 @@ bool same_velocity(double a, double b) {
   return same_value(a, b);
 }
 
+namespace {
+
+// The comparison law ranked first, fitted to all runs; missing when none was fitted.
+ReportModel best_law_model(const std::vector<ReportRun>& runs, const std::vector<FemRun>& fem_runs,
+                           const CampaignCalibration& campaign, double level) {
+  const CampaignModelFit* best = nullptr;
+  const RankedModel* best_entry = nullptr;
+  for (const auto& entry : campaign.ranking) {
+    for (const auto& law : campaign.comparison_laws)
+      if (law.key == entry.key) {
+        best = &law;
+        best_entry = &entry;
+      }
+    if (best) break;
+  }
+  // Scored in sample (fewer than three velocities), the rank says how well the law fits
+  // these runs, not how well it predicts another velocity.
+  if (best)
+    return fitted_model(runs, fem_runs, *best, std::string(model_keys::best_law),
+                        damped_label(best->key).value_or(best->key) + " (best law)",
+                        std::string(
+                            best_entry->out_of_sample
+                                ? "the comparison law ranked first by out-of-sample error"
+                                : "the comparison law ranked first among the fitted laws by its "
+                                  "in-sample error (fewer than three velocities: no out-of-sample "
+                                  "error; a fit ranks after every law that fits nothing)") +
+                            ", fitted to the force histories of all runs",
+                        level);
+  return missing_model(runs, std::string(model_keys::best_law), "best comparison law",
+                       "the calibration has no fitted comparison law");
+}
+
+// The models that fit nothing: from the material (Kuwabara–Kono, the damped elastic-plastic
+// laws), Hunt–Crossley with a published damping, Hertz.
+void add_reference_models(std::vector<ReportModel>& models, const std::vector<ReportRun>& runs,
+                          const std::vector<FemRun>& fem_runs,
+                          const CampaignCalibration& campaign) {
+  const auto reference = [&](const std::string& key) -> const ReferenceModel* {
+    for (const auto& model : campaign.reference_models)
+      if (model.key == key) return &model;
+    return nullptr;
+  };
+  if (const auto* material = reference(std::string(model_keys::kuwabara_kono_material)))
+    models.push_back(
+        reference_model(runs, fem_runs, *material, "Kuwabara–Kono (A from the material)"));
+  if (const auto* damped = reference(std::string(model_keys::hunt_crossley_thornton_material)))
+    models.push_back(
+        reference_model(runs, fem_runs, *damped, "Hunt–Crossley on Thornton (from the material)"));
+  if (const auto* damped = reference(std::string(model_keys::hunt_crossley_jackson_green_material)))
+    models.push_back(reference_model(runs, fem_runs, *damped,
+                                     "Hunt–Crossley on Jackson–Green (from the material)"));
+  if (const auto* published = reference(std::string(model_keys::hunt_crossley_published)))
+    models.push_back(reference_model(runs, fem_runs, *published, published->label));
+  if (const auto* hertz = reference(std::string(model_keys::hertz)))
+    models.push_back(reference_model(runs, fem_runs, *hertz, hertz->label));
+}
+
+} // namespace
+
 std::vector<ReportModel> report_models(const std::vector<ReportRun>& runs,
                                        const std::vector<FemRun>& fem_runs,
                                        const std::optional<Calibration>& calibration,
@@ -386,39 +445,7 @@ std::vector<ReportModel> report_models(const std::vector<ReportRun>& runs,
                      campaign.hunt_crossley_velocity_damping->key, "Hunt–Crossley b(V)",
                      "b(V) = b_1 (V / 1 m/s)^-q, " + campaign.hunt_crossley_velocity_damping->label,
                      level));
-  if (campaign.fitted) {
-    const CampaignModelFit* best = nullptr;
-    const RankedModel* best_entry = nullptr;
-    for (const auto& entry : campaign.ranking) {
-      for (const auto& law : campaign.comparison_laws)
-        if (law.key == entry.key) {
-          best = &law;
-          best_entry = &entry;
-        }
-      if (best) break;
-    }
-    // Scored in sample (fewer than three velocities), the rank says how well the law fits
-    // these runs, not how well it predicts another velocity.
-    if (best)
-      models.push_back(fitted_model(
-          runs, fem_runs, *best, std::string(model_keys::best_law),
-          damped_label(best->key).value_or(best->key) + " (best law)",
-          std::string(best_entry->out_of_sample
-                          ? "the comparison law ranked first by out-of-sample error"
-                          : "the comparison law ranked first among the fitted laws by its "
-                            "in-sample error (fewer than three velocities: no out-of-sample "
-                            "error; a fit ranks after every law that fits nothing)") +
-              ", fitted to the force histories of all runs",
-          level));
-    else
-      models.push_back(missing_model(runs, std::string(model_keys::best_law), "best comparison law",
-                                     "the calibration has no fitted comparison law"));
-  }
-  const auto reference = [&](const std::string& key) -> const ReferenceModel* {
-    for (const auto& model : campaign.reference_models)
-      if (model.key == key) return &model;
-    return nullptr;
-  };
+  if (campaign.fitted) models.push_back(best_law_model(runs, fem_runs, campaign, level));
   // The damped elastic-plastic laws (damped_plastic_models.hpp), fitted, unless one of them is
   // the best law shown above.
   std::string best_key;
@@ -434,19 +461,7 @@ std::vector<ReportModel> report_models(const std::vector<ReportRun>& runs,
                                                    "to all runs",
                                       level));
     }
-  if (const auto* material = reference(std::string(model_keys::kuwabara_kono_material)))
-    models.push_back(
-        reference_model(runs, fem_runs, *material, "Kuwabara–Kono (A from the material)"));
-  if (const auto* damped = reference(std::string(model_keys::hunt_crossley_thornton_material)))
-    models.push_back(
-        reference_model(runs, fem_runs, *damped, "Hunt–Crossley on Thornton (from the material)"));
-  if (const auto* damped = reference(std::string(model_keys::hunt_crossley_jackson_green_material)))
-    models.push_back(reference_model(runs, fem_runs, *damped,
-                                     "Hunt–Crossley on Jackson–Green (from the material)"));
-  if (const auto* published = reference(std::string(model_keys::hunt_crossley_published)))
-    models.push_back(reference_model(runs, fem_runs, *published, published->label));
-  if (const auto* hertz = reference(std::string(model_keys::hertz)))
-    models.push_back(reference_model(runs, fem_runs, *hertz, hertz->label));
+  add_reference_models(models, runs, fem_runs, campaign);
   for (const auto& model : models)
     if (!model.converged)
       problems.push_back({model.label, ProblemKind::convergence,

@@ -19,6 +19,7 @@
 #include <impact_reduced/invalid_input.hpp>
 
 #include <algorithm>
+#include <functional>
 #include <cmath>
 
 namespace impact::postprocess {
@@ -174,23 +175,14 @@ CampaignFitRequest damped_plastic_request(const ContactModel& law, const std::ve
   return request;
 }
 
-} // namespace
+// Fits one model to the campaign (and without each velocity), saying so on the progress.
+using CampaignFit =
+    std::function<CampaignModelFit(const ContactModel& model, const CampaignFitRequest& request)>;
 
-Calibration calibrate(const std::vector<FemRun>& runs, const CalibrationOptions& options) {
-  check_options(options);
-  std::vector<std::string> left_out;
-  const std::vector<ContactModel> laws = comparison_models(options.laws, runs, left_out);
-
-  Calibration calibration;
-  calibration.confidence_level = options.confidence_level;
-  Progress progress(options.progress);
-  for (const auto& name : left_out)
-    progress("law " + name + " left out: " +
-             (runs_can_yield(runs) ? "the runs do not record the sphere radius and Poisson "
-                                     "ratio it needs"
-                                   : "no material of the runs can yield, so its yield parameter "
-                                     "would only stand in for the viscous loss"));
-
+// Every run prepared and fitted on its own: restitution, loading and force history.
+std::vector<PreparedRun> calibrate_runs(const std::vector<FemRun>& runs,
+                                        const CalibrationOptions& options, Calibration& calibration,
+                                        Progress& progress) {
   std::vector<PreparedRun> prepared;
   for (const auto& run : runs) prepared.push_back(prepare(run));
   for (std::size_t i = 0; i < prepared.size(); ++i) {
@@ -202,42 +194,26 @@ Calibration calibrate(const std::vector<FemRun>& runs, const CalibrationOptions&
              "force-history fits done in " +
              progress.elapsed());
   }
+  return prepared;
+}
 
-  // The campaign needs two distinct velocities to tell a constant b from a constant e.
-  CampaignCalibration& campaign = calibration.campaign;
-  campaign.energy_weight = options.energy_weight;
-  add_reference_models(campaign, runs, prepared, options);
+// The campaign's distinct velocities, increasing.
+std::vector<double> distinct_velocities(const std::vector<FemRun>& runs) {
+  std::vector<double> velocities;
   for (const auto& run : runs) {
-    const bool known = std::any_of(campaign.velocities.begin(), campaign.velocities.end(),
+    const bool known = std::any_of(velocities.begin(), velocities.end(),
                                    [&](double v) { return same_velocity(v, run.impact_velocity); });
-    if (!known) campaign.velocities.push_back(run.impact_velocity);
+    if (!known) velocities.push_back(run.impact_velocity);
   }
-  std::sort(campaign.velocities.begin(), campaign.velocities.end());
-  if (campaign.velocities.size() < 2) {
-    campaign.reason = runs.empty()
-                          ? "no usable run"
-                          : "the runs have a single impact velocity (" +
-                                format_number(campaign.velocities.front()) +
-                                " m/s); a campaign fit needs at least two distinct velocities to "
-                                "tell how the damping depends on the velocity";
-    return calibration;
-  }
+  std::sort(velocities.begin(), velocities.end());
+  return velocities;
+}
 
-  double damping = nan;
-  CampaignStart start = campaign_start(runs, calibration.runs, damping);
-
-  const auto fit = [&](const ContactModel& model, const CampaignFitRequest& request) {
-    progress.start();
-    CampaignModelFit result = fit_campaign_model(model, request, prepared, campaign.velocities,
-                                                 start, options, calibration.problems);
-    progress("campaign: " + request.key + " fitted to " + std::to_string(runs.size()) + " runs" +
-             (result.held_out.empty()
-                  ? std::string()
-                  : " and once without each of the " + std::to_string(result.held_out.size()) +
-                        " velocities") +
-             " in " + progress.elapsed());
-    return result;
-  };
+// Hunt–Crossley on the force histories; then, from its elastic part and damping, with the
+// energy loss, with n at the Hertz value and with b(V).
+void fit_hunt_crossley_family(const CampaignFit& fit, CampaignCalibration& campaign,
+                              CampaignStart& start, double damping,
+                              const CalibrationOptions& options) {
   const ContactModel hunt_crossley = hunt_crossley_model();
   campaign.hunt_crossley = fit(hunt_crossley, {std::string(model_keys::hunt_crossley),
                                                "Hunt–Crossley, force histories",
@@ -283,6 +259,14 @@ Calibration calibrate(const std::vector<FemRun>& runs, const CalibrationOptions&
            hc_damping,
            {0.0},
            std::nullopt});
+}
+
+// The comparison laws, each from its own start; a law whose fit throws is a problem, not the
+// end of the campaign.
+void fit_comparison_laws(const CampaignFit& fit, const std::vector<ContactModel>& laws,
+                         const std::vector<FemRun>& runs, Calibration& calibration,
+                         const CampaignStart& start, const CalibrationOptions& options) {
+  CampaignCalibration& campaign = calibration.campaign;
   for (const auto& law : laws) {
     try {
       CampaignFitRequest request{law.name,     law.name + ", force histories",
@@ -298,6 +282,59 @@ Calibration calibrate(const std::vector<FemRun>& runs, const CalibrationOptions&
            "the campaign fit of " + law.name + " failed: " + error.what()});
     }
   }
+}
+
+} // namespace
+
+Calibration calibrate(const std::vector<FemRun>& runs, const CalibrationOptions& options) {
+  check_options(options);
+  std::vector<std::string> left_out;
+  const std::vector<ContactModel> laws = comparison_models(options.laws, runs, left_out);
+
+  Calibration calibration;
+  calibration.confidence_level = options.confidence_level;
+  Progress progress(options.progress);
+  for (const auto& name : left_out)
+    progress("law " + name + " left out: " +
+             (runs_can_yield(runs) ? "the runs do not record the sphere radius and Poisson "
+                                     "ratio it needs"
+                                   : "no material of the runs can yield, so its yield parameter "
+                                     "would only stand in for the viscous loss"));
+
+  const std::vector<PreparedRun> prepared = calibrate_runs(runs, options, calibration, progress);
+
+  // The campaign needs two distinct velocities to tell a constant b from a constant e.
+  CampaignCalibration& campaign = calibration.campaign;
+  campaign.energy_weight = options.energy_weight;
+  add_reference_models(campaign, runs, prepared, options);
+  campaign.velocities = distinct_velocities(runs);
+  if (campaign.velocities.size() < 2) {
+    campaign.reason = runs.empty()
+                          ? "no usable run"
+                          : "the runs have a single impact velocity (" +
+                                format_number(campaign.velocities.front()) +
+                                " m/s); a campaign fit needs at least two distinct velocities to "
+                                "tell how the damping depends on the velocity";
+    return calibration;
+  }
+
+  double damping = nan;
+  CampaignStart start = campaign_start(runs, calibration.runs, damping);
+
+  const CampaignFit fit = [&](const ContactModel& model, const CampaignFitRequest& request) {
+    progress.start();
+    CampaignModelFit result = fit_campaign_model(model, request, prepared, campaign.velocities,
+                                                 start, options, calibration.problems);
+    progress("campaign: " + request.key + " fitted to " + std::to_string(runs.size()) + " runs" +
+             (result.held_out.empty()
+                  ? std::string()
+                  : " and once without each of the " + std::to_string(result.held_out.size()) +
+                        " velocities") +
+             " in " + progress.elapsed());
+    return result;
+  };
+  fit_hunt_crossley_family(fit, campaign, start, damping, options);
+  fit_comparison_laws(fit, laws, runs, calibration, start, options);
   campaign.ranking = rank_campaign(campaign, calibration.runs);
   campaign.fitted = true;
   return calibration;

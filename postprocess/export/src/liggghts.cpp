@@ -12,6 +12,7 @@
 #include <impact_reduced/yield_velocity.hpp>
 
 #include <cmath>
+#include <ostream>
 #include <sstream>
 
 namespace impact::postprocess {
@@ -70,12 +71,12 @@ ImpactFigures thornton_impact(const PlasticContact& contact, double mass, double
 
 namespace {
 
-std::string liggghts_file(const ExportCampaign& campaign, const PlasticContact& plastic,
-                          const LiggghtsContact& contact, const std::vector<ImpactFigures>& model,
-                          const std::vector<ImpactFigures>& paper) {
-  using export_text::as_written;
+// The deck's header: what it carries, the constants of the contact and how LIGGGHTS'
+// thornton_ning differs from Thornton's paper, and both against the FEM.
+void write_header(std::ostream& out, const ExportCampaign& campaign, const PlasticContact& plastic,
+                  const LiggghtsContact& contact, const std::vector<ImpactFigures>& model,
+                  const std::vector<ImpactFigures>& paper) {
   using export_text::rounded;
-  std::ostringstream out;
   out << "# LIGGGHTS 3.8 input: the sphere dropped on a granular wall with the elastic-plastic\n"
       << "# normal model thornton_ning (Thornton 1997 without adhesion).\n"
       << "# Written by impact-export from " << campaign.calibration_file << " and its runs.\n"
@@ -108,6 +109,13 @@ std::string liggghts_file(const ExportCampaign& campaign, const PlasticContact& 
   for (std::size_t i = 0; i < campaign.runs.size(); ++i)
     out << "#   " << rounded(campaign.runs[i].velocity, 4) << "  "
         << rounded(model[i].restitution, 5) << "  " << rounded(paper[i].restitution, 5) << "\n";
+}
+
+// The units, the velocity and the sphere as variables, the time step from Hertz's contact
+// time, and the box.
+void write_domain(std::ostream& out, const ExportCampaign& campaign, const PlasticContact& plastic,
+                  const LiggghtsContact& contact) {
+  using export_text::as_written;
   out << "\n"
       << "units           si\n"
       << "hard_particles  yes          # moduli above 1e9 Pa\n"
@@ -137,8 +145,13 @@ std::string liggghts_file(const ExportCampaign& campaign, const PlasticContact& 
       << "region          box block -0.05 0.05 -0.05 0.05 -0.01 ${top} units box\n"
       << "create_box      2 box\n"
       << "neighbor        0.002 bin\n"
-      << "neigh_modify    delay 0\n"
-      << "# Atom type 1: the sphere; type 2: the wall.\n"
+      << "neigh_modify    delay 0\n";
+}
+
+// The two atom types' materials and the thornton_ning contact between them.
+void write_contact(std::ostream& out, const LiggghtsContact& contact) {
+  using export_text::as_written;
+  out << "# Atom type 1: the sphere; type 2: the wall.\n"
       << "fix             m1 all property/global youngsModulus peratomtype "
       << as_written(contact.sphere_youngs_modulus) << " " << as_written(contact.wall_youngs_modulus)
       << "\n"
@@ -154,8 +167,12 @@ std::string liggghts_file(const ExportCampaign& campaign, const PlasticContact& 
          "0.5 0.5\n"
       << "fix             m6 all property/global coefficientFriction peratomtypepair 2 0 0 0 0\n"
       << "pair_style      gran model thornton_ning tangential history\n"
-      << "pair_coeff      * *\n"
-      << "# The sphere starts 10.5 steps of flight above the wall, so that the record shows the "
+      << "pair_coeff      * *\n";
+}
+
+// The drop: the sphere above the wall at V, the record of its state at every step, the run.
+void write_drop(std::ostream& out) {
+  out << "# The sphere starts 10.5 steps of flight above the wall, so that the record shows the "
          "touch.\n"
       << "variable        z0 equal v_radius+10.5*v_V*v_dt\n"
       << "create_atoms    1 single 0 0 ${z0} units box\n"
@@ -177,6 +194,16 @@ std::string liggghts_file(const ExportCampaign& campaign, const PlasticContact& 
          "sphere\"\n"
       << "variable        steps equal ceil(3*v_N)+10\n"
       << "run             ${steps}\n";
+}
+
+std::string liggghts_file(const ExportCampaign& campaign, const PlasticContact& plastic,
+                          const LiggghtsContact& contact, const std::vector<ImpactFigures>& model,
+                          const std::vector<ImpactFigures>& paper) {
+  std::ostringstream out;
+  write_header(out, campaign, plastic, contact, model, paper);
+  write_domain(out, campaign, plastic, contact);
+  write_contact(out, contact);
+  write_drop(out);
   return out.str();
 }
 

@@ -227,12 +227,11 @@ std::vector<std::string> restitution_table_laws(const Calibration& calibration) 
   return keys;
 }
 
-RestitutionTable restitution_table(const Calibration& calibration, const std::vector<FemRun>& runs,
-                                   const std::optional<std::string>& model, std::size_t points) {
-  if (points < 2)
-    throw reduced::InvalidInput("points", "the table needs at least 2 velocities, got " +
-                                              std::to_string(points));
-  if (runs.empty()) throw RestitutionTableError("the campaign has no runs");
+namespace {
+
+// The law of the table: the one asked for (it must be a damped elastic-plastic law the
+// calibration holds, fitted to convergence), else the best ranked of those.
+std::string table_law_key(const Calibration& calibration, const std::optional<std::string>& model) {
   const std::vector<std::string> available = restitution_table_laws(calibration);
   std::string key;
   if (model) {
@@ -254,9 +253,14 @@ RestitutionTable restitution_table(const Calibration& calibration, const std::ve
                                 list(available) + ")");
   if (source.fit && !source.fit->fit.converged)
     throw RestitutionTableError("the calibration's fit of " + key + " did not converge");
+  return key;
+}
 
-  RestitutionTable table;
-  RestitutionTableLaw& law = table.law;
+// The law's constants: from its campaign fit or its reference (no fit), with the sphere the
+// runs share (one mass per table; Jackson-Green's spring needs the radius and Poisson ratio).
+RestitutionTableLaw table_law(const Calibration& calibration, const std::string& key,
+                              const Source& source, const std::vector<FemRun>& runs) {
+  RestitutionTableLaw law;
   law.key = key;
   law.model = source.fit ? source.fit->fit.model : source.reference->model;
   law.label = source.fit ? source.fit->label : source.reference->label;
@@ -297,8 +301,13 @@ RestitutionTable restitution_table(const Calibration& calibration, const std::ve
                                   "ratio that Jackson-Green's spring needs");
     law.poisson_ratio = scenario->poisson_ratio;
   }
+  return law;
+}
 
-  // The velocities: log-spaced over the campaign's range, and the runs' own.
+// The velocities of the table: log-spaced over the campaign's range, and the runs' own (with
+// their run), increasing.
+std::vector<std::pair<double, const FemRun*>> table_velocities(const std::vector<FemRun>& runs,
+                                                               std::size_t points) {
   std::vector<const FemRun*> by_velocity;
   for (const auto& run : runs) by_velocity.push_back(&run);
   std::sort(by_velocity.begin(), by_velocity.end(), [](const FemRun* a, const FemRun* b) {
@@ -318,9 +327,55 @@ RestitutionTable restitution_table(const Calibration& calibration, const std::ve
   }
   std::sort(velocities.begin(), velocities.end(),
             [](const auto& a, const auto& b) { return a.first < b.first; });
+  return velocities;
+}
+
+// The FEM at a run of the table: its figures (the calibration's measured numbers where it has
+// the run), their uncertainty, and the law's errors against them, in and out of sample.
+RestitutionTableFem fem_at(const FemRun& fem_run, const Calibration& calibration,
+                           const Source& source, const RestitutionTableRow& row) {
+  const double velocity = row.velocity;
+  RestitutionTableFem fem;
+  fem.source = fem_run.source;
+  fem.figures = measured_quantities(fem_run);
+  for (const auto& entry : calibration.runs)
+    if (same_value(entry.velocity, velocity)) fem.figures = entry.measured;
+  const FemUncertainty uncertainty = fem_uncertainty(read_fem_run_record(fem_run), fem.figures);
+  const Quantity judged[3] = {Quantity::restitution, Quantity::contact_time, Quantity::force_max};
+  for (std::size_t q = 0; q < 3; ++q) {
+    fem.uncertainty[q] = uncertainty[std::size_t(judged[q])].relative;
+    fem.uncertainty_source[q] = uncertainty[std::size_t(judged[q])].source;
+  }
+  fem.error = relative_errors(row.law.figures(), fem.figures);
+  fem.out_of_sample_error = {nan, nan, nan};
+  const RunResidual* residual =
+      residual_at(source.fit ? source.fit->runs : source.reference->runs, velocity);
+  if (residual) {
+    const ImpactPrediction& predicted =
+        source.fit
+            ? residual->out_of_sample.value_or(ImpactPrediction{{nan, nan, nan, nan, nan}, nan})
+            : residual->prediction;
+    fem.out_of_sample_error = relative_errors(predicted, fem.figures);
+  }
+  return fem;
+}
+
+} // namespace
+
+RestitutionTable restitution_table(const Calibration& calibration, const std::vector<FemRun>& runs,
+                                   const std::optional<std::string>& model, std::size_t points) {
+  if (points < 2)
+    throw reduced::InvalidInput("points", "the table needs at least 2 velocities, got " +
+                                              std::to_string(points));
+  if (runs.empty()) throw RestitutionTableError("the campaign has no runs");
+  const std::string key = table_law_key(calibration, model);
+  const Source source = find_source(calibration, key);
+  RestitutionTable table;
+  table.law = table_law(calibration, key, source, runs);
+  const RestitutionTableLaw& law = table.law;
 
   const auto spring = table_spring(law);
-  for (const auto& [velocity, run] : velocities) {
+  for (const auto& [velocity, run] : table_velocities(runs, points)) {
     RestitutionTableRow row;
     row.velocity = velocity;
     row.damping = table_damping(law, velocity);
@@ -331,32 +386,7 @@ RestitutionTable restitution_table(const Calibration& calibration, const std::ve
       throw RestitutionTableError(key + " at V = " + std::to_string(velocity) +
                                   " m/s: " + error.what());
     }
-    if (run) {
-      RestitutionTableFem fem;
-      fem.source = run->source;
-      fem.figures = measured_quantities(*run);
-      for (const auto& entry : calibration.runs)
-        if (same_value(entry.velocity, velocity)) fem.figures = entry.measured;
-      const FemUncertainty uncertainty = fem_uncertainty(read_fem_run_record(*run), fem.figures);
-      const Quantity judged[3] = {Quantity::restitution, Quantity::contact_time,
-                                  Quantity::force_max};
-      for (std::size_t q = 0; q < 3; ++q) {
-        fem.uncertainty[q] = uncertainty[std::size_t(judged[q])].relative;
-        fem.uncertainty_source[q] = uncertainty[std::size_t(judged[q])].source;
-      }
-      fem.error = relative_errors(row.law.figures(), fem.figures);
-      fem.out_of_sample_error = {nan, nan, nan};
-      const RunResidual* residual =
-          residual_at(source.fit ? source.fit->runs : source.reference->runs, velocity);
-      if (residual) {
-        const ImpactPrediction& predicted =
-            source.fit
-                ? residual->out_of_sample.value_or(ImpactPrediction{{nan, nan, nan, nan, nan}, nan})
-                : residual->prediction;
-        fem.out_of_sample_error = relative_errors(predicted, fem.figures);
-      }
-      row.fem = std::move(fem);
-    }
+    if (run) row.fem = fem_at(*run, calibration, source, row);
     table.rows.push_back(std::move(row));
   }
   return table;

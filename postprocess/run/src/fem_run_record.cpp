@@ -62,49 +62,63 @@ double BodyStress::ratio() const {
   return max_von_mises && yield_strength ? *max_von_mises / *yield_strength : nan;
 }
 
-FemRunRecord read_fem_run_record(const FemRun& run) {
-  json summary = json::object();
-  try {
-    std::ifstream in(summary_of(run.source));
-    if (in) summary = json::parse(in);
-  } catch (const json::exception&) {
-    summary = json::object(); // the run reader has already accepted or rejected it
+namespace {
+
+// What the run's summary records, else the run file's attribute of the same key (the FEM
+// writes both); a summary that cannot be read counts as empty (the run reader has already
+// accepted or rejected it).
+class RunSummary {
+public:
+  explicit RunSummary(const FemRun& run) : run(run) {
+    try {
+      std::ifstream in(summary_of(run.source));
+      if (in) summary = json::parse(in);
+    } catch (const json::exception&) {
+      summary = json::object();
+    }
   }
-  const auto value = [&](const std::string& key) -> std::optional<double> {
-    if (summary.is_object() && summary.contains(key) && summary[key].is_number())
-      return summary[key].get<double>();
+  std::optional<double> value(const std::string& key) const {
+    if (summary.is_object() && summary.contains(key) && summary.at(key).is_number())
+      return summary.at(key).get<double>();
     const auto attribute = run.numeric_attributes.find(fem_format::result_attribute_prefix + key);
     if (attribute != run.numeric_attributes.end() && std::isfinite(attribute->second))
       return attribute->second;
     return std::nullopt;
-  };
-  FemRunRecord record;
-  record.energy_error = value(fem_format::energy_error_key);
-  record.lost_energy_fraction = value(fem_format::lost_energy_fraction_key);
-  record.dissipated_energy_fraction = value(fem_format::dissipated_energy_fraction_key);
-  record.radiated_energy_fraction = value(fem_format::radiated_energy_fraction_key);
+  }
+  /// A true/false entry of the summary (none in the run file's attributes).
+  std::optional<bool> flag(const std::string& key) const {
+    if (summary.is_object() && summary.contains(key) && summary.at(key).is_boolean())
+      return summary.at(key).get<bool>();
+    return std::nullopt;
+  }
 
-  record.energy_error_final = value(fem_format::energy_error_final_key);
+private:
+  const FemRun& run;
+  json summary = json::object();
+};
 
-  // Stresses and yield strengths, per body: impact-fem records "von_mises_max_<body>" and,
-  // for a body checked against a strength, "yield_strength_<body>"; the parameters
-  // "<Body>/Yield strength" (0 = none) and an elastic-plastic body's material constant give
-  // the strength when the summary does not. A summary of another tool may record only the
-  // generic pair "max_von_mises" / "yield_strength": then one entry for both bodies.
-  const auto consider = [](BodyStress& body, const std::string& key,
-                           std::optional<double> strength) {
-    if (!strength || !(*strength > 0)) return;
-    if (!body.yield_strength || *strength < *body.yield_strength) {
-      body.yield_strength = strength;
-      body.yield_source = key;
-    }
-  };
-  const std::optional<double> generic_strength = value("yield_strength");
+// A body's strength from one more source: the lowest positive one is kept, with its key.
+void consider(BodyStress& body, const std::string& key, std::optional<double> strength) {
+  if (!strength || !(*strength > 0)) return;
+  if (!body.yield_strength || *strength < *body.yield_strength) {
+    body.yield_strength = strength;
+    body.yield_source = key;
+  }
+}
+
+// Stresses and yield strengths, per body: impact-fem records "von_mises_max_<body>" and,
+// for a body checked against a strength, "yield_strength_<body>"; the parameters
+// "<Body>/Yield strength" (0 = none) and an elastic-plastic body's material constant give
+// the strength when the summary does not. A summary of another tool may record only the
+// generic pair "max_von_mises" / "yield_strength": then one entry for both bodies.
+std::vector<BodyStress> body_stresses(const FemRun& run, const RunSummary& summary) {
+  std::vector<BodyStress> bodies;
+  const std::optional<double> generic_strength = summary.value("yield_strength");
   for (const char* name : {fem_format::sphere_body, fem_format::plate_body}) {
     const std::string key = lower_case(name); // impact-fem's summary names the bodies so
-    BodyStress body{name, value(fem_format::von_mises_max_prefix + key), {}, {}, {}};
+    BodyStress body{name, summary.value(fem_format::von_mises_max_prefix + key), {}, {}, {}};
     consider(body, fem_format::yield_strength_prefix + key,
-             value(fem_format::yield_strength_prefix + key));
+             summary.value(fem_format::yield_strength_prefix + key));
     const std::string parameter = fem_format::body_parameter(name, fem_format::yield_strength);
     consider(body, parameter, text_number(run, parameter));
     // An elastic-plastic body's initial yield strength (its material's constant).
@@ -116,21 +130,26 @@ FemRunRecord read_fem_run_record(const FemRun& run) {
                material_constant(run, name, fem_format::yield_strength));
     if (!body.yield_strength) consider(body, "yield_strength", generic_strength);
     const std::string flag = fem_format::yield_exceeded_key + ("_" + key);
-    if (summary.is_object() && summary.contains(flag) && summary[flag].is_boolean())
-      body.yields = summary[flag].get<bool>();
+    if (const auto yields = summary.flag(flag))
+      body.yields = *yields;
     else if (body.max_von_mises && body.yield_strength)
       body.yields = *body.max_von_mises > *body.yield_strength;
-    record.bodies.push_back(std::move(body));
+    bodies.push_back(std::move(body));
   }
-  const bool per_body = std::any_of(record.bodies.begin(), record.bodies.end(),
+  const bool per_body = std::any_of(bodies.begin(), bodies.end(),
                                     [](const BodyStress& body) { return body.max_von_mises; });
-  if (const auto largest = value(fem_format::max_von_mises_key); largest && !per_body) {
+  if (const auto largest = summary.value(fem_format::max_von_mises_key); largest && !per_body) {
     BodyStress both{both_bodies, largest, {}, {}, {}};
-    for (const auto& body : record.bodies) consider(both, body.yield_source, body.yield_strength);
+    for (const auto& body : bodies) consider(both, body.yield_source, body.yield_strength);
     if (both.yield_strength) both.yields = *both.max_von_mises > *both.yield_strength;
-    record.bodies = {std::move(both)};
+    bodies = {std::move(both)};
   }
-  // The body nearest to its own strength (the largest ratio; without one, the largest stress).
+  return bodies;
+}
+
+// The body nearest to its own strength sets the record's stress and strength; the run yields
+// as its summary says, else when a body yields.
+void set_governing_body(FemRunRecord& record, const RunSummary& summary) {
   const BodyStress* governing = nullptr;
   for (const auto& body : record.bodies) {
     if (!body.max_von_mises) continue;
@@ -145,13 +164,29 @@ FemRunRecord read_fem_run_record(const FemRun& run) {
     record.yield_strength = governing->yield_strength;
     record.yield_source = governing->yield_source;
   }
-  if (summary.is_object() && summary.contains(fem_format::yield_exceeded_key) &&
-      summary[fem_format::yield_exceeded_key].is_boolean()) {
-    record.yields = summary[fem_format::yield_exceeded_key].get<bool>();
+  if (const auto yields = summary.flag(fem_format::yield_exceeded_key)) {
+    record.yields = *yields;
   } else {
     for (const auto& body : record.bodies)
       if (body.yields) record.yields = record.yields.value_or(false) || *body.yields;
   }
+}
+
+} // namespace
+
+FemRunRecord read_fem_run_record(const FemRun& run) {
+  const RunSummary summary(run);
+  const auto value = [&](const std::string& key) { return summary.value(key); };
+  FemRunRecord record;
+  record.energy_error = value(fem_format::energy_error_key);
+  record.lost_energy_fraction = value(fem_format::lost_energy_fraction_key);
+  record.dissipated_energy_fraction = value(fem_format::dissipated_energy_fraction_key);
+  record.radiated_energy_fraction = value(fem_format::radiated_energy_fraction_key);
+
+  record.energy_error_final = value(fem_format::energy_error_final_key);
+
+  record.bodies = body_stresses(run, summary);
+  set_governing_body(record, summary);
 
   record.plastic_material = has_plastic_material(run);
   if (record.plastic_material) {
