@@ -16,18 +16,10 @@ namespace {
 
 constexpr double nan = std::numeric_limits<double>::quiet_NaN();
 
-std::string format(double value, int digits = 4) {
-  if (!std::isfinite(value)) return "n/a";
-  std::ostringstream text;
-  text.precision(digits);
-  text << value;
-  return text.str();
-}
-
 } // namespace
 
 std::string band_name(double tolerance) {
-  return format(tolerance * 100) + " %";
+  return short_number(tolerance * 100) + " %";
 }
 
 // Within when |error| + U <= tolerance for every quantity judged, outside when
@@ -85,8 +77,9 @@ ToleranceVerdict tolerance_verdict(const Assessment& report,
     const double high = report.runs[best_begin + best_length - 1].velocity;
     verdict.range = std::array<double, 2>{low, high};
     text = "Within " + band + ": " + (best_length == count ? "over the whole tested range, " : "") +
-           "V = " + (low == high ? format(low) : format(low) + " to " + format(high)) + " m/s" +
-           basis + " (" + std::to_string(best_length) + " of " + std::to_string(count) +
+           "V = " +
+           (low == high ? short_number(low) : short_number(low) + " to " + short_number(high)) +
+           " m/s" + basis + " (" + std::to_string(best_length) + " of " + std::to_string(count) +
            " tested velocities).";
   }
   if (!outside.empty())
@@ -184,18 +177,18 @@ std::string summary_of(const Assessment& report) {
                   "verified FEM is needed to decide.";
   if (report.trend && !report.plastic_laws) {
     const ReferenceSlope& nearest = nearest_reference(*report.trend);
-    text += " The FEM's 1 - e grows as V^" + format(report.trend->exponent, 3) + " [" +
-            format(report.trend->lower, 3) + ", " + format(report.trend->upper, 3) +
+    text += " The FEM's 1 - e grows as V^" + short_number(report.trend->exponent, 3) + " [" +
+            short_number(report.trend->lower, 3) + ", " + short_number(report.trend->upper, 3) +
             "]: the nearest reference family is " + nearest.family + " (V^" +
-            format(nearest.slope, 3) + ")" +
+            short_number(nearest.slope, 3) + ")" +
             (nearest.slope == 1.0 ? "." : ", not Hunt–Crossley with a constant b (V^1).");
   }
   if (report.plastic_laws) text += " " + report.family_text;
   if (report.plasticity.first_yielding_velocity)
     text += " Above " +
-            format(report.plasticity.onset_estimate.value_or(
-                       *report.plasticity.first_yielding_velocity),
-                   3) +
+            short_number(report.plasticity.onset_estimate.value_or(
+                             *report.plasticity.first_yielding_velocity),
+                         3) +
             " m/s the FEM exceeds the yield strength: there no viscoelastic model, reduced or "
             "FEM, is valid.";
   return text;
@@ -225,8 +218,8 @@ std::string cause_of(const Assessment& report, const ReportModel& model) {
     cause << "The calibrated Hunt–Crossley model holds within " << band_name(tight)
           << " at every tested velocity (" << basis << "); the largest error is "
           << percent_cell(error(worst_run, worst_quantity)) << " ("
-          << quantity_words(worst_quantity) << " at V = " << format(report.runs[worst_run].velocity)
-          << " m/s).";
+          << quantity_words(worst_quantity)
+          << " at V = " << short_number(report.runs[worst_run].velocity) << " m/s).";
     return cause.str();
   }
   Quantity first = verdict_quantities[0];
@@ -251,10 +244,10 @@ std::string cause_of(const Assessment& report, const ReportModel& model) {
         << " of " << count << " velocities, with errors";
   for (std::size_t i = 0; i < count; ++i)
     cause << (i ? "," : "") << " " << percent_cell(error(i, first)) << " at "
-          << format(report.runs[i].velocity) << " m/s";
+          << short_number(report.runs[i].velocity) << " m/s";
   cause << ". The largest error of all is " << percent_cell(error(worst_run, worst_quantity))
         << " (" << quantity_words(worst_quantity)
-        << " at V = " << format(report.runs[worst_run].velocity) << " m/s).";
+        << " at V = " << short_number(report.runs[worst_run].velocity) << " m/s).";
   const bool low_end = worst_run == 0, high_end = worst_run + 1 == count;
   if (low_end || high_end)
     cause << " The errors grow towards the " << (low_end ? "lowest" : "highest")
@@ -287,10 +280,11 @@ std::string damping_trend(const std::vector<ReportRun>& runs) {
   const double change = slope * (v.back() - v.front()) / mb;
   const auto [low, high] = std::minmax_element(b.begin(), b.end());
   std::ostringstream text;
-  text << "Per-run b from the restitution: " << format(b.front()) << " s/m at " << format(v.front())
-       << " m/s to " << format(b.back()) << " s/m at " << format(v.back()) << " m/s (range "
-       << format(*low) << " to " << format(*high) << " s/m); the least-squares line changes by "
-       << percent_cell(change) << " of the mean over the tested range. ";
+  text << "Per-run b from the restitution: " << short_number(b.front()) << " s/m at "
+       << short_number(v.front()) << " m/s to " << short_number(b.back()) << " s/m at "
+       << short_number(v.back()) << " m/s (range " << short_number(*low) << " to "
+       << short_number(*high) << " s/m); the least-squares line changes by " << percent_cell(change)
+       << " of the mean over the tested range. ";
   if (std::abs(change) <= 0.02 && (*high - *low) <= 0.04 * mb)
     text << "b is constant within 2 %: the dissipation has the velocity dependence of "
             "Hunt–Crossley (constant b).";
@@ -315,22 +309,22 @@ std::string hertz_offsets(const Assessment& report) {
   };
   const double c = hc.stiffness.value, n = hc.exponent.value, hertz = report.hertz_stiffness;
   std::string note =
-      "Offsets of the calibrated elastic part from Hertz (c_Hertz = " + format(hertz, 5) +
-      " N/m^1.5): n - 3/2 = " + (n >= 1.5 ? "+" : "") + format(n - 1.5, 3) +
-      " (free fit of c, n, b: n = " + format(n, 6) + not_converged(hc) + ")";
+      "Offsets of the calibrated elastic part from Hertz (c_Hertz = " + short_number(hertz, 5) +
+      " N/m^1.5): n - 3/2 = " + (n >= 1.5 ? "+" : "") + short_number(n - 1.5, 3) +
+      " (free fit of c, n, b: n = " + short_number(n, 6) + not_converged(hc) + ")";
   if (campaign.hunt_crossley_hertz_exponent) {
     const ModelFit& fixed = campaign.hunt_crossley_hertz_exponent->fit;
     const double c_fixed = fixed.stiffness.value;
     note += "; c / c_Hertz - 1 = " + percent_cell(c_fixed / hertz - 1) +
-            " (fit with n fixed at 3/2, c and b free: c = " + format(c_fixed, 6) + " N/m^1.5" +
-            not_converged(fixed) +
+            " (fit with n fixed at 3/2, c and b free: c = " + short_number(c_fixed, 6) +
+            " N/m^1.5" + not_converged(fixed) +
             "); for information, the free fit's c / c_Hertz - 1 = " + percent_cell(c / hertz - 1) +
-            " (c = " + format(c, 6) +
+            " (c = " + short_number(c, 6) +
             " N/m^n at the fitted n: its unit depends on n, so it is not comparable with "
             "c_Hertz).";
   } else {
     note += "; the free fit's c / c_Hertz - 1 = " + percent_cell(c / hertz - 1) +
-            " (c = " + format(c, 6) +
+            " (c = " + short_number(c, 6) +
             " N/m^n: its unit depends on n, so this offset means most when n is close to 3/2; "
             "the calibration has no fit with n fixed at 3/2).";
   }
@@ -351,10 +345,10 @@ PlasticityCheck plastic_material_check(const std::vector<ReportRun>& runs,
       "The FEM's material is elastic-plastic (a body with 'Material model = "
       "elastic-plastic', J2 plasticity): the FEM itself yields";
   if (first_yielding)
-    text += " (from V = " + format(first_yielding->velocity) + " m/s on, by its own record)";
+    text += " (from V = " + short_number(first_yielding->velocity) + " m/s on, by its own record)";
   if (laws)
-    text += "; the material's yield velocity is V_y = " + format(laws->yield_velocity, 4) +
-            " m/s (Johnson's p_y = 1.6 Y; " + format(laws->jackson_green_yield_velocity, 4) +
+    text += "; the material's yield velocity is V_y = " + short_number(laws->yield_velocity, 4) +
+            " m/s (Johnson's p_y = 1.6 Y; " + short_number(laws->jackson_green_yield_velocity, 4) +
             " m/s with Jackson–Green's p_y = C(nu) Y)";
   text +=
       ". It stays valid above yield, so no velocity is flagged: there the viscoelastic "
@@ -388,8 +382,8 @@ PlasticityCheck plasticity_check(const std::vector<ReportRun>& runs) {
     check.text =
         "The FEM stays below the yield strength at every tested velocity (largest von "
         "Mises stress " +
-        format(runs.back().record.max_von_mises.value_or(nan) / 1e9, 3) + " GPa against " +
-        format(runs.back().record.yield_strength.value_or(nan) / 1e9, 3) +
+        short_number(runs.back().record.max_von_mises.value_or(nan) / 1e9, 3) + " GPa against " +
+        short_number(runs.back().record.yield_strength.value_or(nan) / 1e9, 3) +
         " GPa): the viscoelastic model holds over the whole range.";
     return check;
   }
@@ -402,24 +396,25 @@ PlasticityCheck plasticity_check(const std::vector<ReportRun>& runs) {
     const double s1 = std::log(*last_elastic->record.max_von_mises), s2 = std::log(stress);
     const double v1 = std::log(last_elastic->velocity), v2 = std::log(first_yielding->velocity);
     check.onset_estimate = std::exp(v1 + (std::log(yield) - s1) * (v2 - v1) / (s2 - s1));
-    onset = "; the onset lies near " + format(*check.onset_estimate, 3) +
+    onset = "; the onset lies near " + short_number(*check.onset_estimate, 3) +
             " m/s (log-log interpolation of the peak stress between " +
-            format(last_elastic->velocity) + " and " + format(first_yielding->velocity) + " m/s)";
+            short_number(last_elastic->velocity) + " and " +
+            short_number(first_yielding->velocity) + " m/s)";
   } else {
     // Hertz: the peak pressure, and with it the von Mises stress, grows as V^(2/5).
     check.onset_estimate = first_yielding->velocity * std::pow(yield / stress, 2.5);
     onset =
         "; every tested velocity yields, and by the Hertz scaling of the stress "
         "(sigma ~ V^(2/5)) the onset lies near " +
-        format(*check.onset_estimate, 3) + " m/s";
+        short_number(*check.onset_estimate, 3) + " m/s";
   }
-  check.text = "The FEM exceeds the yield strength (" + format(yield / 1e9, 3) + " GPa, " +
-               first_yielding->record.yield_source +
-               ") from V = " + format(first_yielding->velocity) +
-               " m/s on (peak von Mises stress " + format(stress / 1e9, 3) + " GPa there" + onset +
-               "): from there on the bodies would yield and the viscoelastic model itself is "
-               "not valid, so no reduced model may be trusted there whatever its agreement with "
-               "this FEM. Those velocities are marked (yields) in every table.";
+  check.text =
+      "The FEM exceeds the yield strength (" + short_number(yield / 1e9, 3) + " GPa, " +
+      first_yielding->record.yield_source + ") from V = " + short_number(first_yielding->velocity) +
+      " m/s on (peak von Mises stress " + short_number(stress / 1e9, 3) + " GPa there" + onset +
+      "): from there on the bodies would yield and the viscoelastic model itself is "
+      "not valid, so no reduced model may be trusted there whatever its agreement with "
+      "this FEM. Those velocities are marked (yields) in every table.";
   return check;
 }
 
@@ -471,10 +466,10 @@ void add_verdict(Assessment& report) {
   if (report.trend)
     report.trend_text =
         "Velocity trend of the FEM's energy loss: 1 - e ∝ V^p with p = " +
-        format(report.trend->exponent, 3) + " [" + format(report.trend->lower, 3) + ", " +
-        format(report.trend->upper, 3) + "] (" + format(report.trend->level * 100, 3) +
-        " % interval, " + std::to_string(report.trend->points) +
-        " runs): " + trend_family(*report.trend) + "." +
+        short_number(report.trend->exponent, 3) + " [" + short_number(report.trend->lower, 3) +
+        ", " + short_number(report.trend->upper, 3) + "] (" +
+        short_number(report.trend->level * 100, 3) + " % interval, " +
+        std::to_string(report.trend->points) + " runs): " + trend_family(*report.trend) + "." +
         (report.plastic_laws ? " For an elastic-plastic FEM this one slope over every run mixes "
                                "the elastic and the plastic range; the family ranges (\"Which "
                                "family the FEM follows\") say which family holds where."

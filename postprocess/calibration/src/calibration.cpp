@@ -8,6 +8,7 @@
 // (c, n, p, ...) by the Jacobian of that change of variables.
 
 #include "impact_postprocess/calibration/calibration.hpp"
+#include "impact_postprocess/number_format.hpp"
 #include "impact_postprocess/models/damped_plastic_models.hpp"
 #include "impact_postprocess/models/jackson_green_model.hpp"
 #include "impact_postprocess/run/scenario_materials.hpp"
@@ -189,7 +190,7 @@ std::vector<PreparedRun> calibrate_runs(const std::vector<FemRun>& runs,
     progress.start();
     calibration.runs.push_back(calibrate_run(prepared[i], options, calibration.problems));
     progress("run " + std::to_string(i + 1) + "/" + std::to_string(runs.size()) +
-             " (V = " + format_number(runs[i].impact_velocity) +
+             " (V = " + significant(runs[i].impact_velocity, 6) +
              " m/s): restitution, loading and "
              "force-history fits done in " +
              progress.elapsed());
@@ -312,7 +313,7 @@ Calibration calibrate(const std::vector<FemRun>& runs, const CalibrationOptions&
     campaign.reason = runs.empty()
                           ? "no usable run"
                           : "the runs have a single impact velocity (" +
-                                format_number(campaign.velocities.front()) +
+                                significant(campaign.velocities.front(), 6) +
                                 " m/s); a campaign fit needs at least two distinct velocities to "
                                 "tell how the damping depends on the velocity";
     return calibration;

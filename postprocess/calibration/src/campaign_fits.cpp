@@ -4,6 +4,8 @@
 #include "fit_model.hpp"
 #include "ranking.hpp"
 
+#include "impact_postprocess/number_format.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -133,7 +135,7 @@ void add_held_out_fits(CampaignModelFit& campaign_fit, const ContactModel& model
     campaign_fit.held_out.push_back({left_out, held_fit.parameter_values(), held.converged});
     if (!held.converged)
       problems.push_back({request.key, ProblemKind::convergence,
-                          what + " without V = " + format_number(left_out) +
+                          what + " without V = " + significant(left_out, 6) +
                               " m/s did not converge: " + held.message});
     for (std::size_t i = 0; i < runs.size(); ++i)
       if (same_velocity(runs[i].run->impact_velocity, left_out))

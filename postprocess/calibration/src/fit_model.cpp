@@ -126,13 +126,6 @@ FitQuality quality_of(const std::vector<double>& model, const std::vector<double
   return {std::sqrt(residual / double(n)) / scale, total > 0 ? 1 - residual / total : nan, n};
 }
 
-std::string format_number(double value) {
-  std::ostringstream text;
-  text.precision(6);
-  text << value;
-  return text.str();
-}
-
 FitParameter exponent_parameter(double initial, bool fixed) {
   FitParameter parameter{initial};
   parameter.lower = 0.3;

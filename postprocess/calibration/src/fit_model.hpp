@@ -6,6 +6,7 @@
 // reference_models.cpp) that calibrate() (calibration.cpp) combines.
 
 #include "impact_postprocess/calibration/calibration.hpp"
+#include "impact_postprocess/number_format.hpp"
 #include "impact_postprocess/models/contact_models.hpp"
 #include "impact_postprocess/same_value.hpp"
 #include "least_squares.hpp"
@@ -146,8 +147,6 @@ struct HistoryEvaluator {
   }
 };
 
-std::string format_number(double value);
-
 class Progress {
 public:
   explicit Progress(const std::function<void(const std::string&)>& sink) : sink_(sink) {}
@@ -156,8 +155,9 @@ public:
   }
   void start() { start_ = std::chrono::steady_clock::now(); }
   std::string elapsed() const {
-    return format_number(
-               std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count()) +
+    return significant(
+               std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count(),
+               6) +
            " s";
   }
 

@@ -5,6 +5,7 @@
 #include "fit_model.hpp"
 
 #include "impact_postprocess/models/damped_plastic_models.hpp"
+#include "impact_postprocess/number_format.hpp"
 #include "impact_postprocess/models/jackson_green_model.hpp"
 #include "impact_postprocess/models/model_keys.hpp"
 #include "impact_postprocess/run/scenario_materials.hpp"
@@ -72,9 +73,9 @@ void add_reference_models(CampaignCalibration& campaign, const std::vector<FemRu
                       c, hertz_exponent, {0.0}, runs, options));
   campaign.reference_models.push_back(
       reference_model(std::string(model_keys::hunt_crossley_published),
-                      "Hunt–Crossley (b = " + format_number(options.published_damping) + " s/m)",
+                      "Hunt–Crossley (b = " + significant(options.published_damping, 6) + " s/m)",
                       hunt_crossley,
-                      "the published example: b = " + format_number(options.published_damping) +
+                      "the published example: b = " + significant(options.published_damping, 6) +
                           " s/m, n = 3/2, c = " + materials.hertz_basis,
                       c, hertz_exponent, {options.published_damping}, runs, options));
   if (materials.dissipative_constant)
@@ -83,7 +84,7 @@ void add_reference_models(CampaignCalibration& campaign, const std::vector<FemRu
                         "Kuwabara–Kono, no tension, A from the material (no fit)",
                         comparison_model("kuwabara-kono-no-tension"),
                         "no fit: c = " + materials.hertz_basis +
-                            ", n = 3/2, A = " + format_number(*materials.dissipative_constant) +
+                            ", n = 3/2, A = " + significant(*materials.dissipative_constant, 6) +
                             " s from " + materials.dissipative_basis,
                         c, hertz_exponent, {*materials.dissipative_constant}, runs, options));
 

@@ -4,6 +4,7 @@
 #include "fit_model.hpp"
 
 #include "impact_postprocess/models/simulated_force.hpp"
+#include "impact_postprocess/number_format.hpp"
 
 #include <impact_reduced/hunt_crossley.hpp>
 #include <impact_reduced/invalid_input.hpp>
@@ -140,7 +141,7 @@ RunCalibration calibrate_run(const PreparedRun& run, const CalibrationOptions& o
   result.impact_parameter = result.damping_from_restitution * fem.impact_velocity;
   if (fem.restitution > 1)
     problems.push_back({fem.source, ProblemKind::input,
-                        "the restitution " + format_number(fem.restitution) +
+                        "the restitution " + significant(fem.restitution, 6) +
                             " exceeds 1 (energy gained?); b from the restitution is set to 0"});
 
   result.loading = fit_loading(run, result.damping_from_restitution, options, problems);

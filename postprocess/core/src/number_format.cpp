@@ -7,32 +7,27 @@
 
 namespace impact::postprocess {
 
-std::string cell(double value) {
-  if (!std::isfinite(value)) return "n/a";
+std::string significant(double value, int digits) {
   char text[32];
-  std::snprintf(text, sizeof text, "%.6g", value);
+  std::snprintf(text, sizeof text, "%.*g", digits, value);
   return text;
+}
+
+std::string cell(double value) {
+  return std::isfinite(value) ? significant(value, 6) : "n/a";
 }
 
 std::string percent_cell(double fraction) {
   if (!std::isfinite(fraction)) return "n/a";
-  char text[32];
-  std::snprintf(text, sizeof text, "%+.3g %%", fraction * 100);
-  return text;
+  return (std::signbit(fraction) ? "" : "+") + significant(fraction * 100, 3) + " %";
 }
 
 std::string unsigned_percent(double fraction) {
-  if (!std::isfinite(fraction)) return "not known";
-  char text[32];
-  std::snprintf(text, sizeof text, "%.3g %%", fraction * 100);
-  return text;
+  return std::isfinite(fraction) ? significant(fraction * 100, 3) + " %" : "not known";
 }
 
-std::string short_number(double value) {
-  if (!std::isfinite(value)) return "n/a";
-  char text[32];
-  std::snprintf(text, sizeof text, "%.4g", value);
-  return text;
+std::string short_number(double value, int digits) {
+  return std::isfinite(value) ? significant(value, digits) : "n/a";
 }
 
 std::string velocity_label(double velocity) {

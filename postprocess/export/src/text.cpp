@@ -2,18 +2,14 @@
 
 #include "text.hpp"
 
+#include "impact_postprocess/number_format.hpp"
+
 #include <cstdio>
 #include <sstream>
 
 namespace impact::postprocess::export_text {
 
 namespace {
-
-std::string format(const char* pattern, double value, int digits) {
-  char buffer[64];
-  std::snprintf(buffer, sizeof buffer, pattern, digits, value);
-  return buffer;
-}
 
 // (model - FEM) / FEM in per cent, signed, two decimals.
 std::string error(double model, double fem) {
@@ -25,7 +21,7 @@ std::string error(double model, double fem) {
 } // namespace
 
 std::string rounded(double value, int digits) {
-  return format("%.*g", value, digits);
+  return significant(value, digits);
 }
 
 std::string error_table(const std::string& comment, const ExportCampaign& campaign,

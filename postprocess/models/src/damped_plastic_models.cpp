@@ -1,6 +1,7 @@
 // The damped elastic-plastic comparison models (damped_plastic_models.hpp).
 
 #include "impact_postprocess/models/damped_plastic_models.hpp"
+#include "impact_postprocess/number_format.hpp"
 #include "impact_postprocess/models/jackson_green_model.hpp"
 #include "impact_postprocess/models/model_keys.hpp"
 #include "impact_postprocess/models/plastic_models.hpp"
@@ -20,13 +21,6 @@
 namespace impact::postprocess {
 
 namespace {
-
-std::string number(double value) {
-  std::ostringstream text;
-  text.precision(6);
-  text << value;
-  return text.str();
-}
 
 // b(V) of the "-from-a" models, in words.
 const std::string matched_damping_formula =
@@ -156,16 +150,17 @@ std::optional<double> material_dissipative_constant(const std::vector<FemRun>& r
 
 std::string damping_basis(double dissipative_constant, const std::string& source, double stiffness,
                           const std::vector<FemRun>& runs) {
-  std::string text = "A = " + number(dissipative_constant) + " s from " + source + "; " +
+  std::string text = "A = " + significant(dissipative_constant, 6) + " s from " + source + "; " +
                      matched_damping_formula +
                      ": Hunt-Crossley's small-loss restitution 1 - e = (2/3) b V (Hunt & "
                      "Crossley 1975) set equal to Kuwabara-Kono's 1 - e = gamma_1 A (c/m)^(2/5) "
                      "V^(1/5) (Schwager & Pöschel 1998) on the Hertz spring";
   if (!runs.empty() && runs.front().mass > 0)
     text += " (b = " +
-            number(matched_hunt_crossley_damping(dissipative_constant, 1.0,
-                                                 {runs.front().mass, stiffness, 1.5})) +
-            " s/m at V = 1 m/s for m = " + number(runs.front().mass) + " kg)";
+            significant(matched_hunt_crossley_damping(dissipative_constant, 1.0,
+                                                      {runs.front().mass, stiffness, 1.5}),
+                        6) +
+            " s/m at V = 1 m/s for m = " + significant(runs.front().mass, 6) + " kg)";
   return text;
 }
 

@@ -1,6 +1,7 @@
 // Which family the FEM's restitution follows in which velocity range (family_ranges.hpp).
 
 #include "impact_postprocess/models/family_ranges.hpp"
+#include "impact_postprocess/number_format.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -13,12 +14,6 @@ namespace impact::postprocess {
 namespace {
 
 constexpr double nan = std::numeric_limits<double>::quiet_NaN();
-
-std::string format(double value, const char* pattern = "%.3g") {
-  char text[32];
-  std::snprintf(text, sizeof text, pattern, value);
-  return text;
-}
 
 // Slope of ln y against ln V through the runs with 0 < e < 1 (y = e or 1 - e): the fit with
 // its interval from three runs on, the line through two; NaN below.
@@ -36,9 +31,9 @@ double slope_of(const std::vector<double>& v, const std::vector<double>& e, bool
 
 std::string slope_words(const std::string& of, double slope,
                         const std::optional<PowerLawTrend>& trend) {
-  std::string text = of + " ∝ V^" + format(slope);
+  std::string text = of + " ∝ V^" + significant(slope, 3);
   if (trend)
-    text += " [" + format(trend->lower) + ", " + format(trend->upper) + "]";
+    text += " [" + significant(trend->lower, 3) + ", " + significant(trend->upper, 3) + "]";
   else
     text += " (two runs: no interval)";
   return text;
@@ -58,21 +53,22 @@ FamilyRange judge(const std::vector<double>& v, const std::vector<double>& e, bo
                     plastic_restitution_slope,
                     plastic_restitution_slope,
                     ""};
-  std::string where = "V = " + format(range.low) +
-                      (range.high > range.low ? " to " + format(range.high) : "") + " m/s";
+  std::string where = "V = " + significant(range.low, 3) +
+                      (range.high > range.low ? " to " + significant(range.high, 3) : "") + " m/s";
   if (yield_velocity)
     where += " (" + std::string(above_yield ? "above" : "at or below") +
-             " V_y, V/V_y = " + format(range.low / *yield_velocity) +
-             (range.high > range.low ? " to " + format(range.high / *yield_velocity) : "") + ", " +
-             std::to_string(v.size()) + (v.size() == 1 ? " run)" : " runs)");
+             " V_y, V/V_y = " + significant(range.low / *yield_velocity, 3) +
+             (range.high > range.low ? " to " + significant(range.high / *yield_velocity, 3) : "") +
+             ", " + std::to_string(v.size()) + (v.size() == 1 ? " run)" : " runs)");
   else
     where += " (" + std::to_string(v.size()) + (v.size() == 1 ? " run)" : " runs)");
   double largest_loss = 0;
   for (double restitution : e) largest_loss = std::max(largest_loss, 1 - restitution);
   if (largest_loss < elastic_loss_limit) {
     range.family = "elastic";
-    range.text = where + ": elastic, 1 - e below " + format(largest_loss * 100, "%.2g") +
-                 " % at every run (the limit is " + format(elastic_loss_limit * 100, "%g") + " %).";
+    range.text = where + ": elastic, 1 - e below " + significant(largest_loss * 100, 2) +
+                 " % at every run (the limit is " + significant(elastic_loss_limit * 100, 6) +
+                 " %).";
     return range;
   }
   std::optional<PowerLawTrend> loss_trend, restitution_trend;
@@ -95,7 +91,7 @@ FamilyRange judge(const std::vector<double>& v, const std::vector<double>& e, bo
       range.plastic_low = first ? slope : std::min(range.plastic_low, slope);
       range.plastic_high = first ? slope : std::max(range.plastic_high, slope);
       first = false;
-      laws_words += (laws_words.empty() ? "" : ", ") + law.law + " " + format(slope);
+      laws_words += (laws_words.empty() ? "" : ", ") + law.law + " " + significant(slope, 3);
     }
     // Distance to the plastic band and to a constant e (slope 0).
     const double to_plastic = s < range.plastic_low
@@ -124,7 +120,7 @@ FamilyRange judge(const std::vector<double>& v, const std::vector<double>& e, bo
       nearest = &reference;
   range.family = nearest->family;
   range.text = where + ": " + slope_words("1 - e", p, loss_trend) + ", nearest " + nearest->family +
-               " (slope " + format(nearest->slope) + ")" +
+               " (slope " + significant(nearest->slope, 3) + ")" +
                (plastic_possible ? ""
                                  : "; the plastic family does not apply (the FEM's "
                                    "material does not yield)") +
@@ -168,7 +164,7 @@ std::string family_ranges_text(const std::vector<FamilyRange>& ranges,
   if (ranges.empty()) return "";
   std::string text = "Which family the FEM follows";
   text += yield_velocity
-              ? " (split at the yield velocity V_y = " + format(*yield_velocity, "%.4g") +
+              ? " (split at the yield velocity V_y = " + significant(*yield_velocity, 4) +
                     " m/s of the material, Johnson's p_y = 1.6 Y):"
               : ":";
   for (const auto& range : ranges) text += " " + range.text;

@@ -1,6 +1,7 @@
 // The Jackson–Green comparison models (jackson_green_model.hpp).
 
 #include "impact_postprocess/models/jackson_green_model.hpp"
+#include "impact_postprocess/number_format.hpp"
 #include "impact_postprocess/models/model_keys.hpp"
 #include "impact_postprocess/models/plastic_models.hpp"
 #include "impact_postprocess/run/scenario_materials.hpp"
@@ -16,10 +17,6 @@
 namespace impact::postprocess {
 
 namespace {
-
-std::string format(double value) {
-  return six_digits(value);
-}
 
 // E* of the law for stiffness c: c = (4/3) E* sqrt(R).
 double contact_modulus_of(double stiffness, double radius) {
@@ -65,10 +62,11 @@ double yield_strength_for_restitution(double restitution, double velocity, doubl
 
 std::string jackson_green_formula(std::optional<double> radius,
                                   std::optional<double> poisson_ratio) {
-  const std::string scenario =
-      radius && poisson_ratio
-          ? "R = " + format(*radius) + " m and nu = " + format(*poisson_ratio) + " of the scenario"
-          : "R and nu of the scenario";
+  const std::string scenario = radius && poisson_ratio
+                                   ? "R = " + significant(*radius, 6) +
+                                         " m and nu = " + significant(*poisson_ratio, 6) +
+                                         " of the scenario"
+                                   : "R and nu of the scenario";
   return "F = c x^(3/2) up to 1.9 omega_c, then Jackson & Green's fit P/P_c = "
          "exp(-w^(5/12)/4) w^(3/2) + (4 H_G/(C Y)) (1 - exp(-w^(5/9)/25)) w, w = x/omega_c, "
          "P_c = c omega_c^(3/2), H_G/Y = 2.84 (1 - exp(-0.82 (a/R)^-0.7)), E* = 3 c/(4 sqrt R), "
@@ -114,10 +112,11 @@ std::optional<SphereFlatScenario> sphere_flat_scenario(const std::vector<FemRun>
   if (contact)
     return SphereFlatScenario{*radius, contact->yield_poisson_ratio, contact->contact_modulus,
                               contact->yield_strength,
-                              "R = " + format(*radius) + " m ('Scenario/Sphere radius'), E* = " +
-                                  format(contact->contact_modulus) +
-                                  " Pa, nu = " + format(contact->yield_poisson_ratio) +
-                                  " and Y = " + format(contact->yield_strength) +
+                              "R = " + significant(*radius, 6) +
+                                  " m ('Scenario/Sphere radius'), E* = " +
+                                  significant(contact->contact_modulus, 6) +
+                                  " Pa, nu = " + significant(contact->yield_poisson_ratio, 6) +
+                                  " and Y = " + significant(contact->yield_strength, 6) +
                                   " Pa of the body that "
                                   "yields first (" +
                                   contact->yield_basis + ")"};
@@ -125,8 +124,9 @@ std::optional<SphereFlatScenario> sphere_flat_scenario(const std::vector<FemRun>
       material_constant(runs.front(), fem_format::sphere_body, fem_format::poissons_ratio);
   if (!nu || !(*nu > -1 && *nu < 0.5)) return std::nullopt;
   return SphereFlatScenario{*radius, *nu, std::nullopt, std::nullopt,
-                            "R = " + format(*radius) + " m ('Scenario/Sphere radius'), nu = " +
-                                format(*nu) + " of the sphere (no yield strength recorded)"};
+                            "R = " + significant(*radius, 6) +
+                                " m ('Scenario/Sphere radius'), nu = " + significant(*nu, 6) +
+                                " of the sphere (no yield strength recorded)"};
 }
 
 std::optional<MaterialJacksonGreen> material_jackson_green(const std::vector<FemRun>& runs) {

@@ -1,4 +1,5 @@
 #include "impact_postprocess/models/velocity_trend.hpp"
+#include "impact_postprocess/number_format.hpp"
 
 #include <boost/math/distributions/students_t.hpp>
 
@@ -8,12 +9,6 @@
 namespace impact::postprocess {
 
 namespace {
-
-std::string format(double value, const char* pattern = "%.3g") {
-  char text[32];
-  std::snprintf(text, sizeof text, pattern, value);
-  return text;
-}
 
 // Least squares of ln y on ln V over the runs with 0 < e < 1; y = 1 - e or e.
 std::optional<PowerLawTrend> log_log_fit(const std::vector<double>& velocity,
@@ -94,21 +89,22 @@ std::string trend_family(const PowerLawTrend& trend) {
   const auto inside = [&](const ReferenceSlope& reference) {
     return reference.slope >= trend.lower && reference.slope <= trend.upper;
   };
-  std::string text =
-      "the FEM follows " + nearest->family + " (reference slope " + format(nearest->slope) + ")";
+  std::string text = "the FEM follows " + nearest->family + " (reference slope " +
+                     significant(nearest->slope, 3) + ")";
   if (inside(*nearest))
     text += ", which lies inside the interval";
   else
     text += ": the nearest reference, " +
-            format(std::abs(nearest->slope - trend.exponent), "%.2g") + " from p (" +
-            format(std::abs(nearest->slope - trend.exponent) / trend.standard_error, "%.2g") +
+            significant(std::abs(nearest->slope - trend.exponent), 2) + " from p (" +
+            significant(std::abs(nearest->slope - trend.exponent) / trend.standard_error, 2) +
             " standard errors; the reference slopes are the small-dissipation limits, and a "
             "loss with two mechanisms, e.g. viscosity and wave radiation, lies between theirs)";
   std::string excluded, consistent;
   for (const auto& reference : reference_slopes()) {
     if (&reference == nearest) continue;
     std::string& list = inside(reference) ? consistent : excluded;
-    list += (list.empty() ? "" : " and ") + reference.family + " (" + format(reference.slope) + ")";
+    list += (list.empty() ? "" : " and ") + reference.family + " (" +
+            significant(reference.slope, 3) + ")";
   }
   if (!consistent.empty()) text += "; also inside the interval: " + consistent;
   if (!excluded.empty()) text += "; excluded: " + excluded;

@@ -6,6 +6,7 @@
 #include "law_block.hpp"
 #include "sections.hpp"
 #include "impact_postprocess/models/contact_models.hpp"
+#include "impact_postprocess/number_format.hpp"
 #include "impact_postprocess/models/plastic_models.hpp"
 #include "impact_postprocess/models/model_keys.hpp"
 
@@ -16,13 +17,6 @@
 namespace impact::postprocess::detail {
 
 namespace {
-
-// Three significant digits, as the summary of the verdict gives the trend and the yield onset.
-std::string three_digits(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.3g", value);
-  return text;
-}
 
 // "within 2 %: 0.5 to 3 m/s; within 5 %: 0.5 to 5 m/s" of one model's verdict.
 std::string ranges(const Report& report, const ModelVerdict& verdict) {
@@ -199,12 +193,12 @@ std::string comparison_line(const Report& report, const RankedModel& best) {
               " at V = " + short_number(range.low) +
               (range.high > range.low ? " to " + short_number(range.high) : "") + " m/s" +
               (std::isfinite(range.slope)
-                   ? " (" + range.slope_of + " ∝ V^" + three_digits(range.slope) + ")"
+                   ? " (" + range.slope_of + " ∝ V^" + significant(range.slope, 3) + ")"
                    : "");
     text += ".";
   } else if (other == &calibrated && report.trend) {
     const ReferenceSlope& nearest = nearest_reference(*report.trend);
-    text += " The FEM's 1 - e grows as V^" + three_digits(report.trend->exponent) + ", nearest " +
+    text += " The FEM's 1 - e grows as V^" + significant(report.trend->exponent, 3) + ", nearest " +
             nearest.family + " (V^" + short_number(nearest.slope) + ")" +
             (nearest.slope == 1.0 ? "." : ", not V^1 as with a constant b.");
   }
@@ -217,14 +211,15 @@ std::string limits_line(const Report& report) {
   std::string text;
   if (report.plasticity.first_yielding_velocity)
     text = "Above " +
-           three_digits(report.plasticity.onset_estimate.value_or(
-               *report.plasticity.first_yielding_velocity)) +
+           significant(report.plasticity.onset_estimate.value_or(
+                           *report.plasticity.first_yielding_velocity),
+                       3) +
            " m/s the FEM exceeds the yield strength: no viscoelastic model, reduced or FEM, is "
            "valid there.";
   else if (report.plasticity.plastic_material)
     text = "The FEM's material is elastic-plastic: it stays valid above the yield velocity" +
            (report.plastic_laws
-                ? " (V_y = " + three_digits(report.plastic_laws->yield_velocity) + " m/s)"
+                ? " (V_y = " + significant(report.plastic_laws->yield_velocity, 3) + " m/s)"
                 : std::string()) +
            ", where the elastic-plastic laws are compared (section Elastic-plastic laws).";
   else if (report.plasticity.recorded)

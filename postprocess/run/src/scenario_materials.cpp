@@ -1,4 +1,5 @@
 #include "impact_postprocess/run/scenario_materials.hpp"
+#include "impact_postprocess/number_format.hpp"
 
 #include <impact_reduced/hertz_stiffness.hpp>
 #include <impact_reduced/viscoelastic_dissipation.hpp>
@@ -8,13 +9,6 @@
 namespace impact::postprocess {
 
 namespace {
-
-std::string format(double value) {
-  std::ostringstream text;
-  text.precision(4);
-  text << value;
-  return text.str();
-}
 
 struct Body {
   std::string model; // "elastic", "kelvin-voigt", ...
@@ -51,16 +45,16 @@ std::optional<Body> body_of(const FemRun& run, const std::string& body) {
 }
 
 std::string describe(const std::string& name, const Body& body) {
-  std::string text = name + " " + body.model + " E = " + format(body.youngs_modulus) +
-                     " Pa, nu = " + format(body.poisson_ratio);
+  std::string text = name + " " + body.model + " E = " + significant(body.youngs_modulus, 4) +
+                     " Pa, nu = " + significant(body.poisson_ratio, 4);
   if (body.model == fem_format::elastic_plastic_model && body.deviatoric_retardation_time)
-    text += ", tau_r = " + format(*body.deviatoric_retardation_time) +
+    text += ", tau_r = " + significant(*body.deviatoric_retardation_time, 4) +
             " s (Kelvin–Voigt in "
             "parallel: tau_d = tau_v = tau_r)";
   else if (body.model == fem_format::kelvin_voigt_model && body.deviatoric_retardation_time &&
            body.volumetric_retardation_time)
-    text += ", tau_d = " + format(*body.deviatoric_retardation_time) +
-            " s, tau_v = " + format(*body.volumetric_retardation_time) + " s";
+    text += ", tau_d = " + significant(*body.deviatoric_retardation_time, 4) +
+            " s, tau_v = " + significant(*body.volumetric_retardation_time, 4) + " s";
   return text;
 }
 
@@ -114,11 +108,12 @@ ScenarioMaterials scenario_materials(const std::vector<FemRun>& runs) {
     }
     materials.hertz_from_runs = true;
     materials.hertz_basis =
-        "Hertz value of the scenario's materials (sphere E = " + format(sphere->youngs_modulus) +
-        " Pa, nu = " + format(sphere->poisson_ratio) + ", R = " + format(*radius) +
+        "Hertz value of the scenario's materials (sphere E = " +
+        significant(sphere->youngs_modulus, 4) +
+        " Pa, nu = " + significant(sphere->poisson_ratio, 4) + ", R = " + significant(*radius, 4) +
         (rigid_plate ? std::string(" m; rigid plate")
-                     : " m; plate E = " + format(plate->youngs_modulus) +
-                           " Pa, nu = " + format(plate->poisson_ratio)) +
+                     : " m; plate E = " + significant(plate->youngs_modulus, 4) +
+                           " Pa, nu = " + significant(plate->poisson_ratio, 4)) +
         ") read from " + run.source;
     const bool viscoelastic =
         sphere->deviatoric_retardation_time && sphere->volumetric_retardation_time &&

@@ -1,6 +1,7 @@
 // scenario_plastic_contact (scenario_plastic_contact.hpp).
 
 #include "impact_postprocess/run/scenario_plastic_contact.hpp"
+#include "impact_postprocess/number_format.hpp"
 #include "impact_postprocess/run/scenario_materials.hpp"
 
 #include <impact_reduced/yield_velocity.hpp>
@@ -10,18 +11,7 @@
 
 namespace impact::postprocess {
 
-std::string six_digits(double value) {
-  std::ostringstream text;
-  text.precision(6);
-  text << value;
-  return text.str();
-}
-
 namespace {
-
-std::string format(double value) {
-  return six_digits(value);
-}
 
 struct BodyStrength {
   double youngs_modulus, poisson_ratio, yield_strength;
@@ -46,7 +36,7 @@ std::optional<BodyStrength> body_strength(const FemRun& run, const std::string& 
   const auto young = material_constant(run, body, fem_format::youngs_modulus);
   const auto poisson = material_constant(run, body, fem_format::poissons_ratio);
   if (!young || !poisson || !(*young > 0) || !(*poisson > -1 && *poisson < 0.5))
-    throw PlasticContactError(run.source + ": '" + key + "' = " + format(*strength) +
+    throw PlasticContactError(run.source + ": '" + key + "' = " + significant(*strength, 6) +
                               " Pa, but the body's material does not record a Young's modulus "
                               "> 0 and a Poisson's ratio in (-1, 0.5) ('" +
                               body + "/Material model' and its constants)");
@@ -100,9 +90,9 @@ std::optional<PlasticContact> scenario_plastic_contact(const std::vector<FemRun>
   contact.yield_strength = yielding.yield_strength;
   contact.yield_poisson_ratio = yielding.poisson_ratio;
   contact.elastic_plastic = yielding.elastic_plastic;
-  contact.yield_basis = "Johnson's p_y = 1.6 Y with Y = " + format(yielding.yield_strength) +
-                        " Pa ('" + yielding.where + "' of " + run.source +
-                        ", the body that yields first)";
+  contact.yield_basis =
+      "Johnson's p_y = 1.6 Y with Y = " + significant(yielding.yield_strength, 6) + " Pa ('" +
+      yielding.where + "' of " + run.source + ", the body that yields first)";
   return contact;
 }
 
@@ -121,10 +111,11 @@ std::string hardening_note(const FemRun& run) {
     if (johnson_cook) {
       const double b = material_constant(run, body, fem_format::johnson_cook_b).value_or(0);
       const double c = material_constant(run, body, fem_format::johnson_cook_c).value_or(0);
-      if (b > 0 || c > 0) hardening = "Johnson-Cook B = " + format(b) + " Pa, C = " + format(c);
+      if (b > 0 || c > 0)
+        hardening = "Johnson-Cook B = " + significant(b, 6) + " Pa, C = " + significant(c, 6);
     } else if (const auto h = material_constant(run, body, fem_format::hardening_modulus);
                h && *h > 0) {
-      hardening = "linear hardening modulus " + format(*h) + " Pa";
+      hardening = "linear hardening modulus " + significant(*h, 6) + " Pa";
     }
     if (!hardening.empty())
       left_out += (left_out.empty() ? "" : "; ") + std::string("the ") + body + "'s " + hardening;

@@ -48,9 +48,6 @@ public:
 /// missing.
 std::optional<PlasticContact> scenario_plastic_contact(const std::vector<FemRun>& runs);
 
-/// A number with six significant digits, as the models' bases write the scenario's constants.
-std::string six_digits(double value);
-
 /// How the hardening the run records enters the elastic–perfectly-plastic laws (Thornton,
 /// Jackson–Green): it does not; the sentence names the hardening of each elastic-plastic
 /// body ("<Body>/Elastic-plastic/Hardening law" linear with "Hardening modulus" > 0, or
