@@ -4,6 +4,7 @@
 // a rigid support (the massive-plate model of the map).
 
 #include "steps.hpp"
+#include "impact_postprocess/number_format.hpp"
 
 #include "impact_postprocess/run/scenario_materials.hpp"
 
@@ -43,13 +44,13 @@ ThinPlatePrediction thin_plate_prediction(const FemRun& run, double damping, boo
     const auto result = model.impact(run.impact_velocity);
     prediction.quantities = result.figures();
     std::ostringstream text;
-    text.precision(4);
-    text << "c = " << materials.hertz_stiffness << " N/m^1.5, n = 1.5, ";
+    text << "c = " << significant(materials.hertz_stiffness, 4) << " N/m^1.5, n = 1.5, ";
     if (rigid)
       text << "rigid support";
     else
-      text << "Z = " << impedance << " N s/m, lambda = " << result.zener_lambda << " at "
-           << run.impact_velocity << " m/s";
+      text << "Z = " << significant(impedance, 4)
+           << " N s/m, lambda = " << significant(result.zener_lambda, 4) << " at "
+           << significant(run.impact_velocity, 4) << " m/s";
     prediction.parameters = text.str();
   } catch (const std::exception& error) {
     prediction.missing = std::string("the thin-plate model cannot be evaluated: ") + error.what();

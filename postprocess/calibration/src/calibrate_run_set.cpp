@@ -1,6 +1,7 @@
 // write_calibration and calibration_summary (calibrate_run_set.hpp).
 
 #include "impact_postprocess/calibration/calibrate_run_set.hpp"
+#include "impact_postprocess/number_format.hpp"
 
 #include "impact_postprocess/calibration/calibration_json.hpp"
 #include "impact_postprocess/run/run_set.hpp"
@@ -67,26 +68,26 @@ bool is_campaign_not_fitted(const Problem& problem, const CampaignCalibration& c
 
 std::string calibration_summary(const Calibration& calibration) {
   std::ostringstream out;
-  out.precision(6);
+  const auto six = [](double value) { return significant(value, 6); };
   if (const auto& hc = calibration.campaign.hunt_crossley)
     out << "Hunt-Crossley over " << calibration.runs.size()
-        << " runs: c = " << hc->fit.stiffness.value << " N/m^n, n = " << hc->fit.exponent.value
-        << ", b = " << hc->fit.parameter.value << " s/m (RMS residual "
-        << hc->fit.quality.rms_residual * 100 << " % of the peak force)\n";
+        << " runs: c = " << six(hc->fit.stiffness.value)
+        << " N/m^n, n = " << six(hc->fit.exponent.value) << ", b = " << six(hc->fit.parameter.value)
+        << " s/m (RMS residual " << six(hc->fit.quality.rms_residual * 100)
+        << " % of the peak force)\n";
   if (const auto& fixed = calibration.campaign.hunt_crossley_hertz_exponent)
-    out << "Hunt-Crossley with n = " << hertz_exponent
-        << " fixed: c = " << fixed->fit.stiffness.value << " N/m^" << hertz_exponent
-        << ", b = " << fixed->fit.parameter.value << " s/m (RMS residual "
-        << fixed->fit.quality.rms_residual * 100 << " % of the peak force)\n";
+    out << "Hunt-Crossley with n = " << six(hertz_exponent)
+        << " fixed: c = " << six(fixed->fit.stiffness.value) << " N/m^" << six(hertz_exponent)
+        << ", b = " << six(fixed->fit.parameter.value) << " s/m (RMS residual "
+        << six(fixed->fit.quality.rms_residual * 100) << " % of the peak force)\n";
   if (const auto& energy = calibration.campaign.hunt_crossley_energy)
     out << "Hunt-Crossley fitted to force histories and energy loss: c = "
-        << energy->fit.stiffness.value << " N/m^n, n = " << energy->fit.exponent.value
-        << ", b = " << energy->fit.parameter.value << " s/m\n";
+        << six(energy->fit.stiffness.value) << " N/m^n, n = " << six(energy->fit.exponent.value)
+        << ", b = " << six(energy->fit.parameter.value) << " s/m\n";
   if (!calibration.campaign.ranking.empty()) {
     const auto& best = calibration.campaign.ranking.front();
-    out.precision(4);
     out << "ranked first by " << (best.out_of_sample ? "out-of-sample" : "in-sample")
-        << " error: " << best.key << " (RMS error " << best.score * 100
+        << " error: " << best.key << " (RMS error " << significant(best.score * 100, 4)
         << " % in 1 - e^2, t_c, F_max, x_max)\n";
   }
   return out.str();

@@ -1,6 +1,7 @@
 // The elastic-plastic comparison models (plastic_models.hpp).
 
 #include "impact_postprocess/models/plastic_models.hpp"
+#include "impact_postprocess/number_format.hpp"
 #include "impact_postprocess/models/damped_plastic_models.hpp"
 #include "impact_postprocess/models/jackson_green_model.hpp"
 #include "impact_postprocess/models/model_keys.hpp"
@@ -201,10 +202,10 @@ std::optional<MaterialThornton> material_thornton(const std::vector<FemRun>& run
   const double e_star = contact->contact_modulus;
   const double ratio = pi * contact->yield_pressure / (2 * e_star);
   std::ostringstream basis;
-  basis.precision(6);
-  basis << "no fit: E* = " << e_star << " Pa, R = " << *radius
-        << " m, p_y = " << contact->yield_pressure << " Pa from " << contact->yield_basis
-        << "; c = (4/3) E* sqrt(R), x_y = R (pi p_y / (2 E*))^2; " << hardening_note(runs.front());
+  basis << "no fit: E* = " << significant(e_star, 6) << " Pa, R = " << significant(*radius, 6)
+        << " m, p_y = " << significant(contact->yield_pressure, 6) << " Pa from "
+        << contact->yield_basis << "; c = (4/3) E* sqrt(R), x_y = R (pi p_y / (2 E*))^2; "
+        << hardening_note(runs.front());
   return MaterialThornton{4.0 / 3.0 * e_star * std::sqrt(*radius), *radius * ratio * ratio,
                           basis.str()};
 }
