@@ -1,4 +1,4 @@
-// The plate models of a validity map (report.hpp, ValidityMap): the thin-plate model (Zener)
+// The plate models of a validity map (validity_map.hpp, ValidityMap): the thin-plate model (Zener)
 // and the same contact on a rigid support, both with the material's damping taken from the
 // row of the most massive plate, judged on every row by the verdict's rule.
 

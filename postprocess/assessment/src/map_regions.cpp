@@ -1,4 +1,4 @@
-// The words of a validity map (report.hpp, ValidityMap): each model's region of validity as
+// The words of a validity map (validity_map.hpp, ValidityMap): each model's region of validity as
 // a sentence, from the cells' classes; the names and values of the swept parameter.
 
 #include "steps.hpp"

@@ -1,4 +1,4 @@
-// The elastic-plastic laws against an elastic-plastic FEM campaign (report.hpp, PlasticLaws):
+// The elastic-plastic laws against an elastic-plastic FEM campaign (plastic_laws.hpp, PlasticLaws):
 // Thornton (1997) and Jackson–Green (2005) from the scenario's material with nothing fitted,
 // and their campaign fits when the calibration holds them; their restitution and permanent
 // approach over the tested range and at the runs, and their loops at the runs; and the

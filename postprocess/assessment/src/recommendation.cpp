@@ -1,5 +1,5 @@
-// The law to recommend (report.hpp, LawRecommendation): every ranked law judged at every run
-// by the verdict's rule in the loosest band, the one that holds at the most velocities, the
+// The law to recommend (recommendation.hpp, LawRecommendation): every ranked law judged at
+// every run by the verdict's rule in the loosest band, the one that holds at the most velocities, the
 // Hunt–Crossley form that does (for a multibody code), the velocities where none does, and
 // the law and the export that come closest. Numbers only: the sections word them.
 

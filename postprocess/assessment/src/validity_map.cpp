@@ -1,5 +1,5 @@
-// The validity map of a two-axis campaign (report.hpp, ValidityMap): each value of the other
-// axis is a row, a velocity campaign of its own, judged by the verdict itself (build_report
+// The validity map of a two-axis campaign (validity_map.hpp, ValidityMap): each value of the
+// other axis is a row, a velocity campaign of its own, judged by the verdict itself (assess
 // on the row's runs with the row's calibration, made by the report pipeline and handed in);
 // the plate models are judged on the same rows by the same rule (map_plate_models.cpp); the
 // regions in words are map_regions.cpp's.

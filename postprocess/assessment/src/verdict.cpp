@@ -1,4 +1,4 @@
-// The verdict of the report (report.hpp): per model, run and tolerance a decision that takes
+// The verdict of the report (verdict.hpp): per model, run and tolerance a decision that takes
 // the FEM's numerical uncertainty into account; the ranges in words; the cause of the
 // calibrated model's failure; the velocity trend of the energy loss; the plasticity check;
 // and the notes on the calibrated parameters (offsets from Hertz, trend of the per-run b).

@@ -2,7 +2,7 @@
 /// @file
 /// The report from end to end, as impact-report makes it: the run set read, its calibration
 /// (read from impact-calibrate's JSON or computed here and written beside the report), the
-/// assessment (build_report), the figures drawn, the page written as HTML and Markdown. The
+/// assessment (assess), the figures drawn, the page written as HTML and Markdown. The
 /// command-line tool only parses its options into a ReportRequest and calls write_report.
 
 #include "impact_postprocess/calibration/calibration.hpp"
