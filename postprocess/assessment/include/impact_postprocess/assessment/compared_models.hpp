@@ -1,0 +1,52 @@
+#pragma once
+/// @file
+/// The reduced models compared with the FEM at the runs (compared_models.cpp): each model's
+/// figures in and out of sample, its history, its force residual and its prediction band.
+
+#include "impact_postprocess/assessment/fem_runs.hpp"
+
+#include <array>
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace impact::postprocess {
+
+/// One reduced model at one run.
+struct ModelAtRun {
+  std::optional<ImpactFigures> in_sample;     ///< fitted to all runs (or not fitted at all)
+  std::optional<ImpactFigures> out_of_sample; ///< fitted without this velocity
+  ImpactHistory history;                      ///< of the in-sample model
+  std::vector<double> residual; ///< (F_model - F_FEM) / F_max at the FEM history's times
+  std::string missing;          ///< why there are no values (empty when there are)
+  /// The errors the verdict uses: out of sample when there are, else in sample.
+  const std::optional<ImpactFigures>& judged() const {
+    return out_of_sample ? out_of_sample : in_sample;
+  }
+};
+
+/// Jackknife prediction band of a fitted model over the tested velocity range: the full
+/// fit's prediction and, at each velocity, +- t_{g-1} times the jackknife standard error of
+/// the held-out fits' predictions.
+struct PredictionBand {
+  std::vector<double> velocity;
+  std::array<std::vector<double>, quantity_count> center, lower, upper; ///< by Quantity
+};
+
+struct ReportModel {
+  std::string key;             ///< "calibrated", the calibration's key, "best-law", ...
+  std::string label;           ///< short name for legends and tables
+  std::string parameters;      ///< the parameter values, as text with units
+  std::string basis;           ///< where the parameters come from
+  std::string calibration_key; ///< the model's key in the calibration ("" if none)
+  std::size_t free_parameters = 0;
+  bool converged = true;        ///< false when its fit did not converge (numbers marked so)
+  bool out_of_sample = false;   ///< its judged errors are out of sample
+  std::vector<ModelAtRun> runs; ///< parallel to Assessment::runs
+  std::optional<PredictionBand> band;
+  /// The model's curve over the tested range (no band): velocity and each quantity.
+  std::optional<PredictionBand> curve;
+};
+
+} // namespace impact::postprocess

@@ -1,0 +1,61 @@
+#pragma once
+/// @file
+/// The FEM runs as the assessment holds them: what each measured (the calibration's numbers
+/// where it has the run), its history around the contact, what it records and its
+/// uncertainty; and the one rule by which a run of one list is found in another.
+
+#include "impact_postprocess/impact_quantities.hpp"
+#include "impact_postprocess/run/fem_run_record.hpp"
+
+#include <string>
+#include <vector>
+
+namespace impact::postprocess {
+
+/// A time history since first contact: time [s], approach [m], contact force [N].
+struct ImpactHistory {
+  std::vector<double> time;
+  std::vector<double> approach;
+  std::vector<double> force;
+};
+
+struct ReportEstimate {
+  double value;
+  double lower;
+  double upper;
+};
+
+struct ReportRun {
+  std::string source;
+  double velocity;                 ///< m/s
+  double mass;                     ///< kg
+  ImpactFigures fem;               ///< measured (the calibration's numbers when it has the run)
+  ImpactHistory fem_history;       ///< window around the contact, at most ~1500 samples
+  bool calibrated = false;         ///< the calibration holds this run
+  double damping_from_restitution; ///< b [s/m] of the run (NaN when not calibrated)
+  ReportEstimate history_damping;  ///< b of the run's force-history fit
+  ReportEstimate history_stiffness;
+  ReportEstimate history_exponent;
+  FemRunRecord record;
+  FemUncertainty uncertainty; ///< of each FEM quantity (relative)
+  /// The FEM exceeds the yield strength of a body without plasticity at this run: the flag
+  /// "(yields)" (never set when the material is elastic-plastic, FemRunRecord::plastic_material:
+  /// that FEM yields and stays valid).
+  bool yields = false;
+};
+
+// Shared by the assessment and the report (namespace detail: not for a reader of the API).
+namespace detail {
+
+/// The same run in another list: the same source file, or the same velocity (same_value.hpp).
+bool same_source(const std::string& a, const std::string& b);
+bool same_velocity(double a, double b);
+
+/// The seed paper's measured range of (1 - e)/V [s/m] (steel, glass, brass; Goldsmith).
+inline constexpr double measured_alpha_low = 0.08, measured_alpha_high = 0.32;
+/// (1 - e)/V [s/m] of the FEM run (effective_alpha.cpp).
+double effective_alpha(const ReportRun& run);
+
+} // namespace detail
+
+} // namespace impact::postprocess

@@ -1,0 +1,138 @@
+#include "least_squares.hpp"
+
+#include <ceres/ceres.h>
+
+#include <cmath>
+#include <memory>
+
+namespace impact::postprocess::detail {
+
+namespace {
+
+// One residual block; each parameter is its own 1-D Ceres parameter block, so that a
+// parameter can be held constant (Ceres then asks for no Jacobian column for it). Jacobian by
+// central differences, forward where the model cannot be evaluated below the parameter.
+class CentralDifferenceCost final : public ceres::CostFunction {
+public:
+  CentralDifferenceCost(ResidualFunction function, std::size_t residuals, std::vector<double> steps)
+      : function_(std::move(function)), steps_(std::move(steps)) {
+    set_num_residuals(int(residuals));
+    for (std::size_t j = 0; j < steps_.size(); ++j) mutable_parameter_block_sizes()->push_back(1);
+  }
+
+  bool Evaluate(double const* const* parameters, double* residuals,
+                double** jacobians) const override {
+    const std::size_t p = steps_.size();
+    const std::size_t n = std::size_t(num_residuals());
+    std::vector<double> theta(p);
+    for (std::size_t j = 0; j < p; ++j) theta[j] = parameters[j][0];
+    if (!function_(theta.data(), residuals)) return false;
+    if (jacobians == nullptr) return true;
+    std::vector<double> plus(n), minus(n);
+    for (std::size_t j = 0; j < p; ++j) {
+      if (jacobians[j] == nullptr) continue;
+      const double h = steps_[j];
+      std::vector<double> shifted = theta;
+      shifted[j] = theta[j] + h;
+      if (!function_(shifted.data(), plus.data())) return false;
+      shifted[j] = theta[j] - h;
+      if (function_(shifted.data(), minus.data())) {
+        for (std::size_t i = 0; i < n; ++i) jacobians[j][i] = (plus[i] - minus[i]) / (2 * h);
+        continue;
+      }
+      // A parameter at the edge of the model's domain (a damping at its bound 0, where the
+      // law is not defined below): the forward difference.
+      for (std::size_t i = 0; i < n; ++i) jacobians[j][i] = (plus[i] - residuals[i]) / h;
+    }
+    return true;
+  }
+
+private:
+  ResidualFunction function_;
+  std::vector<double> steps_;
+};
+
+} // namespace
+
+LeastSquaresResult solve_least_squares(const std::vector<FitParameter>& parameters,
+                                       const std::vector<ResidualBlock>& blocks,
+                                       const SolverSettings& settings) {
+  const std::size_t p = parameters.size();
+  LeastSquaresResult result;
+  result.theta.resize(p);
+  std::vector<double> steps(p);
+  for (std::size_t j = 0; j < p; ++j) {
+    result.theta[j] = parameters[j].initial;
+    steps[j] = parameters[j].step;
+  }
+  std::vector<double*> blocks_of_theta;
+  for (auto& value : result.theta) blocks_of_theta.push_back(&value);
+
+  ceres::Problem problem;
+  for (const auto& block : blocks) {
+    result.residual_count += block.size;
+    problem.AddResidualBlock(new CentralDifferenceCost(block.residuals, block.size, steps), nullptr,
+                             blocks_of_theta);
+  }
+  for (std::size_t j = 0; j < p; ++j) {
+    if (parameters[j].fixed) {
+      problem.SetParameterBlockConstant(blocks_of_theta[j]);
+      continue;
+    }
+    ++result.free_parameters;
+    if (std::isfinite(parameters[j].lower))
+      problem.SetParameterLowerBound(blocks_of_theta[j], 0, parameters[j].lower);
+    if (std::isfinite(parameters[j].upper))
+      problem.SetParameterUpperBound(blocks_of_theta[j], 0, parameters[j].upper);
+  }
+
+  ceres::Solver::Options options;
+  options.linear_solver_type = ceres::DENSE_QR;
+  options.max_num_iterations = settings.max_iterations;
+  options.num_threads = settings.threads;
+  options.function_tolerance = 1e-15;
+  options.gradient_tolerance = 1e-16;
+  options.parameter_tolerance = 1e-12;
+  options.logging_type = ceres::SILENT;
+  options.minimizer_progress_to_stdout = false;
+  ceres::Solver::Summary summary;
+  ceres::Solve(options, &problem, &summary);
+  result.converged = summary.termination_type == ceres::CONVERGENCE;
+  result.message = summary.message;
+  result.iterations = int(summary.iterations.size()) - 1;
+
+  // Covariance of the free parameters, scaled by the residual variance.
+  result.covariance.assign(p * p, 0.0);
+  const std::size_t degrees_of_freedom = result.residual_count > result.free_parameters
+                                             ? result.residual_count - result.free_parameters
+                                             : 0;
+  ceres::Covariance::Options covariance_options;
+  covariance_options.algorithm_type = ceres::DENSE_SVD;
+  covariance_options.num_threads = settings.threads;
+  ceres::Covariance covariance(covariance_options);
+  std::vector<std::pair<const double*, const double*>> pairs;
+  for (std::size_t i = 0; i < p; ++i)
+    for (std::size_t j = i; j < p; ++j)
+      if (!parameters[i].fixed && !parameters[j].fixed)
+        pairs.emplace_back(blocks_of_theta[i], blocks_of_theta[j]);
+  // No covariance where the residuals or their Jacobian could not be evaluated: Ceres' dense
+  // SVD would work on an undefined Jacobian.
+  const bool evaluated =
+      summary.termination_type != ceres::FAILURE && std::isfinite(summary.final_cost);
+  if (degrees_of_freedom == 0 || pairs.empty() || !evaluated ||
+      !covariance.Compute(pairs, &problem)) {
+    result.covariance.clear();
+    return result;
+  }
+  const double variance = 2 * summary.final_cost / double(degrees_of_freedom);
+  for (std::size_t i = 0; i < p; ++i)
+    for (std::size_t j = i; j < p; ++j) {
+      if (parameters[i].fixed || parameters[j].fixed) continue;
+      double value = 0;
+      covariance.GetCovarianceBlock(blocks_of_theta[i], blocks_of_theta[j], &value);
+      result.covariance[i * p + j] = result.covariance[j * p + i] = variance * value;
+    }
+  return result;
+}
+
+} // namespace impact::postprocess::detail
