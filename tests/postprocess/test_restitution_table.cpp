@@ -35,6 +35,8 @@
 #include <string>
 #include <vector>
 
+#include <unistd.h> // getpid
+
 namespace {
 
 using namespace impact::postprocess;
@@ -110,7 +112,10 @@ ImpactPrediction figures_of(const reduced::HuntCrossleyElasticPlasticResponse& r
 class RestitutionTableTest : public ::testing::Test {
 protected:
   static void SetUpTestSuite() {
-    directory = new fs::path(fs::temp_directory_path() / "impact_restitution_table_test");
+    // One folder per process: ctest runs each test of the suite as its own process, in
+    // parallel, and one's TearDownTestSuite must not remove another's campaign.
+    directory = new fs::path(fs::temp_directory_path() /
+                             ("impact_restitution_table_test_" + std::to_string(::getpid())));
     fs::remove_all(*directory);
     const Truth truth;
     const double v_y =
