@@ -3,7 +3,7 @@
  * @file
  * The result files of impact-fem: the names the writer (fem/source/impact_problem.cc,
  * fem/source/output/history.cc, the postprocessors in fem/source/postprocess/, the campaign
- * in fem/source/campaign.cc) and the reader (postprocess/src/run/) both use, with their SI
+ * in fem/source/campaign.cc) and the reader (postprocess/run/) both use, with their SI
  * units. Both sides include this header, so a name changed here changes both, and a name
  * removed here fails to compile on both. Plain C++17, no deal.II: the postprocess library
  * builds without it.
