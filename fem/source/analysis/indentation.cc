@@ -1,9 +1,7 @@
 #include <impact_fem/analysis/indentation.h>
 #include <impact_fem/analysis/interface.h>
 #include <impact_fem/as_written.h>
-#include <impact_fem/campaign.h>
 #include <impact_fem/result_files.h>
-#include <impact_fem/verification/verification.h>
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/dofs/dof_tools.h>
@@ -766,16 +764,12 @@ namespace impact_fem
     {
       // One load program per run: campaigns and the verification's
       // grid-convergence study are built on impact results.
-      AssertThrow(!Campaign::requested(prm,
-                                       invocation.velocity_list,
-                                       invocation.sweep_items) &&
-                    !verification::enabled(prm),
-                  ExcMessage("Scenario/Analysis = indentation runs alone: "
-                             "campaigns (--velocities, --sweep, Campaign/"
-                             "...) and --verify (Verification/Verify) are "
-                             "for impacts; run each indentation by "
-                             "itself (fem/bench/indentation.sh shows the "
-                             "mesh convergence)."));
+      analysis::require_single_run(
+        prm,
+        invocation,
+        "indentation",
+        "; run each indentation by itself (fem/bench/indentation.sh shows "
+        "the mesh convergence)");
       problem = std::make_unique<IndentationProblem>(prm, comm);
     }
 

@@ -1,4 +1,6 @@
 #include <impact_fem/analysis/interface.h>
+#include <impact_fem/campaign.h>
+#include <impact_fem/verification/verification.h>
 
 #include <deal.II/base/exceptions.h>
 
@@ -80,5 +82,23 @@ namespace impact_fem::analysis
   {
     for (const auto &kind : all())
       kind.declare_parameters(prm);
+  }
+
+
+  void
+  require_single_run(ParameterHandler  &prm,
+                     const Invocation  &invocation,
+                     const std::string &name,
+                     const std::string &advice)
+  {
+    AssertThrow(!Campaign::requested(prm,
+                                     invocation.velocity_list,
+                                     invocation.sweep_items) &&
+                  !verification::enabled(prm),
+                ExcMessage("Scenario/Analysis = " + name +
+                           " runs alone: campaigns (--velocities, --sweep, "
+                           "Campaign/...) and --verify (Verification/Verify) "
+                           "are for impacts" +
+                           advice + "."));
   }
 } // namespace impact_fem::analysis

@@ -2,10 +2,8 @@
 // plate by a body force.
 
 #include <impact_fem/analysis/interface.h>
-#include <impact_fem/campaign.h>
 #include <impact_fem/impact_problem.h>
 #include <impact_fem/result_files.h>
-#include <impact_fem/verification/verification.h>
 
 #include <iostream>
 #include <memory>
@@ -84,14 +82,7 @@ namespace impact_fem
                        const analysis::Invocation &invocation,
                        const MPI_Comm              comm) override
       {
-        AssertThrow(!Campaign::requested(prm,
-                                         invocation.velocity_list,
-                                         invocation.sweep_items) &&
-                      !verification::enabled(prm),
-                    ExcMessage("Scenario/Analysis = static press runs alone: "
-                               "campaigns (--velocities, --sweep, Campaign/"
-                               "...) and --verify (Verification/Verify) are "
-                               "for impacts."));
+        analysis::require_single_run(prm, invocation, "static press", "");
         problem = std::make_unique<StaticPress>(prm, comm);
       }
 

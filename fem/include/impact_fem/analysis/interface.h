@@ -97,6 +97,17 @@ namespace impact_fem
     /// Declare the entries every analysis reads beyond the shared ones.
     void
     declare_parameters(ParameterHandler &prm);
+
+    /**
+     * Refuse a campaign (--velocities, --sweep, Campaign/...) and --verify
+     * for the analysis @p name, which runs alone: both are built on impact
+     * results. @p advice (empty, or "; ..." ) ends the message.
+     */
+    void
+    require_single_run(ParameterHandler  &prm,
+                       const Invocation  &invocation,
+                       const std::string &name,
+                       const std::string &advice);
   } // namespace analysis
 } // namespace impact_fem
 
