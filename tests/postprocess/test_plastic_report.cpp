@@ -16,12 +16,14 @@
 #include "impact_postprocess/models/model_keys.hpp"
 #include "impact_postprocess/models/plastic_models.hpp"
 #include "impact_postprocess/report/report.hpp"
+#include "impact_postprocess/report/verdict_words.hpp"
 
 #include <impact_reduced/hunt_crossley.hpp>
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 namespace {
@@ -116,12 +118,14 @@ TEST(PlasticReport, AnElasticPlasticFemIsValidAboveYieldAndFollowsThePlasticFami
   }
   EXPECT_TRUE(report.plasticity.plastic_material);
   EXPECT_FALSE(report.plasticity.first_yielding_velocity);
-  EXPECT_TRUE(contains(report.plasticity.text, "stays valid above yield"))
-      << report.plasticity.text;
-  EXPECT_FALSE(contains(report.summary, "no viscoelastic model")) << report.summary;
+  EXPECT_TRUE(contains(plasticity_sentence(report), "stays valid above yield"))
+      << plasticity_sentence(report);
+  EXPECT_FALSE(contains(summary_sentence(report), "no viscoelastic model"))
+      << summary_sentence(report);
   for (const auto& verdict : report.verdicts)
     for (const auto& band : verdict.tolerances)
-      EXPECT_FALSE(contains(band.text, "exceeds the yield strength")) << band.text;
+      EXPECT_FALSE(contains(tolerance_sentence(report, band, ""), "exceeds the yield strength"))
+          << tolerance_sentence(report, band, "");
 
   ASSERT_TRUE(report.plastic_laws);
   const PlasticLaws& laws = *report.plastic_laws;
@@ -150,8 +154,8 @@ TEST(PlasticReport, AnElasticPlasticFemIsValidAboveYieldAndFollowsThePlasticFami
   EXPECT_EQ(report.family_ranges[1].runs, 3u);
   EXPECT_LT(report.family_ranges[1].slope, -0.1);
   EXPECT_GT(report.family_ranges[1].slope, -0.25);
-  EXPECT_TRUE(contains(report.summary, "the plastic family")) << report.summary;
-  std::printf("%s\n", report.family_text.c_str());
+  EXPECT_TRUE(contains(summary_sentence(report), "the plastic family")) << summary_sentence(report);
+  std::printf("%s\n", family_sentence(report).c_str());
 
   // The campaign made by Thornton's law: its fit (the best comparison law) is valid
   // everywhere, within the tightest tolerance at every velocity, out of sample.
@@ -166,7 +170,7 @@ TEST(PlasticReport, AnElasticPlasticFemIsValidAboveYieldAndFollowsThePlasticFami
     for (std::size_t i = 0; i < band.decisions.size(); ++i)
       EXPECT_EQ(band.decisions[i], Decision::within)
           << "tolerance " << band.tolerance << ", V = " << report.runs[i].velocity << ": "
-          << band.text;
+          << tolerance_sentence(report, band, "");
   // Jackson–Green–Marghitu's restitution fit is drawn beside the laws: e only, no loops.
   const auto jgm = std::find_if(laws.laws.begin(), laws.laws.end(), [](const PlasticLawCurve& law) {
     return law.key == model_keys::jackson_green_marghitu_material;
@@ -179,7 +183,9 @@ TEST(PlasticReport, AnElasticPlasticFemIsValidAboveYieldAndFollowsThePlasticFami
   EXPECT_LT(jgm->run_restitution.back(), 1.0);
 
   // The effective alpha against the measured range.
-  EXPECT_TRUE(contains(report.alpha_text, "0.08–0.32 s/m")) << report.alpha_text;
+  ASSERT_TRUE(report.effective_alpha);
+  EXPECT_EQ(report.effective_alpha->count, report.runs.size());
+  EXPECT_TRUE(contains(alpha_sentence(report), "0.08–0.32 s/m")) << alpha_sentence(report);
   EXPECT_TRUE(has_figure(report, FigureId::plastic_restitution));
   EXPECT_TRUE(has_figure(report, FigureId::permanent_approach));
   EXPECT_TRUE(has_figure(report, FigureId::plastic_loops));
@@ -195,12 +201,13 @@ TEST(PlasticReport, WithoutPlasticityTheRunsAboveYieldAreFlagged) {
   EXPECT_FALSE(report.plasticity.plastic_material);
   ASSERT_TRUE(report.plasticity.first_yielding_velocity);
   EXPECT_NEAR(*report.plasticity.first_yielding_velocity, 2 * yield_velocity(), 1e-12);
-  EXPECT_TRUE(contains(report.summary, "no viscoelastic model")) << report.summary;
+  EXPECT_TRUE(contains(summary_sentence(report), "no viscoelastic model"))
+      << summary_sentence(report);
   EXPECT_FALSE(report.plastic_laws);
   EXPECT_FALSE(has_figure(report, FigureId::plastic_restitution));
   ASSERT_EQ(report.family_ranges.size(), 1u);
-  EXPECT_TRUE(contains(report.family_ranges[0].text, "does not apply"))
-      << report.family_ranges[0].text;
+  EXPECT_FALSE(report.family_ranges[0].plastic_possible);
+  EXPECT_TRUE(contains(family_sentence(report), "does not apply")) << family_sentence(report);
 }
 
 TEST(FamilyRanges, AViscoelasticCampaignWithoutYieldVelocityIsOneRange) {
@@ -222,7 +229,10 @@ TEST(FamilyRanges, AViscoelasticCampaignWithoutYieldVelocityIsOneRange) {
   ASSERT_EQ(split.size(), 2u);
   EXPECT_EQ(split[0].runs, 2u);
   EXPECT_FALSE(split[0].trend);
-  EXPECT_TRUE(contains(split[0].text, "two runs: no interval")) << split[0].text;
+  // Through two points: a slope without an interval ("two runs: no interval" on the page).
+  EXPECT_EQ(split[0].basis, FamilyBasis::nearest);
+  EXPECT_TRUE(std::isfinite(split[0].loss_slope));
+  EXPECT_FALSE(split[0].loss_trend);
   EXPECT_EQ(split[1].slope_of, "e");
   EXPECT_TRUE(family_ranges({}, {}, std::nullopt).empty());
 }

@@ -18,6 +18,7 @@
 #include "impact_postprocess/calibration/calibration_json.hpp"
 #include "impact_postprocess/models/plastic_models.hpp"
 #include "impact_postprocess/report/report.hpp"
+#include "impact_postprocess/report/verdict_words.hpp"
 
 #include <gtest/gtest.h>
 
@@ -138,10 +139,10 @@ TEST(ReportStatesItsBasis, EachBodysStressAgainstItsOwnYieldStrength) {
   EXPECT_EQ((*table)[4].back(),
             "YIELDS: Plate at 142.9 % of its yield strength (Plate/Yield strength)");
   EXPECT_FALSE(contains(energy, "257")) << energy;
-  EXPECT_TRUE(contains(report.plasticity.text,
+  EXPECT_TRUE(contains(plasticity_sentence(report),
                        "The FEM exceeds the yield strength (0.35 GPa, Plate/Yield strength) "
                        "from V = 4 m/s on (peak von Mises stress 0.5 GPa there"))
-      << report.plasticity.text;
+      << plasticity_sentence(report);
 }
 
 // ---- The energy balance ----------------------------------------------------------------------

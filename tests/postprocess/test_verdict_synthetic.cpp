@@ -17,6 +17,7 @@
 #include "impact_postprocess/calibration/calibration_json.hpp"
 #include "impact_postprocess/run/fem_run.hpp"
 #include "impact_postprocess/report/report.hpp"
+#include "impact_postprocess/report/verdict_words.hpp"
 
 #include <impact_reduced/contact_formulas.hpp>
 #include <impact_reduced/hunt_crossley.hpp>
@@ -92,7 +93,7 @@ std::vector<FemRun> hunt_crossley_campaign() {
 TEST(VerdictOnSyntheticCampaigns, HuntCrossleyCampaignIsValidEverywhere) {
   const auto [calibration, report] =
       calibrate_and_report(hunt_crossley_campaign(), "verdict_hc", {"kuwabara-kono-no-tension"});
-  ASSERT_TRUE(report.verdict_available) << report.cause;
+  ASSERT_TRUE(report.verdict_available) << cause_sentence(report);
   const ReportModel& calibrated = model(report, "calibrated");
   print_errors(report, calibrated);
   ASSERT_TRUE(calibrated.out_of_sample);
@@ -108,14 +109,23 @@ TEST(VerdictOnSyntheticCampaigns, HuntCrossleyCampaignIsValidEverywhere) {
   ASSERT_NE(verdict, nullptr);
   ASSERT_EQ(verdict->tolerances.size(), 2u);
   for (const auto& band : verdict->tolerances) {
-    for (Decision decision : band.decisions) EXPECT_EQ(decision, Decision::within) << band.text;
+    for (Decision decision : band.decisions)
+      EXPECT_EQ(decision, Decision::within)
+          << tolerance_sentence(report, band, sample_basis(verdict->out_of_sample));
     ASSERT_TRUE(band.range);
     EXPECT_EQ((*band.range)[0], 0.5);
     EXPECT_EQ((*band.range)[1], 4.0);
-    EXPECT_TRUE(contains(band.text, "over the whole tested range")) << band.text;
-    EXPECT_TRUE(contains(band.text, "(out of sample)")) << band.text;
+    EXPECT_TRUE(contains(tolerance_sentence(report, band, sample_basis(verdict->out_of_sample)),
+                         "over the whole tested range"))
+        << tolerance_sentence(report, band, sample_basis(verdict->out_of_sample));
+    EXPECT_TRUE(contains(tolerance_sentence(report, band, sample_basis(verdict->out_of_sample)),
+                         "(out of sample)"))
+        << tolerance_sentence(report, band, sample_basis(verdict->out_of_sample));
   }
-  EXPECT_TRUE(contains(report.cause, "holds within 2 % at every tested velocity")) << report.cause;
+  ASSERT_TRUE(report.cause);
+  EXPECT_TRUE(report.cause->holds);
+  EXPECT_TRUE(contains(cause_sentence(report), "holds within 2 % at every tested velocity"))
+      << cause_sentence(report);
   // A clean history: no warning on the FEM's quality.
   for (const auto& problem : report.problems)
     EXPECT_NE(problem.kind, ProblemKind::quality) << problem.message;
@@ -127,10 +137,10 @@ TEST(VerdictOnSyntheticCampaigns, HuntCrossleyCampaignIsValidEverywhere) {
   EXPECT_NEAR(hc.jackknife[2].value, truth.damping, 1e-6 * truth.damping);
   EXPECT_LT(hc.jackknife[2].standard_error, 1e-6 * truth.damping);
   ASSERT_TRUE(report.trend);
-  std::printf("trend: %s\n", report.trend_text.c_str());
+  std::printf("trend: %s\n", trend_sentence(report).c_str());
   EXPECT_GT(report.trend->exponent, 0.7);
-  EXPECT_TRUE(contains(report.trend_text, "follows Hunt–Crossley with constant b"))
-      << report.trend_text;
+  EXPECT_TRUE(contains(trend_sentence(report), "follows Hunt–Crossley with constant b"))
+      << trend_sentence(report);
 }
 
 // ---- Made by Kuwabara–Kono without tension -------------------------------------------------
@@ -164,7 +174,7 @@ TEST(VerdictOnSyntheticCampaigns, KuwabaraKonoCampaign) {
   const auto [calibration, report] =
       calibrate_and_report(runs, "verdict_kk",
                            {"kuwabara-kono-no-tension", "kuwabara-kono", "lankarani-nikravesh"});
-  ASSERT_TRUE(report.verdict_available) << report.cause;
+  ASSERT_TRUE(report.verdict_available) << cause_sentence(report);
   const CampaignCalibration& campaign = calibration.campaign;
   std::printf("A: generated %.9e s, from the material %.9e s\n", dissipative_constant,
               campaign.material_dissipative_constant.value_or(NAN));
@@ -197,13 +207,13 @@ TEST(VerdictOnSyntheticCampaigns, KuwabaraKonoCampaign) {
 
   // The velocity trend: p = 0.20 +- 0.02, the viscoelastic family, HC and constant e excluded.
   ASSERT_TRUE(report.trend);
-  std::printf("trend: %s\n", report.trend_text.c_str());
+  std::printf("trend: %s\n", trend_sentence(report).c_str());
   EXPECT_NEAR(report.trend->exponent, 0.20, 0.02);
-  EXPECT_TRUE(contains(report.trend_text, "follows Kuwabara–Kono")) << report.trend_text;
-  EXPECT_TRUE(contains(report.trend_text,
+  EXPECT_TRUE(contains(trend_sentence(report), "follows Kuwabara–Kono")) << trend_sentence(report);
+  EXPECT_TRUE(contains(trend_sentence(report),
                        "excluded: Hunt–Crossley with constant b (1) and "
                        "constant restitution"))
-      << report.trend_text;
+      << trend_sentence(report);
 
   // Hunt–Crossley breaks where its energy loss says it must. In sample, independently of the
   // report: 1 - k(b V)^2 of the calibrated b against the FEM's 1 - e^2, with 1 - k ~ V and
@@ -237,7 +247,8 @@ TEST(VerdictOnSyntheticCampaigns, KuwabaraKonoCampaign) {
   const ModelVerdict* verdict = report.verdict("calibrated");
   ASSERT_NE(verdict, nullptr);
   for (const auto& band : verdict->tolerances) {
-    std::printf("%s\n", band.text.c_str());
+    std::printf("%s\n",
+                tolerance_sentence(report, band, sample_basis(verdict->out_of_sample)).c_str());
     std::size_t within = 0;
     for (std::size_t i = 0; i < band.decisions.size(); ++i)
       if (band.decisions[i] == Decision::within) {
@@ -247,10 +258,17 @@ TEST(VerdictOnSyntheticCampaigns, KuwabaraKonoCampaign) {
                   within_on_energy_loss.end())
             << "within at V = " << report.runs[i].velocity << " where the energy loss is not";
       }
-    EXPECT_LE(within, 1u) << band.text;
+    EXPECT_LE(within, 1u) << tolerance_sentence(report, band, sample_basis(verdict->out_of_sample));
   }
-  EXPECT_TRUE(contains(report.cause, "The energy loss (1 - e^2) breaks first")) << report.cause;
-  EXPECT_TRUE(contains(report.cause, "b falls with V")) << report.cause;
+  ASSERT_TRUE(report.cause);
+  EXPECT_FALSE(report.cause->holds);
+  EXPECT_EQ(report.cause->first_breaking, Quantity::energy_loss);
+  ASSERT_TRUE(report.damping_trend);
+  EXPECT_LT(report.damping_trend->change, 0);
+  EXPECT_FALSE(report.damping_trend->constant);
+  EXPECT_TRUE(contains(cause_sentence(report), "The energy loss (1 - e^2) breaks first"))
+      << cause_sentence(report);
+  EXPECT_TRUE(contains(cause_sentence(report), "b falls with V")) << cause_sentence(report);
 
   // Under model error the jackknife intervals are much wider than the conditional ones.
   const CampaignModelFit& hunt_crossley = *campaign.hunt_crossley;
@@ -284,7 +302,7 @@ TEST(VerdictOnSyntheticCampaigns, StepToStepOscillationIsFlagged) {
     run.force_max = *std::max_element(run.contact_force.begin(), run.contact_force.end());
   }
   const auto [calibration, report] = calibrate_and_report(runs, "verdict_oscillation", {});
-  ASSERT_TRUE(report.verdict_available) << report.cause;
+  ASSERT_TRUE(report.verdict_available) << cause_sentence(report);
   std::size_t warnings = 0;
   for (const auto& problem : report.problems)
     if (problem.kind == ProblemKind::quality &&
@@ -305,10 +323,15 @@ TEST(VerdictOnSyntheticCampaigns, StepToStepOscillationIsFlagged) {
   ASSERT_NE(verdict, nullptr);
   ASSERT_EQ(verdict->tolerances.size(), 2u);
   for (Decision decision : verdict->tolerances[0].decisions)
-    EXPECT_EQ(decision, Decision::undecided) << verdict->tolerances[0].text;
-  EXPECT_TRUE(contains(verdict->tolerances[0].text, "Not decided")) << verdict->tolerances[0].text;
+    EXPECT_EQ(decision, Decision::undecided)
+        << tolerance_sentence(report, verdict->tolerances[0], sample_basis(verdict->out_of_sample));
+  EXPECT_TRUE(contains(tolerance_sentence(report, verdict->tolerances[0],
+                                          sample_basis(verdict->out_of_sample)),
+                       "Not decided"))
+      << tolerance_sentence(report, verdict->tolerances[0], sample_basis(verdict->out_of_sample));
   for (Decision decision : verdict->tolerances[1].decisions)
-    EXPECT_EQ(decision, Decision::within) << verdict->tolerances[1].text;
+    EXPECT_EQ(decision, Decision::within)
+        << tolerance_sentence(report, verdict->tolerances[1], sample_basis(verdict->out_of_sample));
 }
 
 // Two elastic impacts: the losses at round-off (a restitution read from an integrated history

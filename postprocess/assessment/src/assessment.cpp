@@ -171,9 +171,7 @@ Assessment assess(const Campaign& campaign, const std::optional<Calibration>& ca
 
   const CampaignCalibration* fitted = calibration ? &calibration->campaign : nullptr;
   report.campaign_fitted = fitted && fitted->fitted && fitted->hunt_crossley;
-  report.campaign_reason = fitted ? fitted->reason : "there is no calibration";
   report.hertz_stiffness = fitted ? fitted->hertz_stiffness : nan;
-  report.hertz_basis = fitted ? fitted->hertz_basis : "no calibration";
   if (report.runs.empty()) {
     report.problems = std::move(problems);
     return report;
@@ -186,9 +184,9 @@ Assessment assess(const Campaign& campaign, const std::optional<Calibration>& ca
   // once: not again when the calibration's problems already say that its campaign was not
   // fitted (impact-calibrate's JSON of a campaign, impact-report's own calibration).
   if (!report.campaign_fitted && calibration) {
-    const std::string reason = report.campaign_reason.empty()
+    const std::string reason = calibration->campaign.reason.empty()
                                    ? std::string("the calibration has no campaign fit")
-                                   : report.campaign_reason;
+                                   : calibration->campaign.reason;
     const bool said = std::any_of(calibration->problems.begin(), calibration->problems.end(),
                                   [&](const Problem& p) {
                                     return is_campaign_not_fitted(p, calibration->campaign);

@@ -95,7 +95,7 @@ void add_plate_models(ValidityMap& map, const Assessment& report, const MapRowRe
         for (double tolerance : report.tolerances) {
           const ToleranceVerdict verdict =
               tolerance_verdict(row_report, judged, tolerance,
-                                {map_quantities.begin(), map_quantities.end()}, "");
+                                {map_quantities.begin(), map_quantities.end()});
           for (std::size_t i = 0; i < model.cells.size(); ++i)
             model.cells[i].decisions.push_back(verdict.decisions[i]);
         }

@@ -126,7 +126,7 @@ void add_recommendation(Assessment& report) {
     std::vector<std::optional<ImpactFigures>> judged;
     if (!judge_entry(report, ranking[rank], law, judged)) continue;
     const ToleranceVerdict verdict =
-        tolerance_verdict(report, judged, recommendation.tolerance, quantities, "");
+        tolerance_verdict(report, judged, recommendation.tolerance, quantities);
     law.decisions = verdict.decisions;
     law.worst_error = 0;
     law.worst_quantity = quantities.front();

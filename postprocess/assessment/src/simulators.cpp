@@ -207,9 +207,8 @@ void add_simulators(Assessment& report, const fs::path& directory) {
     std::vector<std::optional<ImpactFigures>> judged(report.runs.size());
     for (const auto& run : result.runs) judged[*report_run(report, run.velocity)] = run.tool;
     for (double tolerance : report.tolerances)
-      result.against_fem.push_back(tolerance_verdict(report, judged, tolerance,
-                                                     simulator_judged_quantities,
-                                                     " in " + simulator_tool_name(result.tool)));
+      result.against_fem.push_back(
+          tolerance_verdict(report, judged, tolerance, simulator_judged_quantities));
     report.simulators.push_back(std::move(result));
   }
   std::stable_sort(report.simulators.begin(), report.simulators.end(),

@@ -27,22 +27,18 @@ std::optional<PlasticLaws> plastic_laws(const std::vector<FemRun>& fem_runs,
                                         const std::vector<ReportRun>& runs,
                                         const std::optional<Calibration>& calibration);
 
-/// The verdicts, cause, trend, plasticity and the notes on the parameters.
+/// The verdicts, the cause, the trends of the energy loss and of b, the family ranges, the
+/// plasticity check and the effective alpha.
 void add_verdict(Assessment& report);
 /// The decision at one run: within when every |error| + U of `quantities` is within the
 /// tolerance, outside when one |error| - U exceeds it, not decided in between (U: the FEM's
 /// uncertainty of the run), unknown without values. The one rule of every decision on the page.
 Decision decide(const std::optional<ImpactFigures>& judged, const ReportRun& run, double tolerance,
                 const std::vector<Quantity>& quantities);
-/// The decisions at every run (`judged` parallel to report.runs), the widest range within and
-/// the sentence ("Within 2 %: V = ... m/s" + basis + ...).
+/// The decisions at every run (`judged` parallel to report.runs) and the widest range within.
 ToleranceVerdict tolerance_verdict(const Assessment& report,
                                    const std::vector<std::optional<ImpactFigures>>& judged,
-                                   double tolerance, const std::vector<Quantity>& quantities,
-                                   const std::string& basis);
-
-/// The FEM's effective alpha over the runs against the measured range, in words.
-std::string effective_alpha_text(const std::vector<ReportRun>& runs);
+                                   double tolerance, const std::vector<Quantity>& quantities);
 
 /// The map of a campaign with sweep axes into report.map (nothing for a velocity campaign).
 void add_validity_map(Assessment& report, const Campaign& campaign,

@@ -47,7 +47,8 @@ MapModelRow row_model(const Assessment& row, std::string_view key) {
     result.missing = key == model_keys::best_law ? "the row's calibration has no comparison law"
                                                  : "the row's calibration has no such model";
   } else if (key == model_keys::calibrated && !row.verdict_available) {
-    result.missing = row.cause;
+    result.missing = "no verdict";
+    result.no_verdict = row.no_verdict;
   }
   if (model) {
     result.parameters = model->parameters;
@@ -73,7 +74,7 @@ MapModelRow row_model(const Assessment& row, std::string_view key) {
     for (const auto& band : verdict->tolerances) {
       const ToleranceVerdict decided =
           tolerance_verdict(row, judged, band.tolerance,
-                            {map_quantities.begin(), map_quantities.end()}, "");
+                            {map_quantities.begin(), map_quantities.end()});
       for (std::size_t i = 0; i < result.cells.size(); ++i)
         result.cells[i].decisions.push_back(decided.decisions[i]);
     }
@@ -310,8 +311,8 @@ std::vector<MapRowRuns> map_rows(const Campaign& campaign) {
 
 std::string map_class_name(const MapCell& cell, const std::vector<double>& tolerances) {
   const std::size_t index = detail::class_index(cell);
-  if (index < tolerances.size()) return "within " + detail::band_name(tolerances[index]);
-  if (index == tolerances.size()) return "outside " + detail::band_name(tolerances.back());
+  if (index < tolerances.size()) return "within " + band_name(tolerances[index]);
+  if (index == tolerances.size()) return "outside " + band_name(tolerances.back());
   if (index == tolerances.size() + 1) return "not decided";
   return "not evaluated";
 }

@@ -30,6 +30,10 @@ std::string short_number(double value, int digits) {
   return std::isfinite(value) ? significant(value, digits) : "n/a";
 }
 
+std::string band_name(double tolerance) {
+  return short_number(tolerance * 100) + " %";
+}
+
 std::string velocity_label(double velocity) {
   return "V = " + short_number(velocity) + " m/s";
 }

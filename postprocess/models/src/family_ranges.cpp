@@ -1,11 +1,9 @@
 // Which family the FEM's restitution follows in which velocity range (family_ranges.hpp).
 
 #include "impact_postprocess/models/family_ranges.hpp"
-#include "impact_postprocess/number_format.hpp"
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <limits>
 #include <numeric>
 
@@ -29,102 +27,56 @@ double slope_of(const std::vector<double>& v, const std::vector<double>& e, bool
   return (y(inside[1]) - y(inside[0])) / (std::log(v[inside[1]]) - std::log(v[inside[0]]));
 }
 
-std::string slope_words(const std::string& of, double slope,
-                        const std::optional<PowerLawTrend>& trend) {
-  std::string text = of + " ∝ V^" + significant(slope, 3);
-  if (trend)
-    text += " [" + significant(trend->lower, 3) + ", " + significant(trend->upper, 3) + "]";
-  else
-    text += " (two runs: no interval)";
-  return text;
-}
-
 FamilyRange judge(const std::vector<double>& v, const std::vector<double>& e, bool above_yield,
-                  bool plastic_possible, std::optional<double> yield_velocity, double level,
-                  const std::vector<PlasticReference>& laws) {
-  FamilyRange range{v.front(),
-                    v.back(),
-                    v.size(),
-                    above_yield,
-                    "",
-                    nan,
-                    "",
-                    std::nullopt,
-                    plastic_restitution_slope,
-                    plastic_restitution_slope,
-                    ""};
-  std::string where = "V = " + significant(range.low, 3) +
-                      (range.high > range.low ? " to " + significant(range.high, 3) : "") + " m/s";
-  if (yield_velocity)
-    where += " (" + std::string(above_yield ? "above" : "at or below") +
-             " V_y, V/V_y = " + significant(range.low / *yield_velocity, 3) +
-             (range.high > range.low ? " to " + significant(range.high / *yield_velocity, 3) : "") +
-             ", " + std::to_string(v.size()) + (v.size() == 1 ? " run)" : " runs)");
-  else
-    where += " (" + std::to_string(v.size()) + (v.size() == 1 ? " run)" : " runs)");
-  double largest_loss = 0;
-  for (double restitution : e) largest_loss = std::max(largest_loss, 1 - restitution);
-  if (largest_loss < elastic_loss_limit) {
+                  bool plastic_possible, double level, const std::vector<PlasticReference>& laws) {
+  FamilyRange range;
+  range.low = v.front();
+  range.high = v.back();
+  range.runs = v.size();
+  range.above_yield = above_yield;
+  range.slope = nan;
+  range.plastic_possible = plastic_possible;
+  for (double restitution : e) range.largest_loss = std::max(range.largest_loss, 1 - restitution);
+  if (range.largest_loss < elastic_loss_limit) {
     range.family = "elastic";
-    range.text = where + ": elastic, 1 - e below " + significant(largest_loss * 100, 2) +
-                 " % at every run (the limit is " + significant(elastic_loss_limit * 100, 6) +
-                 " %).";
+    range.basis = FamilyBasis::elastic;
     return range;
   }
-  std::optional<PowerLawTrend> loss_trend, restitution_trend;
-  const double p = slope_of(v, e, true, loss_trend, level);
+  std::optional<PowerLawTrend> restitution_trend;
+  range.loss_slope = slope_of(v, e, true, range.loss_trend, level);
   const double s = slope_of(v, e, false, restitution_trend, level);
-  if (!std::isfinite(p)) {
-    range.text = where + ": no trend (it needs two runs with 0 < e < 1 at two velocities).";
-    return range;
-  }
+  if (!std::isfinite(range.loss_slope)) return range;
   if (plastic_possible && above_yield) {
+    range.basis = FamilyBasis::plastic;
     range.slope = s;
     range.slope_of = "e";
     range.trend = restitution_trend;
-    std::string laws_words;
-    bool first = true;
     for (const auto& law : laws) {
       std::optional<PowerLawTrend> ignored;
       const double slope = slope_of(v, law.restitution, false, ignored, level);
       if (!std::isfinite(slope)) continue;
-      range.plastic_low = first ? slope : std::min(range.plastic_low, slope);
-      range.plastic_high = first ? slope : std::max(range.plastic_high, slope);
-      first = false;
-      laws_words += (laws_words.empty() ? "" : ", ") + law.law + " " + significant(slope, 3);
+      range.plastic_low = range.law_slopes.empty() ? slope : std::min(range.plastic_low, slope);
+      range.plastic_high = range.law_slopes.empty() ? slope : std::max(range.plastic_high, slope);
+      range.law_slopes.push_back({law.law, slope});
     }
     // Distance to the plastic band and to a constant e (slope 0).
     const double to_plastic = s < range.plastic_low
                                   ? range.plastic_low - s
                                   : (s > range.plastic_high ? s - range.plastic_high : 0.0);
-    const bool plastic = to_plastic < std::abs(s);
-    const std::string reference =
-        laws_words.empty()
-            ? "the plastic family (reference slope -1/4 far above V_y, Thornton 1997)"
-            : "the plastic family (the plastic laws' own slopes over these "
-              "velocities: " +
-                  laws_words + "; -1/4 far above V_y)";
-    range.family = plastic ? "plastic" : "constant restitution";
-    range.text = where + ": " + slope_words("e", s, restitution_trend) + ": " +
-                 (plastic ? reference + ", not a constant e (slope 0)"
-                          : "nearer a constant e (slope 0) than " + reference) +
-                 "; there " + slope_words("1 - e", p, loss_trend) + ".";
+    range.family = to_plastic < std::abs(s) ? "plastic" : "constant restitution";
     return range;
   }
+  const double p = range.loss_slope;
+  range.basis = FamilyBasis::nearest;
   range.slope = p;
   range.slope_of = "1 - e";
-  range.trend = loss_trend;
+  range.trend = range.loss_trend;
   const ReferenceSlope* nearest = nullptr;
   for (const auto& reference : reference_slopes())
     if (!nearest || std::abs(reference.slope - p) < std::abs(nearest->slope - p))
       nearest = &reference;
   range.family = nearest->family;
-  range.text = where + ": " + slope_words("1 - e", p, loss_trend) + ", nearest " + nearest->family +
-               " (slope " + significant(nearest->slope, 3) + ")" +
-               (plastic_possible ? ""
-                                 : "; the plastic family does not apply (the FEM's "
-                                   "material does not yield)") +
-               ".";
+  range.reference_slope = nearest->slope;
   return range;
 }
 
@@ -152,23 +104,9 @@ std::vector<FamilyRange> family_ranges(const std::vector<double>& velocity,
   }
   std::vector<FamilyRange> ranges;
   const bool plastic = yield_velocity.has_value();
-  if (!below_v.empty())
-    ranges.push_back(judge(below_v, below_e, false, plastic, yield_velocity, level, {}));
-  if (!above_v.empty())
-    ranges.push_back(judge(above_v, above_e, true, plastic, yield_velocity, level, above_laws));
+  if (!below_v.empty()) ranges.push_back(judge(below_v, below_e, false, plastic, level, {}));
+  if (!above_v.empty()) ranges.push_back(judge(above_v, above_e, true, plastic, level, above_laws));
   return ranges;
-}
-
-std::string family_ranges_text(const std::vector<FamilyRange>& ranges,
-                               std::optional<double> yield_velocity) {
-  if (ranges.empty()) return "";
-  std::string text = "Which family the FEM follows";
-  text += yield_velocity
-              ? " (split at the yield velocity V_y = " + significant(*yield_velocity, 4) +
-                    " m/s of the material, Johnson's p_y = 1.6 Y):"
-              : ":";
-  for (const auto& range : ranges) text += " " + range.text;
-  return text;
 }
 
 } // namespace impact::postprocess

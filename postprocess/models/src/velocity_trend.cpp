@@ -1,5 +1,4 @@
 #include "impact_postprocess/models/velocity_trend.hpp"
-#include "impact_postprocess/number_format.hpp"
 
 #include <boost/math/distributions/students_t.hpp>
 
@@ -82,33 +81,6 @@ const ReferenceSlope& nearest_reference(const PowerLawTrend& trend) {
         std::abs(reference.slope - trend.exponent) < std::abs(nearest->slope - trend.exponent))
       nearest = &reference;
   return *nearest;
-}
-
-std::string trend_family(const PowerLawTrend& trend) {
-  const ReferenceSlope* nearest = &nearest_reference(trend);
-  const auto inside = [&](const ReferenceSlope& reference) {
-    return reference.slope >= trend.lower && reference.slope <= trend.upper;
-  };
-  std::string text = "the FEM follows " + nearest->family + " (reference slope " +
-                     significant(nearest->slope, 3) + ")";
-  if (inside(*nearest))
-    text += ", which lies inside the interval";
-  else
-    text += ": the nearest reference, " +
-            significant(std::abs(nearest->slope - trend.exponent), 2) + " from p (" +
-            significant(std::abs(nearest->slope - trend.exponent) / trend.standard_error, 2) +
-            " standard errors; the reference slopes are the small-dissipation limits, and a "
-            "loss with two mechanisms, e.g. viscosity and wave radiation, lies between theirs)";
-  std::string excluded, consistent;
-  for (const auto& reference : reference_slopes()) {
-    if (&reference == nearest) continue;
-    std::string& list = inside(reference) ? consistent : excluded;
-    list += (list.empty() ? "" : " and ") + reference.family + " (" +
-            significant(reference.slope, 3) + ")";
-  }
-  if (!consistent.empty()) text += "; also inside the interval: " + consistent;
-  if (!excluded.empty()) text += "; excluded: " + excluded;
-  return text;
 }
 
 } // namespace impact::postprocess

@@ -2,6 +2,7 @@
 // quality, the runs, the models, the quantities, the errors, the energy balance.
 
 #include "sections.hpp"
+#include "impact_postprocess/report/verdict_words.hpp"
 #include "impact_postprocess/models/model_keys.hpp"
 #include "impact_postprocess/calibration/calibration_json.hpp"
 
@@ -106,7 +107,7 @@ void runs_section(Document& doc, const Report& report) {
          cell(run.history_exponent.value), cell(run.history_stiffness.value),
          shown_source(run.source) + (run.calibrated ? "" : " (not in the calibration)")});
   doc.table(table);
-  if (!report.alpha_text.empty()) doc.paragraph(report.alpha_text);
+  if (const std::string alpha = alpha_sentence(report); !alpha.empty()) doc.paragraph(alpha);
 }
 
 void models_section(Document& doc, const Report& report) {
@@ -240,7 +241,7 @@ void energy_section(Document& doc, const Report& report) {
       " (OFF above it). Lost: 1 - e^2 of the FEM restitution. Yield: each body's largest von "
       "Mises stress against that body's own yield strength [MPa], and the bodies that exceed "
       "theirs. " +
-      report.plasticity.text);
+      plasticity_sentence(report));
   Table table{{"V [m/s]", "largest energy error [%]", "energy error at the end [%]",
                "lost 1-e^2 [%]", "dissipated [%]", "radiated [%]"},
               {}};

@@ -443,10 +443,10 @@ std::vector<std::pair<const MapModel*, json>> map_figures(const Report& report) 
   json classes = json::array();
   const std::vector<std::string> within_colors = {"#1a9641", "#a6d96a", "#d9ef8b", "#ffffbf"};
   for (std::size_t k = 0; k < bands; ++k)
-    classes.push_back({{"name", "within " + detail::band_name(report.tolerances[k])},
+    classes.push_back({{"name", "within " + band_name(report.tolerances[k])},
                        {"color", within_colors[std::min(k, within_colors.size() - 1)]}});
   classes.push_back(
-      {{"name", "outside " + detail::band_name(report.tolerances.back())}, {"color", "#e66a5c"}});
+      {{"name", "outside " + band_name(report.tolerances.back())}, {"color", "#e66a5c"}});
   classes.push_back({{"name", "not decided (FEM uncertainty)"}, {"color", "#bdbdbd"}});
   classes.push_back({{"name", "not evaluated"}, {"color", "#ffffff"}});
   const auto slash = map.parameter.rfind('/');

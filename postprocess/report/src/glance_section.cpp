@@ -5,6 +5,7 @@
 
 #include "law_block.hpp"
 #include "sections.hpp"
+#include "impact_postprocess/report/verdict_words.hpp"
 #include "impact_postprocess/models/contact_models.hpp"
 #include "impact_postprocess/number_format.hpp"
 #include "impact_postprocess/models/plastic_models.hpp"
@@ -387,7 +388,7 @@ void glance_section(Document& doc, const Report& report, const FigurePlacer& fig
   };
   const bool ranked = report.calibration && !report.calibration->campaign.ranking.empty();
   if (!report.verdict_available || !ranked || !report.recommendation) {
-    doc.list({report.verdict_available ? report.summary : report.cause});
+    doc.list({report.verdict_available ? summary_sentence(report) : cause_sentence(report)});
     place_status();
     figure(FigureId::errors, "");
     return;

@@ -2,6 +2,7 @@
 // words, figures and one table per model.
 
 #include "sections.hpp"
+#include "impact_postprocess/report/verdict_words.hpp"
 
 namespace impact::postprocess::detail {
 
@@ -56,7 +57,8 @@ void map_section(Document& doc, const Report& report, const FigurePlacer& figure
       const MapModelRow& at = row.models[m];
       std::string parameters = at.parameters.empty() ? "" : at.parameters;
       if (!at.missing.empty())
-        notes.push_back(with_unit(row.value, map.unit) + ": not evaluated: " + at.missing);
+        notes.push_back(with_unit(row.value, map.unit) + ": not evaluated: " +
+                        (at.no_verdict ? no_verdict_sentence(*at.no_verdict) : at.missing));
       else if (!parameters.empty())
         notes.push_back(with_unit(row.value, map.unit) + ": " + parameters +
                         (at.out_of_sample ? " (out of sample)" : " (in sample)"));

@@ -4,6 +4,7 @@
 // campaign whose material is elastic-plastic (Report::plastic_laws).
 
 #include "sections.hpp"
+#include "impact_postprocess/report/verdict_words.hpp"
 #include "impact_postprocess/models/model_keys.hpp"
 
 #include <algorithm>
@@ -246,7 +247,7 @@ void plastic_section(Document& doc, const Report& report,
         "restitution is Kuwabara–Kono's. Fitted: the yield parameter and b, with c at "
         "the Hertz value of the materials.");
   doc.paragraph(laws.text);
-  if (!report.family_text.empty()) doc.paragraph(report.family_text);
+  if (const std::string family = family_sentence(report); !family.empty()) doc.paragraph(family);
   Table table{{"V [m/s]", "V/V_y", "FEM e", "FEM x_p [µm]"}, {}};
   for (const auto& law : laws.laws) {
     table.header.push_back(law.label + " e");

@@ -2,6 +2,7 @@
 // assessment/simulators.cpp, in words and tables, or the commands that make them.
 
 #include "sections.hpp"
+#include "impact_postprocess/report/verdict_words.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -151,7 +152,8 @@ void result_subsection(Document& doc, const Report& report, const SimulatorResul
                 ") against the FEM in the energy loss 1 - e^2, t_c "
                 "and F_max, by the verdict's rule:");
   std::vector<std::string> items;
-  for (const auto& verdict : result.against_fem) items.push_back(verdict.text);
+  for (const auto& verdict : result.against_fem)
+    items.push_back(tolerance_sentence(report, verdict, " in " + simulator_tool_name(result.tool)));
   std::string worst = "Largest errors against the FEM:";
   for (Quantity quantity : simulator_judged_quantities) {
     const Worst w = worst_error(result, quantity, true);

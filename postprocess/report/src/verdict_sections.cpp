@@ -3,6 +3,7 @@
 
 #include "law_block.hpp"
 #include "sections.hpp"
+#include "impact_postprocess/report/verdict_words.hpp"
 #include "impact_postprocess/models/model_keys.hpp"
 #include "impact_postprocess/calibration/calibration_json.hpp"
 
@@ -60,19 +61,22 @@ void verdict_section(Document& doc, const Report& report) {
                        "need at least three velocities.") +
                 " The energy loss, not e, is judged: near e = 1 a small error in e is a large "
                 "one in the energy the model takes.");
-  if (!report.summary.empty()) doc.paragraph(report.summary);
+  const std::string summary = summary_sentence(report);
+  if (!summary.empty()) doc.paragraph(summary);
   const ModelVerdict* verdict = report.verdict(calibrated.key);
   if (report.verdict_available && verdict) {
     std::vector<std::string> items;
-    for (const auto& tolerance : verdict->tolerances) items.push_back(tolerance.text);
+    for (const auto& tolerance : verdict->tolerances)
+      items.push_back(
+          tolerance_sentence(report, tolerance, sample_basis(calibrated.out_of_sample)));
     doc.list(items);
   }
-  doc.paragraph("Cause: " + report.cause);
-  doc.paragraph(report.trend_text);
-  if (!report.family_text.empty() && report.summary.find(report.family_text) == std::string::npos)
-    doc.paragraph(report.family_text);
-  doc.paragraph(report.plasticity.text);
-  doc.paragraph(report.uncertainty_text);
+  doc.paragraph("Cause: " + cause_sentence(report));
+  doc.paragraph(trend_sentence(report));
+  const std::string family = family_sentence(report);
+  if (!family.empty() && summary.find(family) == std::string::npos) doc.paragraph(family);
+  doc.paragraph(plasticity_sentence(report));
+  doc.paragraph(uncertainty_sentence(report));
   if (!report.verdict_available || !verdict) return;
 
   // Two tables rather than one of 15 columns: the errors with the decisions, then the FEM's
@@ -307,11 +311,11 @@ void multibody_block(Document& doc, const Report& report) {
 void parameters_section(Document& doc, const Report& report) {
   doc.heading("Calibrated parameters");
   if (!report.calibration || !report.campaign_fitted) {
-    doc.paragraph("No campaign fit: " +
-                  (report.campaign_reason.empty() ? std::string("the calibration has none")
-                                                  : report.campaign_reason) +
-                  ". The runs' own fits are in the table of runs.");
-    doc.list(report.parameter_notes);
+    const std::string reason = campaign_reason(report);
+    doc.paragraph(
+        "No campaign fit: " + (reason.empty() ? std::string("the calibration has none") : reason) +
+        ". The runs' own fits are in the table of runs.");
+    doc.list(parameter_notes(report));
     return;
   }
   const CampaignCalibration& campaign = report.calibration->campaign;
@@ -321,7 +325,7 @@ void parameters_section(Document& doc, const Report& report) {
   if (hc.correlation.size() == k * k)
     doc.paragraph("Correlations: c,n = " + cell(hc.correlation[1]) + "; c,b = " +
                   cell(hc.correlation[2]) + "; n,b = " + cell(hc.correlation[k + 2]) + ".");
-  doc.list(report.parameter_notes);
+  doc.list(parameter_notes(report));
   if (campaign.hunt_crossley_energy)
     estimate_tables(doc, report, *campaign.hunt_crossley_energy, "campaign.hunt_crossley_energy");
   if (campaign.hunt_crossley_velocity_damping)
@@ -336,11 +340,11 @@ void parameters_section(Document& doc, const Report& report) {
 void trend_section(Document& doc, const Report& report,
                    const std::function<void(FigureId)>& figure) {
   doc.heading("Velocity trend of the energy loss");
-  doc.paragraph(report.trend_text +
+  doc.paragraph(trend_sentence(report) +
                 " The reference slopes: Hunt–Crossley with a constant b, 1 - e = (2/3) b V + "
                 "..., slope 1; the viscoelastic sphere (Kuwabara–Kono, Brilliantov), 1 - e = "
                 "1.7302 A (c/m)^(2/5) V^(1/5) + ..., slope 1/5; a constant e, slope 0.");
-  if (!report.family_text.empty()) doc.paragraph(report.family_text);
+  if (const std::string family = family_sentence(report); !family.empty()) doc.paragraph(family);
   figure(FigureId::energy_loss);
   Table table{{"V [m/s]", "FEM 1 - e", "power law a V^p"}, {}};
   for (const auto& model : report.models) table.header.push_back(model.label);

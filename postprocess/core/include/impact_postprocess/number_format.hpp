@@ -21,6 +21,8 @@ std::string percent_cell(double fraction);
 std::string unsigned_percent(double fraction);
 /// Four significant digits (or `digits`), "n/a" when not finite.
 std::string short_number(double value, int digits = 4);
+/// A tolerance band by its width: "2 %" of 0.02 (short_number of the percentage).
+std::string band_name(double tolerance);
 /// "V = 1 m/s".
 std::string velocity_label(double velocity);
 /// "0.5, 1 and 2 m/s".

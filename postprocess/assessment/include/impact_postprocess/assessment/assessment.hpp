@@ -25,6 +25,7 @@
 #include "impact_postprocess/models/velocity_trend.hpp"
 #include "impact_postprocess/run/fem_run.hpp"
 
+#include <array>
 #include <cstddef>
 #include <filesystem>
 #include <optional>
@@ -42,26 +43,32 @@ struct Assessment {
   std::vector<ReportModel> models; ///< calibrated first; see compared_models.cpp for the list
   std::optional<Calibration> calibration; ///< as read
   std::vector<double> tolerances;         ///< of the verdict, increasing
+  /// The calibration's campaign fit holds Hunt–Crossley (its reason when not: the
+  /// calibration's CampaignCalibration::reason).
   bool campaign_fitted = false;
-  std::string campaign_reason;              ///< why not, when not fitted
-  double hertz_stiffness;                   ///< N/m^1.5
-  std::string hertz_basis;                  ///< how it was obtained
-  std::vector<std::string> parameter_notes; ///< offsets of c, n from Hertz, trend of b, ...
-  std::vector<ModelVerdict> verdicts;       ///< one per model, parallel to models
-  std::string cause;                        ///< why and where the calibrated model fails
+  double hertz_stiffness;             ///< N/m^1.5 (the calibration's; NaN without one)
+  std::vector<ModelVerdict> verdicts; ///< one per model, parallel to models
+  /// The calibrated model converged and was judged: the verdicts decide (else the page says
+  /// why not: no campaign fit, or a fit that did not converge).
   bool verdict_available = false;
+  /// Why there is no verdict (with runs and without verdict_available).
+  std::optional<NoVerdict> no_verdict;
+  /// Why and where the calibrated model fails (with verdict_available).
+  std::optional<FailureCause> cause;
+  /// The smallest and largest signed error of the calibrated model's energy loss over the
+  /// runs it predicts (with verdict_available).
+  std::optional<std::array<double, 2>> energy_loss_errors;
+  /// How the per-run b varies with V (none with fewer than two runs that have a b).
+  std::optional<DampingTrend> damping_trend;
   std::optional<PowerLawTrend> trend; ///< 1 - e ~ V^p of the FEM
-  std::string trend_text;
   PlasticityCheck plasticity;
   /// Which family the FEM follows in which velocity range (family_ranges.hpp).
   std::vector<FamilyRange> family_ranges;
-  std::string family_text;
   /// The elastic-plastic laws, for a campaign whose material is elastic-plastic.
   std::optional<PlasticLaws> plastic_laws;
-  /// The FEM's effective alpha (1 - e)/V per run against the measured 0.08–0.32 s/m.
-  std::string alpha_text;
-  std::string uncertainty_text; ///< what the FEM's uncertainty does to the verdict
-  std::string summary;          ///< the verdict in a few sentences
+  /// The FEM's effective alpha (1 - e)/V over the runs against the measured 0.08–0.32 s/m
+  /// (none when no run has one).
+  std::optional<EffectiveAlpha> effective_alpha;
   /// The directory of the simulators' result files (--simulators), none when not given.
   std::optional<std::string> simulators_source;
   std::vector<SimulatorResult> simulators; ///< the usable result files, Simbody, MuJoCo, LAMMPS

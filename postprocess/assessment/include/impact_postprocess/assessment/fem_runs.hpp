@@ -7,6 +7,8 @@
 #include "impact_postprocess/impact_quantities.hpp"
 #include "impact_postprocess/run/fem_run_record.hpp"
 
+#include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -55,6 +57,20 @@ bool same_velocity(double a, double b);
 inline constexpr double measured_alpha_low = 0.08, measured_alpha_high = 0.32;
 /// (1 - e)/V [s/m] of the FEM run (effective_alpha.cpp).
 double effective_alpha(const ReportRun& run);
+
+} // namespace detail
+
+/// The FEM's effective alpha (1 - e)/V over the runs (effective_alpha.cpp): its range and how
+/// many runs lie below, inside and above the measured range.
+struct EffectiveAlpha {
+  double low, high; ///< s/m
+  std::size_t below = 0, inside = 0, above = 0, count = 0;
+};
+
+namespace detail {
+
+/// The effective alpha over the runs; none when no run has one.
+std::optional<EffectiveAlpha> effective_alpha(const std::vector<ReportRun>& runs);
 
 } // namespace detail
 

@@ -32,8 +32,9 @@ struct MapCell {
 struct MapModelRow {
   std::string parameters; ///< the values used on this row, as text with units
   bool out_of_sample = false;
-  std::string missing;        ///< why the model cannot be evaluated on this row ("" if it can)
-  std::vector<MapCell> cells; ///< one per run of the row, ordered by velocity
+  std::string missing; ///< why the model cannot be evaluated on this row ("" if it can)
+  std::optional<NoVerdict> no_verdict; ///< the row has no verdict (missing then says so)
+  std::vector<MapCell> cells;          ///< one per run of the row, ordered by velocity
 };
 
 struct MapRow {

@@ -18,6 +18,7 @@
 #include "impact_postprocess/models/velocity_trend.hpp"
 
 #include <cstddef>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -27,6 +28,20 @@ namespace impact::postprocess {
 /// Below this 1 - e at every run a range is called elastic (the FEM's own numerical
 /// dissipation and wave radiation of a rigid-flat impact stay below it).
 inline constexpr double elastic_loss_limit = 0.01;
+
+/// How a range's family was decided.
+enum class FamilyBasis {
+  elastic,  ///< 1 - e below elastic_loss_limit at every run
+  no_trend, ///< fewer than two runs with 0 < e < 1 at two velocities
+  plastic,  ///< above V_y: the slope of e against the plastic band and a constant e
+  nearest   ///< the slope of 1 - e against the elastic/viscoelastic reference slopes
+};
+
+/// A plastic law's slope of e against V over a range (its own reference of the family).
+struct LawSlope {
+  std::string law;
+  double slope;
+};
 
 struct FamilyRange {
   double low, high;   ///< velocities of the first and last run of the range [m/s]
@@ -41,7 +56,15 @@ struct FamilyRange {
   /// The plastic family's reference slopes of e over the range (above V_y): the band between
   /// the given plastic laws' own slopes, or -1/4 for both without them.
   double plastic_low = plastic_restitution_slope, plastic_high = plastic_restitution_slope;
-  std::string text; ///< the range in words
+  FamilyBasis basis = FamilyBasis::no_trend;
+  bool plastic_possible = false; ///< a yield velocity was given (the material can yield)
+  double largest_loss = 0;       ///< the largest 1 - e of the range's runs
+  /// The slope of 1 - e and its fit (both bases plastic and nearest; the same as slope and
+  /// trend for nearest).
+  double loss_slope = std::numeric_limits<double>::quiet_NaN();
+  std::optional<PowerLawTrend> loss_trend;
+  std::vector<LawSlope> law_slopes; ///< the plastic laws' slopes (basis plastic)
+  double reference_slope = std::numeric_limits<double>::quiet_NaN(); ///< the nearest's (nearest)
 };
 
 /// A plastic law's restitution at the runs' velocities (parallel to them).
@@ -56,9 +79,5 @@ std::vector<FamilyRange> family_ranges(const std::vector<double>& velocity,
                                        const std::vector<double>& restitution,
                                        std::optional<double> yield_velocity, double level = 0.95,
                                        const std::vector<PlasticReference>& plastic_laws = {});
-
-/// "Which family the FEM follows: ..." from the ranges, one sentence per range.
-std::string family_ranges_text(const std::vector<FamilyRange>& ranges,
-                               std::optional<double> yield_velocity);
 
 } // namespace impact::postprocess

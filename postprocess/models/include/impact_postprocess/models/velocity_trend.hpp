@@ -54,9 +54,4 @@ std::optional<PowerLawTrend> fit_restitution_power_law(const std::vector<double>
 /// -1/4 than 0 (a constant restitution), the nearest-reference rule of the loss trend.
 bool follows_plastic_family(const PowerLawTrend& restitution_trend);
 
-/// Which family the fitted trend follows, in a sentence: the one with the nearest reference
-/// slope (with its distance when the interval excludes it), and the families the interval
-/// excludes.
-std::string trend_family(const PowerLawTrend& trend);
-
 } // namespace impact::postprocess
