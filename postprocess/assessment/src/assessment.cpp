@@ -20,9 +20,6 @@ namespace {
 
 constexpr double nan = std::numeric_limits<double>::quiet_NaN();
 constexpr std::size_t fem_history_samples = 1500;
-// A force after release above this fraction of the peak is chatter: a quality warning
-// (postprocess/README.md, "A warning on the FEM's quality").
-constexpr double release_warning = 1e-3;
 
 ImpactHistory fem_window(const FemRun& run) {
   ImpactHistory window;
@@ -59,42 +56,18 @@ const RunCalibration* calibrated_run(const Calibration& calibration, const FemRu
   return found;
 }
 
-// The warning on the FEM history itself (ProblemKind::quality: the report stays complete), one per
-// run.
-void add_quality_warnings(const ReportRun& run, std::vector<Problem>& problems) {
+// What the FEM history itself shows beyond its warning thresholds (ProblemKind::quality once
+// worded: the report stays complete), and the run's verification problem.
+void add_quality_warnings(ReportRun& run, std::vector<Problem>& problems) {
   const ForceSmoothness& smoothness = run.record.smoothness;
-  std::string message;
   if (std::isfinite(smoothness.oscillation) && smoothness.oscillation > force_oscillation_warning)
-    message = "the contact force oscillates from step to step by " +
-              unsigned_percent(smoothness.oscillation) + " of its peak (" +
-              run.record.smoothness_source + "; warning above " +
-              unsigned_percent(force_oscillation_warning) +
-              "): the peak force is uncertain by as much";
-  if (std::isfinite(smoothness.after_release) && smoothness.after_release > release_warning)
-    message += (message.empty() ? "" : "; ") + std::string("after the first zero that follows ") +
-               "the peak the force returns to " + unsigned_percent(smoothness.after_release) +
-               " of the peak (release chatter): the contact time is uncertain by its length";
-  if (!message.empty())
-    problems.push_back({run.source, ProblemKind::quality,
-                        "V = " + short_number(run.velocity) + " m/s: " + message +
-                            ". The verdict does not claim a smaller difference."});
-  // The energy balance at the end of the run, against the FEM's own target.
+    run.quality.oscillation = smoothness.oscillation;
+  if (std::isfinite(smoothness.after_release) && smoothness.after_release > release_chatter_warning)
+    run.quality.after_release = smoothness.after_release;
   if (const auto& balance = run.record.energy_error_final;
-      balance && std::abs(*balance) > energy_balance_target) {
-    const double lost = 1 - run.fem.restitution * run.fem.restitution;
-    problems.push_back(
-        {run.source, ProblemKind::quality,
-         "V = " + short_number(run.velocity) +
-             " m/s: the energy balance misses its target: at the end of the run it is off by " +
-             unsigned_percent(std::abs(*balance)) + " of the impact energy (" +
-             fem_format::energy_error_final_key + " of summary.json; target " +
-             unsigned_percent(energy_balance_target) + ")" +
-             (lost > 0 ? ", " + unsigned_percent(std::abs(*balance) / lost) +
-                             " of the energy the impact loses (1 - e^2)"
-                       : std::string()) +
-             ": the time step or the contact's discretisation does work of that size, which the "
-             "energy loss carries."});
-  }
+      balance && std::abs(*balance) > energy_balance_target)
+    run.quality.energy_balance = *balance;
+  run.quality.problem_position = problems.size();
   if (!run.record.verification_problem.empty())
     problems.push_back({run.source, ProblemKind::input, run.record.verification_problem});
 }

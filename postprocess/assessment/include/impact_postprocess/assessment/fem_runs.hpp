@@ -27,6 +27,27 @@ struct ReportEstimate {
   double upper;
 };
 
+/// A force after release above this fraction of the peak is chatter: a quality warning
+/// (postprocess/README.md, "A warning on the FEM's quality").
+inline constexpr double release_chatter_warning = 1e-3;
+
+/// What the FEM history itself shows that limits its result: each set only beyond its
+/// warning threshold (the report words them as warnings of kind quality; the result stays
+/// complete).
+struct FemQualityWarnings {
+  /// The step-to-step oscillation of the force over its peak, above force_oscillation_warning.
+  std::optional<double> oscillation;
+  /// The force after the first zero that follows the peak, over the peak, above
+  /// release_chatter_warning (release chatter).
+  std::optional<double> after_release;
+  /// The energy error at the end of the run over the impact energy (signed), beyond
+  /// energy_balance_target.
+  std::optional<double> energy_balance;
+  /// The index in Assessment::problems before which the report places these warnings (where
+  /// the run's other problems are).
+  std::size_t problem_position = 0;
+};
+
 struct ReportRun {
   std::string source;
   double velocity;                 ///< m/s
@@ -44,6 +65,7 @@ struct ReportRun {
   /// "(yields)" (never set when the material is elastic-plastic, FemRunRecord::plastic_material:
   /// that FEM yields and stays valid).
   bool yields = false;
+  FemQualityWarnings quality;
 };
 
 // Shared by the assessment and the report (namespace detail: not for a reader of the API).

@@ -20,13 +20,21 @@ namespace impact::postprocess {
 using Report = Assessment;
 using ReportOptions = AssessmentOptions;
 
-/// Builds every number of the report: the assessment (assess).
+/// The runs' FEM-quality warnings (ReportRun::quality) in words, as problems of kind quality
+/// placed among the assessment's problems where each run's own problems are
+/// (quality_warnings.cpp).
+void place_quality_warnings(Report& report);
+
+/// Builds every number of the report: the assessment (assess), with its quality warnings
+/// worded among its problems.
 inline Report build_report(const Campaign& campaign, const std::optional<Calibration>& calibration,
                            std::vector<Problem> problems, const std::string& campaign_source,
                            const std::string& calibration_source,
                            const ReportOptions& options = {}) {
-  return assess(campaign, calibration, std::move(problems), campaign_source, calibration_source,
-                options);
+  Report report = assess(campaign, calibration, std::move(problems), campaign_source,
+                         calibration_source, options);
+  place_quality_warnings(report);
+  return report;
 }
 
 /// The figures of the page. The section that shows a figure asks for it by its identity
