@@ -321,6 +321,9 @@ std::string status_line(const Report& report, bool& incomplete) {
   std::vector<std::string> problems;
   std::vector<double> oscillating, energy, other_warnings;
   std::size_t warnings = 0;
+  const auto add = [](std::vector<double>& list, double velocity) {
+    if (std::find(list.begin(), list.end(), velocity) == list.end()) list.push_back(velocity);
+  };
   for (const auto& problem : report.problems) {
     if (!is_warning(problem.kind)) {
       problems.push_back(std::string(kind_name(problem.kind)) +
@@ -328,20 +331,13 @@ std::string status_line(const Report& report, bool& incomplete) {
       continue;
     }
     ++warnings;
-    double velocity = NAN;
+    if (problem.kind == ProblemKind::quality) continue; // by the runs' findings, below
     for (const auto& run : report.runs)
-      if (same_source(run.source, problem.source)) velocity = run.velocity;
-    const auto add = [&](std::vector<double>& list) {
-      if (std::isfinite(velocity) && std::find(list.begin(), list.end(), velocity) == list.end())
-        list.push_back(velocity);
-    };
-    if (problem.message.find("oscillates from step to step") != std::string::npos ||
-        problem.message.find("release chatter") != std::string::npos)
-      add(oscillating);
-    else if (problem.message.find("energy balance misses its target") != std::string::npos)
-      add(energy);
-    else
-      add(other_warnings);
+      if (same_source(run.source, problem.source)) add(other_warnings, run.velocity);
+  }
+  for (const auto& run : report.runs) {
+    if (run.quality.oscillation || run.quality.after_release) add(oscillating, run.velocity);
+    if (run.quality.energy_balance) add(energy, run.velocity);
   }
   incomplete = !problems.empty();
   if (problems.empty() && warnings == 0) return "";
