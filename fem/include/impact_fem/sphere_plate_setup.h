@@ -179,17 +179,33 @@ namespace impact_fem
     }
 
   protected:
-    /// The contact the sizes left "auto" are made for, from the parameters.
-    using ExpectedContactOf =
-      std::function<discretisation::ExpectedContact(const Parameters &)>;
+    /**
+     * What the analysis puts the bodies through, as far as the setup needs
+     * it before the mesh is made (Parameters knows no analysis).
+     */
+    struct Loading
+    {
+      /// The contact the sizes and the step left "auto" are made for.
+      Parameters::ExpectedContactOf expected_contact;
+      /// Only the sphere's lower hemisphere is meshed, its base a boundary.
+      bool hemisphere = false;
+      /// The analysis's own checks of the scenario (an ExcMessage names
+      /// the entry), before the mesh is read.
+      std::function<void(const Parameters &)> check;
+    };
 
-    /// Reads the bodies, the mesh (sized for the contact @p expected gives),
-    /// the contact and the nonlinear solver; progress and results go to
-    /// `log` on the first rank of `comm`.
-    SpherePlateSetup(ParameterHandler        &prm,
-                     const MPI_Comm           comm,
-                     std::ostream            &log,
-                     const ExpectedContactOf &expected);
+    /// Reads the bodies, the mesh (sized for the contact @p loading
+    /// expects), the contact and the nonlinear solver; progress and results
+    /// go to `log` on the first rank of `comm`.
+    SpherePlateSetup(ParameterHandler &prm,
+                     const MPI_Comm    comm,
+                     std::ostream     &log,
+                     const Loading    &loading);
+
+    /// Refuses a plate that nothing holds against a static load (the
+    /// analyses without inertia: static press, indentation).
+    static void
+    require_plate_held(const Parameters &parameters);
 
     /// Catches SIGINT and SIGTERM while it lives (interrupt_received()),
     /// restores the old handlers after. A signal once received stays
