@@ -589,14 +589,7 @@ namespace impact_fem
                     result_files::time_unit,
                     "simulated time");
     if (arms.nonlinear())
-      history.declare(
-        {{result_files::newton_iterations_dataset,
-          "1",
-          "iterations of the step's nonlinear solve (Nonlinear solver)"},
-         {result_files::newton_residual_dataset,
-          "1",
-          "out-of-balance force of the accepted iterate / (||B^T lambda|| + "
-          "||f_body||)"}});
+      declare_iteration_history("||f_body||");
     for (auto &[name, postprocessor] : postprocessors)
       postprocessor->initialize(*this, history);
     postprocess_step();

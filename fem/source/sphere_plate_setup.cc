@@ -285,6 +285,20 @@ namespace impact_fem
 
 
   void
+  SpherePlateSetup::declare_iteration_history(const std::string &other_load)
+  {
+    history.declare(
+      {{result_files::newton_iterations_dataset,
+        "1",
+        "iterations of the step's nonlinear solve (Nonlinear solver)"},
+       {result_files::newton_residual_dataset,
+        "1",
+        "out-of-balance force of the accepted iterate / (||B^T lambda|| + " +
+          other_load + ")"}});
+  }
+
+
+  void
   SpherePlateSetup::require_plate_held(const Parameters &parameters)
   {
     const PlateFaces &faces = parameters.plate_faces;

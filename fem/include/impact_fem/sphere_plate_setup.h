@@ -252,6 +252,11 @@ namespace impact_fem
     /// u = K_eff^{-1} rhs with the contact response (one solve, one LCP).
     void
     solve_linear_step(const VectorType &rhs, VectorType &displacement);
+    /// The history's columns of the nonlinear steps of plastic bodies: the
+    /// iterations and the residual, relative to ||B^T lambda|| +
+    /// @p other_load (the load that stays when the contact opens).
+    void
+    declare_iteration_history(const std::string &other_load);
     /// The parameters flattened to "Section/Entry" -> value, with the
     /// constants and sizes the run used.
     std::map<std::string, std::string>

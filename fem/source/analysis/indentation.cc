@@ -393,18 +393,15 @@ namespace impact_fem
                         "radius of the contact nodes",
                         contact.node_radii());
     if (plastic)
-      history.declare(
-        {{result_files::newton_iterations_dataset,
-          "1",
-          "iterations of the step's nonlinear solve (Nonlinear solver)"},
-         {result_files::newton_residual_dataset,
-          "1",
-          "out-of-balance force of the accepted iterate / (||B^T lambda|| + "
-          "||f_p,n||)"},
-         {"max_accumulated_plastic_strain",
-          "1",
-          "largest accumulated plastic strain of both bodies"},
-         {"plastic_work", "J", "cumulative plastic work int sigma : d eps^p"}});
+      {
+        declare_iteration_history("||f_p,n||");
+        history.declare({{"max_accumulated_plastic_strain",
+                          "1",
+                          "largest accumulated plastic strain of both bodies"},
+                         {"plastic_work",
+                          "J",
+                          "cumulative plastic work int sigma : d eps^p"}});
+      }
   }
 
 

@@ -924,21 +924,8 @@ namespace impact_fem
 
 
   void
-  SpecimenTest::parse_parameters(ParameterHandler &prm,
-                                 const analysis::Invocation &,
-                                 const MPI_Comm comm)
+  SpecimenTest::run_on_first_rank(ParameterHandler &prm)
   {
-    if (Utilities::MPI::this_mpi_process(comm) == 0)
-      parameters = &prm;
-  }
-
-
-  int
-  SpecimenTest::run()
-  {
-    if (parameters == nullptr)
-      return 0;
-    ParameterHandler  &prm        = *parameters;
     const Loading      input      = read_loading(prm);
     const auto        &material   = input.material;
     const std::string &loading    = input.loading;
@@ -961,12 +948,11 @@ namespace impact_fem
         GeneralSpecimen::check(input);
         GeneralSpecimen specimen(input, degree);
         specimen.run();
-        return 0;
+        return;
       }
     LinearSpecimen::check(input);
     LinearSpecimen specimen(input, degree);
     specimen.run();
-    return 0;
   }
 
 
