@@ -258,7 +258,7 @@ namespace impact_fem
         // the entries' patterns) before anything is written.
         try
           {
-            const Parameters checked(prm);
+            const Parameters checked(prm, ImpactProblem::expected_contact);
           }
         catch (const ExceptionBase &error)
           {

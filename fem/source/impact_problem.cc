@@ -31,26 +31,37 @@ namespace impact_fem
   ImpactProblem::declare_parameters(ParameterHandler &prm)
   {
     SpherePlateSetup::declare_parameters(prm);
+    postprocess::declare_parameters(prm);
+  }
+
+
+  discretisation::ExpectedContact
+  ImpactProblem::expected_contact(const Parameters &parameters)
+  {
+    std::vector<discretisation::ExpectedContact::YieldingBody> bodies;
+    for (const unsigned int body : {sphere, plate})
+      if (parameters.material[body] && parameters.material_used[body].model ==
+                                         result_files::elastic_plastic_model)
+        bodies.push_back({body_name(body),
+                          parameters.material_used[body].yield_strength,
+                          parameters.material[body]->poissons_ratio()});
+    return discretisation::ExpectedContact::of_impact(parameters.hertz, bodies);
   }
 
 
   ImpactProblem::ImpactProblem(ParameterHandler &prm,
                                const MPI_Comm    comm,
                                std::ostream     &log)
-    : ImpactProblem(prm, comm, log, true)
+    : ImpactProblem(prm, comm, log, Loading{&expected_contact, false, {}}, true)
   {}
 
 
   ImpactProblem::ImpactProblem(ParameterHandler &prm,
                                const MPI_Comm    comm,
                                std::ostream     &log,
+                               const Loading    &loading,
                                const bool        impact)
-    : SpherePlateSetup(prm,
-                       comm,
-                       log,
-                       [](const Parameters &parameters) {
-                         return parameters.expected_contact;
-                       })
+    : SpherePlateSetup(prm, comm, log, loading)
     , time_stepper(time_integration::create_time_stepper(prm))
     , postprocessors(postprocess::create_postprocessors(prm))
   {
@@ -62,9 +73,15 @@ namespace impact_fem
          parameters.steps_per_contact_time_automatic,
          discretisation::AutomaticDiscretisation::steps_rule()});
     describe_bodies();
-    const HertzImpact &hertz = parameters.hertz;
     if (impact)
-      check_contact_surface(hertz.contact_radius_max());
+      check_contact_surface(parameters.hertz.contact_radius_max());
+  }
+
+
+  void
+  ImpactProblem::describe_run() const
+  {
+    const HertzImpact &hertz = parameters.hertz;
     pcout << "impact-fem: sphere R = "
           << parameters.geometry.sphere_radius * 1e3
           << " mm, m = " << parameters.sphere_mass
@@ -73,10 +90,23 @@ namespace impact_fem
           << hertz.force_max() / 1e3 << " kN, contact radius "
           << hertz.contact_radius_max() * 1e3 << " mm, contact time "
           << hertz.contact_time() * 1e6 << " us\n"
-          << "  time step "
-          << parameters.time_step(time_stepper->mass_weight()) * 1e9 << " ns ("
-          << parameters.scheme << ") on "
-          << Utilities::MPI::n_mpi_processes(comm) << " rank(s)" << std::endl;
+          << "  time step " << time_step() * 1e9 << " ns (" << parameters.scheme
+          << ") on " << Utilities::MPI::n_mpi_processes(mpi_communicator)
+          << " rank(s)" << std::endl;
+  }
+
+
+  double
+  ImpactProblem::time_step() const
+  {
+    return parameters.time_step();
+  }
+
+
+  double
+  ImpactProblem::hard_end_time(const double) const
+  {
+    return parameters.end_time();
   }
 
 
@@ -138,7 +168,7 @@ namespace impact_fem
   ImpactProblem::factorize_effective_stiffness()
   {
     TimerOutput::Scope t(*computing_timer, "factorize");
-    const double       dt = parameters.time_step(time_stepper->mass_weight());
+    const double       dt = time_step();
     effective_stiffness.copy_from(system.stiffness);
     effective_stiffness.add(time_stepper->mass_weight() / (dt * dt),
                             system.mass);
@@ -332,9 +362,9 @@ namespace impact_fem
     first_contact_speed = motion.speed;
     v0.equ(-first_contact_speed, sphere_vertical);
     a0.equ(motion.acceleration, sphere_vertical);
-    const double dt = parameters.time_step(time_stepper->mass_weight());
+    const double dt = time_step();
     time_stepper->initialize(u0, v0, a0, t0, dt);
-    end_time = parameters.end_time(dt);
+    end_time = hard_end_time(dt);
 
     // The bodies start unstrained (the flight is rigid) with relaxed arms.
     initialize_internal_variables();
@@ -542,8 +572,9 @@ namespace impact_fem
     // Installed before anything else: a signal during the setup is kept
     // and stops the run at the first step, leaving history.incomplete.h5.
     const InterruptHandler interrupt_handler;
+    describe_run();
     start_run();
-    const double dt = parameters.time_step(time_stepper->mass_weight());
+    const double dt = time_step();
     make_mesh();
     setup_system();
     setup_dynamic_state();
@@ -558,14 +589,7 @@ namespace impact_fem
                     result_files::time_unit,
                     "simulated time");
     if (arms.nonlinear())
-      history.declare(
-        {{result_files::newton_iterations_dataset,
-          "1",
-          "iterations of the step's nonlinear solve (Nonlinear solver)"},
-         {result_files::newton_residual_dataset,
-          "1",
-          "out-of-balance force of the accepted iterate / (||B^T lambda|| + "
-          "||f_body||)"}});
+      declare_iteration_history("||f_body||");
     for (auto &[name, postprocessor] : postprocessors)
       postprocessor->initialize(*this, history);
     postprocess_step();

@@ -1,10 +1,7 @@
-#include <impact_fem/analysis/interface.h>
-#include <impact_fem/contact/mortar_contact.h>
-#include <impact_fem/materials/body_material.h>
 #include <impact_fem/discretisation/automatic_discretisation.h>
+#include <impact_fem/materials/body_material.h>
 #include <impact_fem/parameters.h>
 #include <impact_fem/result_files.h>
-#include <impact_fem/postprocess/interface.h>
 #include <impact_fem/time_integration/interface.h>
 
 #include <cmath>
@@ -42,17 +39,9 @@ namespace impact_fem
       const auto unit    = [](const contract::Parameter &parameter) {
         return std::string(" [") + parameter.unit + "]";
       };
+      // Scenario/Analysis and the entries of each analysis are the
+      // analyses' own (analysis/interface.h).
       prm.enter_subsection(contract::scenario_subsection);
-      // The analyses registered (analysis/interface.h), in their order.
-      prm.declare_entry("Analysis",
-                        "impact",
-                        Patterns::Selection(analysis::selection()),
-                        analysis::descriptions());
-      prm.declare_entry("Static force",
-                        "1000",
-                        Patterns::Double(),
-                        "Resultant of the body force pressing the sphere in "
-                        "the 'static press' analysis [N], > 0.");
       prm.declare_entry(contract::impact_velocity.entry,
                         "1",
                         Patterns::Double(),
@@ -184,20 +173,20 @@ namespace impact_fem
                       "summary.json, mesh, snapshots); created if needed.");
     prm.leave_subsection();
 
-    SpherePlateMesh::declare_parameters(prm);
-    MortarContact::declare_parameters(prm);
+    // Time integration/Scheme is read here (the log and the summary name
+    // it).
     time_integration::declare_parameters(prm);
-    postprocess::declare_parameters(prm);
   }
 
 
-  Parameters::Parameters(ParameterHandler &prm)
+  Parameters::Parameters(ParameterHandler        &prm,
+                         const ExpectedContactOf &expected)
   {
     read_scenario(prm);
     check_scenario();
     read_bodies(prm);
     read_run_control(prm);
-    derive_estimates(prm);
+    derive_estimates(prm, expected);
   }
 
 
@@ -207,9 +196,6 @@ namespace impact_fem
   {
     namespace contract = result_files;
     prm.enter_subsection(contract::scenario_subsection);
-    static_press             = prm.get("Analysis") == "static press";
-    indentation              = prm.get("Analysis") == "indentation";
-    static_force             = prm.get_double("Static force");
     impact_velocity          = prm.get_double(contract::impact_velocity.entry);
     geometry.initial_gap     = prm.get_double(contract::initial_gap.entry);
     geometry.sphere_radius   = prm.get_double(contract::sphere_radius.entry);
@@ -271,9 +257,6 @@ namespace impact_fem
     AssertThrow(gravity >= 0,
                 ExcMessage("Scenario/Gravity must not be negative, got " +
                            text(gravity) + " m/s^2."));
-    AssertThrow(!static_press || static_force > 0,
-                ExcMessage("Scenario/Static force must be positive, got " +
-                           text(static_force) + " N."));
     AssertThrow(plate_faces.bottom != FaceCondition::support ||
                   plate_faces.support_stiffness > 0,
                 ExcMessage("Scenario/Support stiffness must be positive for "
@@ -282,8 +265,7 @@ namespace impact_fem
   }
 
 
-  // Sphere and Plate: the materials, a rigid plate and what each analysis
-  // allows.
+  // Sphere and Plate: the materials and a rigid plate.
   void
   Parameters::read_bodies(ParameterHandler &prm)
   {
@@ -318,7 +300,6 @@ namespace impact_fem
                            text(1000 * geometry.sphere_radius) + " m), got " +
                            text(geometry.plate_radius) + " m and " +
                            text(geometry.plate_thickness) + " m."));
-    geometry.hemisphere = indentation;
     if (rigid_plate)
       {
         // A rigid plate has no faces and no stresses: entries that describe
@@ -344,29 +325,6 @@ namespace impact_fem
                "Scenario/Support stiffness",
                text(plate_faces.support_stiffness));
       }
-    AssertThrow(!(static_press || indentation) || rigid_plate ||
-                  plate_faces.side == FaceCondition::clamped ||
-                  plate_faces.bottom == FaceCondition::clamped ||
-                  plate_faces.bottom == FaceCondition::support,
-                ExcMessage("The 'static press' and 'indentation' analyses "
-                           "need a rigid plate or a plate held "
-                           "against the load: Scenario/Plate bottom = clamped "
-                           "or support, or Plate side = clamped (dashpots and "
-                           "free faces carry no static load)."));
-
-    // Elastic-plastic bodies are rate-independent in a quasi-static
-    // analysis (the plastic strain rate is zero, so Johnson-Cook's rate
-    // factor is 1); their Kelvin-Voigt retardation time is not.
-    bool linear_memory = false;
-    for (const auto &m : material)
-      linear_memory =
-        linear_memory || (m && m->is_linear() && m->n_internal_variables() > 0);
-    AssertThrow(!indentation || (!has_material_damping() && !linear_memory),
-                ExcMessage("The 'indentation' analysis is quasi-static and "
-                           "rate-independent: Sphere and Plate must be "
-                           "elastic or elastic-plastic with Elastic-plastic/"
-                           "Retardation time = 0 (Kelvin-Voigt and Maxwell "
-                           "materials need a loading rate)."));
   }
 
 
@@ -407,11 +365,11 @@ namespace impact_fem
   // The sphere's mass, the Hertz estimates and the contact the sizes and
   // the step left "auto" are made for.
   void
-  Parameters::derive_estimates(ParameterHandler &prm)
+  Parameters::derive_estimates(ParameterHandler        &prm,
+                               const ExpectedContactOf &expected)
   {
-    namespace contract = result_files;
-    const double R     = geometry.sphere_radius;
-    sphere_mass = material[sphere]->density() * 4. / 3. * M_PI * R * R * R;
+    const double R = geometry.sphere_radius;
+    sphere_mass    = material[sphere]->density() * 4. / 3. * M_PI * R * R * R;
     // A rigid plate has no compliance (an infinite modulus): E* is the
     // sphere's E/(1 - nu^2).
     const materials::Interface *plate_material = material[plate].get();
@@ -426,21 +384,7 @@ namespace impact_fem
                   sphere_mass,
                   impact_velocity};
     // What the contact will be, for the sizes and the step left "auto".
-    if (static_press)
-      expected_contact =
-        discretisation::ExpectedContact::of_static_force(hertz, static_force);
-    else if (!indentation)
-      {
-        std::vector<discretisation::ExpectedContact::YieldingBody> bodies;
-        for (const unsigned int body : {sphere, plate})
-          if (material[body] &&
-              material_used[body].model == contract::elastic_plastic_model)
-            bodies.push_back({body_name(body),
-                              material_used[body].yield_strength,
-                              material[body]->poissons_ratio()});
-        expected_contact =
-          discretisation::ExpectedContact::of_impact(hertz, bodies);
-      }
+    expected_contact = expected(*this);
     {
       prm.enter_subsection("Time integration");
       const double automatic_steps =
@@ -479,21 +423,8 @@ namespace impact_fem
 
 
   double
-  Parameters::time_step(const double mass_weight) const
+  Parameters::time_step() const
   {
-    if (static_press)
-      {
-        // One step of length dt from rest is the static problem with every
-        // degree of freedom tied to the ground by a spring of stiffness
-        // mass_weight / dt^2 times its mass: chosen soft (a rigid-sphere
-        // compliance 1000 times the contact's) they only regularise the free
-        // sphere's rigid motion, and the contact force is measured anyway.
-        const double contact_compliance =
-          std::pow(hertz.stiffness() * hertz.stiffness() * static_force,
-                   -1. / 3.) /
-          1.5;
-        return std::sqrt(1e3 * contact_compliance * sphere_mass * mass_weight);
-      }
     return prescribed_time_step > 0 ?
              prescribed_time_step :
              hertz.contact_time() / steps_per_contact_time;
@@ -501,10 +432,8 @@ namespace impact_fem
 
 
   double
-  Parameters::end_time(const double time_step) const
+  Parameters::end_time() const
   {
-    if (static_press)
-      return time_step;
     return maximum_time > 0 ?
              maximum_time :
              geometry.initial_gap / impact_velocity + 3 * hertz.contact_time();

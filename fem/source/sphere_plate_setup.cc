@@ -230,26 +230,33 @@ namespace impact_fem
   SpherePlateSetup::declare_parameters(ParameterHandler &prm)
   {
     Parameters::declare_parameters(prm);
+    SpherePlateMesh::declare_parameters(prm);
+    MortarContact::declare_parameters(prm);
     time_integration::NonlinearStep::declare_parameters(prm);
   }
 
 
-  SpherePlateSetup::SpherePlateSetup(ParameterHandler        &prm,
-                                     const MPI_Comm           comm,
-                                     std::ostream            &log,
-                                     const ExpectedContactOf &expected_of)
+  SpherePlateSetup::SpherePlateSetup(ParameterHandler &prm,
+                                     const MPI_Comm    comm,
+                                     std::ostream     &log,
+                                     const Loading    &loading)
     : mpi_communicator(comm)
     , pcout(log, Utilities::MPI::this_mpi_process(comm) == 0)
     , log_is_terminal(is_interactive(log))
     , prm(prm)
-    , parameters(prm)
+    , parameters(prm, loading.expected_contact)
     , triangulation(comm, Triangulation<2>::limit_level_difference_at_vertices)
     , dof_handler(triangulation)
     , solver_control(1, 0)
   {
+    if (loading.check)
+      loading.check(parameters);
     // The contact the sizes left "auto" are made for.
-    const discretisation::ExpectedContact expected = expected_of(parameters);
-    mesh.parse_parameters(prm, parameters.geometry, [&]() {
+    const discretisation::ExpectedContact &expected =
+      parameters.expected_contact;
+    Geometry meshed   = parameters.geometry;
+    meshed.hemisphere = loading.hemisphere;
+    mesh.parse_parameters(prm, meshed, [&]() {
       return discretisation::AutomaticDiscretisation(
         expected,
         parameters.geometry.sphere_radius,
@@ -274,6 +281,36 @@ namespace impact_fem
                                        Rule::contact_surface_rule()}};
     contact.parse_parameters(prm);
     nonlinear_step.parse_parameters(prm);
+  }
+
+
+  void
+  SpherePlateSetup::declare_iteration_history(const std::string &other_load)
+  {
+    history.declare(
+      {{result_files::newton_iterations_dataset,
+        "1",
+        "iterations of the step's nonlinear solve (Nonlinear solver)"},
+       {result_files::newton_residual_dataset,
+        "1",
+        "out-of-balance force of the accepted iterate / (||B^T lambda|| + " +
+          other_load + ")"}});
+  }
+
+
+  void
+  SpherePlateSetup::require_plate_held(const Parameters &parameters)
+  {
+    const PlateFaces &faces = parameters.plate_faces;
+    AssertThrow(parameters.rigid_plate ||
+                  faces.side == FaceCondition::clamped ||
+                  faces.bottom == FaceCondition::clamped ||
+                  faces.bottom == FaceCondition::support,
+                ExcMessage("The 'static press' and 'indentation' analyses "
+                           "need a rigid plate or a plate held "
+                           "against the load: Scenario/Plate bottom = clamped "
+                           "or support, or Plate side = clamped (dashpots and "
+                           "free faces carry no static load)."));
   }
 
 

@@ -39,6 +39,11 @@ namespace impact_fem
     static void
     declare_parameters(ParameterHandler &prm);
 
+    /// The contact an impact expects (Parameters::ExpectedContactOf):
+    /// Hertz's, or Jackson-Green's if a body can yield.
+    static discretisation::ExpectedContact
+    expected_contact(const Parameters &parameters);
+
     /// Progress and results go to `log` on the first rank of `comm`.
     ImpactProblem(ParameterHandler &prm,
                   const MPI_Comm    comm,
@@ -79,13 +84,22 @@ namespace impact_fem
       double displacement = 0, speed = 0, acceleration = 0, t0 = 0;
     };
 
-    /// For the analyses on this time loop: @p impact false leaves out
-    /// what only a sphere flying at the plate has (the step from the
-    /// contact time, the expected contact radius).
+    /// For the analyses on this time loop, under their @p loading:
+    /// @p impact false leaves out what only a sphere flying at the plate
+    /// has (the step from the contact time, the expected contact radius).
     ImpactProblem(ParameterHandler &prm,
                   const MPI_Comm    comm,
                   std::ostream     &log,
+                  const Loading    &loading,
                   const bool        impact);
+
+    /// The time step [s] (Parameters::time_step()); time_stepper is made.
+    virtual double
+    time_step() const;
+    /// Hard end of the run [s] for the step @p dt (before the end after
+    /// separation; Parameters::end_time()).
+    virtual double
+    hard_end_time(const double dt) const;
 
     /// The sphere's motion when the run starts: at the first contact,
     /// having flown across the initial gap.
@@ -106,6 +120,9 @@ namespace impact_fem
     warn_if_not_separated() const;
 
   private:
+    /// The sphere, the Hertz estimates and the step, on the log.
+    void
+    describe_run() const;
     void
     setup_dynamic_state();
     void

@@ -9,6 +9,7 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <functional>
 #include <memory>
 #include <string>
 
@@ -63,39 +64,41 @@ namespace impact_fem
 
 
   /**
-   * The scenario of an impact run, read and checked in one place: analysis,
+   * The scenario of a run of the two bodies, read and checked in one place:
    * geometry, materials and yield strengths of both bodies, time control,
    * solver and output directory, and the Hertz estimates derived from them.
+   * Which analysis runs is not its concern: an analysis declares and checks
+   * its own entries and gives the contact it expects (ExpectedContactOf).
    * The components (mesh, contact, time stepper, postprocessors) declare and
-   * read their own entries; declare_parameters() declares them all.
+   * read their own entries.
    */
   struct Parameters
   {
-    /// Every entry of an impact run (of this struct and of the components).
+    /// The entries of this struct (Scenario, Sphere, Plate, Time
+    /// integration, Solver, Output) and of the materials and time steppers
+    /// it reads.
     static void
     declare_parameters(ParameterHandler &prm);
 
+    /// The contact the mesh and the step left "auto" are sized for, given
+    /// by the analysis from the scenario read so far (the Hertz estimates);
+    /// it may read and check the analysis's own entries.
+    using ExpectedContactOf =
+      std::function<discretisation::ExpectedContact(const Parameters &)>;
+
     /// Read and check; an ExcMessage names the entry and its allowed range.
-    explicit Parameters(ParameterHandler &prm);
+    Parameters(ParameterHandler &prm, const ExpectedContactOf &expected);
 
-    /**
-     * The time step for a scheme whose effective mass coefficient is
-     * mass_weight / dt^2 [s]: Hertz contact time / Steps per contact time,
-     * or the prescribed Time step; for the static press the step that ties
-     * the free sphere to the ground by soft springs (see the .cc).
-     */
+    /// The time step of an impact [s]: the prescribed Time step, or Hertz
+    /// contact time / Steps per contact time.
     double
-    time_step(const double mass_weight) const;
+    time_step() const;
 
-    /// Hard end of the run [s] (before the end after separation).
+    /// Hard end of an impact [s] (before the end after separation).
     double
-    end_time(const double time_step) const;
+    end_time() const;
 
     // Scenario
-    bool static_press = false; ///< quasi-static press, no impact
-    bool indentation =
-      false; ///< quasi-static displacement-controlled indentation
-    double     static_force    = 0; ///< [N]
     double     impact_velocity = 0; ///< [m/s]
     double     gravity         = 0; ///< on the sphere [m/s^2]
     Geometry   geometry;
@@ -128,9 +131,8 @@ namespace impact_fem
     // Derived
     double      sphere_mass = 0; ///< [kg]
     HertzImpact hertz;           ///< estimates: step, run length, contact zone
-    /// The contact the mesh and the step are sized for (an impact: Hertz,
-    /// or Jackson-Green if a body can yield; the static press: Hertz under
-    /// the static force; the indentation: set by its analysis).
+    /// The contact the mesh and the step are sized for, as the analysis
+    /// expects it (ExpectedContactOf).
     discretisation::ExpectedContact expected_contact;
 
     /// Any viscous (Kelvin-Voigt) body, any body with internal variables.
@@ -150,7 +152,7 @@ namespace impact_fem
     void
     read_run_control(ParameterHandler &prm);
     void
-    derive_estimates(ParameterHandler &prm);
+    derive_estimates(ParameterHandler &prm, const ExpectedContactOf &expected);
   };
 } // namespace impact_fem
 

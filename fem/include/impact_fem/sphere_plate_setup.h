@@ -179,17 +179,33 @@ namespace impact_fem
     }
 
   protected:
-    /// The contact the sizes left "auto" are made for, from the parameters.
-    using ExpectedContactOf =
-      std::function<discretisation::ExpectedContact(const Parameters &)>;
+    /**
+     * What the analysis puts the bodies through, as far as the setup needs
+     * it before the mesh is made (Parameters knows no analysis).
+     */
+    struct Loading
+    {
+      /// The contact the sizes and the step left "auto" are made for.
+      Parameters::ExpectedContactOf expected_contact;
+      /// Only the sphere's lower hemisphere is meshed, its base a boundary.
+      bool hemisphere = false;
+      /// The analysis's own checks of the scenario (an ExcMessage names
+      /// the entry), before the mesh is read.
+      std::function<void(const Parameters &)> check;
+    };
 
-    /// Reads the bodies, the mesh (sized for the contact @p expected gives),
-    /// the contact and the nonlinear solver; progress and results go to
-    /// `log` on the first rank of `comm`.
-    SpherePlateSetup(ParameterHandler        &prm,
-                     const MPI_Comm           comm,
-                     std::ostream            &log,
-                     const ExpectedContactOf &expected);
+    /// Reads the bodies, the mesh (sized for the contact @p loading
+    /// expects), the contact and the nonlinear solver; progress and results
+    /// go to `log` on the first rank of `comm`.
+    SpherePlateSetup(ParameterHandler &prm,
+                     const MPI_Comm    comm,
+                     std::ostream     &log,
+                     const Loading    &loading);
+
+    /// Refuses a plate that nothing holds against a static load (the
+    /// analyses without inertia: static press, indentation).
+    static void
+    require_plate_held(const Parameters &parameters);
 
     /// Catches SIGINT and SIGTERM while it lives (interrupt_received()),
     /// restores the old handlers after. A signal once received stays
@@ -236,6 +252,11 @@ namespace impact_fem
     /// u = K_eff^{-1} rhs with the contact response (one solve, one LCP).
     void
     solve_linear_step(const VectorType &rhs, VectorType &displacement);
+    /// The history's columns of the nonlinear steps of plastic bodies: the
+    /// iterations and the residual, relative to ||B^T lambda|| +
+    /// @p other_load (the load that stays when the contact opens).
+    void
+    declare_iteration_history(const std::string &other_load);
     /// The parameters flattened to "Section/Entry" -> value, with the
     /// constants and sizes the run used.
     std::map<std::string, std::string>

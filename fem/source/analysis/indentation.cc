@@ -25,6 +25,25 @@ namespace impact_fem
     // (Johnson-Cook's rate factor is 1) and no viscous stress arises.
     constexpr double quasi_static_time_step =
       std::numeric_limits<double>::infinity();
+
+
+    // Elastic-plastic bodies are rate-independent in a quasi-static
+    // analysis (the plastic strain rate is zero, so Johnson-Cook's rate
+    // factor is 1); their Kelvin-Voigt retardation time is not.
+    void
+    require_rate_independent(const Parameters &parameters)
+    {
+      bool linear_memory = false;
+      for (const auto &m : parameters.material)
+        linear_memory = linear_memory ||
+                        (m && m->is_linear() && m->n_internal_variables() > 0);
+      AssertThrow(!parameters.has_material_damping() && !linear_memory,
+                  ExcMessage("The 'indentation' analysis is quasi-static and "
+                             "rate-independent: Sphere and Plate must be "
+                             "elastic or elastic-plastic with Elastic-plastic/"
+                             "Retardation time = 0 (Kelvin-Voigt and Maxwell "
+                             "materials need a loading rate)."));
+    }
   } // namespace
 
 
@@ -150,13 +169,23 @@ namespace impact_fem
   IndentationProblem::IndentationProblem(ParameterHandler &prm,
                                          const MPI_Comm    comm,
                                          std::ostream     &log)
-    : SpherePlateSetup(prm, comm, log, [&prm](const Parameters &parameters) {
-      // The mesh is made for the contact at the maximum approach.
-      IndentationControl control;
-      control.parse_parameters(prm);
-      return discretisation::ExpectedContact::of_indentation(
-        parameters.hertz, control.maximum_approach);
-    })
+    : SpherePlateSetup(
+        prm,
+        comm,
+        log,
+        Loading{[&prm](const Parameters &parameters) {
+                  // The mesh is made for the contact at the maximum
+                  // approach.
+                  IndentationControl control;
+                  control.parse_parameters(prm);
+                  return discretisation::ExpectedContact::of_indentation(
+                    parameters.hertz, control.maximum_approach);
+                },
+                true,
+                [](const Parameters &parameters) {
+                  require_plate_held(parameters);
+                  require_rate_independent(parameters);
+                }})
   {
     indentation_control.parse_parameters(prm);
     describe_bodies();
@@ -186,7 +215,7 @@ namespace impact_fem
     setup_system();
     // The step only enters the internal tangent, which the quasi-static
     // steps do not use.
-    assemble_system(parameters.time_step(1.));
+    assemble_system(parameters.time_step());
     setup_indentation();
     setup_contact();
 
@@ -364,18 +393,15 @@ namespace impact_fem
                         "radius of the contact nodes",
                         contact.node_radii());
     if (plastic)
-      history.declare(
-        {{result_files::newton_iterations_dataset,
-          "1",
-          "iterations of the step's nonlinear solve (Nonlinear solver)"},
-         {result_files::newton_residual_dataset,
-          "1",
-          "out-of-balance force of the accepted iterate / (||B^T lambda|| + "
-          "||f_p,n||)"},
-         {"max_accumulated_plastic_strain",
-          "1",
-          "largest accumulated plastic strain of both bodies"},
-         {"plastic_work", "J", "cumulative plastic work int sigma : d eps^p"}});
+      {
+        declare_iteration_history("||f_p,n||");
+        history.declare({{"max_accumulated_plastic_strain",
+                          "1",
+                          "largest accumulated plastic strain of both bodies"},
+                         {"plastic_work",
+                          "J",
+                          "cumulative plastic work int sigma : d eps^p"}});
+      }
   }
 
 

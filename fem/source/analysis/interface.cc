@@ -1,5 +1,6 @@
 #include <impact_fem/analysis/interface.h>
 #include <impact_fem/campaign.h>
+#include <impact_fem/result_files.h>
 #include <impact_fem/verification/verification.h>
 
 #include <deal.II/base/exceptions.h>
@@ -80,6 +81,13 @@ namespace impact_fem::analysis
   void
   declare_parameters(ParameterHandler &prm)
   {
+    // The analyses registered, in their order.
+    prm.enter_subsection(result_files::scenario_subsection);
+    prm.declare_entry("Analysis",
+                      "impact",
+                      Patterns::Selection(selection()),
+                      descriptions());
+    prm.leave_subsection();
     for (const auto &kind : all())
       kind.declare_parameters(prm);
   }

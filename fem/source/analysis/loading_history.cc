@@ -5,6 +5,7 @@
 #include <impact_fem/materials/body_material.h>
 
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 
 #include <algorithm>
@@ -122,6 +123,25 @@ namespace impact_fem
           history.append(prefix + "thetatheta", (*tensors[k])[2][2]);
           history.append(prefix + "rz", (*tensors[k])[0][1]);
         }
+    }
+
+
+    void
+    SerialAnalysis::parse_parameters(ParameterHandler &prm,
+                                     const analysis::Invocation &,
+                                     const MPI_Comm comm)
+    {
+      if (Utilities::MPI::this_mpi_process(comm) == 0)
+        parameters = &prm;
+    }
+
+
+    int
+    SerialAnalysis::run()
+    {
+      if (parameters != nullptr)
+        run_on_first_rank(*parameters);
+      return 0;
     }
   } // namespace loading_history
 } // namespace impact_fem

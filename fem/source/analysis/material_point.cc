@@ -80,16 +80,6 @@ namespace impact_fem
   }
 
 
-  void
-  MaterialPointTest::parse_parameters(ParameterHandler &prm,
-                                      const analysis::Invocation &,
-                                      const MPI_Comm comm)
-  {
-    if (Utilities::MPI::this_mpi_process(comm) == 0)
-      parameters = &prm;
-  }
-
-
   namespace
   {
     /**
@@ -344,15 +334,12 @@ namespace impact_fem
   } // namespace
 
 
-  int
-  MaterialPointTest::run()
+  void
+  MaterialPointTest::run_on_first_rank(ParameterHandler &prm)
   {
-    if (parameters == nullptr)
-      return 0;
-    MaterialPointRun   point(*parameters);
+    MaterialPointRun   point(prm);
     const unsigned int n_steps = point.run();
     point.write(n_steps);
-    return 0;
   }
 
 

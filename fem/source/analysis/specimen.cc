@@ -199,6 +199,114 @@ namespace impact_fem
     };
 
 
+    // What the two specimens share: the loading, the mesh and its cell
+    // values, the prescribed strain histories, the history of the means and
+    // its file.
+    class Specimen
+    {
+    protected:
+      Specimen(const Loading &input, const unsigned int degree)
+        : input(input)
+        , material(*input.material)
+        , strain_hat(input.strain_hat)
+        , dt(input.dt)
+        , mesh(degree)
+        , fe_values(mesh.fe,
+                    mesh.quadrature,
+                    update_values | update_gradients |
+                      update_quadrature_points | update_JxW_values)
+        , u(0)
+        , dofs_per_cell(mesh.fe.n_dofs_per_cell())
+      {}
+
+      // Every quadrature point unstrained, its internal variables relaxed.
+      template <typename PointState>
+      void
+      initialize_states(CellDataStorage<Triangulation<2>::cell_iterator,
+                                        PointState> &states) const
+      {
+        for (const auto &cell : mesh.triangulation.active_cell_iterators())
+          {
+            states.initialize(cell, mesh.quadrature.size());
+            for (const auto &state : states.get_data(cell))
+              state->internal.assign(material.n_internal_variables(),
+                                     SymmetricTensor<2, 3>());
+          }
+      }
+
+      // The strain history's homogeneous strain at time t on the whole
+      // boundary (homogeneous: its zero, for the corrections).
+      void
+      constrain_strain_history(const double               t,
+                               const bool                 homogeneous,
+                               AffineConstraints<double> &constraints) const
+      {
+        const double factor = homogeneous ? 0. : strain_factor(input, t);
+        constrain_homogeneous_strain(mesh.dof_handler,
+                                     factor * strain_hat[0],
+                                     factor * strain_hat[1],
+                                     constraints);
+      }
+
+      // The strain history's rate at t = 0 as the velocity.
+      void
+      interpolate_initial_strain_rate(Vector<double> &velocity) const
+      {
+        const double rate = strain_factor_rate(input, 0);
+        VectorTools::interpolate(mesh.dof_handler,
+                                 HomogeneousDisplacement(rate * strain_hat[0],
+                                                         rate * strain_hat[1]),
+                                 velocity);
+      }
+
+      // The mean strain and stress and the inhomogeneity.
+      void
+      declare_mean_history()
+      {
+        declare_components(history, "mean ", " over the quadrature points");
+        history.declare(
+          "inhomogeneity",
+          "1",
+          "largest deviation of a quadrature point's stress from the "
+          "mean, relative to the largest mean component");
+      }
+
+      unsigned int
+      n_steps() const
+      {
+        return static_cast<unsigned int>(std::lround(input.duration / dt));
+      }
+
+      // history.h5 and its line on the console: "specimen (<loading>
+      // <update>): ... steps of dt s<solves> -> ...".
+      void
+      write_results(const unsigned int steps,
+                    const std::string &update,
+                    const std::string &solves) const
+      {
+        const std::string &directory = input.directory;
+        const std::string &loading   = input.loading;
+        write_specimen_history(
+          history, directory, loading, dt, mesh.dof_handler);
+        std::cout << "specimen (" << loading << update
+                  << "): " << mesh.triangulation.n_active_cells() << " cells, "
+                  << mesh.dof_handler.n_dofs() << " dofs, " << steps
+                  << " steps of " << dt << " s" << solves << " -> " << directory
+                  << "/history.h5" << std::endl;
+      }
+
+      const Loading                   &input;
+      const materials::Interface      &material;
+      const std::vector<double>       &strain_hat;
+      const double                     dt;
+      SpecimenMesh                     mesh;
+      FEValues<2>                      fe_values;
+      const FEValuesExtractors::Vector u;
+      const unsigned int               dofs_per_cell;
+      History                          history;
+    };
+
+
     // The specimen with the general constitutive update (an elastic-plastic
     // material, or any material under the axial strain path): at each step
     // Newton iterations on the quasi-static equilibrium
@@ -210,7 +318,7 @@ namespace impact_fem
     // point follows the same path, so the mean stress is the material's
     // response to the mean strain and 'inhomogeneity' shows whether it
     // stayed homogeneous.
-    class GeneralSpecimen
+    class GeneralSpecimen : private Specimen
     {
     public:
       /// Refuses the loadings it cannot run, naming the entry.
@@ -249,16 +357,9 @@ namespace impact_fem
       unsigned int
       solve_step(const unsigned int step);
 
-      const Loading                   &input;
-      const materials::Interface      &material;
-      const std::vector<double>       &strain_hat;
-      const double                     dt;
-      const bool                       uniaxial;
-      SpecimenMesh                     mesh;
-      FEValues<2>                      fe_values;
-      const FEValuesExtractors::Vector u;
-      const unsigned int               dofs_per_cell, n_q;
-      const SymmetricTensor<4, 3>      D;
+      const bool                  uniaxial;
+      const unsigned int          n_q;
+      const SymmetricTensor<4, 3> D;
       CellDataStorage<Triangulation<2>::cell_iterator,
                       materials::QuadraturePointState>
                            states;
@@ -267,36 +368,19 @@ namespace impact_fem
         residual, internal_force, increment;
       std::vector<SymmetricTensor<2, 3>> strains, stresses;
       std::vector<double>                plastic_strains;
-      History                            history;
       double                             plastic_work = 0;
     };
 
 
     GeneralSpecimen::GeneralSpecimen(const Loading     &input,
                                      const unsigned int degree)
-      : input(input)
-      , material(*input.material)
-      , strain_hat(input.strain_hat)
-      , dt(input.dt)
+      : Specimen(input, degree)
       , uniaxial(input.loading == "axial strain path")
-      , mesh(degree)
-      , fe_values(mesh.fe,
-                  mesh.quadrature,
-                  update_values | update_gradients | update_quadrature_points |
-                    update_JxW_values)
-      , u(0)
-      , dofs_per_cell(mesh.fe.n_dofs_per_cell())
       , n_q(mesh.quadrature.size())
       , D(material.damping_tangent())
       , tangent_matrix(mesh.sparsity)
     {
-      for (const auto &cell : mesh.triangulation.active_cell_iterators())
-        {
-          states.initialize(cell, n_q);
-          for (const auto &state : states.get_data(cell))
-            state->internal.assign(material.n_internal_variables(),
-                                   SymmetricTensor<2, 3>());
-        }
+      initialize_states(states);
       const unsigned int n_dofs = mesh.dof_handler.n_dofs();
       for (auto *vector : {&displacement,
                            &velocity,
@@ -342,13 +426,7 @@ namespace impact_fem
             mesh.fe.component_mask(FEValuesExtractors::Scalar(1)));
         }
       else
-        {
-          const double factor = homogeneous ? 0. : strain_factor(input, t);
-          constrain_homogeneous_strain(mesh.dof_handler,
-                                       factor * strain_hat[0],
-                                       factor * strain_hat[1],
-                                       constraints);
-        }
+        constrain_strain_history(t, homogeneous, constraints);
       constraints.close();
       return constraints;
     }
@@ -437,12 +515,7 @@ namespace impact_fem
     void
     GeneralSpecimen::declare_history()
     {
-      declare_components(history, "mean ", " over the quadrature points");
-      history.declare(
-        "inhomogeneity",
-        "1",
-        "largest deviation of a quadrature point's stress from the "
-        "mean, relative to the largest mean component");
+      declare_mean_history();
       history.declare(
         {{"accumulated_plastic_strain",
           "1",
@@ -479,13 +552,7 @@ namespace impact_fem
                                    velocity);
         }
       else
-        {
-          const double rate = strain_factor_rate(input, 0);
-          VectorTools::interpolate(
-            mesh.dof_handler,
-            HomogeneousDisplacement(rate * strain_hat[0], rate * strain_hat[1]),
-            velocity);
-        }
+        interpolate_initial_strain_rate(velocity);
     }
 
 
@@ -543,22 +610,14 @@ namespace impact_fem
       set_initial_rate();
       assemble(make_constraints(0, true), false);
       record(0, 0);
-      const double       dt = input.dt;
-      const unsigned int n_steps =
-        static_cast<unsigned int>(std::lround(input.duration / dt));
-      unsigned int total_iterations = 0;
-      for (unsigned int step = 1; step <= n_steps; ++step)
+      const unsigned int steps            = n_steps();
+      unsigned int       total_iterations = 0;
+      for (unsigned int step = 1; step <= steps; ++step)
         total_iterations += solve_step(step);
-
-      const std::string &directory = input.directory;
-      const std::string &loading   = input.loading;
-      write_specimen_history(history, directory, loading, dt, mesh.dof_handler);
-      std::cout << "specimen (" << loading << ", general constitutive update): "
-                << mesh.triangulation.n_active_cells() << " cells, "
-                << mesh.dof_handler.n_dofs() << " dofs, " << n_steps
-                << " steps of " << dt << " s, " << total_iterations
-                << " Newton iterations -> " << directory << "/history.h5"
-                << std::endl;
+      write_results(steps,
+                    ", general constitutive update",
+                    ", " + std::to_string(total_iterations) +
+                      " Newton iterations");
     }
 
 
@@ -566,7 +625,7 @@ namespace impact_fem
     // K_eff u = rhs with the material's constant tangents, the Maxwell
     // arms' history as a right-hand side from the quadrature-point states,
     // updated after the step.
-    class LinearSpecimen
+    class LinearSpecimen : private Specimen
     {
     public:
       /// Refuses the loadings it cannot run, naming the entry.
@@ -601,23 +660,15 @@ namespace impact_fem
       void
       step(const double t);
 
-      const Loading                   &input;
-      const materials::Interface      &material;
-      const std::vector<double>       &strain_hat, &stress_hat;
-      const double                     dt;
-      const bool                       stress_controlled;
-      SpecimenMesh                     mesh;
-      const QGauss<1>                  face_rule;
-      FEValues<2>                      fe_values;
-      FEFaceValues<2>                  fe_face_values;
-      const FEValuesExtractors::Vector u;
-      const unsigned int               dofs_per_cell;
+      const std::vector<double> &stress_hat;
+      const bool                 stress_controlled;
+      const QGauss<1>            face_rule;
+      FEFaceValues<2>            fe_face_values;
       CellDataStorage<Triangulation<2>::cell_iterator, SpecimenPointState>
                                   states;
       const SymmetricTensor<4, 3> C, D, C_internal;
       SparseMatrix<double>        system_matrix, damping_matrix;
       Vector<double>              displacement, velocity, rhs;
-      History                     history;
       double                      dissipated = 0;
     };
 
@@ -648,24 +699,14 @@ namespace impact_fem
 
     LinearSpecimen::LinearSpecimen(const Loading     &input,
                                    const unsigned int degree)
-      : input(input)
-      , material(*input.material)
-      , strain_hat(input.strain_hat)
+      : Specimen(input, degree)
       , stress_hat(input.stress_hat)
-      , dt(input.dt)
       , stress_controlled(input.loading == "stress step")
-      , mesh(degree)
       , face_rule(face_quadrature(mesh.fe))
-      , fe_values(mesh.fe,
-                  mesh.quadrature,
-                  update_values | update_gradients | update_quadrature_points |
-                    update_JxW_values)
       , fe_face_values(mesh.fe,
                        face_rule,
                        update_values | update_quadrature_points |
                          update_JxW_values)
-      , u(0)
-      , dofs_per_cell(mesh.fe.n_dofs_per_cell())
       , C(material.stiffness_tangent())
       , D(material.damping_tangent())
       , C_internal(material.internal_tangent(dt))
@@ -675,13 +716,7 @@ namespace impact_fem
       , velocity(mesh.dof_handler.n_dofs())
       , rhs(mesh.dof_handler.n_dofs())
     {
-      for (const auto &cell : mesh.triangulation.active_cell_iterators())
-        {
-          states.initialize(cell, mesh.quadrature.size());
-          for (const auto &state : states.get_data(cell))
-            state->internal.assign(material.n_internal_variables(),
-                                   SymmetricTensor<2, 3>());
-        }
+      initialize_states(states);
     }
 
 
@@ -693,13 +728,7 @@ namespace impact_fem
       if (stress_controlled)
         constrain_rollers(mesh.dof_handler, mesh.fe, constraints);
       else
-        {
-          const double factor = homogeneous ? 0 : strain_factor(input, t);
-          constrain_homogeneous_strain(mesh.dof_handler,
-                                       factor * strain_hat[0],
-                                       factor * strain_hat[1],
-                                       constraints);
-        }
+        constrain_strain_history(t, homogeneous, constraints);
       constraints.close();
       return constraints;
     }
@@ -774,12 +803,7 @@ namespace impact_fem
     void
     LinearSpecimen::declare_history()
     {
-      declare_components(history, "mean ", " over the quadrature points");
-      history.declare(
-        "inhomogeneity",
-        "1",
-        "largest deviation of a quadrature point's stress from the "
-        "mean, relative to the largest mean component");
+      declare_mean_history();
       history.declare("internal_energy",
                       "J",
                       "energy stored in the Maxwell arms of the specimen");
@@ -852,13 +876,7 @@ namespace impact_fem
           constraints.distribute(velocity);
         }
       else
-        {
-          const double rate = strain_factor_rate(input, 0);
-          VectorTools::interpolate(
-            mesh.dof_handler,
-            HomogeneousDisplacement(rate * strain_hat[0], rate * strain_hat[1]),
-            velocity);
-        }
+        interpolate_initial_strain_rate(velocity);
     }
 
 
@@ -897,39 +915,17 @@ namespace impact_fem
       declare_history();
       set_initial_rate();
       evaluate_and_update(0, false);
-      const unsigned int n_steps =
-        static_cast<unsigned int>(std::lround(input.duration / dt));
-      for (unsigned int step_number = 1; step_number <= n_steps; ++step_number)
+      const unsigned int steps = n_steps();
+      for (unsigned int step_number = 1; step_number <= steps; ++step_number)
         step(step_number * dt);
-
-      const std::string &directory = input.directory;
-      const std::string &loading   = input.loading;
-      write_specimen_history(history, directory, loading, dt, mesh.dof_handler);
-      std::cout << "specimen (" << loading
-                << "): " << mesh.triangulation.n_active_cells() << " cells, "
-                << mesh.dof_handler.n_dofs() << " dofs, " << n_steps
-                << " steps of " << dt << " s -> " << directory << "/history.h5"
-                << std::endl;
+      write_results(steps, "", "");
     }
   } // namespace
 
 
   void
-  SpecimenTest::parse_parameters(ParameterHandler &prm,
-                                 const analysis::Invocation &,
-                                 const MPI_Comm comm)
+  SpecimenTest::run_on_first_rank(ParameterHandler &prm)
   {
-    if (Utilities::MPI::this_mpi_process(comm) == 0)
-      parameters = &prm;
-  }
-
-
-  int
-  SpecimenTest::run()
-  {
-    if (parameters == nullptr)
-      return 0;
-    ParameterHandler  &prm        = *parameters;
     const Loading      input      = read_loading(prm);
     const auto        &material   = input.material;
     const std::string &loading    = input.loading;
@@ -952,12 +948,11 @@ namespace impact_fem
         GeneralSpecimen::check(input);
         GeneralSpecimen specimen(input, degree);
         specimen.run();
-        return 0;
+        return;
       }
     LinearSpecimen::check(input);
     LinearSpecimen specimen(input, degree);
     specimen.run();
-    return 0;
   }
 
 

@@ -149,7 +149,7 @@ namespace impact_fem
         fine.directory = prm.get("Directory");
         prm.leave_subsection();
 
-        const Parameters scenario(prm);
+        const Parameters scenario(prm, ImpactProblem::expected_contact);
         fine.hc   = fine_contact_element_size(prm, scenario);
         fine.hmax = get_number(prm, "Mesh", "Maximum element size");
         fine.g    = get_number(prm, "Mesh", "Growth factor");

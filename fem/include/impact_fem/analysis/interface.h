@@ -94,7 +94,8 @@ namespace impact_fem
     std::string
     descriptions();
 
-    /// Declare the entries every analysis reads beyond the shared ones.
+    /// Declare Scenario/Analysis (the registered names) and the entries
+    /// every analysis reads beyond the shared ones.
     void
     declare_parameters(ParameterHandler &prm);
 

@@ -1,6 +1,7 @@
 #ifndef IMPACT_FEM_ANALYSIS_LOADING_HISTORY_H
 #define IMPACT_FEM_ANALYSIS_LOADING_HISTORY_H
 
+#include <impact_fem/analysis/interface.h>
 #include <impact_fem/materials/interface.h>
 #include <impact_fem/output/history.h>
 
@@ -83,6 +84,33 @@ namespace impact_fem
                       double                       t,
                       const SymmetricTensor<2, 3> &strain,
                       const SymmetricTensor<2, 3> &stress);
+
+
+    /**
+     * An analysis of a prescribed history (material point, specimen):
+     * small and serial, it runs on the first rank alone; the other ranks
+     * return at once.
+     */
+    class SerialAnalysis : public analysis::Interface
+    {
+    public:
+      /// Keeps @p prm on the first rank.
+      void
+      parse_parameters(ParameterHandler           &prm,
+                       const analysis::Invocation &invocation,
+                       const MPI_Comm              comm) final;
+
+      int
+      run() final;
+
+    protected:
+      /// The run on the first rank, with the parameters as set.
+      virtual void
+      run_on_first_rank(ParameterHandler &prm) = 0;
+
+    private:
+      ParameterHandler *parameters = nullptr;
+    };
   } // namespace loading_history
 } // namespace impact_fem
 

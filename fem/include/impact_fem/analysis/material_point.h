@@ -1,7 +1,7 @@
 #ifndef IMPACT_FEM_ANALYSIS_MATERIAL_POINT_H
 #define IMPACT_FEM_ANALYSIS_MATERIAL_POINT_H
 
-#include <impact_fem/analysis/interface.h>
+#include <impact_fem/analysis/loading_history.h>
 
 #include <deal.II/base/parameter_handler.h>
 
@@ -24,23 +24,15 @@ namespace impact_fem
    * Writes `history.h5` (time, strain_* and stress_* in the (r, z, theta)
    * basis, internal_energy, dissipated_energy) to Output/Directory.
    */
-  class MaterialPointTest : public analysis::Interface
+  class MaterialPointTest : public loading_history::SerialAnalysis
   {
   public:
     static void
     declare_parameters(ParameterHandler &prm);
 
-    /// Keeps @p prm; the first rank alone runs the test.
-    void
-    parse_parameters(ParameterHandler           &prm,
-                     const analysis::Invocation &invocation,
-                     const MPI_Comm              comm) override;
-
-    int
-    run() override;
-
   private:
-    ParameterHandler *parameters = nullptr;
+    void
+    run_on_first_rank(ParameterHandler &prm) override;
   };
 } // namespace impact_fem
 

@@ -1,7 +1,7 @@
 #ifndef IMPACT_FEM_ANALYSIS_SPECIMEN_H
 #define IMPACT_FEM_ANALYSIS_SPECIMEN_H
 
-#include <impact_fem/analysis/interface.h>
+#include <impact_fem/analysis/loading_history.h>
 
 #include <deal.II/base/parameter_handler.h>
 
@@ -36,7 +36,7 @@ namespace impact_fem
    * of a quadrature point's stress from the mean, relative to the mean's
    * largest component).
    */
-  class SpecimenTest : public analysis::Interface
+  class SpecimenTest : public loading_history::SerialAnalysis
   {
   public:
     /// The entries are those of the material point (and Mesh/Polynomial
@@ -45,17 +45,9 @@ namespace impact_fem
     declare_parameters(ParameterHandler &)
     {}
 
-    /// Keeps @p prm; the first rank alone runs the test.
-    void
-    parse_parameters(ParameterHandler           &prm,
-                     const analysis::Invocation &invocation,
-                     const MPI_Comm              comm) override;
-
-    int
-    run() override;
-
   private:
-    ParameterHandler *parameters = nullptr;
+    void
+    run_on_first_rank(ParameterHandler &prm) override;
   };
 } // namespace impact_fem
 
