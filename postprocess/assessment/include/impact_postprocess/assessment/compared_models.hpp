@@ -13,6 +13,14 @@
 
 namespace impact::postprocess {
 
+/// One parameter value of a model, named as the calibration names it ("c", "b", "x_y") with
+/// its unit ("N/m^n", "s/m"; "1" for a pure number).
+struct ModelParameter {
+  std::string name;
+  double value;
+  std::string unit;
+};
+
 /// One reduced model at one run.
 struct ModelAtRun {
   std::optional<ImpactFigures> in_sample;     ///< fitted to all runs (or not fitted at all)
