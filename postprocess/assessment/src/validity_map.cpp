@@ -48,7 +48,7 @@ MapModelRow row_model(const Assessment& row, std::string_view key) {
                                                          : NoValueReason::no_model_on_row,
                              ""};
   } else if (key == model_keys::calibrated && !row.verdict_available && !row.cause.empty()) {
-    result.missing = NoValue{NoValueReason::not_judged, row.cause};
+    result.missing = NoValue{NoValueReason::no_verdict, row.cause};
   }
   if (model) {
     result.basis = model->basis;

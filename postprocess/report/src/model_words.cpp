@@ -88,7 +88,7 @@ std::string no_value_words(const std::optional<NoValue>& missing) {
       return "the row's calibration has no comparison law";
     case NoValueReason::no_model_on_row:
       return "the row's calibration has no such model";
-    case NoValueReason::not_judged:
+    case NoValueReason::no_verdict:
       return detail;
     case NoValueReason::no_run_at_value:
       return "no run at this value";

@@ -22,7 +22,7 @@ enum class NoValueReason {
   // A model on a row of the validity map.
   no_comparison_law_on_row, ///< the row's calibration has no comparison law
   no_model_on_row,          ///< the row's calibration has no such model
-  not_judged,               ///< the row has no verdict (detail: the row's cause)
+  no_verdict,               ///< the row has no verdict (detail: the row's cause)
   no_run_at_value,          ///< the campaign has no run at the row's value
   no_fem_result_on_row,     ///< no run of the row has an FEM result
   thickness_not_recorded,   ///< the runs do not record Scenario/Plate thickness
