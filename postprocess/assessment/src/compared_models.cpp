@@ -53,14 +53,13 @@ std::optional<std::size_t> matching(const std::vector<Entry>& list, const std::s
   return found;
 }
 
-std::string parameters_text(const std::vector<std::string>& names,
-                            const std::vector<std::string>& units,
-                            const std::vector<double>& values) {
-  std::string text;
+std::vector<ModelParameter> parameters_of(const std::vector<std::string>& names,
+                                          const std::vector<std::string>& units,
+                                          const std::vector<double>& values) {
+  std::vector<ModelParameter> parameters;
   for (std::size_t i = 0; i < names.size() && i < values.size(); ++i)
-    text += (i ? ", " : "") + names[i] + " = " + short_number(values[i]) +
-            (units[i] == "1" ? "" : " " + units[i]);
-  return text;
+    parameters.push_back({names[i], values[i], units[i]});
+  return parameters;
 }
 
 ImpactHistory history_of(const std::vector<reduced::ImpactSample>& samples) {
@@ -172,7 +171,7 @@ void add_histories(ReportModel& model, const ContactModel& law, const std::vecto
       at.residual = residual_of(at.history, runs[i]);
     } catch (const std::exception& error) {
       at.history = {};
-      if (at.missing.empty()) at.missing = std::string("no history: ") + error.what();
+      if (!at.missing) at.missing = NoValue{NoValueReason::no_history, error.what()};
     }
   }
 }
@@ -184,7 +183,7 @@ ContactModel model_named(const std::string& name, const std::vector<FemRun>& fem
 
 ReportModel fitted_model(const std::vector<ReportRun>& runs, const std::vector<FemRun>& fem_runs,
                          const CampaignModelFit& fit, std::string key, std::string label,
-                         std::string basis, double level) {
+                         ModelBasis basis, double level) {
   const ModelFit& parameters = fit.fit;
   std::vector<std::string> units{"N/m^n", "1", parameters.parameter_unit};
   for (const auto& extra : parameters.extra) units.push_back(extra.unit);
@@ -192,8 +191,8 @@ ReportModel fitted_model(const std::vector<ReportRun>& runs, const std::vector<F
   model.key = std::move(key);
   model.label = std::move(label);
   model.parameters =
-      parameters_text(parameters.parameter_names(), units, parameters.parameter_values());
-  model.basis = std::move(basis);
+      parameters_of(parameters.parameter_names(), units, parameters.parameter_values());
+  model.basis = basis;
   model.calibration_key = fit.key;
   model.free_parameters = parameters.free_parameters();
   model.converged = parameters.converged;
@@ -206,10 +205,10 @@ ReportModel fitted_model(const std::vector<ReportRun>& runs, const std::vector<F
       if (std::isfinite(in.restitution))
         at.in_sample = in;
       else
-        at.missing = "the calibration's prediction of " + fit.key + " is incomplete";
+        at.missing = NoValue{NoValueReason::prediction_incomplete, fit.key};
       if (residual.out_of_sample) at.out_of_sample = *residual.out_of_sample;
     } else {
-      at.missing = "the calibration has no prediction of " + fit.key + " for this run";
+      at.missing = NoValue{NoValueReason::no_prediction_for_run, fit.key};
     }
     model.runs.push_back(std::move(at));
   }
@@ -223,7 +222,7 @@ ReportModel fitted_model(const std::vector<ReportRun>& runs, const std::vector<F
     }
   } catch (const std::exception& error) {
     for (auto& at : model.runs)
-      if (at.missing.empty()) at.missing = std::string("no history: ") + error.what();
+      if (!at.missing) at.missing = NoValue{NoValueReason::no_history, error.what()};
   }
   return model;
 }
@@ -239,8 +238,8 @@ ReportModel reference_model(const std::vector<ReportRun>& runs, const std::vecto
       units{"N/m^n", "1", reference.parameter_unit};
   names.insert(names.end(), reference.extra_names.begin(), reference.extra_names.end());
   units.insert(units.end(), reference.extra_units.begin(), reference.extra_units.end());
-  model.parameters = parameters_text(names, units, values);
-  model.basis = reference.basis;
+  model.parameters = parameters_of(names, units, values);
+  model.basis = ModelBasis::nothing_fitted;
   model.calibration_key = reference.key;
   model.out_of_sample = true; // nothing fitted
   for (const auto& run : runs) {
@@ -250,9 +249,9 @@ ReportModel reference_model(const std::vector<ReportRun>& runs, const std::vecto
       if (std::isfinite(impact.restitution))
         at.in_sample = at.out_of_sample = impact;
       else
-        at.missing = "the model cannot be evaluated at this run";
+        at.missing = NoValue{NoValueReason::not_evaluable, ""};
     } else {
-      at.missing = "the calibration has no prediction of " + reference.key + " for this run";
+      at.missing = NoValue{NoValueReason::no_prediction_for_run, reference.key};
     }
     model.runs.push_back(std::move(at));
   }
@@ -263,21 +262,18 @@ ReportModel reference_model(const std::vector<ReportRun>& runs, const std::vecto
     if (!grid.empty()) model.curve = curve_of(law, median_mass(runs), grid, values);
   } catch (const std::exception& error) {
     for (auto& at : model.runs)
-      if (at.missing.empty()) at.missing = std::string("no history: ") + error.what();
+      if (!at.missing) at.missing = NoValue{NoValueReason::no_history, error.what()};
   }
   return model;
 }
 
 // Each run's own force-history fit, for a calibration without a campaign fit.
-ReportModel per_run_model(const std::vector<ReportRun>& runs, const Calibration& calibration,
-                          const std::string& reason) {
+// (The page says why there is no campaign fit: the calibration's reason.)
+ReportModel per_run_model(const std::vector<ReportRun>& runs, const Calibration& calibration) {
   ReportModel model;
   model.key = std::string(model_keys::calibrated);
   model.label = "Hunt–Crossley (per-run fit)";
-  model.parameters = "c, n, b of each run's force-history fit (table of runs)";
-  model.basis = "no campaign fit (" + reason +
-                "): each run is compared with its own "
-                "force-history fit, which says nothing about other velocities";
+  model.basis = ModelBasis::per_run_fits;
   model.free_parameters = 3;
   const ContactModel law = hunt_crossley_model();
   for (const auto& run : runs) {
@@ -285,7 +281,7 @@ ReportModel per_run_model(const std::vector<ReportRun>& runs, const Calibration&
     const auto index = matching(calibration.runs, run.source, run.velocity);
     const RunCalibration* entry = index ? &calibration.runs[*index] : nullptr;
     if (!entry || !entry->history) {
-      at.missing = "the calibration has no force-history fit of this run";
+      at.missing = NoValue{NoValueReason::no_run_fit, ""};
       model.runs.push_back(std::move(at));
       continue;
     }
@@ -293,7 +289,7 @@ ReportModel per_run_model(const std::vector<ReportRun>& runs, const Calibration&
     if (entry->history_prediction)
       at.in_sample = *entry->history_prediction;
     else
-      at.missing = "the calibration has no prediction of this run's fit";
+      at.missing = NoValue{NoValueReason::no_run_fit_prediction, ""};
     try {
       const ModelFit& fit = *entry->history;
       at.history =
@@ -301,7 +297,7 @@ ReportModel per_run_model(const std::vector<ReportRun>& runs, const Calibration&
                                      fit.exponent.value, fit.dissipation(), model_history_points));
       at.residual = residual_of(at.history, run);
     } catch (const std::exception& error) {
-      if (at.missing.empty()) at.missing = std::string("no history: ") + error.what();
+      if (!at.missing) at.missing = NoValue{NoValueReason::no_history, error.what()};
     }
     model.runs.push_back(std::move(at));
   }
@@ -320,16 +316,17 @@ std::optional<std::string> damped_label(const std::string& key) {
   return std::nullopt;
 }
 
+// A model without values: `why` is its basis and the reason at every run.
 ReportModel missing_model(const std::vector<ReportRun>& runs, std::string key, std::string label,
-                          const std::string& why) {
+                          NoValueReason why) {
   ReportModel model;
   model.key = std::move(key);
   model.label = std::move(label);
-  model.parameters = "n/a";
-  model.basis = why;
+  model.basis = why == NoValueReason::no_calibration ? ModelBasis::no_calibration
+                                                     : ModelBasis::no_comparison_law;
   for (std::size_t i = 0; i < runs.size(); ++i) {
     ModelAtRun at;
-    at.missing = why;
+    at.missing = NoValue{why, ""};
     model.runs.push_back(std::move(at));
   }
   return model;
@@ -370,16 +367,11 @@ ReportModel best_law_model(const std::vector<ReportRun>& runs, const std::vector
   if (best)
     return fitted_model(runs, fem_runs, *best, std::string(model_keys::best_law),
                         damped_label(best->key).value_or(best->key) + " (best law)",
-                        std::string(
-                            best_entry->out_of_sample
-                                ? "the comparison law ranked first by out-of-sample error"
-                                : "the comparison law ranked first among the fitted laws by its "
-                                  "in-sample error (fewer than three velocities: no out-of-sample "
-                                  "error; a fit ranks after every law that fits nothing)") +
-                            ", fitted to the force histories of all runs",
+                        best_entry->out_of_sample ? ModelBasis::best_law
+                                                  : ModelBasis::best_law_in_sample,
                         level);
   return missing_model(runs, std::string(model_keys::best_law), "best comparison law",
-                       "the calibration has no fitted comparison law");
+                       NoValueReason::no_comparison_law);
 }
 
 // The models that fit nothing: from the material (Kuwabara–Kono, the damped elastic-plastic
@@ -416,7 +408,7 @@ std::vector<ReportModel> report_models(const std::vector<ReportRun>& runs,
   std::vector<ReportModel> models;
   if (!calibration) {
     models.push_back(missing_model(runs, std::string(model_keys::calibrated),
-                                   "Hunt–Crossley (calibrated)", "no calibration"));
+                                   "Hunt–Crossley (calibrated)", NoValueReason::no_calibration));
     return models;
   }
   const CampaignCalibration& campaign = calibration->campaign;
@@ -424,27 +416,18 @@ std::vector<ReportModel> report_models(const std::vector<ReportRun>& runs,
   if (campaign.fitted && campaign.hunt_crossley)
     models.push_back(fitted_model(runs, fem_runs, *campaign.hunt_crossley,
                                   std::string(model_keys::calibrated), "Hunt–Crossley (calibrated)",
-                                  "campaign fit of the calibration to the force histories of "
-                                  "all runs: one (c, n, b) for all runs",
-                                  level));
+                                  ModelBasis::campaign_fit, level));
   else
-    models.push_back(per_run_model(runs, *calibration,
-                                   campaign.reason.empty()
-                                       ? std::string("the campaign was not fitted")
-                                       : campaign.reason));
+    models.push_back(per_run_model(runs, *calibration));
   if (campaign.fitted && campaign.hunt_crossley_energy)
-    models.push_back(fitted_model(
-        runs, fem_runs, *campaign.hunt_crossley_energy, campaign.hunt_crossley_energy->key,
-        "Hunt–Crossley (force + energy)",
-        "campaign fit to the force histories and the energy loss of every run (energy weight " +
-            short_number(campaign.hunt_crossley_energy->energy_weight) + ")",
-        level));
+    models.push_back(fitted_model(runs, fem_runs, *campaign.hunt_crossley_energy,
+                                  campaign.hunt_crossley_energy->key,
+                                  "Hunt–Crossley (force + energy)",
+                                  ModelBasis::force_and_energy_fit, level));
   if (campaign.fitted && campaign.hunt_crossley_velocity_damping)
-    models.push_back(
-        fitted_model(runs, fem_runs, *campaign.hunt_crossley_velocity_damping,
-                     campaign.hunt_crossley_velocity_damping->key, "Hunt–Crossley b(V)",
-                     "b(V) = b_1 (V / 1 m/s)^-q, " + campaign.hunt_crossley_velocity_damping->label,
-                     level));
+    models.push_back(fitted_model(runs, fem_runs, *campaign.hunt_crossley_velocity_damping,
+                                  campaign.hunt_crossley_velocity_damping->key,
+                                  "Hunt–Crossley b(V)", ModelBasis::velocity_damping_fit, level));
   if (campaign.fitted) models.push_back(best_law_model(runs, fem_runs, campaign, level));
   // The damped elastic-plastic laws (damped_plastic_models.hpp), fitted, unless one of them is
   // the best law shown above.
@@ -457,9 +440,7 @@ std::vector<ReportModel> report_models(const std::vector<ReportRun>& runs,
       if (fit && best_key != key)
         models.push_back(fitted_model(runs, fem_runs, *fit, fit->key,
                                       *damped_label(key) + " (fitted)",
-                                      fit->label + ": the spring's yield parameter and b fitted "
-                                                   "to all runs",
-                                      level));
+                                      ModelBasis::damped_plastic_fit, level));
     }
   add_reference_models(models, runs, fem_runs, campaign);
   for (const auto& model : models)

@@ -10,7 +10,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <sstream>
 
 namespace impact::postprocess::detail {
 
@@ -51,35 +50,29 @@ void add_plate_models(ValidityMap& map, const Assessment& report, const MapRowRe
       MapModelRow model;
       const Assessment& row_report = rows.reports[r];
       if (rows.runs[r].empty())
-        model.missing = "no run at this value";
+        model.missing = NoValue{NoValueReason::no_run_at_value, ""};
       else if (!std::isfinite(thickest))
-        model.missing =
-            "the runs do not record 'Scenario/Plate thickness', so the plate is not known";
+        model.missing = NoValue{NoValueReason::thickness_not_recorded, ""};
       std::vector<std::optional<ImpactFigures>> judged;
-      std::ostringstream parameters;
+      PlateModelValues values;
       for (std::size_t i = 0; i < rows.runs[r].size(); ++i) {
         const ReportRun& run = row_report.runs[i];
         MapCell cell{run.velocity,    run.source, run.fem,    std::nullopt,
-                     run.uncertainty, {},         run.yields, ""};
-        if (model.missing.empty()) {
+                     run.uncertainty, {},         run.yields, std::nullopt};
+        if (!model.missing) {
           const auto at = std::find_if(reference_damping.begin(), reference_damping.end(),
                                        [&](const auto& entry) {
                                          return same_velocity(entry.first, run.velocity);
                                        });
           if (at == reference_damping.end() || !at->second) {
-            cell.missing = "the row " + with_unit(map.rows[map.reference_row].value, map.unit) +
-                           " (the most massive plate) has no run at this velocity whose "
-                           "restitution the model reproduces";
+            cell.missing = NoValue{NoValueReason::no_reference_run, ""};
           } else {
             const double b = *at->second;
             const ThinPlatePrediction prediction = thin_plate_prediction(rows.runs[r][i], b, rigid);
             cell.judged = prediction.quantities;
             cell.missing = prediction.missing;
-            if (parameters.tellp() == 0)
-              parameters << prediction.parameters << "; b = ";
-            else
-              parameters << ", ";
-            parameters << short_number(b) << " s/m at " << short_number(run.velocity) << " m/s";
+            if (values.damping.empty()) values.first = prediction.values;
+            values.damping.push_back({run.velocity, b});
           }
         } else {
           cell.missing = model.missing;
@@ -87,11 +80,9 @@ void add_plate_models(ValidityMap& map, const Assessment& report, const MapRowRe
         judged.push_back(cell.judged);
         model.cells.push_back(std::move(cell));
       }
-      if (model.missing.empty()) {
+      if (!model.missing) {
         model.out_of_sample = r != map.reference_row;
-        model.parameters = parameters.str() + " (b from the row " +
-                           with_unit(map.rows[map.reference_row].value, map.unit) +
-                           (r == map.reference_row ? ", this row: its e in sample)" : ")");
+        model.plate = std::move(values);
         for (double tolerance : report.tolerances) {
           const ToleranceVerdict verdict =
               tolerance_verdict(row_report, judged, tolerance,

@@ -77,11 +77,22 @@ LawEvaluator damped(const ContactModel& model, double stiffness, std::vector<dou
 }
 
 // One law over the grid and at the runs.
-PlasticLawCurve curve_of(std::string key, std::string label, bool fitted, std::string parameters,
-                         const LawEvaluator& law, const std::vector<double>& grid, double mass,
+PlasticLawCurve curve_of(std::string key, std::string label, bool fitted, double stiffness,
+                         std::vector<ModelParameter> parameters, const LawEvaluator& law,
+                         const std::vector<double>& grid, double mass,
                          const std::vector<ReportRun>& runs) {
-  PlasticLawCurve curve{
-      std::move(key), std::move(label), fitted, std::move(parameters), 0, {}, {}, {}, {}, {}, {}};
+  PlasticLawCurve curve{std::move(key),
+                        std::move(label),
+                        fitted,
+                        stiffness,
+                        std::move(parameters),
+                        0,
+                        {},
+                        {},
+                        {},
+                        {},
+                        {},
+                        {}};
   for (double v : grid) {
     curve.velocity.push_back(v);
     LawAt at;
@@ -107,14 +118,14 @@ PlasticLawCurve curve_of(std::string key, std::string label, bool fitted, std::s
   return curve;
 }
 
-// "c = ... N/m^1.5, x_y = ... m, b = ... s/m" of a model's parameters.
-std::string parameter_text(double stiffness, const std::vector<std::string>& names,
-                           const std::vector<std::string>& units,
-                           const std::vector<double>& values) {
-  std::string text = "c = " + cell(stiffness) + " N/m^1.5";
-  for (std::size_t i = 0; i < names.size() && i < values.size(); ++i)
-    text += ", " + names[i] + " = " + cell(values[i]) + (i < units.size() ? " " + units[i] : "");
-  return text;
+// A model's values after c: its names, values and units as the calibration gives them.
+std::vector<ModelParameter> parameters_of(const std::vector<std::string>& names,
+                                          const std::vector<std::string>& units,
+                                          const std::vector<double>& values) {
+  std::vector<ModelParameter> parameters;
+  for (std::size_t i = 0; i < names.size() && i < values.size() && i < units.size(); ++i)
+    parameters.push_back({names[i], values[i], units[i]});
+  return parameters;
 }
 
 // The damped elastic-plastic laws of the calibration: from the material (its reference
@@ -133,12 +144,11 @@ void add_damped_laws(PlasticLaws& laws, const Calibration& calibration,
           std::vector<std::string> names{reference.parameter_name}, units{reference.parameter_unit};
           names.insert(names.end(), reference.extra_names.begin(), reference.extra_names.end());
           units.insert(units.end(), reference.extra_units.begin(), reference.extra_units.end());
-          PlasticLawCurve curve =
-              curve_of(reference.key, label, false,
-                       parameter_text(reference.stiffness, names, units, reference.dissipation),
-                       damped(comparison_model(reference.model, fem_runs), reference.stiffness,
-                              reference.dissipation),
-                       grid, mass, runs);
+          PlasticLawCurve curve = curve_of(reference.key, label, false, reference.stiffness,
+                                           parameters_of(names, units, reference.dissipation),
+                                           damped(comparison_model(reference.model, fem_runs),
+                                                  reference.stiffness, reference.dissipation),
+                                           grid, mass, runs);
           curve.damped = true;
           laws.laws.push_back(std::move(curve));
         } catch (const std::exception&) {
@@ -162,9 +172,8 @@ void add_damped_laws(PlasticLaws& laws, const Calibration& calibration,
             units.push_back(extra.unit);
           }
           PlasticLawCurve curve =
-              curve_of(std::string(key), label, true,
-                       parameter_text(parameters.stiffness.value, names, units,
-                                      parameters.dissipation()),
+              curve_of(std::string(key), label, true, parameters.stiffness.value,
+                       parameters_of(names, units, parameters.dissipation()),
                        damped(comparison_model(std::string(key), fem_runs),
                               parameters.stiffness.value, parameters.dissipation()),
                        grid, mass, runs);
@@ -189,21 +198,20 @@ PlasticLawCurve jackson_green_marghitu_curve(const reduced::SphereFlatContact& c
       return nan;
     }
   };
-  PlasticLawCurve curve{
-      std::string(model_keys::jackson_green_marghitu_material),
-      "Jackson–Green–Marghitu (e only, no fit)",
-      false,
-      "V_c = " + short_number(reduced::jackson_green_marghitu_critical_velocity(contact, mass)) +
-          " m/s, eps_y = C(nu) Y / E* = " +
-          short_number(reduced::jackson_green_marghitu_yield_strain(contact)) +
-          "; constants as read in one implementation, unconfirmed",
-      0,
-      {},
-      {},
-      {},
-      {},
-      {},
-      {}};
+  PlasticLawCurve curve{std::string(model_keys::jackson_green_marghitu_material),
+                        "Jackson–Green–Marghitu (e only, no fit)",
+                        false,
+                        nan,
+                        {{"V_c", reduced::jackson_green_marghitu_critical_velocity(contact, mass),
+                          "m/s"},
+                         {"eps_y", reduced::jackson_green_marghitu_yield_strain(contact), "1"}},
+                        0,
+                        {},
+                        {},
+                        {},
+                        {},
+                        {},
+                        {}};
   for (double v : grid) {
     curve.velocity.push_back(v);
     curve.restitution.push_back(restitution(v, mass));
@@ -224,25 +232,6 @@ std::vector<double> velocity_grid(const std::vector<ReportRun>& runs, double yie
   for (std::size_t i = 0; i < grid_points; ++i)
     grid.push_back(low * std::pow(high / low, double(i) / double(grid_points - 1)));
   return grid;
-}
-
-std::string comparison_text(const PlasticLaws& laws, const std::vector<ReportRun>& runs) {
-  std::string text =
-      "The FEM's restitution against the elastic-plastic laws (law / FEM - 1 in "
-      "e, per run):";
-  for (const auto& law : laws.laws) {
-    text += " " + law.label + ":";
-    for (std::size_t i = 0; i < runs.size(); ++i)
-      text += std::string(i ? "," : "") + " " +
-              percent_cell(law.run_restitution[i] / runs[i].fem.restitution - 1) + " at " +
-              short_number(runs[i].velocity) + " m/s";
-    text += ";";
-  }
-  text.back() = '.';
-  text +=
-      " Where the FEM records its permanent approach, the dent of each law is drawn beside it "
-      "(figure below).";
-  return text;
 }
 
 } // namespace
@@ -268,21 +257,21 @@ std::optional<PlasticLaws> plastic_laws(const std::vector<FemRun>& fem_runs,
                                                       *scenario->yield_strength,
                                                       scenario->poisson_ratio),
                               *scenario->contact_modulus, scenario->radius, mass);
-  laws.yield_basis = "m = " + short_number(mass) + " kg, " + scenario->basis;
+  laws.mass = mass;
+  laws.yield_strength = *scenario->yield_strength;
+  laws.material_basis = scenario->basis;
   const auto grid = velocity_grid(runs, laws.yield_velocity);
 
-  const std::string y = short_number(*scenario->yield_strength / 1e9) + " GPa";
-  laws.laws.push_back(
-      curve_of(std::string(model_keys::thornton_material), "Thornton (p_y = 1.6 Y, no fit)", false,
-               "c = " + cell(thornton->stiffness) +
-                   " N/m^1.5, x_y = " + cell(thornton->yield_approach) + " m (Y = " + y + ")",
-               rate_independent(plastic_model(std::string(model_keys::thornton)),
-                                thornton->stiffness, thornton->yield_approach),
-               grid, mass, runs));
+  laws.laws.push_back(curve_of(std::string(model_keys::thornton_material),
+                               "Thornton (p_y = 1.6 Y, no fit)", false, thornton->stiffness,
+                               {{"x_y", thornton->yield_approach, "m"}},
+                               rate_independent(plastic_model(std::string(model_keys::thornton)),
+                                                thornton->stiffness, thornton->yield_approach),
+                               grid, mass, runs));
   if (jackson_green)
     laws.laws.push_back(curve_of(std::string(model_keys::jackson_green_material),
                                  "Jackson–Green (Y of the material, no fit)", false,
-                                 "c = " + cell(jackson_green->stiffness) + " N/m^1.5, Y = " + y,
+                                 jackson_green->stiffness, {{"Y", *scenario->yield_strength, "Pa"}},
                                  rate_independent(jackson_green->model, jackson_green->stiffness,
                                                   jackson_green->yield_strength),
                                  grid, mass, runs));
@@ -298,10 +287,9 @@ std::optional<PlasticLaws> plastic_laws(const std::vector<FemRun>& fem_runs,
         if (fit->fit.converged) try {
             const ModelFit& parameters = fit->fit;
             PlasticLawCurve curve =
-                curve_of(std::string(key), label, true,
-                         "c = " + cell(parameters.stiffness.value) + " N/m^1.5, " +
-                             parameters.parameter_name + " = " + cell(parameters.parameter.value) +
-                             " " + parameters.parameter_unit,
+                curve_of(std::string(key), label, true, parameters.stiffness.value,
+                         {{parameters.parameter_name, parameters.parameter.value,
+                           parameters.parameter_unit}},
                          rate_independent(comparison_model(std::string(key), fem_runs),
                                           parameters.stiffness.value, parameters.parameter.value),
                          grid, mass, runs);
@@ -313,7 +301,6 @@ std::optional<PlasticLaws> plastic_laws(const std::vector<FemRun>& fem_runs,
   if (calibration) add_damped_laws(laws, *calibration, fem_runs, grid, mass, runs);
   for (const auto& run : runs)
     laws.fem_permanent_approach.push_back(run.record.permanent_approach.value_or(nan));
-  laws.text = comparison_text(laws, runs);
   return laws;
 }
 

@@ -155,16 +155,6 @@ std::optional<std::size_t> report_run(const Assessment& report, double velocity)
   return std::nullopt;
 }
 
-std::string simulator_tool_name(const std::string& tool) {
-  if (tool == "simbody") return "Simbody";
-  if (tool == "mujoco") return "MuJoCo";
-  if (tool == "lammps") return "LAMMPS";
-  if (tool == "liggghts") return "LIGGGHTS";
-  if (tool == "simbody-custom") return "Simbody (Force::Custom)";
-  if (tool == "lammps-external") return "LAMMPS (fix external)";
-  return tool;
-}
-
 void add_simulators(Assessment& report, const fs::path& directory) {
   report.simulators_source = directory.string();
   const auto problem = [&](const std::string& source, const std::string& message) {

@@ -47,8 +47,8 @@ void add_validity_map(Assessment& report, const Campaign& campaign,
 /// infinite Kirchhoff plate of the run's thickness and material, Hunt–Crossley damping b.
 struct ThinPlatePrediction {
   std::optional<ImpactFigures> quantities;
-  std::string missing;    ///< why there are none (the run does not record the plate, ...)
-  std::string parameters; ///< c, Z, lambda as text
+  std::optional<NoValue> missing; ///< why there are none (the run does not record the plate, ...)
+  std::optional<ThinPlateValues> values; ///< c, Z, lambda at the run
 };
 /// rigid: the same contact on a rigid support (Z = infinity).
 ThinPlatePrediction thin_plate_prediction(const FemRun& run, double damping, bool rigid = false);
@@ -65,9 +65,9 @@ struct MapRowReports {
 /// The thin-plate and the massive-plate model on every row of the map, with the material's
 /// damping from the row of the most massive plate (map_plate_models.cpp).
 void add_plate_models(ValidityMap& map, const Assessment& report, const MapRowReports& rows);
-/// Where the map's model `model` is within each band, in a sentence (map_regions.cpp).
-std::string map_region(const ValidityMap& map, std::size_t model,
-                       const std::vector<double>& tolerances);
+/// Where the map's model `model` is within each band, from its cells' classes, and where it is
+/// not decided or not evaluated, into map.models[model] (map_regions.cpp).
+void add_map_region(ValidityMap& map, std::size_t model, std::size_t bands);
 /// The class index of map_class (validity_map.hpp).
 std::size_t class_index(const MapCell& cell);
 

@@ -4,7 +4,6 @@
 // a rigid support (the massive-plate model of the map).
 
 #include "steps.hpp"
-#include "impact_postprocess/number_format.hpp"
 
 #include "impact_postprocess/run/scenario_materials.hpp"
 
@@ -15,7 +14,6 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
-#include <sstream>
 
 namespace impact::postprocess::detail {
 
@@ -29,10 +27,7 @@ ThinPlatePrediction thin_plate_prediction(const FemRun& run, double damping, boo
   const auto density = material_constant(run, fem_format::plate_body, fem_format::density);
   const auto thickness = text_number(run, fem_format::plate_thickness.path);
   if (!materials.hertz_from_runs || !youngs_modulus || !poisson_ratio || !density || !thickness) {
-    prediction.missing =
-        "the run does not record the plate's material (Plate/<Model>/Young's "
-        "modulus, Poisson's ratio, Density), its thickness (Scenario/Plate "
-        "thickness) or the sphere's (Sphere/..., Scenario/Sphere radius)";
+    prediction.missing = NoValue{NoValueReason::plate_not_recorded, ""};
     return prediction;
   }
   try {
@@ -43,17 +38,10 @@ ThinPlatePrediction thin_plate_prediction(const FemRun& run, double damping, boo
                                          impedance);
     const auto result = model.impact(run.impact_velocity);
     prediction.quantities = result.figures();
-    std::ostringstream text;
-    text << "c = " << significant(materials.hertz_stiffness, 4) << " N/m^1.5, n = 1.5, ";
-    if (rigid)
-      text << "rigid support";
-    else
-      text << "Z = " << significant(impedance, 4)
-           << " N s/m, lambda = " << significant(result.zener_lambda, 4) << " at "
-           << significant(run.impact_velocity, 4) << " m/s";
-    prediction.parameters = text.str();
+    prediction.values = ThinPlateValues{materials.hertz_stiffness, impedance, result.zener_lambda,
+                                        run.impact_velocity};
   } catch (const std::exception& error) {
-    prediction.missing = std::string("the thin-plate model cannot be evaluated: ") + error.what();
+    prediction.missing = NoValue{NoValueReason::thin_plate_failed, error.what()};
   }
   return prediction;
 }

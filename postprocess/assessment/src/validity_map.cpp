@@ -1,8 +1,8 @@
 // The validity map of a two-axis campaign (validity_map.hpp, ValidityMap): each value of the
 // other axis is a row, a velocity campaign of its own, judged by the verdict itself (assess
 // on the row's runs with the row's calibration, made by the report pipeline and handed in);
-// the plate models are judged on the same rows by the same rule (map_plate_models.cpp); the
-// regions in words are map_regions.cpp's.
+// the plate models are judged on the same rows by the same rule (map_plate_models.cpp); where
+// each model is valid is map_regions.cpp's. The report words them (report/src/map_words.cpp).
 
 #include "steps.hpp"
 
@@ -24,7 +24,7 @@ namespace {
 // not decided, bands + 2 not evaluated.
 std::size_t class_index_of(const MapCell& cell) {
   const std::size_t bands = cell.decisions.size();
-  if (!cell.missing.empty() || cell.decisions.empty()) return bands + 2;
+  if (cell.missing || cell.decisions.empty()) return bands + 2;
   for (std::size_t k = 0; k < bands; ++k)
     if (cell.decisions[k] == Decision::within) return k;
   switch (cell.decisions.back()) {
@@ -44,31 +44,32 @@ MapModelRow row_model(const Assessment& row, std::string_view key) {
   const ReportModel* model = row.model(key);
   const ModelVerdict* verdict = row.verdict(key);
   if (!model || !verdict) {
-    result.missing = key == model_keys::best_law ? "the row's calibration has no comparison law"
-                                                 : "the row's calibration has no such model";
-  } else if (key == model_keys::calibrated && !row.verdict_available) {
-    result.missing = "no verdict";
-    result.no_verdict = row.no_verdict;
+    result.missing = NoValue{key == model_keys::best_law ? NoValueReason::no_comparison_law_on_row
+                                                         : NoValueReason::no_model_on_row,
+                             ""};
+  } else if (key == model_keys::calibrated && !row.verdict_available && row.no_verdict) {
+    result.missing = NoValue{NoValueReason::no_verdict, "", row.no_verdict};
   }
   if (model) {
+    result.basis = model->basis;
     result.parameters = model->parameters;
     result.out_of_sample = model->out_of_sample;
   }
   for (std::size_t i = 0; i < row.runs.size(); ++i) {
     const ReportRun& run = row.runs[i];
     MapCell cell{run.velocity,    run.source, run.fem,    std::nullopt,
-                 run.uncertainty, {},         run.yields, ""};
-    if (model && verdict && result.missing.empty()) {
+                 run.uncertainty, {},         run.yields, std::nullopt};
+    if (model && verdict && !result.missing) {
       cell.judged = model->runs[i].judged();
       cell.missing = model->runs[i].missing;
-      if (!cell.judged && cell.missing.empty()) cell.missing = "no prediction";
+      if (!cell.judged && !cell.missing) cell.missing = NoValue{NoValueReason::no_prediction, ""};
     } else {
       cell.missing = result.missing;
     }
     result.cells.push_back(std::move(cell));
   }
   // The verdict's rule on the map's quantities (the row's own verdict also judges x_max).
-  if (model && verdict && result.missing.empty()) {
+  if (model && verdict && !result.missing) {
     std::vector<std::optional<ImpactFigures>> judged;
     for (const auto& cell : result.cells) judged.push_back(cell.judged);
     for (const auto& band : verdict->tolerances) {
@@ -79,25 +80,19 @@ MapModelRow row_model(const Assessment& row, std::string_view key) {
         result.cells[i].decisions.push_back(decided.decisions[i]);
     }
   }
-  if (model && result.missing.empty() &&
+  if (model && !result.missing &&
       std::all_of(result.cells.begin(), result.cells.end(),
-                  [](const MapCell& cell) { return !cell.missing.empty(); }))
+                  [](const MapCell& cell) { return bool(cell.missing); }))
     result.missing = result.cells.front().missing;
   return result;
 }
 
-// Why a campaign with sweep axes has no map ("" when it has one: velocity and one other axis).
-std::string no_map_reason(const Campaign& campaign) {
+// A campaign with sweep axes has a map when it has two: the velocity and one other.
+bool has_map(const Campaign& campaign) {
   const bool has_velocity =
       std::any_of(campaign.axes.begin(), campaign.axes.end(),
                   [](const SweepAxis& axis) { return axis.parameter == velocity_axis; });
-  if (campaign.axes.size() == 2 && has_velocity) return "";
-  std::string names;
-  for (const auto& axis : campaign.axes) names += (names.empty() ? "" : ", ") + axis.parameter;
-  return "the campaign has " + std::to_string(campaign.axes.size()) + " axes (" + names +
-         "); a validity map needs exactly two: " + velocity_axis +
-         " and one other parameter. No map is shown; the sections below treat all runs "
-         "as one velocity campaign.";
+  return campaign.axes.size() == 2 && has_velocity;
 }
 
 // The other axis of a map campaign (not the velocity).
@@ -121,34 +116,10 @@ void map_frame(ValidityMap& map, const Campaign& campaign, const std::vector<Map
                      [&](double v) { return same_velocity(v, run.impact_velocity); }))
       map.velocities.push_back(run.impact_velocity);
   std::sort(map.velocities.begin(), map.velocities.end());
-  map.models = {
-      {std::string(model_keys::calibrated), "calibrated Hunt–Crossley",
-       "the row's campaign fit of c, n, b to the force histories, each velocity judged by the "
-       "fit without it",
-       ""},
-      {std::string(model_keys::best_law), "the row's best law",
-       std::string("the comparison law ranked first on the row by out-of-sample error, judged "
-                   "out of sample") +
-           (runs_can_yield(campaign.runs)
-                ? ""
-                : "; the plastic laws (Thornton, Jackson–Green and Hunt–Crossley on their "
-                  "springs) are not fitted: no material of the campaign can yield, so their "
-                  "yield parameter would only stand in for the viscous loss"),
-       ""},
-      {std::string(model_keys::thin_plate), "thin-plate model",
-       "Zener: Hertz contact (c from the run's materials, n = 3/2) on an infinite Kirchhoff plate "
-       "of the run's thickness and material (Z = 8 sqrt(D rho h)), with the Hunt–Crossley "
-       "damping b that makes it reproduce the FEM restitution of the most massive plate at the "
-       "same velocity (the material's damping; in sample on that row, a prediction on the "
-       "others)",
-       ""},
-      {std::string(model_keys::massive_plate), "massive-plate model",
-       "the thin-plate model's contact on a rigid support instead of the plate: Hertz c, "
-       "n = 3/2 and the b that makes it reproduce the FEM restitution of the most massive plate "
-       "at the same velocity — what a contact law calibrated on the massive plate predicts for "
-       "the others (the row where it leaves the bands is where the massive-plate assumption "
-       "fails)",
-       ""}};
+  map.can_yield = runs_can_yield(campaign.runs);
+  for (const std::string_view key : {model_keys::calibrated, model_keys::best_law,
+                                     model_keys::thin_plate, model_keys::massive_plate})
+    map.models.push_back({std::string(key), {}, {}, {}});
 }
 
 // Every row: a velocity campaign with its calibration (handed in, parallel to the rows),
@@ -158,33 +129,28 @@ MapRowReports judged_rows(ValidityMap& map, const Assessment& report,
   MapRowReports judged;
   for (std::size_t r = 0; r < rows.size(); ++r) {
     const MapRowRuns& runs = rows[r];
-    MapRow row{runs.value, {}, ""};
+    MapRow row{runs.value, {}, false, "", {}};
     Assessment row_report;
     if (!runs.runs.empty()) {
       std::optional<Calibration> calibration;
       if (r < options.map_calibrations.size()) {
+        row.calibrated = true;
         calibration = options.map_calibrations[r].calibration;
-        if (!options.map_calibrations[r].error.empty())
-          row.calibration_problems =
-              "the row could not be calibrated: " + options.map_calibrations[r].error;
-      } else {
-        row.calibration_problems = "the row was not calibrated";
+        row.calibration_error = options.map_calibrations[r].error;
       }
       Campaign row_campaign;
       row_campaign.runs = runs.runs;
       AssessmentOptions row_options;
       row_options.tolerances = report.tolerances;
       row_report =
-          assess(row_campaign, calibration, {}, report.campaign_source + " (" + runs.name + ")",
+          assess(row_campaign, calibration, {},
+                 report.campaign_source + " (" + runs.parameter + " = " + runs.value.text + ")",
                  "row calibration", row_options);
-      if (calibration)
-        for (const auto& problem : calibration->problems)
-          row.calibration_problems +=
-              (row.calibration_problems.empty() ? "" : "; ") + problem.message;
+      if (calibration) row.calibration_problems = calibration->problems;
     }
     for (const std::string_view key : {model_keys::calibrated, model_keys::best_law}) {
       MapModelRow model = row_model(row_report, key);
-      if (runs.runs.empty()) model.missing = "no run at this value";
+      if (runs.runs.empty()) model.missing = NoValue{NoValueReason::no_run_at_value, ""};
       row.models.push_back(std::move(model));
     }
     map.rows.push_back(std::move(row));
@@ -222,8 +188,7 @@ void add_unread_runs(ValidityMap& map, const Campaign& campaign, const MapRowRep
         std::sort(map.velocities.begin(), map.velocities.end());
       }
       for (auto& model : map.rows[r].models) {
-        if (rows.runs[r].empty())
-          model.missing = "no FEM run of this value has a result (each run's reason below)";
+        if (rows.runs[r].empty()) model.missing = NoValue{NoValueReason::no_fem_result_on_row, ""};
         FemUncertainty unknown;
         for (auto& u : unknown) u = {std::numeric_limits<double>::quiet_NaN(), "no FEM result"};
         MapCell cell{v,
@@ -233,7 +198,7 @@ void add_unread_runs(ValidityMap& map, const Campaign& campaign, const MapRowRep
                      unknown,
                      {},
                      false,
-                     "the FEM run has no result: " + problem->message};
+                     NoValue{NoValueReason::no_fem_result, problem->message}};
         const auto at = std::find_if(model.cells.begin(), model.cells.end(),
                                      [&](const MapCell& c) { return c.velocity > v; });
         model.cells.insert(at, std::move(cell));
@@ -251,8 +216,8 @@ void add_validity_map(Assessment& report, const Campaign& campaign,
                       const AssessmentOptions& options) {
   if (campaign.axes.size() <= 1) return; // a velocity campaign: the report as before
   ValidityMap map;
-  map.reason = no_map_reason(campaign);
-  if (!map.reason.empty()) {
+  for (const auto& axis : campaign.axes) map.axes.push_back(axis.parameter);
+  if (!has_map(campaign)) {
     report.map = std::move(map);
     return;
   }
@@ -268,7 +233,7 @@ void add_validity_map(Assessment& report, const Campaign& campaign,
       for (auto& cell : model.cells)
         cell.decisions.resize(report.tolerances.size(), Decision::unknown);
   for (std::size_t m = 0; m < map.models.size(); ++m)
-    map.models[m].region = map_region(map, m, report.tolerances);
+    add_map_region(map, m, report.tolerances.size());
   report.map = std::move(map);
 }
 
@@ -288,7 +253,7 @@ std::optional<std::pair<Quantity, double>> map_worst_error(const MapCell& cell) 
 namespace impact::postprocess {
 
 std::vector<MapRowRuns> map_rows(const Campaign& campaign) {
-  if (campaign.axes.size() <= 1 || !detail::no_map_reason(campaign).empty()) return {};
+  if (!detail::has_map(campaign)) return {};
   const SweepAxis& axis = detail::other_axis(campaign);
   std::vector<SweepValue> values = axis.values;
   const bool numeric = std::all_of(values.begin(), values.end(),
@@ -299,7 +264,7 @@ std::vector<MapRowRuns> map_rows(const Campaign& campaign) {
     });
   std::vector<MapRowRuns> rows;
   for (const auto& value : values) {
-    MapRowRuns row{value, detail::short_name(axis.parameter) + " = " + value.text, {}};
+    MapRowRuns row{axis.parameter, value, {}};
     for (const auto& run : campaign.runs) {
       const auto at = run.sweep_point.find(axis.parameter);
       if (at != run.sweep_point.end() && at->second.matches(value)) row.runs.push_back(run);
@@ -307,14 +272,6 @@ std::vector<MapRowRuns> map_rows(const Campaign& campaign) {
     rows.push_back(std::move(row));
   }
   return rows;
-}
-
-std::string map_class_name(const MapCell& cell, const std::vector<double>& tolerances) {
-  const std::size_t index = detail::class_index(cell);
-  if (index < tolerances.size()) return "within " + band_name(tolerances[index]);
-  if (index == tolerances.size()) return "outside " + band_name(tolerances.back());
-  if (index == tolerances.size() + 1) return "not decided";
-  return "not evaluated";
 }
 
 std::size_t map_class(const MapCell& cell) {
@@ -330,7 +287,7 @@ double map_uncertainty(const MapCell& cell) {
   return largest;
 }
 
-std::optional<std::pair<Campaign, std::string>> map_detail_row(const Campaign& campaign) {
+std::optional<MapDetailRow> map_detail_row(const Campaign& campaign) {
   if (campaign.axes.size() != 2) return std::nullopt;
   const SweepAxis* other = nullptr;
   bool has_velocity = false;
@@ -359,10 +316,8 @@ std::optional<std::pair<Campaign, std::string>> map_detail_row(const Campaign& c
     if (at != run.sweep_point.end() && at->second.matches(*chosen)) row.runs.push_back(run);
   }
   for (const auto& problem : campaign.problems) row.problems.push_back(problem);
-  const std::string unit(fem_format::parameter_unit(other->parameter));
-  return std::pair<Campaign, std::string>{std::move(row), detail::short_name(other->parameter) +
-                                                              " = " + chosen->text +
-                                                              (unit.empty() ? "" : " " + unit)};
+  return MapDetailRow{std::move(row), other->parameter, *chosen,
+                      std::string(fem_format::parameter_unit(other->parameter))};
 }
 
 } // namespace impact::postprocess

@@ -1,6 +1,7 @@
 // The sections of the page on the data behind the verdict (sections.hpp): the FEM's
 // quality, the runs, the models, the quantities, the errors, the energy balance.
 
+#include "model_words.hpp"
 #include "sections.hpp"
 #include "impact_postprocess/report/verdict_words.hpp"
 #include "impact_postprocess/models/model_keys.hpp"
@@ -116,7 +117,8 @@ void models_section(Document& doc, const Report& report) {
   // A fit without held-out fits (fewer than three velocities) is judged on the runs it was
   // fitted to: said at the model, since its errors then look better than a prediction's.
   for (const auto& model : report.models)
-    items.push_back(model.label + ": " + model.parameters + ". " + model.basis + " (" +
+    items.push_back(model.label + ": " + parameters_words(model.basis, model.parameters) + ". " +
+                    basis_words(model, report.calibration) + " (" +
                     std::to_string(model.free_parameters) + " free parameters" +
                     (model.free_parameters == 0 ? "; nothing fitted: its errors are predictions"
                      : model.out_of_sample
@@ -183,7 +185,7 @@ void errors_section(Document& doc, const Report& report) {
     for (std::size_t i = 0; i < report.runs.size(); ++i)
       if (!model.runs[i].in_sample)
         missing.push_back(model.label + " at " + velocity_label(report.runs[i].velocity) + ": " +
-                          model.runs[i].missing);
+                          no_value_words(model.runs[i].missing));
   if (!missing.empty()) {
     doc.paragraph("Missing predictions (n/a above):");
     doc.list(missing);

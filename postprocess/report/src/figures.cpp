@@ -1,6 +1,8 @@
 // The figure data of the report (report.hpp): every curve as numbers, for
 // postprocess/report_figures.py, which only draws them.
 
+#include "map_words.hpp"
+#include "model_words.hpp"
 #include "sections.hpp"
 #include "impact_postprocess/models/model_keys.hpp"
 
@@ -131,7 +133,7 @@ PerRunFigures per_run_figures(const Report& report) {
       const ModelAtRun& at = model->runs[i];
       const std::string style = model->key == model_keys::calibrated ? "--" : "-.";
       if (at.history.time.empty()) {
-        loop["note"] = at.missing;
+        loop["note"] = detail::no_value_words(at.missing);
         continue;
       }
       loop["series"].push_back(series(model->label, scaled(at.history.approach, 1e6),
@@ -449,9 +451,7 @@ std::vector<std::pair<const MapModel*, json>> map_figures(const Report& report) 
       {{"name", "outside " + band_name(report.tolerances.back())}, {"color", "#e66a5c"}});
   classes.push_back({{"name", "not decided (FEM uncertainty)"}, {"color", "#bdbdbd"}});
   classes.push_back({{"name", "not evaluated"}, {"color", "#ffffff"}});
-  const auto slash = map.parameter.rfind('/');
-  const std::string name =
-      slash == std::string::npos ? map.parameter : map.parameter.substr(slash + 1);
+  const std::string name = detail::short_name(map.parameter);
   for (std::size_t m = 0; m < map.models.size(); ++m) {
     json cells = json::array(), rows = json::array(), labels = json::array();
     for (std::size_t r = 0; r < map.rows.size(); ++r) {
@@ -477,7 +477,7 @@ std::vector<std::pair<const MapModel*, json>> map_figures(const Report& report) 
     figures.emplace_back(
         &map.models[m],
         json{{"kind", "map"},
-             {"title", "Validity map: " + map.models[m].label},
+             {"title", "Validity map: " + detail::map_model_label(map.models[m].key)},
              {"xlabel", "impact velocity V [m/s]"},
              {"ylabel", name + (map.unit.empty() ? "" : " [" + map.unit + "]")},
              {"yscale", map.logarithmic ? "log" : "linear"},

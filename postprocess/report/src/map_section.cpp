@@ -1,6 +1,7 @@
 // The section "Validity map" (sections.hpp): the map of assessment/validity_map.cpp in
 // words, figures and one table per model.
 
+#include "map_words.hpp"
 #include "sections.hpp"
 #include "impact_postprocess/report/verdict_words.hpp"
 
@@ -11,7 +12,7 @@ void map_section(Document& doc, const Report& report, const FigurePlacer& figure
   const ValidityMap& map = *report.map;
   doc.heading("Validity map");
   if (!map.available) {
-    doc.warning("No validity map: " + map.reason);
+    doc.warning("No validity map: " + no_map_words(map));
     return;
   }
   const std::string name = short_name(map.parameter);
@@ -34,15 +35,17 @@ void map_section(Document& doc, const Report& report, const FigurePlacer& figure
            : "The sections after this one detail the row " + report.detail_row +
                  " as a velocity campaign (its calibration, verdict, figures and runs)."));
   std::vector<std::string> items;
-  for (const auto& model : map.models) items.push_back(model.label + ": " + model.basis + ".");
+  for (const auto& model : map.models)
+    items.push_back(map_model_label(model.key) + ": " + map_basis_words(map, model) + ".");
   doc.list(items);
   doc.paragraph("Where each model is valid:");
   std::vector<std::string> regions;
-  for (const auto& model : map.models) regions.push_back(model.region);
+  for (std::size_t m = 0; m < map.models.size(); ++m)
+    regions.push_back(map_region_words(map, m, report.tolerances));
   doc.list(regions);
   for (std::size_t m = 0; m < map.models.size(); ++m) {
     const MapModel& model = map.models[m];
-    doc.heading("Map: " + model.label, 3);
+    doc.heading("Map: " + map_model_label(model.key), 3);
     figure(FigureId::validity_map, model.key);
     Table table;
     table.header = {name + (map.unit.empty() ? "" : " [" + map.unit + "]"),
@@ -55,17 +58,17 @@ void map_section(Document& doc, const Report& report, const FigurePlacer& figure
     std::vector<std::string> notes;
     for (const auto& row : map.rows) {
       const MapModelRow& at = row.models[m];
-      std::string parameters = at.parameters.empty() ? "" : at.parameters;
-      if (!at.missing.empty())
-        notes.push_back(with_unit(row.value, map.unit) + ": not evaluated: " +
-                        (at.no_verdict ? no_verdict_sentence(*at.no_verdict) : at.missing));
+      const std::string parameters = map_parameters_words(map, at);
+      if (at.missing)
+        notes.push_back(with_unit(row.value, map.unit) +
+                        ": not evaluated: " + map_no_value_words(map, at.missing));
       else if (!parameters.empty())
         notes.push_back(with_unit(row.value, map.unit) + ": " + parameters +
                         (at.out_of_sample ? " (out of sample)" : " (in sample)"));
       for (const auto& cell : at.cells)
-        if (!cell.fem && !cell.missing.empty())
+        if (!cell.fem && cell.missing)
           notes.push_back(with_unit(row.value, map.unit) + ", V = " + short_number(cell.velocity) +
-                          " m/s: not evaluated: " + cell.missing);
+                          " m/s: not evaluated: " + map_no_value_words(map, cell.missing));
       if (at.cells.empty())
         table.rows.push_back({row.value.text, "-", "-", "-", "-", "-", "not evaluated"});
       for (const auto& cell : at.cells) {
@@ -78,7 +81,7 @@ void map_section(Document& doc, const Report& report, const FigurePlacer& figure
                               short_number(cell.velocity) + (cell.yields ? " (yields)" : ""),
                               unsigned_percent(map_uncertainty(cell)), error(Quantity::energy_loss),
                               error(Quantity::contact_time), error(Quantity::force_max),
-                              map_class_name(cell, report.tolerances)});
+                              map_class_words(map_class(cell), report.tolerances)});
       }
     }
     doc.table(table);

@@ -2,6 +2,7 @@
 // calibrations) -> assessment -> figures -> page.
 
 #include "impact_postprocess/report/pipeline.hpp"
+#include "map_words.hpp"
 
 #include "impact_postprocess/calibration/calibrate_run_set.hpp"
 #include "impact_postprocess/calibration/calibration_json.hpp"
@@ -98,7 +99,8 @@ std::vector<MapRowCalibration> calibrate_map_rows(const Campaign& campaign,
       CalibrationOptions row_options = options;
       if (row_options.progress) {
         const auto progress = row_options.progress;
-        row_options.progress = [progress, name = row.name](const std::string& line) {
+        row_options.progress = [progress, name = detail::map_row_name(row.parameter, row.value)](
+                                   const std::string& line) {
           progress("map row " + name + ": " + line);
         };
       }
@@ -137,8 +139,8 @@ ReportOutcome write_report(const ReportRequest& request) {
   ReportOptions options;
   if (auto row = map_detail_row(input)) {
     options.map_campaign = std::move(input);
-    input = std::move(row->first);
-    options.detail_row = row->second;
+    options.detail_row = detail::detail_row_name(*row);
+    input = std::move(row->campaign);
   }
   ObtainedCalibration obtained =
       request.calibration ? read_calibration(*request.calibration) : calibrate_here(request, input);

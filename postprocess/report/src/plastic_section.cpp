@@ -30,6 +30,45 @@ json line(const std::string& label, json x, json y, const std::string& color,
           {"color", color}, {"linestyle", style}, {"marker", marker}};
 }
 
+// A law's values: "c = 1.234e+10 N/m^1.5, x_y = 1.2e-06 m (Y = 0.3 GPa)". The laws from the
+// material give Y in GPa; Jackson–Green–Marghitu's restitution fit its V_c and eps_y, with
+// the caveat on its constants.
+std::string parameters_words(const PlasticLawCurve& law, const PlasticLaws& laws) {
+  const auto gigapascal = [](double stress) { return short_number(stress / 1e9) + " GPa"; };
+  if (law.key == model_keys::jackson_green_marghitu_material && law.parameters.size() == 2)
+    return "V_c = " + short_number(law.parameters[0].value) +
+           " m/s, eps_y = C(nu) Y / E* = " + short_number(law.parameters[1].value) +
+           "; constants as read in one implementation, unconfirmed";
+  std::string text = "c = " + cell(law.stiffness) + " N/m^1.5";
+  if (law.key == model_keys::jackson_green_material)
+    return text + ", Y = " + gigapascal(laws.yield_strength);
+  for (const auto& parameter : law.parameters)
+    text += ", " + parameter.name + " = " + cell(parameter.value) + " " + parameter.unit;
+  if (law.key == model_keys::thornton_material)
+    text += " (Y = " + gigapascal(laws.yield_strength) + ")";
+  return text;
+}
+
+// The FEM's restitution against each law at each run, in a paragraph.
+std::string comparison_words(const PlasticLaws& laws, const std::vector<ReportRun>& runs) {
+  std::string text =
+      "The FEM's restitution against the elastic-plastic laws (law / FEM - 1 in "
+      "e, per run):";
+  for (const auto& law : laws.laws) {
+    text += " " + law.label + ":";
+    for (std::size_t i = 0; i < runs.size(); ++i)
+      text += std::string(i ? "," : "") + " " +
+              percent_cell(law.run_restitution[i] / runs[i].fem.restitution - 1) + " at " +
+              short_number(runs[i].velocity) + " m/s";
+    text += ";";
+  }
+  text.back() = '.';
+  text +=
+      " Where the FEM records its permanent approach, the dent of each law is drawn beside it "
+      "(figure below).";
+  return text;
+}
+
 std::string color_of(const PlasticLawCurve& law) {
   if (law.key == model_keys::jackson_green_marghitu_material) return "tab:purple";
   // The damped laws: Hunt–Crossley on Thornton's spring (pink; b(V) from A fitted: dark
@@ -221,7 +260,8 @@ void plastic_section(Document& doc, const Report& report,
       "hardening enters them. The yield velocity of the material is V_y = " +
       short_number(laws.yield_velocity) + " m/s with Johnson's p_y = 1.6 Y and " +
       short_number(laws.jackson_green_yield_velocity) +
-      " m/s with Jackson–Green's p_y = C(nu) Y (" + laws.yield_basis +
+      " m/s with Jackson–Green's p_y = C(nu) Y (m = " + short_number(laws.mass) + " kg, " +
+      laws.material_basis +
       "). Beside them, the restitution that Jackson, Green & Marghitu fitted to "
       "their finite-element impacts of an elastic–perfectly-plastic sphere on a rigid "
       "flat (Nonlinear Dyn. 60:217, 2010): e = 1 - 0.0361 eps_y^-0.114 ln(V/V_c) "
@@ -231,7 +271,7 @@ void plastic_section(Document& doc, const Report& report,
       "could not be confirmed. It gives e only (no force, no dent).");
   std::vector<std::string> items;
   for (const auto& law : laws.laws)
-    items.push_back(law.label + ": " + law.parameters +
+    items.push_back(law.label + ": " + parameters_words(law, laws) +
                     (law.fitted ? " (campaign fit of the calibration, " +
                                       std::to_string(law.free_parameters) + " free parameters)"
                                 : " (nothing fitted)"));
@@ -246,7 +286,7 @@ void plastic_section(Document& doc, const Report& report,
         "(c/m)^(2/5) V^(-4/5) with A of the retardation times, the b whose small-loss "
         "restitution is Kuwabara–Kono's. Fitted: the yield parameter and b, with c at "
         "the Hertz value of the materials.");
-  doc.paragraph(laws.text);
+  doc.paragraph(comparison_words(laws, report.runs));
   if (const std::string family = family_sentence(report); !family.empty()) doc.paragraph(family);
   Table table{{"V [m/s]", "V/V_y", "FEM e", "FEM x_p [µm]"}, {}};
   for (const auto& law : laws.laws) {

@@ -59,6 +59,9 @@ void glance_section(Document& doc, const Report& report, const FigurePlacer& fig
 /// The section "Validity map" (map_section.cpp).
 void map_section(Document& doc, const Report& report, const FigurePlacer& figure);
 
+/// A simulator by its name on the page: "Simbody", "MuJoCo", "LAMMPS" (another tool by its
+/// own name; simulators_section.cpp).
+std::string simulator_tool_name(const std::string& tool);
 /// The section "In your simulator" (simulators_section.cpp).
 void simulators_section(Document& doc, const Report& report);
 

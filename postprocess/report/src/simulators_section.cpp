@@ -11,6 +11,16 @@
 
 namespace impact::postprocess::detail {
 
+std::string simulator_tool_name(const std::string& tool) {
+  if (tool == "simbody") return "Simbody";
+  if (tool == "mujoco") return "MuJoCo";
+  if (tool == "lammps") return "LAMMPS";
+  if (tool == "liggghts") return "LIGGGHTS";
+  if (tool == "simbody-custom") return "Simbody (Force::Custom)";
+  if (tool == "lammps-external") return "LAMMPS (fix external)";
+  return tool;
+}
+
 namespace {
 
 namespace fs = std::filesystem;

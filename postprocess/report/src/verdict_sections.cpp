@@ -2,6 +2,7 @@
 // verdict, ranking, parameters, velocity trend, the model for users.
 
 #include "law_block.hpp"
+#include "model_words.hpp"
 #include "sections.hpp"
 #include "impact_postprocess/report/verdict_words.hpp"
 #include "impact_postprocess/models/model_keys.hpp"
@@ -49,7 +50,8 @@ void verdict_section(Document& doc, const Report& report) {
   for (std::size_t i = 0; i < report.tolerances.size(); ++i)
     bands += (i ? (i + 1 == report.tolerances.size() ? " and " : ", ") : "") +
              short_number(report.tolerances[i] * 100) + " %";
-  doc.paragraph("Where the calibrated Hunt–Crossley model (" + calibrated.parameters +
+  doc.paragraph("Where the calibrated Hunt–Crossley model (" +
+                parameters_words(calibrated.basis, calibrated.parameters) +
                 ") predicts the energy loss 1 - e^2, the contact time, the peak force and the "
                 "peak approach all within " +
                 bands + " of the FEM. " +

@@ -50,8 +50,6 @@ inline const std::vector<Quantity> simulator_table_quantities = {Quantity::resti
                                                                  Quantity::energy_loss,
                                                                  Quantity::contact_time,
                                                                  Quantity::force_max};
-/// "Simbody", "MuJoCo", "LAMMPS" (another tool by its own name).
-std::string simulator_tool_name(const std::string& tool);
 
 } // namespace detail
 
