@@ -527,9 +527,9 @@ TEST(ValidityMapDetailRow, TheDetailRowsCalibrationIsTakenForTheSameRunsOnly) {
   fs::remove_all(directory);
   const auto row = map_detail_row(campaign);
   ASSERT_TRUE(row);
-  EXPECT_EQ(row->parameter, thickness_axis);
-  EXPECT_EQ(row->value.number, 0.4);
-  EXPECT_EQ(row->unit, "m");
+  EXPECT_EQ(row->at.parameter, thickness_axis);
+  EXPECT_EQ(row->at.value.number, 0.4);
+  EXPECT_EQ(row->at.unit, "m");
   CalibrationOptions calibration_options;
   calibration_options.laws = {"kuwabara-kono-no-tension"};
   const std::string mark = "the detail row's own calibration";
@@ -543,7 +543,7 @@ TEST(ValidityMapDetailRow, TheDetailRowsCalibrationIsTakenForTheSameRunsOnly) {
     std::vector<std::string> lines;
     map_options.progress = [&lines](const std::string& line) { lines.push_back(line); };
     options.map_campaign = campaign;
-    options.detail_row = "Plate thickness = 0.4 m";
+    options.detail_row = row->at;
     options.map_calibrations = calibrate_map_rows(campaign, map_options, detail);
     const Report report = build_report(row->campaign, detail, {}, "detail row", "", options);
     ASSERT_TRUE(report.map && report.map->available);

@@ -316,8 +316,9 @@ std::optional<MapDetailRow> map_detail_row(const Campaign& campaign) {
     if (at != run.sweep_point.end() && at->second.matches(*chosen)) row.runs.push_back(run);
   }
   for (const auto& problem : campaign.problems) row.problems.push_back(problem);
-  return MapDetailRow{std::move(row), other->parameter, *chosen,
-                      std::string(fem_format::parameter_unit(other->parameter))};
+  return MapDetailRow{std::move(row),
+                      {other->parameter, *chosen,
+                       std::string(fem_format::parameter_unit(other->parameter))}};
 }
 
 } // namespace impact::postprocess

@@ -4,6 +4,7 @@
 // yield check); this file only chooses what a reader needs first and says it briefly.
 
 #include "law_block.hpp"
+#include "map_words.hpp"
 #include "sections.hpp"
 #include "impact_postprocess/report/verdict_words.hpp"
 #include "impact_postprocess/models/contact_models.hpp"
@@ -393,8 +394,8 @@ void glance_section(Document& doc, const Report& report, const FigurePlacer& fig
   std::vector<std::string> lines{recommendation_line(report)};
   if (const std::string line = comparison_line(report, best); !line.empty()) lines.push_back(line);
   lines.push_back(limits_line(report));
-  if (!report.detail_row.empty())
-    lines.front() = report.detail_row + ": " + lines.front() +
+  if (report.detail_row)
+    lines.front() = detail_row_name(*report.detail_row) + ": " + lines.front() +
                     " Every row of the campaign: the section Validity map.";
   doc.list(lines);
   place_status();

@@ -28,11 +28,11 @@ void map_section(Document& doc, const Report& report, const FigurePlacer& figure
       "|error| - U exceeds it, not decided in between (U: the FEM's numerical uncertainty of "
       "the run, its GCI from verification.json where it was verified). Errors are out of "
       "sample: each velocity predicted by the row's fit without it. " +
-      (report.detail_row.empty()
+      (!report.detail_row
            ? "The sections after this one treat all runs as one velocity campaign (one "
              "calibration for every " +
                  name + ")."
-           : "The sections after this one detail the row " + report.detail_row +
+           : "The sections after this one detail the row " + detail_row_name(*report.detail_row) +
                  " as a velocity campaign (its calibration, verdict, figures and runs)."));
   std::vector<std::string> items;
   for (const auto& model : map.models)

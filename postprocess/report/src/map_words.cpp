@@ -74,7 +74,7 @@ std::string map_row_name(const std::string& parameter, const SweepValue& value) 
   return short_name(parameter) + " = " + value.text;
 }
 
-std::string detail_row_name(const MapDetailRow& row) {
+std::string detail_row_name(const MapRowAt& row) {
   return map_row_name(row.parameter, row.value) + (row.unit.empty() ? "" : " " + row.unit);
 }
 

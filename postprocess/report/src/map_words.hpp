@@ -19,7 +19,7 @@ std::string with_unit(const SweepValue& value, const std::string& unit);
 /// A row of the map by its value: "Plate thickness = 0.05".
 std::string map_row_name(const std::string& parameter, const SweepValue& value);
 /// The row the sections after the map detail: "Plate thickness = 0.05 m".
-std::string detail_row_name(const MapDetailRow& row);
+std::string detail_row_name(const MapRowAt& row);
 
 /// Why a campaign with sweep axes has no map (ValidityMap::axes).
 std::string no_map_words(const ValidityMap& map);

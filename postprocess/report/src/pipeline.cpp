@@ -139,7 +139,7 @@ ReportOutcome write_report(const ReportRequest& request) {
   ReportOptions options;
   if (auto row = map_detail_row(input)) {
     options.map_campaign = std::move(input);
-    options.detail_row = detail::detail_row_name(*row);
+    options.detail_row = row->at;
     input = std::move(row->campaign);
   }
   ObtainedCalibration obtained =

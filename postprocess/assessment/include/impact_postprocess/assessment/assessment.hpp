@@ -77,9 +77,9 @@ struct Assessment {
   /// The law the first screen and the block for a multibody code recommend (none without a
   /// verdict).
   std::optional<LawRecommendation> recommendation;
-  /// The row of a map campaign that the sections after the map detail ("Plate thickness =
-  /// 0.05 m"); empty when they show every run.
-  std::string detail_row;
+  /// The row of a map campaign that the sections after the map detail (none when they show
+  /// every run).
+  std::optional<MapRowAt> detail_row;
 
   /// The model of this key, or null.
   const ReportModel* model(std::string_view key) const;
@@ -98,9 +98,9 @@ struct AssessmentOptions {
   /// for the section "In your simulator"; none: the section says how to make them.
   std::optional<std::filesystem::path> simulators;
   /// The whole sweep campaign whose map is drawn, when the campaign given to assess is
-  /// one row of it (map_detail_row), and that row's name.
+  /// one row of it (map_detail_row), and where that row lies.
   std::optional<Campaign> map_campaign;
-  std::string detail_row;
+  std::optional<MapRowAt> detail_row;
   /// The calibration of each row of the validity map (of map_campaign, else of the campaign
   /// given to assess), parallel to its map_rows: made by the report pipeline
   /// (calibrate_map_rows, pipeline.hpp), judged by the assessment. A row without one is

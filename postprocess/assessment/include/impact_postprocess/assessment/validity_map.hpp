@@ -137,14 +137,19 @@ struct MapRowCalibration {
 /// its runs; none for any other campaign.
 std::vector<MapRowRuns> map_rows(const Campaign& campaign);
 
-/// The row of a two-axis campaign that the report's sections after the map detail: its runs
-/// (with the campaign's problems), the other axis, its value there and the axis's unit ("m";
-/// "" when not known).
-struct MapDetailRow {
-  Campaign campaign;
+/// A row of a two-axis campaign by its place on the other axis: the axis, its value there and
+/// the axis's unit ("m"; "" when not known).
+struct MapRowAt {
   std::string parameter;
   SweepValue value;
   std::string unit;
+};
+
+/// The row of a two-axis campaign that the report's sections after the map detail: its runs
+/// (with the campaign's problems) and where it lies.
+struct MapDetailRow {
+  Campaign campaign;
+  MapRowAt at;
 };
 
 /// The row of a two-axis campaign (velocity x one other parameter) that the report's sections
