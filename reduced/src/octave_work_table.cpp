@@ -120,6 +120,23 @@ std::pair<double, double> solve_octave(const Piece& piece, double target, double
   return {t, evaluate_octave(piece, t).density};
 }
 
+// The Chebyshev coefficients c_0 .. c_m of the interpolant of the values at the m + 1
+// Chebyshev-Lobatto points cos(pi j / m), m in {8, 16, 32, 64}.
+void lobatto_series(const double* values, std::size_t m, double* coefficients) {
+  const auto& cosines = lobatto_cosines();
+  const std::size_t stride = 64 / m;
+  for (std::size_t k = 0; k <= m; ++k) {
+    double sum = 0;
+    for (std::size_t j = 0; j <= m; ++j) {
+      const double term = values[j] * cosines[(k * j % (2 * m)) * stride];
+      sum += j == 0 || j == m ? 0.5 * term : term;
+    }
+    coefficients[k] = 2 * sum / static_cast<double>(m);
+  }
+  coefficients[0] *= 0.5;
+  coefficients[m] *= 0.5;
+}
+
 } // namespace
 
 OctaveWorkTable::OctaveWorkTable(double start_approach, double start_work)
@@ -182,32 +199,49 @@ OctaveWorkTable::Octave OctaveWorkTable::build(double lower, double work_start,
     at_minus_one += (m % 2 == 0 ? 1.0 : -1.0) * result.integral[m];
   result.integral[0] = -at_minus_one;
   result.work_end = work_start + chebyshev_sum(result.integral.data(), n + 1, 1.0);
-  // The inverse's guess: on each of eight equal parts of the octave's work, t at the 9
-  // Chebyshev-Lobatto points of the part's normalised work (by Newton from the linear guess),
-  // and their series.
-  const double span = result.work_end - result.work_start;
-  constexpr std::size_t m = inverse_size - 1, stride = 64 / m;
-  for (std::size_t part = 0; part < inverse_parts; ++part) {
-    std::array<double, inverse_size> times{};
-    for (std::size_t j = 0; j <= m; ++j) {
-      const double w = cosines[j * stride]; // in the part, [-1, 1]
-      const double target =
-          span * (static_cast<double>(part) + 0.5 * (w + 1)) / static_cast<double>(inverse_parts);
-      times[j] = solve_octave(result, target, 2 * target / span - 1).first;
-    }
-    auto& coefficients = result.inverse[part];
-    for (std::size_t k = 0; k <= m; ++k) {
-      double sum = 0;
-      for (std::size_t j = 0; j <= m; ++j) {
-        const double term = times[j] * cosines[(k * j % (2 * m)) * stride];
-        sum += j == 0 || j == m ? 0.5 * term : term;
-      }
-      coefficients[k] = 2 * sum / static_cast<double>(m);
-    }
-    coefficients[0] *= 0.5;
-    coefficients[m] *= 0.5;
-  }
+  build_parts(result);
   return result;
+}
+
+// On each of eight equal parts of the octave's work: t at the 9 Chebyshev-Lobatto points of
+// the part's normalised work (by Newton from the linear guess) and their series (the
+// inverse's guess); then t at the 8 points between them (by Newton from that guess: one or
+// two evaluations each) and the series of F from all 17.
+void OctaveWorkTable::build_parts(Octave& result) {
+  const auto& cosines = lobatto_cosines();
+  const double span = result.work_end - result.work_start;
+  constexpr std::size_t fine = force_size - 1, fine_stride = 64 / fine;
+  static_assert(fine == 2 * (inverse_size - 1), "the inverse's points are every other one");
+  for (std::size_t part = 0; part < inverse_parts; ++part) {
+    const auto target = [&](std::size_t j) {     // W - W(lower) at fine point j
+      const double w = cosines[j * fine_stride]; // in the part, [-1, 1]
+      return span * (static_cast<double>(part) + 0.5 * (w + 1)) /
+             static_cast<double>(inverse_parts);
+    };
+    std::array<double, force_size> forces{};
+    // As force_at_work's Newton path: G(t) = F(x) x ln(2) / 2.
+    const auto force_at = [&](const std::pair<double, double>& solved) {
+      return solved.second / (result.lower * std::exp2(0.5 * (solved.first + 1)) * half_log_two);
+    };
+    std::array<double, inverse_size> times{};
+    for (std::size_t j = 0; j < inverse_size; ++j) {
+      const double work = target(2 * j);
+      const auto solved = solve_octave(result, work, 2 * work / span - 1);
+      times[j] = solved.first;
+      forces[2 * j] = force_at(solved);
+    }
+    auto& inverse = result.inverse[part];
+    lobatto_series(times.data(), inverse_size - 1, inverse.data());
+    for (std::size_t j = 1; j < fine; j += 2)
+      forces[j] = force_at(
+          solve_octave(result, target(j),
+                       chebyshev_sum(inverse.data(), inverse_size, cosines[j * fine_stride])));
+    auto& force = result.force[part];
+    lobatto_series(forces.data(), fine, force.data());
+    const double scale = std::abs(force[0]);
+    result.force_converged[part] =
+        std::abs(force[fine]) <= 1e-15 * scale && std::abs(force[fine - 1]) <= 1e-15 * scale;
+  }
 }
 
 void OctaveWorkTable::build_up_to(std::size_t index, const Force& force) const {
@@ -245,7 +279,7 @@ double OctaveWorkTable::work(double approach, const Force& force) const {
   return piece.work_start + chebyshev_sum(piece.integral.data(), piece.size + 1, t);
 }
 
-OctaveWorkTable::Located OctaveWorkTable::locate_work(double work, const Force& force) const {
+OctaveWorkTable::Part OctaveWorkTable::locate_part(double work, const Force& force) const {
   // The octave whose works bracket the target: built up to it, then a binary search.
   std::size_t count = built_.load(std::memory_order_acquire);
   while (count == 0 || published_[count - 1].load(std::memory_order_acquire)->work_end < work) {
@@ -261,15 +295,20 @@ OctaveWorkTable::Located OctaveWorkTable::locate_work(double work, const Force& 
       last = middle;
   }
   const Octave& piece = *published_[first].load(std::memory_order_acquire);
-  const double target = work - piece.work_start;
   // The part of the work that holds the target, and the normalised work in it.
   const double scaled =
-      std::clamp(target / (piece.work_end - piece.work_start), 0.0, 1.0) * inverse_parts;
+      std::clamp((work - piece.work_start) / (piece.work_end - piece.work_start), 0.0, 1.0) *
+      inverse_parts;
   const std::size_t part = std::min(static_cast<std::size_t>(scaled), inverse_parts - 1);
-  const double normalised = 2 * (scaled - static_cast<double>(part)) - 1;
-  const auto [t, density] =
-      solve_octave(piece, target,
-                   chebyshev_sum(piece.inverse[part].data(), inverse_size, normalised));
+  return {&piece, part, 2 * (scaled - static_cast<double>(part)) - 1};
+}
+
+OctaveWorkTable::Located OctaveWorkTable::locate_work(double work, const Force& force) const {
+  const Part found = locate_part(work, force);
+  const Octave& piece = *found.piece;
+  const auto [t, density] = solve_octave(piece, work - piece.work_start,
+                                         chebyshev_sum(piece.inverse[found.index].data(),
+                                                       inverse_size, found.normalised));
   return {&piece, t, density};
 }
 
@@ -281,6 +320,9 @@ double OctaveWorkTable::approach(double work, const Force& force) const {
 
 double OctaveWorkTable::force_at_work(double work, const Force& force) const {
   if (!(work > start_work_)) return force(start_approach_);
+  const Part part = locate_part(work, force);
+  if (part.piece->force_converged[part.index])
+    return chebyshev_sum(part.piece->force[part.index].data(), force_size, part.normalised);
   const Located found = locate_work(work, force);
   const double approach = found.piece->lower * std::exp2(0.5 * (found.t + 1));
   // G(t) = F(x) x ln(2) / 2.
