@@ -59,7 +59,9 @@ public:
   /// for the time integrals, which need F only where W is given.
   double force_at_work(double work, const Force& force) const;
   /// {F, dF/dx} there from the series of F x and its derivative (dF/dx within 1.5e-13
-  /// relative: the derivative of the interpolant), for the force peak's search.
+  /// relative: the derivative of the interpolant), for the force peak's search: G and G' from
+  /// the Newton iteration's last evaluation (which also sums G''), carried over its last step
+  /// d <= 1e-9 to first order (errors of order d^2), not from a second evaluation.
   std::pair<double, double> force_and_slope_at_work(double work, const Force& force) const;
   /// W(x_max) - W(x_max - d) [J] for x_max - d >= x_0, d >= 0, without cancellation for
   /// small d: on each octave the difference of the series is summed term by term,
