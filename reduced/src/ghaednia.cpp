@@ -213,8 +213,10 @@ HertzianUnloading GhaedniaContact::unloading(double approach_max) const {
   const double e_star = contact_.contact_modulus;
   if (approach_max <= transition_) // Hertz: R_u = R, no residual.
     return {hertz_coefficient_, 0.0};
-  const double force = loading_force(approach_max);
-  const double radius = contact_radius(approach_max);
+  // F and a from one evaluation of the fit (as loading_force and contact_radius form them).
+  const FitPoint p = fit(approach_max);
+  const double force = p.plastic_force + (p.hertz_force - p.plastic_force) * elastic_weight_;
+  const double radius = p.radius;
   const double unloading_radius = 4 * e_star * radius * radius * radius / (3 * force);
   const double elastic_approach = 3 * force / (4 * e_star * radius);
   return {hertz_coefficient(e_star, unloading_radius), approach_max - elastic_approach};

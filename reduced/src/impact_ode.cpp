@@ -80,10 +80,12 @@ public:
     stepper_.emplace([this](const State& y, State& dydt) { rhs(y, dydt); }, relative_tolerance,
                      time_);
     run();
-    locate_force_maximum();
   }
 
-  OdeImpactResult result() const {
+  // The figures; the force maximum is located here, not for a history, which does not need it
+  // (its search re-steps the steps next to the largest node force some ten times).
+  OdeImpactResult result() {
+    locate_force_maximum();
     OdeImpactResult result{};
     result.approach_max = length_ * approach_max_;
     result.compression_time = time_ * compression_time_;

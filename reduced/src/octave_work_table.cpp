@@ -63,21 +63,25 @@ constexpr double two_over_log_two = 2.8853900817779268147; // dt/d(ln x) = 2 / l
 
 // An octave's series at t in one pass: W - W(lower), G = dW/dt and G' = dG/dt, from the
 // forward recurrences T_(k+1) = 2 t T_k - T_(k-1) and U_(k+1) = 2 t U_k - U_(k-1)
-// (T_k' = k U_(k-1)), stable on [-1, 1]; the three sums share them.
+// (T_k' = k U_(k-1)), stable on [-1, 1]; the three sums share them. With `Curvature` also
+// G'' = sum c_k k U_(k-1)', U_(k+1)' = 2 U_k + 2 t U_k' - U_(k-1)'.
 struct OctavePoint {
   double work;
   double density;
   double density_slope;
+  double density_curvature; // 0 unless asked for
 };
 
-template <class Piece>
+template <bool Curvature, class Piece>
 OctavePoint evaluate_octave(const Piece& piece, double t) {
   const std::size_t n = piece.size; // density: c_0 .. c_(n-1); integral: C_0 .. C_n
   double work = piece.integral[0] + piece.integral[1] * t;
   double density = piece.density[0] + piece.density[1] * t;
   double density_slope = piece.density[1];
+  double density_curvature = 0;
   double previous = 1, current = t;         // T_(k-1), T_k for k = 1
   double previous_u = 1, current_u = 2 * t; // U_(k-2), U_(k-1) for k = 2
+  double previous_du = 0, current_du = 2;   // their derivatives
   for (std::size_t k = 2; k <= n; ++k) {
     const double next = 2 * t * current - previous; // T_k
     previous = current;
@@ -86,27 +90,40 @@ OctavePoint evaluate_octave(const Piece& piece, double t) {
     if (k < n) {
       density += piece.density[k] * next;
       density_slope += piece.density[k] * static_cast<double>(k) * current_u; // k U_(k-1)
+      if (Curvature) density_curvature += piece.density[k] * static_cast<double>(k) * current_du;
+    }
+    if (Curvature) {
+      const double next_du = 2 * current_u + 2 * t * current_du - previous_du; // U_k'
+      previous_du = current_du;
+      current_du = next_du;
     }
     const double next_u = 2 * t * current_u - previous_u; // U_k
     previous_u = current_u;
     current_u = next_u;
   }
-  return {work, density, density_slope};
+  return {work, density, density_slope, density_curvature};
 }
 
 // Newton in t on an octave's series of W - W(lower) (increasing: its slope G > 0) for the
 // value `target`, from `guess`, safeguarded by bisection on [low, high]. It stops once a step
 // is within a few ulps of t, a Newton step is below 1e-9 (its error is then of order
 // (G' / 2G) 1e-18: the series grow like exp(t), so G' / G is of order 1), or the residual is 0.
-// Returns t and G there (after a Newton step d, G + G' d: its error is of order d^2).
-template <class Piece>
-std::pair<double, double> solve_octave(const Piece& piece, double target, double guess) {
+// Returns t and G there (after a Newton step d, G + G' d: its error is of order d^2), and with
+// `Curvature` G' there (G' + G'' d).
+struct Solved {
+  double t;
+  double density;
+  double density_slope; // with Curvature only
+};
+
+template <bool Curvature = false, class Piece>
+Solved solve_octave(const Piece& piece, double target, double guess) {
   double low = -1, high = 1;
   double t = std::clamp(guess, -1.0, 1.0);
   for (int iteration = 0; iteration < 100; ++iteration) {
-    const OctavePoint point = evaluate_octave(piece, t);
+    const OctavePoint point = evaluate_octave<Curvature>(piece, t);
     const double residual = point.work - target;
-    if (residual == 0) return {t, point.density};
+    if (residual == 0) return {t, point.density, point.density_slope};
     (residual < 0 ? low : high) = t;
     double next = t - residual / point.density;
     const bool newton = next > low && next < high;
@@ -114,10 +131,30 @@ std::pair<double, double> solve_octave(const Piece& piece, double target, double
     const bool done = std::abs(next - t) <= 4 * std::numeric_limits<double>::epsilon() ||
                       high - low <= 4 * std::numeric_limits<double>::epsilon() ||
                       (newton && std::abs(next - t) <= 1e-9);
-    if (done) return {next, point.density + point.density_slope * (next - t)};
+    if (done)
+      return {next, point.density + point.density_slope * (next - t),
+              point.density_slope + point.density_curvature * (next - t)};
     t = next;
   }
-  return {t, evaluate_octave(piece, t).density};
+  const OctavePoint point = evaluate_octave<Curvature>(piece, t);
+  return {t, point.density, point.density_slope};
+}
+
+// The Chebyshev coefficients c_0 .. c_m of the interpolant of the values at the m + 1
+// Chebyshev-Lobatto points cos(pi j / m), m in {8, 16, 32, 64}.
+void lobatto_series(const double* values, std::size_t m, double* coefficients) {
+  const auto& cosines = lobatto_cosines();
+  const std::size_t stride = 64 / m;
+  for (std::size_t k = 0; k <= m; ++k) {
+    double sum = 0;
+    for (std::size_t j = 0; j <= m; ++j) {
+      const double term = values[j] * cosines[(k * j % (2 * m)) * stride];
+      sum += j == 0 || j == m ? 0.5 * term : term;
+    }
+    coefficients[k] = 2 * sum / static_cast<double>(m);
+  }
+  coefficients[0] *= 0.5;
+  coefficients[m] *= 0.5;
 }
 
 } // namespace
@@ -182,32 +219,49 @@ OctaveWorkTable::Octave OctaveWorkTable::build(double lower, double work_start,
     at_minus_one += (m % 2 == 0 ? 1.0 : -1.0) * result.integral[m];
   result.integral[0] = -at_minus_one;
   result.work_end = work_start + chebyshev_sum(result.integral.data(), n + 1, 1.0);
-  // The inverse's guess: on each of eight equal parts of the octave's work, t at the 9
-  // Chebyshev-Lobatto points of the part's normalised work (by Newton from the linear guess),
-  // and their series.
-  const double span = result.work_end - result.work_start;
-  constexpr std::size_t m = inverse_size - 1, stride = 64 / m;
-  for (std::size_t part = 0; part < inverse_parts; ++part) {
-    std::array<double, inverse_size> times{};
-    for (std::size_t j = 0; j <= m; ++j) {
-      const double w = cosines[j * stride]; // in the part, [-1, 1]
-      const double target =
-          span * (static_cast<double>(part) + 0.5 * (w + 1)) / static_cast<double>(inverse_parts);
-      times[j] = solve_octave(result, target, 2 * target / span - 1).first;
-    }
-    auto& coefficients = result.inverse[part];
-    for (std::size_t k = 0; k <= m; ++k) {
-      double sum = 0;
-      for (std::size_t j = 0; j <= m; ++j) {
-        const double term = times[j] * cosines[(k * j % (2 * m)) * stride];
-        sum += j == 0 || j == m ? 0.5 * term : term;
-      }
-      coefficients[k] = 2 * sum / static_cast<double>(m);
-    }
-    coefficients[0] *= 0.5;
-    coefficients[m] *= 0.5;
-  }
+  build_parts(result);
   return result;
+}
+
+// On each of eight equal parts of the octave's work: t at the 9 Chebyshev-Lobatto points of
+// the part's normalised work (by Newton from the linear guess) and their series (the
+// inverse's guess); then t at the 8 points between them (by Newton from that guess: one or
+// two evaluations each) and the series of F from all 17.
+void OctaveWorkTable::build_parts(Octave& result) {
+  const auto& cosines = lobatto_cosines();
+  const double span = result.work_end - result.work_start;
+  constexpr std::size_t fine = force_size - 1, fine_stride = 64 / fine;
+  static_assert(fine == 2 * (inverse_size - 1), "the inverse's points are every other one");
+  for (std::size_t part = 0; part < inverse_parts; ++part) {
+    const auto target = [&](std::size_t j) {     // W - W(lower) at fine point j
+      const double w = cosines[j * fine_stride]; // in the part, [-1, 1]
+      return span * (static_cast<double>(part) + 0.5 * (w + 1)) /
+             static_cast<double>(inverse_parts);
+    };
+    std::array<double, force_size> forces{};
+    // As force_at_work's Newton path: G(t) = F(x) x ln(2) / 2.
+    const auto force_at = [&](const Solved& solved) {
+      return solved.density / (result.lower * std::exp2(0.5 * (solved.t + 1)) * half_log_two);
+    };
+    std::array<double, inverse_size> times{};
+    for (std::size_t j = 0; j < inverse_size; ++j) {
+      const double work = target(2 * j);
+      const auto solved = solve_octave(result, work, 2 * work / span - 1);
+      times[j] = solved.t;
+      forces[2 * j] = force_at(solved);
+    }
+    auto& inverse = result.inverse[part];
+    lobatto_series(times.data(), inverse_size - 1, inverse.data());
+    for (std::size_t j = 1; j < fine; j += 2)
+      forces[j] = force_at(
+          solve_octave(result, target(j),
+                       chebyshev_sum(inverse.data(), inverse_size, cosines[j * fine_stride])));
+    auto& force = result.force[part];
+    lobatto_series(forces.data(), fine, force.data());
+    const double scale = std::abs(force[0]);
+    result.force_converged[part] =
+        std::abs(force[fine]) <= 1e-15 * scale && std::abs(force[fine - 1]) <= 1e-15 * scale;
+  }
 }
 
 void OctaveWorkTable::build_up_to(std::size_t index, const Force& force) const {
@@ -245,7 +299,7 @@ double OctaveWorkTable::work(double approach, const Force& force) const {
   return piece.work_start + chebyshev_sum(piece.integral.data(), piece.size + 1, t);
 }
 
-OctaveWorkTable::Located OctaveWorkTable::locate_work(double work, const Force& force) const {
+OctaveWorkTable::Part OctaveWorkTable::locate_part(double work, const Force& force) const {
   // The octave whose works bracket the target: built up to it, then a binary search.
   std::size_t count = built_.load(std::memory_order_acquire);
   while (count == 0 || published_[count - 1].load(std::memory_order_acquire)->work_end < work) {
@@ -261,16 +315,21 @@ OctaveWorkTable::Located OctaveWorkTable::locate_work(double work, const Force& 
       last = middle;
   }
   const Octave& piece = *published_[first].load(std::memory_order_acquire);
-  const double target = work - piece.work_start;
   // The part of the work that holds the target, and the normalised work in it.
   const double scaled =
-      std::clamp(target / (piece.work_end - piece.work_start), 0.0, 1.0) * inverse_parts;
+      std::clamp((work - piece.work_start) / (piece.work_end - piece.work_start), 0.0, 1.0) *
+      inverse_parts;
   const std::size_t part = std::min(static_cast<std::size_t>(scaled), inverse_parts - 1);
-  const double normalised = 2 * (scaled - static_cast<double>(part)) - 1;
-  const auto [t, density] =
-      solve_octave(piece, target,
-                   chebyshev_sum(piece.inverse[part].data(), inverse_size, normalised));
-  return {&piece, t, density};
+  return {&piece, part, 2 * (scaled - static_cast<double>(part)) - 1};
+}
+
+OctaveWorkTable::Located OctaveWorkTable::locate_work(double work, const Force& force) const {
+  const Part found = locate_part(work, force);
+  const Octave& piece = *found.piece;
+  const Solved solved = solve_octave(piece, work - piece.work_start,
+                                     chebyshev_sum(piece.inverse[found.index].data(), inverse_size,
+                                                   found.normalised));
+  return {&piece, solved.t, solved.density};
 }
 
 double OctaveWorkTable::approach(double work, const Force& force) const {
@@ -281,6 +340,9 @@ double OctaveWorkTable::approach(double work, const Force& force) const {
 
 double OctaveWorkTable::force_at_work(double work, const Force& force) const {
   if (!(work > start_work_)) return force(start_approach_);
+  const Part part = locate_part(work, force);
+  if (part.piece->force_converged[part.index])
+    return chebyshev_sum(part.piece->force[part.index].data(), force_size, part.normalised);
   const Located found = locate_work(work, force);
   const double approach = found.piece->lower * std::exp2(0.5 * (found.t + 1));
   // G(t) = F(x) x ln(2) / 2.
@@ -289,10 +351,14 @@ double OctaveWorkTable::force_at_work(double work, const Force& force) const {
 
 std::pair<double, double> OctaveWorkTable::force_and_slope_at_work(double work,
                                                                    const Force& force) const {
-  const Located found = locate_work(std::max(work, start_work_), force);
-  const double t = found.t;
-  const OctavePoint point = evaluate_octave(*found.piece, t);
-  const double approach = found.piece->lower * std::exp2(0.5 * (t + 1));
+  const Part found = locate_part(std::max(work, start_work_), force);
+  const Octave& piece = *found.piece;
+  // G and G' at the solution from the last evaluation of the Newton iteration, carried over
+  // its last step d (<= 1e-9) to first order: errors of order d^2, as G's own.
+  const Solved point = solve_octave<true>(piece, std::max(work, start_work_) - piece.work_start,
+                                          chebyshev_sum(piece.inverse[found.index].data(),
+                                                        inverse_size, found.normalised));
+  const double approach = piece.lower * std::exp2(0.5 * (point.t + 1));
   // G = F x h and dG/dt = (F' x + F) x h^2, h = ln(2) / 2.
   const double force_value = point.density / (approach * half_log_two);
   const double slope =

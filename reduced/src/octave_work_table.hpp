@@ -18,6 +18,18 @@
 // ends it: a step below 1e-9 in t
 // leaves an error of about (G'/2G) 1e-18, far below the rounding of t.
 //
+// F at a given work (force_at_work, the integrand of the damped impact's time integrals) is
+// a Chebyshev series of F(W) on each of those parts, interpolating at 17 points the values
+// that the Newton path gives there, where its last two coefficients are below 1e-15 of the
+// first, as for the octave's own series (checked when the octave is built; a part that fails
+// it keeps the Newton path). On the fits the coefficients fall by 10 (the first part of the
+// first octave) to 30 per degree down to the rounding of the values, about 1e-16, by degree
+// 10 to 15. One sum of 17 terms then replaces the inverse's guess, one or two evaluations of
+// the octave's three series and an exp2 (a quarter of the instructions of a damped
+// impact's response on the fits, callgrind); F stays within 3e-15 of the fit's at the
+// inverse (tests/reduced/test_octave_work_table.cpp). Building an octave costs 64 more
+// Newton solves for it (about twice the instructions).
+//
 // Thread safety: const member functions may be called concurrently (the octaves are built
 // under a mutex, never move once built, and are published through atomic pointers, so that
 // reading a built octave takes no lock).
@@ -47,7 +59,9 @@ public:
   /// for the time integrals, which need F only where W is given.
   double force_at_work(double work, const Force& force) const;
   /// {F, dF/dx} there from the series of F x and its derivative (dF/dx within 1.5e-13
-  /// relative: the derivative of the interpolant), for the force peak's search.
+  /// relative: the derivative of the interpolant), for the force peak's search: G and G' from
+  /// the Newton iteration's last evaluation (which also sums G''), carried over its last step
+  /// d <= 1e-9 to first order (errors of order d^2), not from a second evaluation.
   std::pair<double, double> force_and_slope_at_work(double work, const Force& force) const;
   /// W(x_max) - W(x_max - d) [J] for x_max - d >= x_0, d >= 0, without cancellation for
   /// small d: on each octave the difference of the series is summed term by term,
@@ -62,6 +76,7 @@ public:
   static constexpr std::size_t max_degree = 65;   // coefficients of the longest series
   static constexpr std::size_t inverse_parts = 8; // pieces of the inverse's guess
   static constexpr std::size_t inverse_size = 9;  // coefficients of each piece
+  static constexpr std::size_t force_size = 17;   // coefficients of F(W) on each piece
   // Octaves x_0 2^k, k < max_octaves: beyond, x_0 2^k overflows for any x_0 >= 1e-300.
   static constexpr std::size_t max_octaves = 2100;
 
@@ -75,6 +90,9 @@ private:
     std::array<double, max_degree + 1> integral; // of W - W(lower), zero at t = -1
     // t on part k of the work as a series in its own normalised work in [-1, 1]
     std::array<std::array<double, inverse_size>, inverse_parts> inverse;
+    // F on part k as a series in the same normalised work, where it converged (else unused)
+    std::array<std::array<double, force_size>, inverse_parts> force;
+    std::array<bool, inverse_parts> force_converged;
   };
   // The octave that holds x (built with those below it).
   const Octave& octave_of(double approach, const Force& force) const;
@@ -86,9 +104,18 @@ private:
     double density;
   };
   Located locate_work(double work, const Force& force) const;
+  // The octave that holds W = work, the part of its work and the normalised work in it.
+  struct Part {
+    const Octave* piece;
+    std::size_t index;
+    double normalised;
+  };
+  Part locate_part(double work, const Force& force) const;
   // Builds octaves up to `index` (under the mutex).
   void build_up_to(std::size_t index, const Force& force) const;
   Octave build(double lower, double work_start, const Force& force) const;
+  // The series of t and of F on the parts of an octave whose work series is built.
+  static void build_parts(Octave& octave);
 
   double start_approach_;
   double start_work_;

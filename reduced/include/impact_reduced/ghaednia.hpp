@@ -122,7 +122,7 @@ public:
   double loading_work(double approach) const override;
   /// The inverse of loading_work: Hertz's in closed form, then Newton on the octave's series.
   double loading_approach(double work) const override;
-  /// As JacksonGreenContact's: F from the octave's series above the transition.
+  /// As JacksonGreenContact's: one sum of a series of F(W) above the transition.
   double loading_force_at_work(double work) const override;
   /// Likewise F and dF/dx from the series.
   std::pair<double, double> loading_force_and_stiffness_at_work(double work) const override;

@@ -111,8 +111,10 @@ OdeImpactResult integrate_impact(double mass, double velocity, const ContactForc
 /// The time history of the same integration: `points` (>= 2) samples uniformly spaced in
 /// time from t = 0 to the end of contact (both included). Each sample is obtained by
 /// re-taking the integration step that contains it from that step's start, so the samples
-/// carry the accuracy of the integration itself (no interpolation). The last sample is the
-/// separation state (approach 0, or approach_at_separation for ContactEnd::zero_force).
+/// carry the accuracy of the integration itself (no interpolation): five force evaluations a
+/// sample (the samples in one step share the derivative at its start), and no force-maximum
+/// search. The last sample is the separation state (approach 0, or approach_at_separation
+/// for ContactEnd::zero_force).
 std::vector<ImpactSample> integrate_impact_history(double mass, double velocity,
                                                    const ContactForceLaw& force, std::size_t points,
                                                    double relative_tolerance = 1e-10,

@@ -133,8 +133,8 @@ public:
   std::pair<double, double> loading_force_and_stiffness(double approach) const override;
   /// Hertz's inverse below the transition; above it Newton's method on the octave's series.
   double loading_approach(double work) const override;
-  /// Hertz's in closed form; above the transition F from the octave's series of F x at the
-  /// inverse (within 3e-15 of the fit's, tests/reduced/test_octave_work_table.cpp).
+  /// Hertz's in closed form; above the transition one Chebyshev sum, F(W) on an eighth of an
+  /// octave's work (within 3e-15 of the fit's at the inverse, test_octave_work_table.cpp).
   double loading_force_at_work(double work) const override;
   /// Likewise F and dF/dx (the latter within 1.5e-13 of the fit's, measured; the peak's
   /// search only locates the root with it, F_max is the fit's force there).
