@@ -504,6 +504,11 @@ TEST(ValidityMapNoRebound, TheCellSaysWhyAndTheReportStaysComplete) {
     EXPECT_NE(problem.kind, ProblemKind::input) << problem.message;
   EXPECT_TRUE(std::any_of(report.problems.begin(), report.problems.end(),
                           [](const Problem& p) { return p.kind == ProblemKind::no_rebound; }));
+  // The glance's status line names the finding, although the run has no velocity on the page.
+  const std::string page = page_of(report, "validity_map_no_rebound_page");
+  EXPECT_EQ(page.find("Warnings: ."), std::string::npos);
+  EXPECT_NE(page.find("Warnings: no rebound in 1 run(s), which the verdict cannot judge."),
+            std::string::npos);
   ASSERT_TRUE(report.map && report.map->available);
   for (const auto& model : row_at(*report.map, 0.004).models) {
     ASSERT_EQ(model.cells.size(), velocities.size());

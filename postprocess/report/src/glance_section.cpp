@@ -321,7 +321,7 @@ std::string recommended_block(const Report& report) {
 std::string status_line(const Report& report, bool& incomplete) {
   std::vector<std::string> problems;
   std::vector<double> oscillating, energy, other_warnings;
-  std::size_t warnings = 0;
+  std::size_t warnings = 0, without_rebound = 0, unplaced = 0;
   const auto add = [](std::vector<double>& list, double velocity) {
     if (std::find(list.begin(), list.end(), velocity) == list.end()) list.push_back(velocity);
   };
@@ -333,8 +333,15 @@ std::string status_line(const Report& report, bool& incomplete) {
     }
     ++warnings;
     if (problem.kind == ProblemKind::quality) continue; // by the runs' findings, below
-    for (const auto& run : report.runs)
-      if (same_source(run.source, problem.source)) add(other_warnings, run.velocity);
+    const auto run = std::find_if(report.runs.begin(), report.runs.end(), [&](const ReportRun& r) {
+      return same_source(r.source, problem.source);
+    });
+    if (run != report.runs.end())
+      add(other_warnings, run->velocity);
+    else if (problem.kind == ProblemKind::no_rebound)
+      ++without_rebound; // a run the reader could not use: it has no velocity on this page
+    else
+      ++unplaced;
   }
   for (const auto& run : report.runs) {
     if (run.quality.oscillation || run.quality.after_release) add(oscillating, run.velocity);
@@ -364,6 +371,10 @@ std::string status_line(const Report& report, bool& incomplete) {
                       " target at V = " + velocity_list(sorted(energy)));
     if (!other_warnings.empty())
       parts.push_back("other findings at V = " + velocity_list(sorted(other_warnings)));
+    if (without_rebound > 0)
+      parts.push_back("no rebound in " + std::to_string(without_rebound) +
+                      " run(s), which the verdict cannot judge");
+    if (unplaced > 0) parts.push_back(std::to_string(unplaced) + " other finding(s)");
     text += std::string(text.empty() ? "" : " ") + "Warnings: ";
     for (std::size_t i = 0; i < parts.size(); ++i) text += (i ? "; " : "") + parts[i];
     text += ".";
