@@ -264,21 +264,27 @@ namespace impact_fem
     });
     discretisation_choice.expected = expected;
     using Rule                     = discretisation::AutomaticDiscretisation;
-    discretisation_choice.entries  = {{"Mesh/Contact element size",
-                                       "m",
-                                       mesh.contact_element_size,
-                                       mesh.automatic_size[0],
-                                       Rule::contact_element_size_rule()},
-                                      {"Mesh/Uniform zone radius",
-                                       "m",
-                                       mesh.uniform_zone_radius,
-                                       mesh.automatic_size[1],
-                                       Rule::uniform_zone_rule()},
-                                      {"Mesh/Contact surface radius",
-                                       "m",
-                                       mesh.contact_surface_radius,
-                                       mesh.automatic_size[2],
-                                       Rule::contact_surface_rule()}};
+    discretisation_choice.entries  = {
+       {"Mesh/Contact element size",
+        "m",
+        mesh.contact_element_size,
+        mesh.automatic_size[0],
+        Rule::contact_element_size_rule()},
+       {"Mesh/Uniform zone radius",
+        "m",
+        mesh.uniform_zone_radius,
+        mesh.automatic_size[1],
+        Rule::uniform_zone_rule()},
+       {"Mesh/Contact surface radius",
+        "m",
+        mesh.contact_surface_radius,
+        mesh.automatic_size[2],
+        Rule::contact_surface_rule()},
+       {"Mesh/Contact surface refinements",
+        "1",
+        double(mesh.contact_surface_refinements),
+        mesh.automatic_surface_refinements,
+        Rule::contact_surface_refinements_rule()}};
     contact.parse_parameters(prm);
     nonlinear_step.parse_parameters(prm);
   }

@@ -1,7 +1,8 @@
 """A mesh and a time step that size themselves ("auto", the default of Mesh/Contact element
 size, Uniform zone radius, Contact surface radius and Time integration/Steps per contact time):
 the sizes follow the expected contact radius a and contact time of the scenario (a / 20, 1.5 a,
-2.5 a at most R/2, 300 steps per expected contact time), Hertz's for elastic bodies and
+2.5 a at most R/2, 300 steps per expected contact time, and the contact surfaces' cells refined
+twice more when a body is expected to yield), Hertz's for elastic bodies and
 Jackson & Green's elastic-plastic impact when a body can yield; each run says what it chose
 (log and summary.json, its history's attributes carry the numbers); a value the scenario sets
 wins; a contact too large for the sphere is refused, naming the entries.
@@ -27,7 +28,8 @@ binary, work, mpiexec = parse_common_arguments()
 reduced = sys.argv[4]
 checks = Checks()
 AUTO = {"Mesh/Contact element size": "auto", "Mesh/Uniform zone radius": "auto",
-        "Mesh/Contact surface radius": "auto", "Time integration/Steps per contact time": "auto"}
+        "Mesh/Contact surface radius": "auto", "Mesh/Contact surface refinements": "auto",
+        "Time integration/Steps per contact time": "auto"}
 SHORT = {"Time integration/Maximum time": 2e-6}
 
 
@@ -58,6 +60,7 @@ checks.check(close(expected["contact_radius"], a_hertz, 1e-12),
              f"{a_hertz:.9e} m")
 want = {"Mesh/Contact element size": a_hertz / 20, "Mesh/Uniform zone radius": 1.5 * a_hertz,
         "Mesh/Contact surface radius": 2.5 * a_hertz,
+        "Mesh/Contact surface refinements": 0,  # nothing can yield
         "Time integration/Steps per contact time": 300}
 for path, value in want.items():
     got = d["entries"][path]
@@ -73,10 +76,29 @@ checks.check(attribute is not None and close(float(attribute), a_hertz / 20, 1e-
 
 # 2. An explicit value wins; the others stay automatic.
 directory = os.path.join(work, "auto_explicit")
-run(binary, directory, {**AUTO, **SHORT, "Mesh/Contact element size": 1e-4})
+run(binary, directory, {**AUTO, **SHORT, "Mesh/Contact element size": 1e-4,
+                        "Mesh/Contact surface refinements": 1})
 got = entries(directory)
 checks.check(got["Mesh/Contact element size"] == {"origin": "scenario", "unit": "m", "value": 1e-4},
              f"Contact element size set by the scenario: {got['Mesh/Contact element size']}")
+checks.check(got["Mesh/Contact surface refinements"] == {"origin": "scenario", "unit": "1",
+                                                          "value": 1},
+             f"Contact surface refinements set by the scenario: "
+             f"{got['Mesh/Contact surface refinements']}")
+# One refinement of the contact surfaces' cells halves the contact nodes' spacing: twice as many.
+directory_0 = os.path.join(work, "auto_explicit_0")
+run(binary, directory_0, {**AUTO, **SHORT, "Mesh/Contact element size": 1e-4,
+                          "Mesh/Contact surface refinements": 0})
+n0, n1 = summary(directory_0)["contact_nodes"], summary(directory)["contact_nodes"]
+checks.check(n1 == 2 * n0 - 1,
+             f"contact nodes {n1} with one surface refinement, {n0} without (2 n - 1 expected)")
+for bad in ("1.5", "7", "-1", "many"):
+    directory = os.path.join(work, "auto_bad_surface_refinements")
+    code, log = run(binary, directory, {**AUTO, **SHORT, "Mesh/Contact surface refinements": bad},
+                    expect_success=False)
+    checks.check(code == 2 and "Mesh/Contact surface refinements" in log
+                 and not os.path.exists(os.path.join(directory, "summary.json")),
+                 f"Contact surface refinements = {bad}: exit {code}, refused naming the entry")
 checks.check(got["Mesh/Contact surface radius"]["origin"] == "auto"
              and close(got["Mesh/Contact surface radius"]["value"], 2.5 * a_hertz, 1e-12),
              "the contact surface radius stays automatic")
@@ -163,6 +185,8 @@ got = d["entries"]
 for path, value in {"Mesh/Contact element size": a_jg / 20,
                     "Mesh/Uniform zone radius": 1.5 * a_jg,
                     "Mesh/Contact surface radius": 2.5 * a_jg,
+                    # V/V_y > 1: a fully plastic contact, its nodes every a / 80
+                    "Mesh/Contact surface refinements": 2,
                     "Time integration/Steps per contact time": 300 * t_hertz / t_jg}.items():
     checks.check(close(got[path]["value"], value, 1e-6),
                  f"{path} = {got[path]['value']:.6e}, rule {value:.6e}")

@@ -34,6 +34,8 @@ namespace impact_fem
         std::min(surface_per_contact_radius * a, 0.5 * sphere_radius);
       uniform_zone_radius =
         std::min(uniform_zone_per_contact_radius * a, contact_surface_radius);
+      contact_surface_refinements =
+        expected.velocity_ratio > 1 ? plastic_contact_surface_refinements : 0;
       steps_per_contact_time = expected.contact_time > 0 ?
                                  steps_per_expected_contact_time *
                                    hertz_contact_time / expected.contact_time :
@@ -71,6 +73,17 @@ namespace impact_fem
     AutomaticDiscretisation::contact_surface_rule()
     {
       return number(surface_per_contact_radius) + " a, at most R/2";
+    }
+
+
+    std::string
+    AutomaticDiscretisation::contact_surface_refinements_rule()
+    {
+      return number(plastic_contact_surface_refinements) +
+             " if a body is expected to yield (contact nodes every a / " +
+             number(elements_per_contact_radius *
+                    (1u << plastic_contact_surface_refinements)) +
+             "), else 0";
     }
 
 

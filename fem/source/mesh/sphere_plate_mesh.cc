@@ -5,6 +5,7 @@
 #include <deal.II/grid/grid_in.h>
 #include <deal.II/grid/manifold_lib.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -72,6 +73,16 @@ namespace impact_fem
                       "Number of additional refinements of the cells within "
                       "the contact surface radius of the contact point [-], "
                       "0..6.");
+    prm.declare_entry("Contact surface refinements",
+                      "auto",
+                      *discretisation::number_or_auto_pattern(),
+                      "Number of additional refinements of the cells with a "
+                      "face on a contact surface [-], an integer in 0..6 "
+                      "(after the contact refinements): each halves the "
+                      "spacing of the contact nodes, and only of them. "
+                      "'auto': 2 if a body is expected to yield (a fully "
+                      "plastic contact force rises in a step as each node "
+                      "enters contact), else 0.");
     prm.declare_entry("Polynomial degree",
                       "2",
                       Patterns::Integer(1, 4),
@@ -109,7 +120,20 @@ namespace impact_fem
           prm, sized[i], std::string("Mesh/") + sized[i], 0, automatic_size[i]);
         any_automatic = any_automatic || automatic_size[i];
       }
-    if (any_automatic)
+    const double surface_refinements =
+      discretisation::number_or_auto(prm,
+                                     "Contact surface refinements",
+                                     "Mesh/Contact surface refinements",
+                                     0,
+                                     automatic_surface_refinements);
+    AssertThrow(surface_refinements >= 0 && surface_refinements <= 6 &&
+                  surface_refinements == std::floor(surface_refinements),
+                ExcMessage("Mesh/Contact surface refinements must be 'auto' "
+                           "or an integer in 0..6, got " +
+                           as_written(surface_refinements) + "."));
+    contact_surface_refinements =
+      static_cast<unsigned int>(surface_refinements);
+    if (any_automatic || automatic_surface_refinements)
       {
         const discretisation::AutomaticDiscretisation rule = automatic();
         const double ruled[3] = {rule.contact_element_size,
@@ -118,6 +142,8 @@ namespace impact_fem
         for (unsigned int i = 0; i < 3; ++i)
           if (automatic_size[i])
             size[i] = ruled[i];
+        if (automatic_surface_refinements)
+          contact_surface_refinements = rule.contact_surface_refinements;
       }
     contact_element_size   = size[0];
     uniform_zone_radius    = size[1];
@@ -256,6 +282,17 @@ namespace impact_fem
             for (const auto &contact_point : contact_points)
               if (cell->center().distance(contact_point) <
                   contact_surface_radius + cell->diameter())
+                cell->set_refine_flag();
+        triangulation.execute_coarsening_and_refinement();
+      }
+    for (unsigned int cycle = 0; cycle < contact_surface_refinements; ++cycle)
+      {
+        for (const auto &cell : triangulation.active_cell_iterators())
+          if (cell->is_locally_owned())
+            for (const auto &face : cell->face_iterators())
+              if (face->at_boundary() &&
+                  (face->boundary_id() == boundary_ids::sphere_contact ||
+                   face->boundary_id() == boundary_ids::plate_contact))
                 cell->set_refine_flag();
         triangulation.execute_coarsening_and_refinement();
       }

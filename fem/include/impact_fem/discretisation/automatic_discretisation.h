@@ -24,7 +24,9 @@ namespace impact_fem
      * The rule, with a the expected contact radius and t_c the expected
      * contact time (expected_contact.h): contact elements a / 20, a uniform
      * zone of 1.5 a and a contact surface of 2.5 a (at most R/2, the
-     * largest the mesh allows), 300 time steps per expected contact time.
+     * largest the mesh allows), the contact surfaces' cells refined twice
+     * more when a body is expected to yield (contact nodes every a / 80),
+     * 300 time steps per expected contact time.
      * The sizes are the ones the rigid-flat bench (fem/bench/
      * dynamic_plastic.sh) measured as the coarsest meeting its GCI targets
      * at 1 and 10 V_y; the step count is the default scenario's, whose
@@ -38,6 +40,15 @@ namespace impact_fem
       static constexpr double uniform_zone_per_contact_radius = 1.5;
       static constexpr double surface_per_contact_radius      = 2.5;
       static constexpr double steps_per_expected_contact_time = 300;
+      /// Refinements of the contact surfaces' cells when a body is expected
+      /// to yield: contact nodes every a / 80. A fully plastic contact
+      /// carries nearly the same pressure up to its edge, so its force rises
+      /// in a step each time a contact node enters contact (about 2 h / a of
+      /// the force: 10 % at a / 20, a staircase that makes the GCI of F_max
+      /// and e oscillatory); at a / 80 the steps and the force oscillation
+      /// fall below 0.5 % (fem/bench/automatic_discretisation.sh), for about
+      /// a quarter more cells.
+      static constexpr unsigned int plastic_contact_surface_refinements = 2;
 
       /// The sizes of the rule for @p expected on a sphere of radius R [m]
       /// whose Hertz contact time is @p hertz_contact_time [s] (the time
@@ -58,12 +69,17 @@ namespace impact_fem
       contact_surface_rule();
       static std::string
       steps_rule();
+      static std::string
+      contact_surface_refinements_rule();
 
       ExpectedContact expected;
       double          contact_element_size   = 0; ///< [m]
       double          uniform_zone_radius    = 0; ///< [m]
       double          contact_surface_radius = 0; ///< [m]
-      double          steps_per_contact_time = 0; ///< per Hertz t_c [-]
+      /// plastic_contact_surface_refinements if the expected contact yields
+      /// (V > V_y), else 0 [-].
+      unsigned int contact_surface_refinements = 0;
+      double       steps_per_contact_time      = 0; ///< per Hertz t_c [-]
     };
 
     /// The pattern of an entry that is "auto" or a number.

@@ -81,6 +81,8 @@ namespace impact_fem
     /// Which of the three sizes were "auto" (contact element size, uniform
     /// zone radius, contact surface radius).
     bool automatic_size[3] = {false, false, false};
+    /// Whether Contact surface refinements was "auto".
+    bool automatic_surface_refinements = false;
 
     /**
      * Run gmsh (rank 0) to write <work_directory>/<name>.msh, read it on all
@@ -109,7 +111,9 @@ namespace impact_fem
     }
     unsigned int global_refinements  = 0;
     unsigned int contact_refinements = 0;
-    unsigned int polynomial_degree   = 2;
+    /// Refinements of the cells with a face on a contact surface.
+    unsigned int contact_surface_refinements = 0;
+    unsigned int polynomial_degree           = 2;
     std::string  gmsh_executable;
     std::string  geometry_file;
 
