@@ -51,11 +51,11 @@ public:
   // too slow for a fit; so the compression is integrated (integrate_impact_history at
   // detail::compression_tolerance: 1e-10, as the comparison laws, on a continuous spring;
   // 1e-13 on the Jackson–Green spring, whose jump at 1.9 omega_c makes the residuals at 1e-10
-  // scatter with the parameters, measured there) under F_L(x) (1 + b x') up to its maximum approach, and the
-  // restitution is the closed-form power-law history of the Hunt–Crossley impact on the
-  // unloading branch k_u (x - x_r)^(3/2) that reaches the same x_max (the library's own
-  // construction of that phase, hunt_crossley_elastic_plastic.hpp). About `points` samples,
-  // equally spaced in time within each phase.
+  // scatter with the parameters, measured there) under F_L(x) (1 + b x') up to its maximum
+  // approach, and the restitution is the closed-form power-law history of the Hunt–Crossley
+  // impact on the unloading branch k_u (x - x_r)^(3/2) that reaches the same x_max (the
+  // library's own construction of that phase, hunt_crossley_elastic_plastic.hpp). About
+  // `points` samples, equally spaced in time within each phase.
   std::vector<reduced::ImpactSample> history(std::size_t points) const override {
     std::vector<reduced::ImpactSample> samples;
     if (dynamic_cast<const reduced::HertzContact*>(&impact_.spring())) {

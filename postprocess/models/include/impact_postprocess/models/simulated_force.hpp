@@ -45,7 +45,7 @@ bool simulate_hunt_crossley_force(const reduced::ContactForceLaw& law,
 /// steps of 2e-7): the second differences scatter by 4e-9 at 1e-10, against a curvature of
 /// 6e-12, so that the fit's finite-difference Jacobian (step 1e-6) is noise near the minimum
 /// and Levenberg–Marquardt crept for 100 iterations without converging; by 2e-11 at 1e-13,
-/// where all seven fits of that law converge in 15 to 21 iterations. Thornton's continuous
+/// where all seven fits of that law converge in 12 to 25 iterations. Thornton's continuous
 /// curve scatters by 3e-14 already at 1e-10.
 double compression_tolerance(const reduced::ElasticPlasticContact& contact, double tolerance);
 
