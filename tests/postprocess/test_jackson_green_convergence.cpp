@@ -6,7 +6,8 @@
 // minimum: the plastic study's Jackson–Green fit without V = 5 m/s crept for 100 iterations
 // and stopped unconverged. The first test checks the cause (the cost is smooth on the scale
 // of the fit's steps), the second the outcome on a campaign that the law does not fit
-// exactly (Thornton's law made the runs), where every fit and every held-out fit converges.
+// exactly (Thornton's law made the runs), where every fit and every held-out fit converges
+// (before the fix the fit without the slowest run stopped at 100 iterations there too).
 
 #include "plastic_runs.hpp"
 
@@ -86,12 +87,14 @@ TEST(JacksonGreenConvergence, TheFittedCostIsSmoothInTheParameters) {
 
 // Thornton's runs at V/V_y = 1.1 ... 3 (maximum approaches near Jackson–Green's jump, as in
 // the plastic study) fitted by Jackson–Green: the campaign fit and the fit without each
-// velocity all converge, and the calibration records no convergence problem.
+// velocity all converge, and the calibration records no convergence problem. Measured before
+// the fix: the fit without V = 1.1 V_y stopped unconverged at 100 iterations, the campaign fit
+// took 55.
 TEST(JacksonGreenConvergence, EveryFitOfACampaignThatTheLawDoesNotFitExactlyConverges) {
   const impact::testing::Truth truth;
   const double v_y = thornton_yield_velocity(truth.yield_approach(), truth.mass, truth.stiffness());
   std::vector<FemRun> runs;
-  for (double ratio : {1.1, 1.3, 1.6, 2.0, 2.5, 3.0})
+  for (double ratio : {1.1, 1.6, 2.5, 3.0})
     runs.push_back(impact::testing::thornton_run(truth, ratio * v_y));
   CalibrationOptions options;
   options.laws = {"jackson-green"};
@@ -104,9 +107,8 @@ TEST(JacksonGreenConvergence, EveryFitOfACampaignThatTheLawDoesNotFitExactlyConv
     EXPECT_TRUE(held_out.converged) << "without V = " << held_out.velocity << " m/s";
   for (const auto& problem : calibration.problems)
     EXPECT_NE(problem.kind, ProblemKind::convergence) << problem.message;
-  // Nor does it creep to the limit before its steps become small: 19 iterations measured
-  // (50 before the fix, where the scatter of the cost let it converge only by chance).
-  EXPECT_LT(fitted->fit.iterations, 30);
+  // Nor does it creep before its steps become small: 23 iterations measured (55 before).
+  EXPECT_LT(fitted->fit.iterations, 35);
   // The law does not fit Thornton's runs exactly (a few % of the peak force), so the
   // convergence is not that of a zero residual.
   EXPECT_GT(fitted->fit.quality.rms_residual, 1e-3);
