@@ -98,6 +98,17 @@ bool simulate_hunt_crossley_force(const reduced::ContactForceLaw& law,
   return force_from_samples(samples, law, setup.mass, times, force);
 }
 
+double compression_tolerance(const reduced::ElasticPlasticContact& contact, double tolerance) {
+  for (const double breakpoint : contact.loading_breakpoints()) {
+    if (!(breakpoint > 0)) continue;
+    const double below = contact.loading_force(breakpoint);
+    const double above = contact.loading_force(breakpoint * (1 + 1e-12));
+    // A continuous curve changes by about its local exponent x 1e-12 over that distance.
+    if (std::abs(above - below) > 1e-6 * std::abs(below)) return std::min(tolerance, 1e-13);
+  }
+  return tolerance;
+}
+
 bool simulate_plastic_force(const reduced::ElasticPlasticContact& contact, double mass,
                             double velocity, const std::vector<double>& times, std::size_t points,
                             double tolerance, double* force) {
@@ -110,7 +121,8 @@ bool simulate_plastic_force(const reduced::ElasticPlasticContact& contact, doubl
       return contact.loading_force(std::max(x, 0.0));
     };
     for (const auto& sample :
-         reduced::integrate_impact_history(mass, velocity, loading, points, tolerance))
+         reduced::integrate_impact_history(mass, velocity, loading, points,
+                                           compression_tolerance(contact, tolerance)))
       if (sample.time < response.compression_time) samples.push_back(sample);
     samples.push_back({response.compression_time, response.approach_max, 0.0, response.force_max});
     const double stiffness = unloading.stiffness;

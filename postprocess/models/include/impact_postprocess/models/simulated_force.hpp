@@ -35,10 +35,25 @@ bool simulate_hunt_crossley_force(const reduced::ContactForceLaw& law,
                                   double velocity, const std::vector<double>& times,
                                   std::size_t points, double* force);
 
+/// The relative tolerance at which to integrate the compression under the elastic-plastic
+/// loading curve of `contact`: `tolerance` (the fits' 1e-10) where the curve is continuous,
+/// 1e-13 where it jumps at one of its breakpoints (by more than 1e-6 of the force there;
+/// Jackson–Green's fit lies 0.5 % above Hertz at 1.9 omega_c). The adaptive stepper steps
+/// across such a jump wherever it falls in a step, and the local error it leaves there
+/// changes with the law's parameters by jumps, not smoothly. Measured on the plastic study's
+/// Jackson–Green fit without V = 5 m/s (the cost of its force residuals against ln c in
+/// steps of 2e-7): the second differences scatter by 4e-9 at 1e-10, against a curvature of
+/// 6e-12, so that the fit's finite-difference Jacobian (step 1e-6) is noise near the minimum
+/// and Levenberg–Marquardt crept for 100 iterations without converging; by 2e-11 at 1e-13,
+/// where all seven fits of that law converge in 12 to 25 iterations. Thornton's continuous
+/// curve scatters by 3e-14 already at 1e-10.
+double compression_tolerance(const reduced::ElasticPlasticContact& contact, double tolerance);
+
 /// The same for a rate-independent elastic-plastic law: the compression integrated
-/// (integrate_impact_history at `tolerance`) under the loading curve up to the maximum approach
-/// of elastic_plastic_impact, the restitution as the second half of the Hertz impact of the
-/// unloading branch (stiffness k_u, shifted by the permanent approach) at the rebound speed.
+/// (integrate_impact_history at compression_tolerance) under the loading curve up to
+/// the maximum approach of elastic_plastic_impact, the restitution as the second half of the
+/// Hertz impact of the unloading branch (stiffness k_u, shifted by the permanent approach) at
+/// the rebound speed, integrated at `tolerance` (Hertz's smooth law).
 bool simulate_plastic_force(const reduced::ElasticPlasticContact& contact, double mass,
                             double velocity, const std::vector<double>& times, std::size_t points,
                             double tolerance, double* force);
