@@ -191,6 +191,14 @@ for path, value in {"Mesh/Contact element size": a_jg / 20,
     checks.check(close(got[path]["value"], value, 1e-6),
                  f"{path} = {got[path]['value']:.6e}, rule {value:.6e}")
 
+# A contact element size the scenario sets is its own mesh: the automatic surface refinement
+# stays 0 although a body yields.
+directory = os.path.join(work, "auto_plastic_explicit_size")
+run(binary, directory, {**AUTO, **SHORT, **plastic, "Mesh/Contact element size": 2e-5})
+got = entries(directory)["Mesh/Contact surface refinements"]
+checks.check(got == {"origin": "auto", "unit": "1", "value": 0},
+             f"explicit contact element size, a body yielding: Contact surface refinements {got}")
+
 # 4. A contact that does not fit on the sphere: soft copper hit at 60 m/s by a 1 mm ball.
 directory = os.path.join(work, "auto_too_large")
 code, log = run(binary, directory, {**AUTO, **plastic, "Scenario/Sphere radius": 1e-3,

@@ -83,7 +83,7 @@ namespace impact_fem
              " if a body is expected to yield (contact nodes every a / " +
              number(elements_per_contact_radius *
                     (1u << plastic_contact_surface_refinements)) +
-             "), else 0";
+             ") and the contact element size is auto, else 0";
     }
 
 

@@ -82,7 +82,8 @@ namespace impact_fem
                       "spacing of the contact nodes, and only of them. "
                       "'auto': 2 if a body is expected to yield (a fully "
                       "plastic contact force rises in a step as each node "
-                      "enters contact), else 0.");
+                      "enters contact) and the contact element size is "
+                      "'auto' too, else 0.");
     prm.declare_entry("Polynomial degree",
                       "2",
                       Patterns::Integer(1, 4),
@@ -142,8 +143,11 @@ namespace impact_fem
         for (unsigned int i = 0; i < 3; ++i)
           if (automatic_size[i])
             size[i] = ruled[i];
+        // A contact element size the scenario sets is the scenario's mesh:
+        // the rule refines only a mesh it sized itself.
         if (automatic_surface_refinements)
-          contact_surface_refinements = rule.contact_surface_refinements;
+          contact_surface_refinements =
+            automatic_size[0] ? rule.contact_surface_refinements : 0;
       }
     contact_element_size   = size[0];
     uniform_zone_radius    = size[1];

@@ -77,7 +77,8 @@ namespace impact_fem
       double          uniform_zone_radius    = 0; ///< [m]
       double          contact_surface_radius = 0; ///< [m]
       /// plastic_contact_surface_refinements if the expected contact yields
-      /// (V > V_y), else 0 [-].
+      /// (V > V_y), else 0 [-]; the mesh applies it only where it sizes the
+      /// contact elements too (an explicit size is the scenario's mesh).
       unsigned int contact_surface_refinements = 0;
       double       steps_per_contact_time      = 0; ///< per Hertz t_c [-]
     };
