@@ -135,17 +135,19 @@ public:
     return locate(start, rate_at(start), lower, h, event, at_lower, at_upper);
   }
 
-  /// The same with f(start) given.
+  /// The same with f(start) given. `bits`: the root is bracketed to 2^(1 - bits) relative
+  /// (the default: to the last bit); fewer for an event whose own rounding noise is larger,
+  /// where TOMS 748 would otherwise end in bisection steps that only resolve that noise.
   template <class Event>
   double locate(const State& start, const State& start_rate, double lower, double h, Event event,
-                double at_lower, double at_upper) const {
+                double at_lower, double at_upper,
+                int bits = std::numeric_limits<double>::digits) const {
     if (at_upper == 0 || (at_upper > 0) == (at_lower > 0)) return h; // the sign change is at h
     if (at_lower == 0) return lower;
     std::uintmax_t iterations = 200;
     const auto root = boost::math::tools::toms748_solve(
         [&](double s) { return event(advance(start, start_rate, s)); }, lower, h, at_lower,
-        at_upper, boost::math::tools::eps_tolerance<double>(std::numeric_limits<double>::digits),
-        iterations);
+        at_upper, boost::math::tools::eps_tolerance<double>(bits), iterations);
     return 0.5 * (root.first + root.second);
   }
 
@@ -188,21 +190,24 @@ public:
   /// The maximum of value(state) over the recorded trajectory ending in `end` (the state at
   /// the end of the last step): the largest node value, refined where rate(state) (the
   /// derivative of the value along the flow) changes from + to - in one of the two steps
-  /// next to that node. Returns (maximum, scaled time).
+  /// next to that node, to `rate_bits` (as locate: the rate is typically a finite
+  /// difference, whose rounding noise limits the root anyway). Returns (maximum, scaled time).
   template <class Value, class Rate>
-  std::pair<double, double> locate_maximum(const State& end, Value value, Rate rate) const {
+  std::pair<double, double> locate_maximum(
+      const State& end, Value value, Rate rate,
+      int rate_bits = std::numeric_limits<double>::digits) const {
     const std::size_t count = steps_.size();
     std::vector<double> node_value(count + 1);
     for (std::size_t i = 0; i < count; ++i) node_value[i] = value(steps_[i].state);
     node_value[count] = value(end);
-    return locate_maximum(node_value, value, rate);
+    return locate_maximum(node_value, value, rate, rate_bits);
   }
 
   /// The same with the values at the nodes given: node_value[i] = value(steps()[i].state),
   /// and the last one the value at the end.
   template <class Value, class Rate>
   std::pair<double, double> locate_maximum(const std::vector<double>& node_value, Value value,
-                                           Rate rate) const {
+                                           Rate rate, int rate_bits) const {
     const std::size_t count = steps_.size();
     const std::size_t j = static_cast<std::size_t>(
         std::max_element(node_value.begin(), node_value.end()) - node_value.begin());
@@ -216,7 +221,8 @@ public:
       if (!(at_start > 0)) continue;
       const double at_end = rate_after(step.length);
       if (!(at_end < 0)) continue;
-      const double h = locate(step.state, start_rate, 0.0, step.length, rate, at_start, at_end);
+      const double h =
+          locate(step.state, start_rate, 0.0, step.length, rate, at_start, at_end, rate_bits);
       const double candidate = value(advance(step.state, start_rate, h));
       if (candidate > maximum) {
         maximum = candidate;

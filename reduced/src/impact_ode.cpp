@@ -245,13 +245,18 @@ private:
   }
 
   // The force maximum lies next to the largest node value, in one of the two adjacent
-  // steps (or at that node): located where dF/dt = 0 by re-stepping.
+  // steps (or at that node): located where dF/dt = 0 by re-stepping, to 2^-39 of the step
+  // (1e-13 of the contact time): the finite difference's rounding, 1e-13 of F's scale, makes
+  // its sign random closer to the root, and TOMS 748 then bisects (10 to 22 evaluations of
+  // dF/dt instead of 5 to 13, measured on Kuwabara-Kono). F_max, second order in that
+  // distance, does not change.
   void locate_force_maximum() {
     std::vector<double> node_value = node_forces_;
     node_value.push_back(force_at(separation_));
+    constexpr int rate_bits = 40;
     std::tie(force_max_, time_force_max_) = stepper_->locate_maximum(
         node_value, [this](const State& y) { return force_at(y); },
-        [this](const State& y) { return force_rate(y); });
+        [this](const State& y) { return force_rate(y); }, rate_bits);
   }
 
   double mass_;
