@@ -1,0 +1,380 @@
+// The Kuwabara-Kono elastic-plastic impact in the square root of the stretch (see
+// kuwabara_kono_stretch_root.hpp for the variables and why).
+//
+// Scaled variables: length L = (5 m V^2 / (4 c))^(2/5) (the elastic Hertz impact's x_max),
+// time T = L / V, force m V / T. State y = (S, U, theta): S = sigma / sqrt(L), U = x' / V,
+// theta = t / T; the approach is L S^2 while loading and L (S^2 + X_r) while unloading,
+// X_r = x_r / L. With the scaled force phi = F T / (m V):
+//     dS/dtau = U,   dU/dtau = -2 S phi,   dtheta/dtau = 2 S.
+
+#include "kuwabara_kono_stretch_root.hpp"
+
+#include "impact_reduced/invalid_input.hpp"
+
+#include "event_stepping.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <tuple>
+#include <utility>
+
+namespace impact::reduced::detail {
+
+namespace {
+
+using Stepper = EventStepper<3, Fehlberg78<3>>;
+using State = Stepper::State;
+
+constexpr double time_limit = 1e5;          // in characteristic times T
+constexpr std::size_t step_limit = 1000000; // accepted steps
+
+// The pieces of the impact, each with its own force and the meaning of S.
+enum class Piece {
+  hertz,    // loading below the breakpoint: phi = c' S (S^2 + (3/2) A' U), S^2 = x / L
+  fit,      // loading above it: the spring's F_L and dF_L/dx at x = L S^2
+  unloading // from x_max: phi = k_u' S (S^2 + (3/2) A' U), S^2 = (x - x_r) / L
+};
+
+double first_breakpoint(const ElasticPlasticContact& spring) {
+  const std::vector<double> breakpoints = spring.loading_breakpoints();
+  if (breakpoints.empty()) return std::numeric_limits<double>::infinity();
+  return *std::min_element(breakpoints.begin(), breakpoints.end());
+}
+
+class StretchRootIntegration {
+public:
+  StretchRootIntegration(double mass, double velocity, const ElasticPlasticContact& spring,
+                         double dissipative_constant, double relative_tolerance)
+      : spring_(spring), mass_(mass), velocity_(velocity), damping_(dissipative_constant) {
+    if (!(relative_tolerance >= 1e-14 && relative_tolerance <= 1e-3))
+      throw InvalidInput("relative_tolerance",
+                         "relative_tolerance must be a number in [1e-14, 1e-3] (got " +
+                             describe(relative_tolerance) + ")");
+    const double hertz = spring.loading_power_law()->stiffness;
+    length_ = std::pow(1.25 * mass * velocity * velocity / hertz, 0.4);
+    time_ = length_ / velocity;
+    force_unit_ = mass * velocity / time_;
+    scaled_damping_ = 1.5 * dissipative_constant / time_;
+    stiffness_unit_ = length_ * std::sqrt(length_) / force_unit_;
+    hertz_scale_ = hertz * stiffness_unit_;
+    breakpoint_ = first_breakpoint(spring);
+    breakpoint_root_ = std::sqrt(breakpoint_ / length_);
+    if (std::isfinite(breakpoint_)) {
+      // The fit's values at the breakpoint: the spring's are Hertz's at x_b itself.
+      std::tie(breakpoint_force_, breakpoint_stiffness_) = spring.loading_force_and_stiffness(
+          std::nextafter(breakpoint_, std::numeric_limits<double>::infinity()));
+    }
+    stepper_.emplace([this](const State& y, State& dydt) { rhs(y, dydt); }, relative_tolerance,
+                     time_);
+    run();
+  }
+
+  OdeImpactResult result() {
+    locate_force_maximum();
+    OdeImpactResult result{};
+    result.approach_max = approach_max_;
+    result.compression_time = time_ * compression_time_;
+    result.force_max = force_unit_ * force_max_;
+    result.time_force_max = time_ * time_force_max_;
+    result.contact_time = time_ * separation_[2];
+    result.rebound_velocity = velocity_ * separation_[1];
+    result.restitution = -separation_[1];
+    result.force_at_separation = force_unit_ * scaled_force(separation_);
+    result.steps = stepper_->steps().size();
+    result.approach_at_separation = approach_at_separation_;
+    return result;
+  }
+
+  std::vector<ImpactSample> history(std::size_t points) {
+    std::vector<ImpactSample> samples;
+    samples.reserve(points);
+    const auto& steps = stepper_->steps();
+    const double end_time = separation_[2];
+    std::size_t index = 0;
+    for (std::size_t i = 0; i + 1 < points; ++i) {
+      const double theta = end_time * static_cast<double>(i) / static_cast<double>(points - 1);
+      // The last step that starts at or before theta (theta grows along the steps).
+      while (index + 1 < steps.size() && steps[index + 1].state[2] <= theta) ++index;
+      const auto& step = steps[index];
+      piece_ = pieces_[index];
+      State state = step.state;
+      if (theta > step.state[2]) {
+        const double h = stepper_->locate(step.state, 0.0, step.length,
+                                          [theta](const State& s) { return s[2] - theta; });
+        state = stepper_->advance(step.state, h);
+      }
+      samples.push_back(sample(state));
+    }
+    piece_ = Piece::unloading;
+    ImpactSample last = sample(separation_);
+    last.approach = approach_at_separation_;
+    samples.push_back(last);
+    return samples;
+  }
+
+private:
+  // The scaled force phi at y on the current piece.
+  double scaled_force(const State& y) const {
+    double phi;
+    if (piece_ == Piece::fit) {
+      const auto [force, stiffness] = fit(length_ * y[0] * y[0]);
+      phi = (force + damping_ * stiffness * velocity_ * y[1]) / force_unit_;
+    } else {
+      const double scale = piece_ == Piece::hertz ? hertz_scale_ : unloading_scale_;
+      phi = scale * y[0] * (y[0] * y[0] + scaled_damping_ * y[1]);
+    }
+    if (!std::isfinite(phi))
+      throw std::runtime_error("Kuwabara-Kono law returned a non-finite force at approach " +
+                               describe(approach(y)) + " m");
+    return phi;
+  }
+
+  // F_L and dF_L/dx above the breakpoint, continued to it and below it to first order. The
+  // spring's own law is Hertz's at x_b itself and below (Jackson-Green's force jumps there,
+  // by 0.5 % at 1.9 omega_c), and the fit piece starts at x_b: its first steps failed their
+  // error test down to 4e-6 of the usual length (measured). Below x_b only the few ulps by
+  // which Fehlberg 7(8)'s twelfth stage (c = 0, weights summing to 0) can land under the
+  // step's start: the continuation's error there, k' d^2 / 2, is far below F's rounding.
+  std::pair<double, double> fit(double x) const {
+    if (x > breakpoint_) return spring_.loading_force_and_stiffness(x);
+    return {breakpoint_force_ + breakpoint_stiffness_ * (x - breakpoint_), breakpoint_stiffness_};
+  }
+
+  double approach(const State& y) const {
+    return length_ * (y[0] * y[0] + (piece_ == Piece::unloading ? residual_ : 0.0));
+  }
+
+  ImpactSample sample(const State& y) const {
+    return {time_ * y[2], approach(y), velocity_ * y[1], force_unit_ * scaled_force(y)};
+  }
+
+  void rhs(const State& y, State& dydt) const { derivative(y, scaled_force(y), dydt); }
+
+  static void derivative(const State& y, double phi, State& dydt) {
+    dydt[0] = y[1];
+    dydt[1] = -2 * y[0] * phi;
+    dydt[2] = 2 * y[0];
+  }
+
+  // dphi/dtau at y on the current piece. On the Hertzian pieces in closed form; on the fit
+  // dF/dt = k x' + A k' x'^2 + A k x'' with k' by a central difference of the spring's
+  // slope over 2^-17 x (one-sided of second order where it would reach below the breakpoint):
+  // the term carries the factor A x' / x, at most a few percent, so the difference's error,
+  // about 1e-10 of k', stays far below the rounding of dF/dt's other terms.
+  double force_rate(const State& y) const {
+    const double phi = scaled_force(y);
+    const double s_rate = y[1], u_rate = -2 * y[0] * phi;
+    if (piece_ != Piece::fit) {
+      const double scale = piece_ == Piece::hertz ? hertz_scale_ : unloading_scale_;
+      return scale * ((3 * y[0] * y[0] + scaled_damping_ * y[1]) * s_rate +
+                      scaled_damping_ * y[0] * u_rate);
+    }
+    const double x = length_ * y[0] * y[0];
+    const double stiffness = fit(x).second;
+    const double dx = std::ldexp(x, -17);
+    const double stiffness_slope =
+        x - dx >= breakpoint_
+            ? (spring_.loading_stiffness(x + dx) - spring_.loading_stiffness(x - dx)) / (2 * dx)
+            : (-3 * stiffness + 4 * spring_.loading_stiffness(x + dx) -
+               spring_.loading_stiffness(x + 2 * dx)) /
+                  (2 * dx);
+    const double approach_rate = 2 * length_ * y[0] * s_rate; // dx/dtau
+    const double rate = velocity_ * y[1];                     // x'
+    const double rate_rate = velocity_ * u_rate;              // dx'/dtau
+    return (stiffness * approach_rate + damping_ * stiffness_slope * approach_rate * rate +
+            damping_ * stiffness * rate_rate) /
+           force_unit_;
+  }
+
+  // The step just taken ends at h (an event): its end state, without the rest of the step.
+  State end_step_at(const State& start, double start_time, double h, double& tau) {
+    stepper_->truncate_last_step(h);
+    tau = start_time + h;
+    return stepper_->advance(start, h);
+  }
+
+  void run() {
+    State y{0.0, 1.0, 0.0};
+    double tau = 0;
+    double dtau = 1e-2;
+    piece_ = Piece::hertz;
+    // The force at y, carried from the end of a step to the start of the next one, where it
+    // gives the stepper its first derivative and the force maximum its node value.
+    double phi = scaled_force(y);
+    while (true) {
+      if (stepper_->steps().size() >= step_limit || y[2] > time_limit) {
+        std::ostringstream message;
+        message.precision(6);
+        message << "the body does not separate: after " << stepper_->steps().size()
+                << " steps, at t = " << time_ * y[2] << " s, approach = " << approach(y)
+                << " m, approach rate = " << velocity_ * y[1] << " m/s";
+        throw ContactDoesNotEnd(message.str());
+      }
+      State start_rate;
+      derivative(y, phi, start_rate);
+      node_forces_.push_back(phi);
+      pieces_.push_back(piece_);
+      const auto& step = stepper_->step(y, tau, dtau, &start_rate);
+      const State start = step.state;
+      const double start_time = step.start;
+      const double length = step.length;
+      if (piece_ != Piece::unloading) {
+        // The maximum approach x' = 0, if reached in this step; the breakpoint before it.
+        const bool stops = y[1] <= 0;
+        const double stop =
+            stops ? stepper_->locate(start, 0.0, length, [](const State& s) { return s[1]; })
+                  : length;
+        if (piece_ == Piece::hertz) {
+          const double root = breakpoint_root_;
+          const double reached = stops ? stepper_->advance(start, stop)[0] : y[0];
+          if (reached >= root) {
+            const double h =
+                stepper_->locate(start, 0.0, stop, [root](const State& s) { return s[0] - root; });
+            y = end_step_at(start, start_time, h, tau);
+            y[0] = root; // the located root, without its rounding
+            piece_ = Piece::fit;
+            phi = scaled_force(y);
+            continue;
+          }
+        }
+        if (stops) {
+          y = end_step_at(start, start_time, stop, tau);
+          y[1] = 0;
+          approach_max_ = length_ * y[0] * y[0];
+          compression_time_ = y[2];
+          const HertzianUnloading branch = spring_.unloading(approach_max_);
+          unloading_scale_ = branch.stiffness * stiffness_unit_;
+          residual_ = branch.residual_approach / length_;
+          y[0] = std::sqrt(std::max(0.0, y[0] * y[0] - residual_));
+          piece_ = Piece::unloading;
+        }
+        phi = scaled_force(y);
+        continue;
+      }
+      // Unloading: separation where F = 0, i.e. S^2 + (3/2) A' U = 0 (A > 0; S = 0 for A = 0,
+      // x = x_r), or where x returns to 0 first (x_r < 0). Both functions decrease along the
+      // unloading while S >= 0, and both are negative at S = 0: if S crossed 0 in the step,
+      // the search is confined to the part before.
+      const double scaled_damping = scaled_damping_, residual = residual_;
+      const auto released = [scaled_damping](const State& s) {
+        return scaled_damping > 0 ? s[0] * s[0] + scaled_damping * s[1] : s[0];
+      };
+      const auto returned = [residual](const State& s) { return s[0] * s[0] + residual; };
+      double end = length;
+      State at_end = y;
+      if (y[0] <= 0) {
+        end = stepper_->locate(start, 0.0, length, [](const State& s) { return s[0]; });
+        at_end = stepper_->advance(start, end);
+      }
+      const bool releases = released(at_end) <= 0;
+      const bool returns = residual < 0 && returned(at_end) <= 0;
+      if (!releases && !returns && end == length) {
+        phi = scaled_force(y);
+        continue;
+      }
+      double h = end;
+      bool at_zero_approach = false;
+      if (releases) h = stepper_->locate(start, 0.0, end, released);
+      if (returns) {
+        const double returned_at = stepper_->locate(start, 0.0, h, returned);
+        if (returned_at < h || !releases) {
+          h = returned_at;
+          at_zero_approach = true;
+        }
+      }
+      separation_ = end_step_at(start, start_time, h, tau);
+      approach_at_separation_ = at_zero_approach ? 0.0 : std::max(0.0, approach(separation_));
+      return;
+    }
+  }
+
+  // The force maximum lies next to the largest node value, in one of the two adjacent steps
+  // (or at that node): located where dF/dtau = 0 by re-stepping, on the piece of that step.
+  void locate_force_maximum() {
+    const auto& steps = stepper_->steps();
+    const std::size_t count = steps.size();
+    std::vector<double> node_value = node_forces_;
+    piece_ = Piece::unloading;
+    node_value.push_back(scaled_force(separation_));
+    const std::size_t j = static_cast<std::size_t>(
+        std::max_element(node_value.begin(), node_value.end()) - node_value.begin());
+    force_max_ = node_value[j];
+    time_force_max_ = j < count ? steps[j].state[2] : separation_[2];
+    for (std::size_t s = (j > 0 ? j - 1 : 0); s <= j && s < count; ++s) {
+      const auto& step = steps[s];
+      piece_ = pieces_[s];
+      const auto rate = [this](const State& y) { return force_rate(y); };
+      const double at_start = rate(step.state);
+      if (!(at_start > 0)) continue;
+      const double at_end = rate(stepper_->advance(step.state, step.length));
+      if (!(at_end < 0)) continue;
+      const double h = stepper_->locate(step.state, 0.0, step.length, rate, at_start, at_end);
+      const State peak = stepper_->advance(step.state, h);
+      const double candidate = scaled_force(peak);
+      if (candidate > force_max_) {
+        force_max_ = candidate;
+        time_force_max_ = peak[2];
+      }
+    }
+    piece_ = Piece::unloading;
+  }
+
+  const ElasticPlasticContact& spring_;
+  double mass_;
+  double velocity_;
+  double damping_; // A [s]
+  double length_ = 0, time_ = 0, force_unit_ = 0;
+  double scaled_damping_ = 0;          // (3/2) A / T
+  double stiffness_unit_ = 0;          // L^(3/2) / (m V / T): a Hertzian stiffness to scaled units
+  double hertz_scale_ = 0;             // c, scaled
+  double breakpoint_ = 0;              // x_b [m], infinite if none
+  double breakpoint_root_ = 0;         // sqrt(x_b / L)
+  double breakpoint_force_ = 0;        // the fit's F_L at x_b [N]
+  double breakpoint_stiffness_ = 0;    // and its dF_L/dx [N/m]
+  double unloading_scale_ = 0;         // k_u, scaled
+  double residual_ = 0;                // X_r = x_r / L
+  mutable Piece piece_ = Piece::hertz; // the piece whose law rhs() uses (set for re-steps)
+  std::optional<Stepper> stepper_;
+  std::vector<double> node_forces_; // phi at the start of each recorded step
+  std::vector<Piece> pieces_;       // the piece of each recorded step
+  double approach_max_ = 0;         // m
+  double compression_time_ = 0;
+  double approach_at_separation_ = 0; // m
+  State separation_{0.0, 0.0, 0.0};
+  double force_max_ = 0;
+  double time_force_max_ = 0;
+};
+
+} // namespace
+
+bool has_hertz_start(const ElasticPlasticContact& spring) {
+  const auto power_law = spring.loading_power_law();
+  return power_law && power_law->exponent == 1.5 && power_law->stiffness > 0;
+}
+
+OdeImpactResult kuwabara_kono_stretch_root_impact(double mass, double velocity,
+                                                  const ElasticPlasticContact& spring,
+                                                  double dissipative_constant,
+                                                  double relative_tolerance) {
+  return StretchRootIntegration(mass, velocity, spring, dissipative_constant, relative_tolerance)
+      .result();
+}
+
+std::vector<ImpactSample> kuwabara_kono_stretch_root_history(double mass, double velocity,
+                                                             const ElasticPlasticContact& spring,
+                                                             double dissipative_constant,
+                                                             std::size_t points,
+                                                             double relative_tolerance) {
+  if (points < 2)
+    throw InvalidInput("points",
+                       "points must be a whole number >= 2 (got " + std::to_string(points) + ")");
+  return StretchRootIntegration(mass, velocity, spring, dissipative_constant, relative_tolerance)
+      .history(points);
+}
+
+} // namespace impact::reduced::detail
