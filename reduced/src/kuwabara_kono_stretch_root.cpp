@@ -141,7 +141,7 @@ private:
   // which Fehlberg 7(8)'s twelfth stage (c = 0, weights summing to 0) can land under the
   // step's start: the continuation's error there, k' d^2 / 2, is far below F's rounding.
   std::pair<double, double> fit(double x) const {
-    if (x > breakpoint_) return spring_.loading_force_and_stiffness(x);
+    if (x > breakpoint_) return spring_.loading_force_and_stiffness_from_table(x);
     return {breakpoint_force_ + breakpoint_stiffness_ * (x - breakpoint_), breakpoint_stiffness_};
   }
 
@@ -163,9 +163,10 @@ private:
 
   // dphi/dtau at y on the current piece. On the Hertzian pieces in closed form; on the fit
   // dF/dt = k x' + A k' x'^2 + A k x'' with k' by a central difference of the spring's
-  // slope over 2^-17 x (one-sided of second order where it would reach below the breakpoint):
-  // the term carries the factor A x' / x, at most a few percent, so the difference's error,
-  // about 1e-10 of k', stays far below the rounding of dF/dt's other terms.
+  // slope over 2^-17 x (one-sided of second order where it would reach below the breakpoint;
+  // the fit's own slope, loading_stiffness, not the table's, whose 1e-14 would be amplified by
+  // 2^17): the term carries the factor A x' / x, at most a few percent, so the difference's
+  // error, about 1e-10 of k', stays far below the rounding of dF/dt's other terms.
   double force_rate(const State& y) const {
     const double phi = scaled_force(y);
     const double s_rate = y[1], u_rate = -2 * y[0] * phi;
@@ -180,7 +181,7 @@ private:
     const double stiffness_slope =
         x - dx >= breakpoint_
             ? (spring_.loading_stiffness(x + dx) - spring_.loading_stiffness(x - dx)) / (2 * dx)
-            : (-3 * stiffness + 4 * spring_.loading_stiffness(x + dx) -
+            : (-3 * spring_.loading_stiffness(x) + 4 * spring_.loading_stiffness(x + dx) -
                spring_.loading_stiffness(x + 2 * dx)) /
                   (2 * dx);
     const double approach_rate = 2 * length_ * y[0] * s_rate; // dx/dtau
