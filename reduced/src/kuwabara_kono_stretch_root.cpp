@@ -293,81 +293,87 @@ private:
       const State start = step.state;
       const double start_time = step.start;
       const double length = step.length;
-      if (piece_ != Piece::unloading) {
-        // The maximum approach x' = 0, if reached in this step; the breakpoint before it.
-        const bool stops = y[1] <= 0;
-        Root stop{length, y};
-        if (stops)
-          stop = locate_event(
-              start, start_rate, length, y, [](const State& s) { return s[1]; },
-              [](const State&, const State& f) { return f[1]; });
-        const double root = breakpoint_root_;
-        if (piece_ == Piece::hertz && stop.state[0] >= root) {
-          const Root at = locate_event(
-              start, start_rate, stop.length, stop.state,
-              [root](const State& s) { return root - s[0]; },
-              [](const State&, const State& f) { return -f[0]; });
-          end_step_at(at, start_time, tau);
-          y = at.state;
-          y[0] = root; // the located root, without its rounding
-          piece_ = Piece::fit;
-          phi = scaled_force(y);
-          continue;
-        }
-        if (stops) {
-          end_step_at(stop, start_time, tau);
-          y = stop.state;
-          y[1] = 0;
-          approach_max_ = length_ * y[0] * y[0];
-          compression_time_ = y[2];
-          const HertzianUnloading branch = spring_.unloading(approach_max_);
-          unloading_scale_ = branch.stiffness * stiffness_unit_;
-          residual_ = branch.residual_approach / length_;
-          y[0] = std::sqrt(std::max(0.0, y[0] * y[0] - residual_));
-          piece_ = Piece::unloading;
-        }
-        phi = scaled_force(y);
-        continue;
-      }
-      // Unloading: separation where F = 0, i.e. S^2 + (3/2) A' U = 0 (A > 0; S = 0 for A = 0,
-      // x = x_r), or where x returns to 0 first (x_r < 0). Both functions decrease along the
-      // unloading while S >= 0, and both are negative at S = 0: if S crossed 0 in the step,
-      // the search is confined to the part before.
-      const double scaled_damping = scaled_damping_, residual = residual_;
-      const auto released = [scaled_damping](const State& s) {
-        return scaled_damping > 0 ? s[0] * s[0] + scaled_damping * s[1] : s[0];
-      };
-      const auto released_rate = [scaled_damping](const State& s, const State& f) {
-        return scaled_damping > 0 ? 2 * s[0] * f[0] + scaled_damping * f[1] : f[0];
-      };
-      const auto returned = [residual](const State& s) { return s[0] * s[0] + residual; };
-      const auto returned_rate = [](const State& s, const State& f) { return 2 * s[0] * f[0]; };
-      Root end{length, y};
-      if (y[0] <= 0)
-        end = locate_event(
-            start, start_rate, length, y, [](const State& s) { return s[0]; },
-            [](const State&, const State& f) { return f[0]; });
-      const bool releases = released(end.state) <= 0;
-      const bool returns = residual < 0 && returned(end.state) <= 0;
-      if (!releases && !returns && end.length == length) {
-        phi = scaled_force(y);
-        continue;
-      }
-      Root separation = end;
-      if (releases)
-        separation =
-            locate_event(start, start_rate, end.length, end.state, released, released_rate);
-      bool at_zero_approach = false;
-      if (residual < 0 && returned(separation.state) <= 0) { // x = 0 first
-        separation = locate_event(start, start_rate, separation.length, separation.state, returned,
-                                  returned_rate);
-        at_zero_approach = true;
-      }
-      end_step_at(separation, start_time, tau);
-      separation_ = separation.state;
-      approach_at_separation_ = at_zero_approach ? 0.0 : std::max(0.0, approach(separation_));
+      if (piece_ != Piece::unloading)
+        end_loading_step(start, start_rate, start_time, length, y, tau);
+      else if (ends_contact(start, start_rate, start_time, length, y, tau))
+        return;
+      phi = scaled_force(y);
+    }
+  }
+
+  // After a step on a loading piece: the step ends at the breakpoint or at x_max if it holds
+  // either, and the next piece starts there (y, tau: the state and time to go on from).
+  void end_loading_step(const State& start, const State& start_rate, double start_time,
+                        double length, State& y, double& tau) {
+    // The maximum approach x' = 0, if reached in this step; the breakpoint before it.
+    const bool stops = y[1] <= 0;
+    Root stop{length, y};
+    if (stops)
+      stop = locate_event(
+          start, start_rate, length, y, [](const State& s) { return s[1]; },
+          [](const State&, const State& f) { return f[1]; });
+    const double root = breakpoint_root_;
+    if (piece_ == Piece::hertz && stop.state[0] >= root) {
+      const Root at = locate_event(
+          start, start_rate, stop.length, stop.state,
+          [root](const State& s) { return root - s[0]; },
+          [](const State&, const State& f) { return -f[0]; });
+      end_step_at(at, start_time, tau);
+      y = at.state;
+      y[0] = root; // the located root, without its rounding
+      piece_ = Piece::fit;
       return;
     }
+    if (!stops) return;
+    end_step_at(stop, start_time, tau);
+    y = stop.state;
+    y[1] = 0;
+    approach_max_ = length_ * y[0] * y[0];
+    compression_time_ = y[2];
+    const HertzianUnloading branch = spring_.unloading(approach_max_);
+    unloading_scale_ = branch.stiffness * stiffness_unit_;
+    residual_ = branch.residual_approach / length_;
+    y[0] = std::sqrt(std::max(0.0, y[0] * y[0] - residual_));
+    piece_ = Piece::unloading;
+  }
+
+  // After a step on the unloading piece: whether the contact ends in it (then the step ends
+  // there and the separation is recorded). Separation where F = 0, i.e. S^2 + (3/2) A' U = 0
+  // (A > 0; S = 0 for A = 0, x = x_r), or where x returns to 0 first (x_r < 0). Both
+  // functions decrease along the unloading while S >= 0, and both are negative at S = 0: if
+  // S crossed 0 in the step, the search is confined to the part before.
+  bool ends_contact(const State& start, const State& start_rate, double start_time, double length,
+                    const State& y, double& tau) {
+    const double scaled_damping = scaled_damping_, residual = residual_;
+    const auto released = [scaled_damping](const State& s) {
+      return scaled_damping > 0 ? s[0] * s[0] + scaled_damping * s[1] : s[0];
+    };
+    const auto released_rate = [scaled_damping](const State& s, const State& f) {
+      return scaled_damping > 0 ? 2 * s[0] * f[0] + scaled_damping * f[1] : f[0];
+    };
+    const auto returned = [residual](const State& s) { return s[0] * s[0] + residual; };
+    const auto returned_rate = [](const State& s, const State& f) { return 2 * s[0] * f[0]; };
+    Root end{length, y};
+    if (y[0] <= 0)
+      end = locate_event(
+          start, start_rate, length, y, [](const State& s) { return s[0]; },
+          [](const State&, const State& f) { return f[0]; });
+    const bool releases = released(end.state) <= 0;
+    const bool returns = residual < 0 && returned(end.state) <= 0;
+    if (!releases && !returns && end.length == length) return false;
+    Root separation = end;
+    if (releases)
+      separation = locate_event(start, start_rate, end.length, end.state, released, released_rate);
+    bool at_zero_approach = false;
+    if (residual < 0 && returned(separation.state) <= 0) { // x = 0 first
+      separation = locate_event(start, start_rate, separation.length, separation.state, returned,
+                                returned_rate);
+      at_zero_approach = true;
+    }
+    end_step_at(separation, start_time, tau);
+    separation_ = separation.state;
+    approach_at_separation_ = at_zero_approach ? 0.0 : std::max(0.0, approach(separation_));
+    return true;
   }
 
   // The force maximum lies next to the largest node value j: in step j if F still rises at
