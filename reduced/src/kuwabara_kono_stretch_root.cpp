@@ -198,6 +198,13 @@ private:
            force_unit_;
   }
 
+  // The re-stepped state at s + d from the one at s (`rate` f there) for |d| <= 1e-8 of the
+  // step, to first order: the error, d^2 |f'| / 2 plus d times the re-step's departure from
+  // f (the step's accuracy), is below 1e-18, and a re-step (13 evaluations) is saved.
+  static State moved(const State& y, const State& rate, double d) {
+    return {y[0] + d * rate[0], y[1] + d * rate[1], y[2] + d * rate[2]};
+  }
+
   // An event's root in a step and the state there.
   struct Root {
     double length; // scaled time from the step's start
@@ -211,7 +218,7 @@ private:
   // derivative of the re-step in s is f there to the step's accuracy, so that convergence is
   // quadratic, and a Newton step below 1e-8 of the step leaves an error below 1e-16 of it.
   // Safeguarded by bisection on the bracket; TOMS 748 (EventStepper::locate) if it does not
-  // end in 8 steps. Three re-steps and two evaluations of f instead of TOMS 748's five to
+  // end in 8 steps. Two re-steps and two evaluations of f instead of TOMS 748's five to
   // seven re-steps and the re-step to the root (measured).
   template <class Event, class EventRate>
   Root locate_event(const State& start, const State& start_rate, double h, const State& at_h,
@@ -253,7 +260,7 @@ private:
       // Converged (the test comes before the bracket's, which a step below an ulp of s fails).
       if (next == s) return {s, y};
       if (std::abs(next - s) <= 1e-8 * h && next >= lower && next <= upper)
-        return {next, stepper_->advance(start, start_rate, next)};
+        return {next, moved(y, rate, next - s)};
       if (!(next > lower && next < upper)) next = 0.5 * (lower + upper);
       s = next;
     }
@@ -329,6 +336,8 @@ private:
     end_step_at(stop, start_time, tau);
     y = stop.state;
     y[1] = 0;
+    maximum_step_ = stepper_->steps().size() - 1;
+    maximum_state_ = y;
     approach_max_ = length_ * y[0] * y[0];
     compression_time_ = y[2];
     const HertzianUnloading branch = spring_.unloading(approach_max_);
@@ -415,7 +424,7 @@ private:
       double next = s - value / slope;
       if (next == s) return {s, y}; // converged, as in locate_event
       if (std::abs(next - s) <= 1e-8 * h && next >= lower && next <= upper)
-        return {next, stepper_->advance(step.state, start_rate, next)};
+        return {next, moved(y, f, next - s)};
       if (!(next > lower && next < upper)) next = 0.5 * (lower + upper);
       s = next;
     }
@@ -445,6 +454,7 @@ private:
     const auto step_end = [&](std::size_t s) -> std::pair<State, double> {
       if (s + 1 < count && pieces_[s + 1] == pieces_[s])
         return {steps[s + 1].state, node_value[s + 1]};
+      if (s == maximum_step_) return {maximum_state_, scaled_force(maximum_state_)};
       const State end = stepper_->advance(steps[s].state, steps[s].length);
       return {end, scaled_force(end)};
     };
@@ -498,6 +508,8 @@ private:
   std::optional<Stepper> stepper_;
   std::vector<double> node_forces_; // phi at the start of each recorded step
   std::vector<Piece> pieces_;       // the piece of each recorded step
+  std::size_t maximum_step_ = 0;    // the step that ends at x_max
+  State maximum_state_{};           // and its end state, in the loading piece's variables
   double approach_max_ = 0;         // m
   double compression_time_ = 0;
   double approach_at_separation_ = 0; // m
