@@ -167,36 +167,53 @@ private:
     dydt[2] = 2 * y[0];
   }
 
-  // dphi/dtau at y on the current piece. On the Hertzian pieces in closed form; on the fit
-  // dF/dt = k x' + A k' x'^2 + A k x'' with k' by a central difference of the slope over
-  // 2^-14 x (one-sided of second order where it would reach below the breakpoint), the
-  // table's slope: its 2.4e-13 makes 4e-9 of k', the truncation as much. That term vanishes
-  // as x'^2 at the force peak (x' ~ A x'' there): its error moves the peak by ~1e-12 of the
-  // step, and dF/dt's sign elsewhere not at all.
-  double force_rate(const State& y) const {
+  // phi and its first two derivatives in tau at y on the current piece (the force peak's
+  // search: dphi/dtau = 0 by Newton). On the Hertzian pieces in closed form; on the fit
+  // dF/dt = k x' + A k' x'^2 + A k x'' and its derivative, with k' and k'' by differences of
+  // the slope over 2^-14 x (central, or one-sided where they would reach below the
+  // breakpoint), the table's slope: its 2.4e-13 makes 4e-9 of k', the truncation as much.
+  // The k' term vanishes as x'^2 at the force peak (x' ~ A x'' there): its error moves the
+  // peak by ~1e-12 of the step, and dF/dt's sign elsewhere not at all; k'' enters only the
+  // Newton slope, times A x'.
+  struct ForceRates {
+    double force, rate, curvature; // phi, dphi/dtau, d2phi/dtau2
+  };
+  ForceRates force_rates(const State& y) const {
+    const double phi = scaled_force(y); // with its check
+    const double S = y[0], U = y[1];
+    const double u1 = -2 * S * phi; // dU/dtau
     if (piece_ != Piece::fit) {
-      const double phi = scaled_force(y);
-      const double s_rate = y[1], u_rate = -2 * y[0] * phi;
       const double scale = piece_ == Piece::hertz ? hertz_scale_ : unloading_scale_;
-      return scale * ((3 * y[0] * y[0] + scaled_damping_ * y[1]) * s_rate +
-                      scaled_damping_ * y[0] * u_rate);
+      const double d = scaled_damping_;
+      const double rate = scale * ((3 * S * S + d * U) * U + d * S * u1);
+      const double u2 = -2 * (U * phi + S * rate);
+      return {phi, rate, scale * (6 * S * U * U + 3 * S * S * u1 + 3 * d * U * u1 + d * S * u2)};
     }
-    const double x = length_ * y[0] * y[0];
-    const auto [force, stiffness] = fit(x);
-    const double phi = (force + damping_ * stiffness * velocity_ * y[1]) / force_unit_;
-    const double s_rate = y[1], u_rate = -2 * y[0] * phi;
+    const double x = length_ * S * S;
     const double dx = std::ldexp(x, -14);
-    const double stiffness_slope =
-        x - dx >= breakpoint_
-            ? (fit(x + dx).second - fit(x - dx).second) / (2 * dx)
-            : (-3 * stiffness + 4 * fit(x + dx).second - fit(x + 2 * dx).second) / (2 * dx);
-    const double approach_rate = 2 * length_ * y[0] * s_rate; // dx/dtau
-    const double rate = velocity_ * y[1];                     // x'
-    const double rate_rate = velocity_ * u_rate;              // dx'/dtau
-    return (stiffness * approach_rate + damping_ * stiffness_slope * approach_rate * rate +
-            damping_ * stiffness * rate_rate) /
-           force_unit_;
+    const double k = fit(x).second;
+    double k1, k2;
+    if (x - dx >= breakpoint_) {
+      const double above = fit(x + dx).second, below = fit(x - dx).second;
+      k1 = (above - below) / (2 * dx);
+      k2 = (above - 2 * k + below) / (dx * dx);
+    } else {
+      const double above = fit(x + dx).second, further = fit(x + 2 * dx).second;
+      k1 = (-3 * k + 4 * above - further) / (2 * dx);
+      k2 = (k - 2 * above + further) / (dx * dx);
+    }
+    const double v = velocity_ * U, v1 = velocity_ * u1;
+    const double x1 = 2 * length_ * S * U, x2 = 2 * length_ * (U * U + S * u1);
+    const double rate = (k * x1 + damping_ * (k1 * x1 * v + k * v1)) / force_unit_;
+    const double v2 = -2 * velocity_ * (U * phi + S * rate);
+    const double curvature =
+        (k1 * x1 * x1 + k * x2 +
+         damping_ * (k2 * x1 * x1 * v + k1 * x2 * v + 2 * k1 * x1 * v1 + k * v2)) /
+        force_unit_;
+    return {phi, rate, curvature};
   }
+
+  double force_rate(const State& y) const { return force_rates(y).rate; }
 
   // The re-stepped state at s + d from the one at s (`rate` f there) for |d| <= 1e-8 of the
   // step, to first order: the error, d^2 |f'| / 2 plus d times the re-step's departure from
@@ -388,8 +405,7 @@ private:
 
   // The peak of phi inside a step (phi0, r0 > 0 at its start, phi1, r1 < 0 at its end; r the
   // rate dphi/dtau): where r = 0, by Newton's method on the re-stepped state from the peak of
-  // phi's cubic Hermite interpolant on the step, r's derivative along the flow by a central
-  // difference over 1e-5 (relative error ~1e-10: the convergence stays quadratic); as
+  // phi's cubic Hermite interpolant on the step, r's derivative from force_rates; as
   // locate_event otherwise. Two Newton steps (measured) instead of TOMS 748's five.
   Root locate_peak(const Stepper::Step& step, double phi0, double phi1, double r0,
                    double r1) const {
@@ -413,15 +429,13 @@ private:
     double lower = 0, upper = h, s = u * h;
     for (int i = 0; i < 8; ++i) {
       const State y = stepper_->advance(step.state, start_rate, s);
-      const double value = rate(y);
+      const ForceRates at = force_rates(y);
+      const double value = at.rate;
       if (value == 0) return {s, y};
       (value > 0 ? lower : upper) = s;
-      const State f = rate_at(y);
-      constexpr double epsilon = 1e-5;
-      const double slope = (rate({y[0] + epsilon * f[0], y[1] + epsilon * f[1], y[2]}) -
-                            rate({y[0] - epsilon * f[0], y[1] - epsilon * f[1], y[2]})) /
-                           (2 * epsilon);
-      double next = s - value / slope;
+      State f;
+      derivative(y, at.force, f);
+      double next = s - value / at.curvature;
       if (next == s) return {s, y}; // converged, as in locate_event
       if (std::abs(next - s) <= 1e-8 * h && next >= lower && next <= upper)
         return {next, moved(y, f, next - s)};
