@@ -60,12 +60,15 @@ using Fehlberg78 = boost::numeric::odeint::runge_kutta_fehlberg78<std::array<dou
 
 /// Integration of y' = f(y) (autonomous, scaled variables) step by step, with the accepted
 /// steps recorded and events located exactly. `Method`: an Odeint error stepper on
-/// std::array<double, N>.
-template <std::size_t N, class Method = CashKarp<N>>
+/// std::array<double, N>; `SystemType`: f, callable as f(y, dydt) (a concrete type lets the
+/// stages call it inline, without std::function's indirection).
+template <std::size_t N, class Method = CashKarp<N>,
+          class SystemType =
+              std::function<void(const std::array<double, N>&, std::array<double, N>&)>>
 class EventStepper {
 public:
   using State = std::array<double, N>;
-  using System = std::function<void(const State&, State&)>;
+  using System = SystemType;
 
   /// One accepted step: scaled start time, start state, scaled length.
   struct Step {

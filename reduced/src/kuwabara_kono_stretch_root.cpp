@@ -14,6 +14,7 @@
 #include "event_stepping.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -27,8 +28,16 @@ namespace impact::reduced::detail {
 
 namespace {
 
-using Stepper = EventStepper<3, Fehlberg78<3>>;
-using State = Stepper::State;
+using State = std::array<double, 3>;
+class StretchRootIntegration;
+
+// The right-hand side, a concrete type so that the stepper's stages call it inline.
+struct System {
+  const StretchRootIntegration* integration;
+  void operator()(const State& y, State& dydt) const;
+};
+
+using Stepper = EventStepper<3, Fehlberg78<3>, System>;
 
 constexpr double time_limit = 1e5;          // in characteristic times T
 constexpr std::size_t step_limit = 1000000; // accepted steps
@@ -48,6 +57,7 @@ double first_breakpoint(const ElasticPlasticContact& spring) {
 
 class StretchRootIntegration {
 public:
+  friend struct System;
   StretchRootIntegration(double mass, double velocity, const ElasticPlasticContact& spring,
                          double dissipative_constant, double relative_tolerance)
       : spring_(spring), mass_(mass), velocity_(velocity), damping_(dissipative_constant) {
@@ -69,8 +79,7 @@ public:
       std::tie(breakpoint_force_, breakpoint_stiffness_) = spring.loading_force_and_stiffness(
           std::nextafter(breakpoint_, std::numeric_limits<double>::infinity()));
     }
-    stepper_.emplace([this](const State& y, State& dydt) { rhs(y, dydt); }, relative_tolerance,
-                     time_);
+    stepper_.emplace(System{this}, relative_tolerance, time_);
     run();
   }
 
@@ -531,6 +540,10 @@ private:
   double force_max_ = 0;
   double time_force_max_ = 0;
 };
+
+void System::operator()(const State& y, State& dydt) const {
+  integration->rhs(y, dydt);
+}
 
 } // namespace
 
