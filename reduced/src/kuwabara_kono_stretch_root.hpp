@@ -18,7 +18,7 @@
 // bounded away from 0). Each piece ends at an event located exactly (the breakpoint
 // sigma^2 = x_b, the maximum x' = 0, the separation F = 0): the step ends there and the next
 // piece starts from it in its own variables, so that no step holds a kink. Fehlberg 7(8)'s
-// error estimate is then honest (event_stepping.hpp): about 25 steps per impact at 1e-10,
+// error estimate is then honest (event_stepping.hpp): about 20 steps per impact at 1e-10,
 // against 90 Cash-Karp steps in x and t.
 
 #include "impact_reduced/elastic_plastic_impact.hpp"

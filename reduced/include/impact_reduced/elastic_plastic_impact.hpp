@@ -67,8 +67,8 @@ public:
   }
   /// {F_L(x), dF_L/dx} for an integrator that evaluates them many times (Kuwabara-Kono,
   /// kuwabara_kono_elastic_plastic.hpp): loading_force_and_stiffness by default; laws that
-  /// tabulate their loading work return the table's values, a few times cheaper than their
-  /// fit and within its rounding (the overrides say how close).
+  /// tabulate their loading work return the table's values, two to three times cheaper than
+  /// their fit and within its rounding (the overrides say how close and how fast).
   virtual std::pair<double, double> loading_force_and_stiffness_from_table(double approach) const {
     return loading_force_and_stiffness(approach);
   }
