@@ -1,13 +1,16 @@
 // Cost of one impact under the damped elastic-plastic laws, the unit of work of a calibration
 // that fits the damping and the yield parameter: Hunt-Crossley on an elastic-plastic spring
 // (closed-form e and x_max; the response adds the force peak and the two time integrals) and
-// Kuwabara-Kono on the same springs (integrate_impact, twice). Targets: closed-form e
-// <= 1 us, full response <= 10 us for every spring, Kuwabara-Kono <= 20 us.
+// Kuwabara-Kono on the same springs (integrated in the square root of the stretch,
+// kuwabara_kono_stretch_root.hpp). Targets: closed-form e <= 1 us, full response <= 10 us
+// for every spring, Kuwabara-Kono <= 20 us.
 // Measured 2026-12-04 (CPU-time medians, machine at load 3-4): response 3.8 / 7.2 / 8.0 /
 // 8.3 us (Hertz / Thornton / Jackson-Green / Ghaednia; the last two 10.3 / 10.7 us before the
-// F(W) series of the octave table); Kuwabara-Kono 25 / 35 / 98 / 143 us, not met: about 90
-// Cash-Karp steps at 1e-10 and 900 evaluations of the spring (each a handful of pow/exp on
-// the fits) per impact.
+// F(W) series of the octave table). Kuwabara-Kono, later that day at load 5.7 (branch
+// kk-speed): 7.0 / 7.6 / 19.6 / 19.3 us, against 26.3 / 35.0 / 91.7 / 143 us for the former
+// Cash-Karp integration in x and t run back to back; about 20 Fehlberg 7(8) steps, and on
+// the fitted springs 185 evaluations of the table's F and dF/dx per impact. The fitted
+// springs' figures reach 22-24 us when the machine's other jobs weigh more: met only narrowly.
 
 #include "impact_reduced/ghaednia.hpp"
 #include "impact_reduced/hertz_contact.hpp"

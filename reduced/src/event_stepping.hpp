@@ -3,8 +3,8 @@
 // reference integrators (impact_ode.cpp: a body on a fixed obstacle; thin_plate.cpp: a
 // sphere on an infinite thin plate). Internal to the library.
 //
-// Cash–Karp 5(4) (Boost.Odeint) with mixed absolute/relative error control on a scaled
-// state. An event (the sign change of a function of the state within an accepted step) is
+// An embedded Runge–Kutta pair of Boost.Odeint (Cash–Karp 5(4) unless the caller chooses
+// another) with mixed absolute/relative error control on a scaled state. An event (the sign change of a function of the state within an accepted step) is
 // located by re-taking the step from its start with a length found by TOMS 748 to machine
 // precision; a re-step never exceeds an accepted step, so it carries the step's accuracy.
 // The accepted steps are kept, so that the trajectory can be sampled the same way.
@@ -17,6 +17,7 @@
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
 #include <boost/numeric/odeint/stepper/controlled_runge_kutta.hpp>
 #include <boost/numeric/odeint/stepper/runge_kutta_cash_karp54.hpp>
+#include <boost/numeric/odeint/stepper/runge_kutta_fehlberg78.hpp>
 #pragma GCC diagnostic pop
 
 #include <algorithm>
@@ -42,13 +43,32 @@ inline std::string describe(double value) {
   return text.str();
 }
 
-/// Integration of y' = f(y) (autonomous, scaled variables) step by step, with the accepted
-/// steps recorded and events located exactly.
+/// Cash-Karp 5(4), the default pair. Not Fehlberg 7(8) for a right-hand side that is not
+/// smooth: its error estimate is a multiple of k1 + k11 - k12 - k13, which vanishes when the
+/// right-hand side depends on time only (quadrature), and the start and end of a contact are
+/// nearly that (x ~ V t, F ~ t^n with a fractional n): it accepted steps with 2e-8 error at a
+/// 1e-13 tolerance on the Hertz impact. Cash-Karp's embedded estimate stays honest there
+/// (1e-12 at 1e-13).
 template <std::size_t N>
+using CashKarp = boost::numeric::odeint::runge_kutta_cash_karp54<std::array<double, N>>;
+
+/// Fehlberg 7(8), for a system written so that its right-hand side is analytic along the
+/// whole trajectory (kuwabara_kono_stretch_root.hpp): there its estimate is honest and its
+/// order takes a quarter of Cash-Karp's steps.
+template <std::size_t N>
+using Fehlberg78 = boost::numeric::odeint::runge_kutta_fehlberg78<std::array<double, N>>;
+
+/// Integration of y' = f(y) (autonomous, scaled variables) step by step, with the accepted
+/// steps recorded and events located exactly. `Method`: an Odeint error stepper on
+/// std::array<double, N>; `SystemType`: f, callable as f(y, dydt) (a concrete type lets the
+/// stages call it inline, without std::function's indirection).
+template <std::size_t N, class Method = CashKarp<N>,
+          class SystemType =
+              std::function<void(const std::array<double, N>&, std::array<double, N>&)>>
 class EventStepper {
 public:
   using State = std::array<double, N>;
-  using System = std::function<void(const State&, State&)>;
+  using System = SystemType;
 
   /// One accepted step: scaled start time, start state, scaled length.
   struct Step {
@@ -135,17 +155,19 @@ public:
     return locate(start, rate_at(start), lower, h, event, at_lower, at_upper);
   }
 
-  /// The same with f(start) given.
+  /// The same with f(start) given. `bits`: the root is bracketed to 2^(1 - bits) relative
+  /// (the default: to the last bit); fewer for an event whose own rounding noise is larger,
+  /// where TOMS 748 would otherwise end in bisection steps that only resolve that noise.
   template <class Event>
   double locate(const State& start, const State& start_rate, double lower, double h, Event event,
-                double at_lower, double at_upper) const {
+                double at_lower, double at_upper,
+                int bits = std::numeric_limits<double>::digits) const {
     if (at_upper == 0 || (at_upper > 0) == (at_lower > 0)) return h; // the sign change is at h
     if (at_lower == 0) return lower;
     std::uintmax_t iterations = 200;
     const auto root = boost::math::tools::toms748_solve(
         [&](double s) { return event(advance(start, start_rate, s)); }, lower, h, at_lower,
-        at_upper, boost::math::tools::eps_tolerance<double>(std::numeric_limits<double>::digits),
-        iterations);
+        at_upper, boost::math::tools::eps_tolerance<double>(bits), iterations);
     return 0.5 * (root.first + root.second);
   }
 
@@ -188,21 +210,24 @@ public:
   /// The maximum of value(state) over the recorded trajectory ending in `end` (the state at
   /// the end of the last step): the largest node value, refined where rate(state) (the
   /// derivative of the value along the flow) changes from + to - in one of the two steps
-  /// next to that node. Returns (maximum, scaled time).
+  /// next to that node, to `rate_bits` (as locate: the rate is typically a finite
+  /// difference, whose rounding noise limits the root anyway). Returns (maximum, scaled time).
   template <class Value, class Rate>
-  std::pair<double, double> locate_maximum(const State& end, Value value, Rate rate) const {
+  std::pair<double, double> locate_maximum(
+      const State& end, Value value, Rate rate,
+      int rate_bits = std::numeric_limits<double>::digits) const {
     const std::size_t count = steps_.size();
     std::vector<double> node_value(count + 1);
     for (std::size_t i = 0; i < count; ++i) node_value[i] = value(steps_[i].state);
     node_value[count] = value(end);
-    return locate_maximum(node_value, value, rate);
+    return locate_maximum(node_value, value, rate, rate_bits);
   }
 
   /// The same with the values at the nodes given: node_value[i] = value(steps()[i].state),
   /// and the last one the value at the end.
   template <class Value, class Rate>
   std::pair<double, double> locate_maximum(const std::vector<double>& node_value, Value value,
-                                           Rate rate) const {
+                                           Rate rate, int rate_bits) const {
     const std::size_t count = steps_.size();
     const std::size_t j = static_cast<std::size_t>(
         std::max_element(node_value.begin(), node_value.end()) - node_value.begin());
@@ -216,7 +241,8 @@ public:
       if (!(at_start > 0)) continue;
       const double at_end = rate_after(step.length);
       if (!(at_end < 0)) continue;
-      const double h = locate(step.state, start_rate, 0.0, step.length, rate, at_start, at_end);
+      const double h =
+          locate(step.state, start_rate, 0.0, step.length, rate, at_start, at_end, rate_bits);
       const double candidate = value(advance(step.state, start_rate, h));
       if (candidate > maximum) {
         maximum = candidate;
@@ -233,12 +259,7 @@ private:
     return rate;
   }
 
-  // Cash-Karp 5(4). Not Fehlberg 7(8): its error estimate is a multiple of
-  // k1 + k11 - k12 - k13, which vanishes when the right-hand side depends on time only
-  // (quadrature), and the start and end of a contact are nearly that (x ~ V t, F ~ t^n with
-  // a fractional n): it accepted steps with 2e-8 error at a 1e-13 tolerance on the Hertz
-  // impact. Cash-Karp's embedded estimate stays honest there (1e-12 at 1e-13).
-  using ErrorStepper = boost::numeric::odeint::runge_kutta_cash_karp54<State>;
+  using ErrorStepper = Method;
   using ErrorChecker =
       boost::numeric::odeint::default_error_checker<double, typename ErrorStepper::algebra_type,
                                                     typename ErrorStepper::operations_type>;

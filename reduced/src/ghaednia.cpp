@@ -158,6 +158,12 @@ std::pair<double, double> GhaedniaContact::loading_force_and_stiffness(double ap
           fit_slope(approach, p)};
 }
 
+std::pair<double, double> GhaedniaContact::loading_force_and_stiffness_from_table(
+    double approach) const {
+  if (approach <= transition_) return loading_force_and_stiffness(approach);
+  return work_table_->force_and_slope(approach, [this](double x) { return fit_force(x); });
+}
+
 double GhaedniaContact::fit_slope(double approach, const FitPoint& p) const {
   const double w = p.ratio;
   const double hertz_radius_slope = p.hertz_radius / (2 * approach);

@@ -1,6 +1,7 @@
 #include "impact_reduced/kuwabara_kono_elastic_plastic.hpp"
 
 #include "impact_reduced/invalid_input.hpp"
+#include "kuwabara_kono_stretch_root.hpp"
 #include "switched_impact.hpp"
 
 #include <algorithm>
@@ -73,6 +74,9 @@ OdeImpactResult kuwabara_kono_elastic_plastic_impact(double mass, double velocit
                                                      double dissipative_constant,
                                                      double relative_tolerance) {
   validate(mass, velocity, dissipative_constant);
+  if (detail::has_hertz_start(spring))
+    return detail::kuwabara_kono_stretch_root_impact(mass, velocity, spring, dissipative_constant,
+                                                     relative_tolerance);
   return detail::integrate_switched_impact(mass, velocity,
                                            loading_law(spring, dissipative_constant),
                                            unloading_law(spring, dissipative_constant),
@@ -85,6 +89,9 @@ std::vector<ImpactSample> kuwabara_kono_elastic_plastic_history(double mass, dou
                                                                 std::size_t points,
                                                                 double relative_tolerance) {
   validate(mass, velocity, dissipative_constant);
+  if (detail::has_hertz_start(spring))
+    return detail::kuwabara_kono_stretch_root_history(mass, velocity, spring, dissipative_constant,
+                                                      points, relative_tolerance);
   return detail::integrate_switched_impact_history(mass, velocity,
                                                    loading_law(spring, dissipative_constant),
                                                    unloading_law(spring, dissipative_constant),

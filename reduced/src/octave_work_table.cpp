@@ -349,6 +349,33 @@ double OctaveWorkTable::force_at_work(double work, const Force& force) const {
   return found.density / (approach * half_log_two);
 }
 
+std::pair<double, double> OctaveWorkTable::force_and_slope(double approach,
+                                                           const Force& force) const {
+  const Octave& piece = octave_of(std::max(approach, start_approach_), force);
+  const double t = std::clamp(2 * std::log2(approach / piece.lower) - 1, -1.0, 1.0);
+  // G and G' by the forward recurrences of evaluate_octave, without the work's sum.
+  const std::size_t n = piece.size;
+  double density = piece.density[0] + piece.density[1] * t;
+  double density_slope = piece.density[1];
+  double previous = 1, current = t;         // T_(k-1), T_k for k = 1
+  double previous_u = 1, current_u = 2 * t; // U_(k-2), U_(k-1) for k = 2
+  for (std::size_t k = 2; k < n; ++k) {
+    const double next = 2 * t * current - previous; // T_k
+    previous = current;
+    current = next;
+    density += piece.density[k] * next;
+    density_slope += piece.density[k] * static_cast<double>(k) * current_u; // k U_(k-1)
+    const double next_u = 2 * t * current_u - previous_u;                   // U_k
+    previous_u = current_u;
+    current_u = next_u;
+  }
+  // G = F x h and dG/dt = (F' x + F) x h^2, h = ln(2) / 2.
+  const double force_value = density / (approach * half_log_two);
+  const double slope =
+      (density_slope / (approach * half_log_two * half_log_two) - force_value) / approach;
+  return {force_value, slope};
+}
+
 std::pair<double, double> OctaveWorkTable::force_and_slope_at_work(double work,
                                                                    const Force& force) const {
   const Part found = locate_part(std::max(work, start_work_), force);

@@ -204,6 +204,12 @@ std::pair<double, double> JacksonGreenContact::loading_force_and_stiffness(doubl
   return {critical_load_ * ratio_power, critical_load_ / critical_interference_ * slope};
 }
 
+std::pair<double, double> JacksonGreenContact::loading_force_and_stiffness_from_table(
+    double approach) const {
+  if (approach <= transition_) return loading_force_and_stiffness(approach);
+  return work_table_->force_and_slope(approach, [this](double x) { return fit_force(x); });
+}
+
 double JacksonGreenContact::loading_work(double approach) const {
   if (approach <= transition_) return 0.4 * hertz_load(approach, contact_) * approach;
   return work_table_->work(approach, [this](double x) { return fit_force(x); });

@@ -1,13 +1,14 @@
 #pragma once
 // integrate_impact for a law that changes at the maximum approach (an elastic-plastic
 // spring's unloading branch depends on x_max): one integration instead of two. Internal to
-// the library (kuwabara_kono_elastic_plastic.cpp).
+// the library (kuwabara_kono_elastic_plastic.cpp, for springs that are not Hertz's below their
+// first breakpoint; the others go by kuwabara_kono_stretch_root.hpp).
 //
 // The impact is integrated with `loading` until the step in which x' changes sign; there x_max
-// is located, the law becomes at_maximum(x_max), and that step is re-taken from its start with
-// it. The result is the integration with the switched law from t = 0, as long as the two laws
-// agree while x' >= 0 (and the stepper never tried a state with x' < 0 before that step),
-// without the first integration that found x_max.
+// is located, that step ends at it (x' = 0 exactly), and the integration goes on from it with
+// at_maximum(x_max). The law's slope changes at x_max, so no step holds that kink. The
+// result is the integration with the switched law from t = 0 split at x_max, as long as the two
+// laws agree while x' >= 0, without the first integration that found x_max.
 
 #include "impact_reduced/impact_ode.hpp"
 

@@ -65,6 +65,13 @@ public:
   virtual std::pair<double, double> loading_force_and_stiffness(double approach) const {
     return {loading_force(approach), loading_stiffness(approach)};
   }
+  /// {F_L(x), dF_L/dx} for an integrator that evaluates them many times (Kuwabara-Kono,
+  /// kuwabara_kono_elastic_plastic.hpp): loading_force_and_stiffness by default; laws that
+  /// tabulate their loading work return the table's values, two to three times cheaper than
+  /// their fit and within its rounding (the overrides say how close and how fast).
+  virtual std::pair<double, double> loading_force_and_stiffness_from_table(double approach) const {
+    return loading_force_and_stiffness(approach);
+  }
   /// The approach x >= 0 with W_L(x) = work (work >= 0). The default brackets the root from
   /// the Hertz-like guess and solves by TOMS 748 to full double precision; laws with an
   /// inverse in closed form override it.

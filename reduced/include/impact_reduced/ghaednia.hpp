@@ -132,6 +132,10 @@ public:
   double loading_stiffness(double approach) const override;
   /// Both from one evaluation of the fit (the same values as the two calls).
   std::pair<double, double> loading_force_and_stiffness(double approach) const override;
+  /// As JacksonGreenContact's: the octave's series of F x and its derivative above the
+  /// transition (F within 2.2e-15, dF/dx within 2.4e-13 of the fit's, relative, measured;
+  /// 57 ns against the fit's 175 ns).
+  std::pair<double, double> loading_force_and_stiffness_from_table(double approach) const override;
   std::vector<double> loading_breakpoints() const override { return {transition_}; }
   /// Hertz's up to 1.9 delta_c.
   std::optional<PowerLawCoefficients> loading_power_law() const override {

@@ -15,20 +15,35 @@
 /// The material's A for two Kelvin-Voigt bodies follows from their retardation times (the
 /// calibration's "Kuwabara-Kono from the material", postprocess/); the law itself takes A.
 ///
-/// There is no closed form: the impact m x'' = -F, x(0) = 0, x'(0) = V is integrated by
-/// integrate_impact (impact_ode.hpp) with the contact ending where F returns to 0
-/// (ContactEnd::zero_force: a contact cannot pull; the approach at separation is then
-/// above x_r). The unloading branch depends on x_max: the impact is integrated once, on the
-/// loading branch until the step in which x' = 0 (an event the integrator locates exactly),
-/// where the branch of that x_max takes over and the step is re-taken from its start with
-/// it, which is the integration of the switched law from t = 0.
+/// There is no closed form. For a spring that is Hertz's c x^(3/2) below its first breakpoint
+/// (loading_power_law; every spring of the library) the impact m x'' = -F, x(0) = 0,
+/// x'(0) = V is integrated in the square root of the spring's stretch, sigma = sqrt(x) while
+/// loading and sqrt(x - x_r) while unloading, with dt = 2 sigma dtau: the equations then
+/// have an analytic right-hand side (a polynomial on the Hertzian pieces), where in x and t
+/// the x^(1/2) factors make the solution non-analytic at first contact and at separation.
+/// Fehlberg 7(8) (Boost.Odeint) takes about 20 steps at 1e-10 (Cash-Karp in x and t took 90).
+/// Each piece ends at an event located exactly, where the step ends: the breakpoint (the
+/// spring's fit takes over), x' = 0 (x_max: the unloading branch of that x_max takes over,
+/// in its own sigma) and F = 0 (separation; a contact cannot pull, so the approach at
+/// separation is above x_r), or x = 0 if x_r < 0. Above the breakpoint F_L and dF_L/dx come
+/// from loading_force_and_stiffness_from_table (Jackson-Green and Ghaednia: the octave
+/// table's series, within 2.2e-15 and 2.4e-13 of the fit). Other springs: integrate_impact
+/// (Cash-Karp in x and t) with the law switched at x_max (switched_impact.hpp).
 ///
 /// Accuracy (tests/reduced/test_kuwabara_kono_elastic_plastic.cpp, against an independent
 /// long-double Runge-Kutta-Fehlberg 7(8) integration with exact event location, Hertz and
-/// Thornton springs, V/V_y in [0.5, 100], A in [1e-9, 2e-6] s): e, x_max, F_max and the
-/// contact time within 1e-8 relative at the default tolerance 1e-10 (worst measured 3.7e-9)
-/// and within 1e-10 at 1e-13 (worst 6.3e-12); the x^(1/2) factors cost the integrator about
-/// 30 x its tolerance (impact_ode.hpp).
+/// Thornton springs, V/V_y in [0.5, 100], A in [1e-9, 2e-6] s): e, x_max, F_max, t(F_max)
+/// and the contact time within 1e-8 relative at the default tolerance 1e-10 (worst measured
+/// 2.1e-10; 3.7e-9 with the former Cash-Karp integration in x and t) and within 1e-10 at 1e-13
+/// (worst 1.1e-12, the reference's own error at Thornton's yield kink; 6.3e-12 before). Over
+/// 234 impacts (V = 0.05 to 29 m/s, A = 1e-9, 1e-7, 2e-6 s, tolerances 1e-10, 1e-12, 1e-13)
+/// every figure was within 30 x the tolerance of the same reference but Thornton at
+/// A = 2e-6 s and 1e-13 (1.2e-11, again the reference's: 1.6e-13 with ten times its steps).
+/// Cost (bench-reduced, steel ball R = 10 mm at 1.4 m/s, A = 1e-7 s, CPU time on the shared
+/// 2-core machine, 2026-12-04): 7.0, 7.6, 19.6 and 19.3 us on Hertz, Thornton, Jackson-Green
+/// and Ghaednia springs (25.5-36.5 us and 91-151 us with Cash-Karp in x and t), the last two
+/// with the spring's octave table built (a fresh spring first builds the octaves it reaches);
+/// the fitted springs' figures vary from 19 to 24 us with the machine's other jobs.
 
 #include "impact_reduced/elastic_plastic_impact.hpp"
 #include "impact_reduced/impact_ode.hpp"
@@ -45,17 +60,22 @@ double kuwabara_kono_elastic_plastic_force(const ElasticPlasticContact& spring,
                                            double dissipative_constant, double approach,
                                            double approach_rate, double approach_max);
 
-/// One impact: mass m > 0 [kg], velocity V > 0 [m/s], A >= 0 [s], `relative_tolerance` of
-/// integrate_impact in [1e-14, 1e-3]. approach_at_separation of the result is where F
-/// returned to 0. Throws InvalidInput naming "mass", "velocity", "dissipative_constant" or
-/// "relative_tolerance"; ContactDoesNotEnd as integrate_impact.
+/// One impact: mass m > 0 [kg], velocity V > 0 [m/s], A >= 0 [s], `relative_tolerance` in
+/// [1e-14, 1e-3] (the local error tolerance of the embedded pair on the scaled state; the
+/// figures' accuracy is in the Accuracy paragraph above). approach_at_separation of the
+/// result is where F returned to 0; steps counts the accepted steps. Throws InvalidInput
+/// naming "mass", "velocity", "dissipative_constant" or "relative_tolerance";
+/// ContactDoesNotEnd if the body has not separated after 1e5 characteristic times or 1e6
+/// steps.
 OdeImpactResult kuwabara_kono_elastic_plastic_impact(double mass, double velocity,
                                                      const ElasticPlasticContact& spring,
                                                      double dissipative_constant,
                                                      double relative_tolerance = 1e-10);
 
 /// The force history of the same impact at `points` >= 2 instants equally spaced from first
-/// contact to separation (integrate_impact_history).
+/// contact to separation, each re-stepped from the start of the step that holds it (the
+/// integration's accuracy; no interpolation). Throws as the impact, and InvalidInput naming
+/// "points" for points < 2.
 std::vector<ImpactSample> kuwabara_kono_elastic_plastic_history(double mass, double velocity,
                                                                 const ElasticPlasticContact& spring,
                                                                 double dissipative_constant,

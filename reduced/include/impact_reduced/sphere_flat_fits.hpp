@@ -131,6 +131,10 @@ public:
   double loading_stiffness(double approach) const override;
   /// Both from one evaluation of the fit's terms (the same values as the two calls).
   std::pair<double, double> loading_force_and_stiffness(double approach) const override;
+  /// Hertz's below the transition; above it the octave's series of F x and its derivative
+  /// (OctaveWorkTable::force_and_slope: F within 2.2e-15, dF/dx within 2.4e-13 of the fit's,
+  /// relative, measured), 58 ns against the fit's 132 ns (measured).
+  std::pair<double, double> loading_force_and_stiffness_from_table(double approach) const override;
   /// Hertz's inverse below the transition; above it Newton's method on the octave's series.
   double loading_approach(double work) const override;
   /// Hertz's in closed form; above the transition one Chebyshev sum, F(W) on an eighth of an
