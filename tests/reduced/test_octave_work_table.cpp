@@ -15,6 +15,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cstdio>
 #include <cmath>
 #include <functional>
@@ -43,6 +44,20 @@ std::vector<SphereFlatContact> contacts() {
       result.push_back({0.01, 1.15e11, strain * 1.15e11, nu});
   return result;
 }
+
+// The two springs whose loading work comes from the octave table: Jackson-Green, and
+// Ghaednia with a tangent modulus of 2 % of E = 210 GPa.
+struct FittedSprings {
+  explicit FittedSprings(const SphereFlatContact& contact)
+      : jackson_green(contact),
+        ghaednia({contact.radius, youngs / (1 - contact.poisson_ratio * contact.poisson_ratio),
+                  contact.yield_strength, contact.poisson_ratio},
+                 youngs, 0.02 * youngs) {}
+  std::array<const ElasticPlasticContact*, 2> both() const { return {&jackson_green, &ghaednia}; }
+  static constexpr double youngs = 2.1e11;
+  JacksonGreenContact jackson_green;
+  GhaedniaContact ghaednia;
+};
 
 std::vector<double> ratios() {
   std::vector<double> result;
@@ -132,15 +147,12 @@ double worst_work_below(const Law& law, double transition) {
 TEST(OctaveWorkTable, WorkBelowMatchesTheQuadratureOfTheForce) {
   double worst = 0;
   for (const auto& contact : contacts()) {
-    const JacksonGreenContact jackson_green(contact);
+    const FittedSprings springs(contact);
+    const JacksonGreenContact& jackson_green = springs.jackson_green;
     worst = std::max(worst,
                      worst_work_below(jackson_green, 1.9 * jackson_green.critical_interference()));
-    const double youngs = 2.1e11;
-    const GhaedniaContact ghaednia({contact.radius,
-                                    youngs / (1 - contact.poisson_ratio * contact.poisson_ratio),
-                                    contact.yield_strength, contact.poisson_ratio},
-                                   youngs, 0.02 * youngs);
-    worst = std::max(worst, worst_work_below(ghaednia, ghaednia.transition_approach()));
+    worst =
+        std::max(worst, worst_work_below(springs.ghaednia, springs.ghaednia.transition_approach()));
     const ThorntonContact thornton(contact.radius, contact.contact_modulus,
                                    1.6 * contact.yield_strength);
     worst = std::max(worst, worst_work_below(thornton, thornton.yield_approach()));
@@ -156,16 +168,10 @@ TEST(OctaveWorkTable, WorkBelowMatchesTheQuadratureOfTheForce) {
 TEST(OctaveWorkTable, ForceAtWorkMatchesTheFitAtTheInverse) {
   double worst = 0, worst_pair = 0, worst_slope = 0;
   for (const auto& contact : contacts()) {
-    const JacksonGreenContact jackson_green(contact);
-    const double youngs = 2.1e11;
-    const GhaedniaContact ghaednia({contact.radius,
-                                    youngs / (1 - contact.poisson_ratio * contact.poisson_ratio),
-                                    contact.yield_strength, contact.poisson_ratio},
-                                   youngs, 0.02 * youngs);
+    const FittedSprings springs(contact);
+    const JacksonGreenContact& jackson_green = springs.jackson_green;
     for (const double w : ratios())
-      for (const ElasticPlasticContact* law :
-           {static_cast<const ElasticPlasticContact*>(&jackson_green),
-            static_cast<const ElasticPlasticContact*>(&ghaednia)}) {
+      for (const ElasticPlasticContact* law : springs.both()) {
         const double x = w * jackson_green.critical_interference();
         if (x > 0.2 * contact.radius) break;
         const double work = law->loading_work(x);
@@ -191,17 +197,11 @@ TEST(OctaveWorkTable, ForceAtWorkMatchesTheFitAtTheInverse) {
 TEST(OctaveWorkTable, ForceAndSlopeAtApproachMatchTheFit) {
   double worst_force = 0, worst_slope = 0;
   for (const auto& contact : contacts()) {
-    const JacksonGreenContact jackson_green(contact);
-    const double youngs = 2.1e11;
-    const GhaedniaContact ghaednia({contact.radius,
-                                    youngs / (1 - contact.poisson_ratio * contact.poisson_ratio),
-                                    contact.yield_strength, contact.poisson_ratio},
-                                   youngs, 0.02 * youngs);
+    const FittedSprings springs(contact);
+    const JacksonGreenContact& jackson_green = springs.jackson_green;
     for (const double w : ratios())
       for (int k = 0; k < 16; ++k)
-        for (const ElasticPlasticContact* law :
-             {static_cast<const ElasticPlasticContact*>(&jackson_green),
-              static_cast<const ElasticPlasticContact*>(&ghaednia)}) {
+        for (const ElasticPlasticContact* law : springs.both()) {
           const double x = w * std::pow(1.37, k / 16.0) * jackson_green.critical_interference();
           if (x > 0.2 * contact.radius) break;
           const auto [force, slope] = law->loading_force_and_stiffness(x);
