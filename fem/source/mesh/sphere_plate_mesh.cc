@@ -102,6 +102,28 @@ namespace impact_fem
   }
 
 
+  namespace
+  {
+    /// Mesh/Contact surface refinements of the current subsection: its
+    /// integer, or 0 if it is "auto" (@p automatic tells which).
+    unsigned int
+    surface_refinements_or_auto(const ParameterHandler &prm, bool &automatic)
+    {
+      const double count =
+        discretisation::number_or_auto(prm,
+                                       "Contact surface refinements",
+                                       "Mesh/Contact surface refinements",
+                                       0,
+                                       automatic);
+      AssertThrow(count >= 0 && count <= 6 && count == std::floor(count),
+                  ExcMessage("Mesh/Contact surface refinements must be "
+                             "'auto' or an integer in 0..6, got " +
+                             as_written(count) + "."));
+      return static_cast<unsigned int>(count);
+    }
+  } // namespace
+
+
   void
   SpherePlateMesh::parse_parameters(
     ParameterHandler                                               &prm,
@@ -121,20 +143,9 @@ namespace impact_fem
           prm, sized[i], std::string("Mesh/") + sized[i], 0, automatic_size[i]);
         any_automatic = any_automatic || automatic_size[i];
       }
-    const double surface_refinements =
-      discretisation::number_or_auto(prm,
-                                     "Contact surface refinements",
-                                     "Mesh/Contact surface refinements",
-                                     0,
-                                     automatic_surface_refinements);
-    AssertThrow(surface_refinements >= 0 && surface_refinements <= 6 &&
-                  surface_refinements == std::floor(surface_refinements),
-                ExcMessage("Mesh/Contact surface refinements must be 'auto' "
-                           "or an integer in 0..6, got " +
-                           as_written(surface_refinements) + "."));
     contact_surface_refinements =
-      static_cast<unsigned int>(surface_refinements);
-    if (any_automatic || automatic_surface_refinements)
+      surface_refinements_or_auto(prm, automatic_surface_refinements);
+    if (any_automatic)
       {
         const discretisation::AutomaticDiscretisation rule = automatic();
         const double ruled[3] = {rule.contact_element_size,
@@ -144,10 +155,9 @@ namespace impact_fem
           if (automatic_size[i])
             size[i] = ruled[i];
         // A contact element size the scenario sets is the scenario's mesh:
-        // the rule refines only a mesh it sized itself.
-        if (automatic_surface_refinements)
-          contact_surface_refinements =
-            automatic_size[0] ? rule.contact_surface_refinements : 0;
+        // the rule refines only a mesh it sized itself ("auto" is 0 there).
+        if (automatic_surface_refinements && automatic_size[0])
+          contact_surface_refinements = rule.contact_surface_refinements;
       }
     contact_element_size   = size[0];
     uniform_zone_radius    = size[1];
