@@ -185,8 +185,8 @@ got = d["entries"]
 for path, value in {"Mesh/Contact element size": a_jg / 20,
                     "Mesh/Uniform zone radius": 1.5 * a_jg,
                     "Mesh/Contact surface radius": 2.5 * a_jg,
-                    # V/V_y > 1: a fully plastic contact, its nodes every a / 80
-                    "Mesh/Contact surface refinements": 2,
+                    # V/V_y > 1: a fully plastic contact, its nodes every a / 160
+                    "Mesh/Contact surface refinements": 3,
                     "Time integration/Steps per contact time": 300 * t_hertz / t_jg}.items():
     checks.check(close(got[path]["value"], value, 1e-6),
                  f"{path} = {got[path]['value']:.6e}, rule {value:.6e}")

@@ -80,10 +80,11 @@ namespace impact_fem
                       "face on a contact surface [-], an integer in 0..6 "
                       "(after the contact refinements): each halves the "
                       "spacing of the contact nodes, and only of them. "
-                      "'auto': 2 if a body is expected to yield (a fully "
-                      "plastic contact force rises in a step as each node "
-                      "enters contact) and the contact element size is "
-                      "'auto' too, else 0.");
+                      "'auto': " +
+                        discretisation::AutomaticDiscretisation::
+                          contact_surface_refinements_rule() +
+                        " (a fully plastic contact force rises in a step as "
+                        "each node enters contact).");
     prm.declare_entry("Polynomial degree",
                       "2",
                       Patterns::Integer(1, 4),

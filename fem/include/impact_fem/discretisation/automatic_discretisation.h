@@ -24,8 +24,9 @@ namespace impact_fem
      * The rule, with a the expected contact radius and t_c the expected
      * contact time (expected_contact.h): contact elements a / 20, a uniform
      * zone of 1.5 a and a contact surface of 2.5 a (at most R/2, the
-     * largest the mesh allows), the contact surfaces' cells refined twice
-     * more when a body is expected to yield (contact nodes every a / 80),
+     * largest the mesh allows), the contact surfaces' cells refined three
+     * times more when a body is expected to yield (contact nodes every
+     * a / 160),
      * 300 time steps per expected contact time.
      * The sizes are the ones the rigid-flat bench (fem/bench/
      * dynamic_plastic.sh) measured as the coarsest meeting its GCI targets
@@ -41,14 +42,16 @@ namespace impact_fem
       static constexpr double surface_per_contact_radius      = 2.5;
       static constexpr double steps_per_expected_contact_time = 300;
       /// Refinements of the contact surfaces' cells when a body is expected
-      /// to yield: contact nodes every a / 80. A fully plastic contact
+      /// to yield: contact nodes every a / 160. A fully plastic contact
       /// carries nearly the same pressure up to its edge, so its force rises
       /// in a step each time a contact node enters contact (about 2 h / a of
       /// the force: 10 % at a / 20, a staircase that makes the GCI of F_max
-      /// and e oscillatory); at a / 80 the steps and the force oscillation
-      /// fall below 0.5 % (fem/bench/automatic_discretisation.sh), for about
-      /// a quarter more cells.
-      static constexpr unsigned int plastic_contact_surface_refinements = 2;
+      /// and e oscillatory); at a / 80 the GCI of F_max still reached 1.4 %
+      /// (AISI 304 on 6061-T6 at 1 and 3 m/s) and 3.4 % (annealed copper at
+      /// V/V_y ~ 10^4), at a / 160 it falls to 0.01-0.6 % on the former
+      /// (fem/bench/automatic_discretisation.sh), for about a quarter more
+      /// cells than a / 80.
+      static constexpr unsigned int plastic_contact_surface_refinements = 3;
 
       /// The sizes of the rule for @p expected on a sphere of radius R [m]
       /// whose Hertz contact time is @p hertz_contact_time [s] (the time
