@@ -1,6 +1,7 @@
 #include <impact_fem/contact/contact_face.h>
 #include <impact_fem/contact/mortar_contact.h>
 #include <impact_fem/mesh/sphere_plate_mesh.h>
+#include <impact_fem/mesh/contact_surfaces.h>
 
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/mpi.h>
@@ -93,9 +94,7 @@ namespace impact_fem
       for (const auto &cell : dof_handler.active_cell_iterators())
         if (cell->is_locally_owned())
           for (const auto &face : cell->face_iterators())
-            if (face->at_boundary() &&
-                (face->boundary_id() == boundary_ids::sphere_contact ||
-                 face->boundary_id() == boundary_ids::plate_contact))
+            if (on_contact_surface(face))
               {
                 face->get_dof_indices(face_dofs);
                 ContactFace contact_face;

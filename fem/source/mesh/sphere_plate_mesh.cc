@@ -1,5 +1,6 @@
 #include <impact_fem/as_written.h>
 #include <impact_fem/mesh/sphere_plate_mesh.h>
+#include <impact_fem/mesh/contact_surfaces.h>
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/grid/grid_in.h>
@@ -305,9 +306,7 @@ namespace impact_fem
         for (const auto &cell : triangulation.active_cell_iterators())
           if (cell->is_locally_owned())
             for (const auto &face : cell->face_iterators())
-              if (face->at_boundary() &&
-                  (face->boundary_id() == boundary_ids::sphere_contact ||
-                   face->boundary_id() == boundary_ids::plate_contact))
+              if (on_contact_surface(face))
                 cell->set_refine_flag();
         triangulation.execute_coarsening_and_refinement();
       }
