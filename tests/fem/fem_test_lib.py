@@ -52,12 +52,12 @@ def with_steel(settings):
     return settings
 
 
-def run(binary, directory, settings, ranks=1, mpiexec="", expect_success=True):
-    """Run one case of steel_bodies.prm with --set overrides; returns (exit code,
-    stdout+stderr)."""
+def run(binary, directory, settings, ranks=1, mpiexec="", expect_success=True, extra=()):
+    """Run one case of steel_bodies.prm with --set overrides and the options @p extra
+    (e.g. "--verify"); returns (exit code, stdout+stderr)."""
     if os.path.isdir(directory):
         shutil.rmtree(directory)
-    command = [binary, STEEL_PRM, "--set", "Output/Directory=" + directory]
+    command = [binary, STEEL_PRM, "--set", "Output/Directory=" + directory, *extra]
     for key, value in with_steel(settings).items():
         command += ["--set", f"{key}={value}"]
     if ranks > 1:

@@ -2,6 +2,7 @@
 #include <impact_fem/parameters.h>
 #include <impact_fem/as_written.h>
 #include <impact_fem/impact_problem.h>
+#include <impact_fem/mesh/sphere_plate_mesh.h>
 #include <impact_fem/verification/grid_convergence.h>
 #include <impact_fem/verification/verification.h>
 
@@ -80,40 +81,37 @@ namespace impact_fem
       /// the coarser levels are derived.
       struct FineLevel
       {
-        double      r;           ///< refinement ratio
-        bool        nested;      ///< Verification/Meshes = nested
-        int         refinements; ///< Mesh/Contact refinements
-        std::string directory;   ///< Output/Directory
-        double      hc;          ///< contact element size, "auto" resolved
-        double      hmax;
-        double      g;      ///< growth factor
-        double      across; ///< elements across the plate thickness
-        double      dt;     ///< time step, 0: steps per contact time
-        double      n;      ///< steps per contact time, "auto" resolved
+        double       r;           ///< refinement ratio
+        bool         nested;      ///< Verification/Meshes = nested
+        int          refinements; ///< Mesh/Contact refinements
+        std::string  directory;   ///< Output/Directory
+        double       hc;          ///< contact element size, "auto" resolved
+        unsigned int surface_refinements; ///< "auto" resolved
+        double       hmax;
+        double       g;      ///< growth factor
+        double       across; ///< elements across the plate thickness
+        double       dt;     ///< time step, 0: steps per contact time
+        double       n;      ///< steps per contact time, "auto" resolved
       };
 
 
-      // "auto" resolved as the run resolves it (the coarser levels scale
-      // the number).
-      double
-      fine_contact_element_size(ParameterHandler &prm,
-                                const Parameters &scenario)
+      // The fine level's mesh entries, "auto" resolved by the mesh itself as
+      // the run resolves them. The coarser levels scale its contact element
+      // size and keep its contact surface refinements, so that their contact
+      // nodes lie r^k times the fine level's apart (left "auto", a level
+      // whose size is given would not be refined: the rule refines only a
+      // mesh it sized itself).
+      SpherePlateMesh
+      fine_mesh(ParameterHandler &prm, const Parameters &scenario)
       {
-        bool automatic = false;
-        prm.enter_subsection("Mesh");
-        double hc = discretisation::number_or_auto(prm,
-                                                   "Contact element size",
-                                                   "Mesh/Contact element size",
-                                                   0,
-                                                   automatic);
-        prm.leave_subsection();
-        if (automatic)
-          hc = discretisation::AutomaticDiscretisation(
-                 scenario.expected_contact,
-                 scenario.geometry.sphere_radius,
-                 scenario.hertz.contact_time())
-                 .contact_element_size;
-        return hc;
+        SpherePlateMesh mesh;
+        mesh.parse_parameters(prm, scenario.geometry, [&]() {
+          return discretisation::AutomaticDiscretisation(
+            scenario.expected_contact,
+            scenario.geometry.sphere_radius,
+            scenario.hertz.contact_time());
+        });
+        return mesh;
       }
 
 
@@ -149,8 +147,10 @@ namespace impact_fem
         fine.directory = prm.get("Directory");
         prm.leave_subsection();
 
-        const Parameters scenario(prm, ImpactProblem::expected_contact);
-        fine.hc   = fine_contact_element_size(prm, scenario);
+        const Parameters      scenario(prm, ImpactProblem::expected_contact);
+        const SpherePlateMesh mesh = fine_mesh(prm, scenario);
+        fine.hc                    = mesh.contact_element_size;
+        fine.surface_refinements   = mesh.contact_surface_refinements;
         fine.hmax = get_number(prm, "Mesh", "Maximum element size");
         fine.g    = get_number(prm, "Mesh", "Growth factor");
         fine.across =
@@ -209,13 +209,13 @@ namespace impact_fem
                            const FineLevel  &fine,
                            const Level      &level)
       {
+        prm.enter_subsection("Mesh");
+        prm.set("Contact surface refinements",
+                std::to_string(fine.surface_refinements));
         if (fine.nested)
-          {
-            prm.enter_subsection("Mesh");
-            prm.set("Contact refinements", std::to_string(level.refinements));
-            prm.leave_subsection();
-          }
-        else
+          prm.set("Contact refinements", std::to_string(level.refinements));
+        prm.leave_subsection();
+        if (!fine.nested)
           {
             set_number(prm, "Mesh", "Contact element size", level.hc);
             set_number(prm, "Mesh", "Maximum element size", level.hmax);
@@ -275,6 +275,7 @@ namespace impact_fem
           {"Mesh", "Growth factor"},
           {"Mesh", "Elements across the plate thickness"},
           {"Mesh", "Contact refinements"},
+          {"Mesh", "Contact surface refinements"},
           {"Time integration", "Time step"},
           {"Time integration", "Steps per contact time"},
           {"Output", "Directory"}};
