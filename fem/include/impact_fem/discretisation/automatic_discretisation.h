@@ -48,9 +48,9 @@ namespace impact_fem
       /// the force: 10 % at a / 20, a staircase that makes the GCI of F_max
       /// and e oscillatory); at a / 80 the GCI of F_max still reached 1.4 %
       /// (AISI 304 on 6061-T6 at 1 and 3 m/s) and 3.4 % (annealed copper at
-      /// V/V_y ~ 10^4), at a / 160 it falls to 0.01-0.6 % on the former
-      /// (fem/bench/automatic_discretisation.sh), for about a quarter more
-      /// cells than a / 80.
+      /// V/V_y ~ 10^4), at a / 160 it is 0.008-1.13 % on the former at 1-3
+      /// m/s (fem/bench/automatic_discretisation.sh), for about a quarter
+      /// more cells than a / 80.
       static constexpr unsigned int plastic_contact_surface_refinements = 3;
 
       /// The sizes of the rule for @p expected on a sphere of radius R [m]
