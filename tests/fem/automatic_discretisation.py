@@ -3,9 +3,10 @@ size, Uniform zone radius, Contact surface radius and Time integration/Steps per
 the sizes follow the expected contact radius a and contact time of the scenario (a / 20, 1.5 a,
 2.5 a at most R/2, 300 steps per expected contact time, and the contact surfaces' cells refined
 three times more when a body is expected to yield, kept by the coarser levels of --verify),
-Hertz's for elastic bodies and Jackson & Green's elastic-plastic impact when a body can yield; each run says what it chose
-(log and summary.json, its history's attributes carry the numbers); a value the scenario sets
-wins; a contact too large for the sphere is refused, naming the entries.
+Hertz's for elastic bodies and Jackson & Green's elastic-plastic impact when a body can yield;
+each run says what it chose (log and summary.json, its history's attributes carry the numbers);
+a value the scenario sets wins; a contact too large for the sphere is refused, naming the
+entries.
 
 The references are computed here, independently of the program: Hertz's impact in closed form,
 and the Jackson-Green (2005) loading fit integrated numerically (Simpson) to the approach that
