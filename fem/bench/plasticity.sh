@@ -17,15 +17,21 @@
 # Far above yield (FAR=1, the default): engineering metals at a few m/s, V/V_y
 # in the hundreds to ten thousands, where the iteration on the elastic
 # factorisation converges slowly (the elastic stiffness far above the
-# elastic-plastic tangent of a large plastic zone). Two cases of the material
+# elastic-plastic tangent of a large plastic zone). Three cases of the material
 # table (fem/materials/materials.json), both bodies elastic-perfectly plastic,
-# a 10 mm ball on the massive plate, the mesh following Thornton's contact
-# radius a_T as fem/scenarios/your_impact.prm explains (a_T / 20, uniform zone
-# 1.5 a_T, contact surface 2.5 a_T, 150 steps per Hertz contact time):
+# a 10 mm ball on the massive plate, the first two with the mesh following
+# Thornton's contact radius a_T (a_T / 20, uniform zone 1.5 a_T, contact
+# surface 2.5 a_T, 150 steps per Hertz contact time):
 #   304-on-6061: AISI 304 on 6061-T6 at 3 m/s (V/V_y = 251, a_T = 0.65 mm:
 #     32 um, 0.97 mm, 1.62 mm);
 #   52100-on-C11000: AISI 52100 hardened on C11000 annealed copper at 5 m/s
 #     (V/V_y = 8950, a_T = 1.05 mm: 52 um, 1.57 mm, 2.5 mm = R/2),
+#   304-on-6061-refined: the first case at 5 m/s (V/V_y = 416) on the coarse
+#     level of its verified run with the automatic mesh: contact elements
+#     2.25 a / 20 of the expected (Jackson-Green) contact radius a = 0.8905 mm,
+#     the contact surface's cells refined three times, the other sizes and
+#     the step of --verify's coarse level (the entries below); one of its
+#     steps took 251 iterations with the solver of 43c0e62 (no restarts).
 # V_y and a_T^2 = (2 F_max + F_y) / (2 pi p_y) of Thornton's law with the lower
 # yield strength, from `impact-reduced plastic --model thornton --radius 0.005
 # --density 8000 --modulus 1.93e11 --poisson 0.29 --flat-modulus 6.89e10
@@ -37,15 +43,17 @@
 # "failed at step N". Exits 1 if the default solver fails on a case.
 #
 # Usage: fem/bench/plasticity.sh [BUILD_DIR] [OUTPUT_DIR]
-#   environment: VELOCITIES (default "1 5"), HARDENING [Pa] (default 0),
-#                FAR (default 1; 0 skips the cases far above yield),
-#                ANDERSON_DEPTHS (default "5 10 20")
+#   environment: VELOCITIES (default "1 5"; empty: none), HARDENING [Pa]
+#                (default 0), FAR (default 1; 0 skips the cases far above
+#                yield), FAR_CASES (default all three), ANDERSON_DEPTHS
+#                (default "5 10 20"; empty: none)
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 build="${1:-build}"
 output="${2:-results/bench/plasticity}"
 binary="$build/bin/impact-fem"
-velocities="${VELOCITIES:-1 5}"
+velocities="${VELOCITIES-1 5}"
+depths="${ANDERSON_DEPTHS-5 10 20}"
 hardening="${HARDENING:-0}"
 [ -x "$binary" ] || { echo "plasticity: no executable $binary (build first)" >&2; exit 1; }
 mpiexec="$(command -v mpiexec || command -v mpirun || true)"
@@ -97,7 +105,7 @@ far_run() { # name case_settings... -- solver settings...
 }
 far_cases=()
 if [ "${FAR:-1}" = 1 ]; then
-  far_cases=(304-on-6061 52100-on-C11000)
+  read -r -a far_cases <<< "${FAR_CASES:-304-on-6061 52100-on-C11000 304-on-6061-refined}"
   # Appends a perfectly plastic body of a table material to settings (array entries,
   # not echoed words: the material names hold spaces).
   body() { # body material
@@ -116,9 +124,19 @@ if [ "${FAR:-1}" = 1 ]; then
                    settings+=(--set "Scenario/Impact velocity=5"
                    --set "Mesh/Contact element size=52e-6" --set "Mesh/Uniform zone radius=1.57e-3"
                    --set "Mesh/Contact surface radius=2.5e-3") ;;
+      304-on-6061-refined) body Sphere "AISI 304"; body Plate 6061-T6
+                   settings+=(--set "Scenario/Impact velocity=5"
+                   --set "Mesh/Contact element size=1.0018434046974592e-4"
+                   --set "Mesh/Uniform zone radius=auto" --set "Mesh/Contact surface radius=auto"
+                   --set "Mesh/Contact surface refinements=3" --set "Mesh/Maximum element size=0.045"
+                   --set "Mesh/Growth factor=1.45"
+                   --set "Mesh/Elements across the plate thickness=1.7777777777777777") ;;
+      *) echo "plasticity: unknown far case '$case'" >&2; exit 2 ;;
     esac
-    settings+=(--set "Scenario/Sphere radius=0.005" --set "Time integration/Steps per contact time=150")
-    for depth in ${ANDERSON_DEPTHS:-5 10 20}; do
+    steps=150
+    [ "$case" = 304-on-6061-refined ] && steps=119.45188639609484
+    settings+=(--set "Scenario/Sphere radius=0.005" --set "Time integration/Steps per contact time=$steps")
+    for depth in $depths; do
       far_run "far-$case-depth$depth" "${settings[@]}" \
         --set "Nonlinear solver/Strategy=anderson" --set "Nonlinear solver/Anderson depth=$depth"
     done
@@ -127,7 +145,7 @@ if [ "${FAR:-1}" = 1 ]; then
   done
 fi
 
-/usr/bin/python3 - "$output" "$velocities" "${far_cases[*]:-}" "${ANDERSON_DEPTHS:-5 10 20}" <<'PY'
+/usr/bin/python3 - "$output" "$velocities" "${far_cases[*]:-}" "$depths" <<'PY'
 import json, os, sys
 import h5py
 d, velocities = sys.argv[1], sys.argv[2].split()

@@ -281,9 +281,14 @@ namespace impact_fem
       TimerOutput::Scope t(*computing_timer, "plastic state");
       return arms.prepare_commit(constraints, ghosted_trial, dt);
     };
+    // The solve again starts from the plastic force at the converged
+    // displacement, now with the cells that yielded: started from the
+    // predictor, it took as many iterations as the first solve.
+    VectorType restart_force(rhs);
     while (result.converged && !prepare_commit())
       {
-        result = nonlinear_step.solve(arms.predicted_plastic_force(),
+        plastic_force(displacement, restart_force);
+        result = nonlinear_step.solve(restart_force,
                                       time_stepper->displacement(),
                                       displacement,
                                       linear_solve,

@@ -31,7 +31,8 @@ namespace impact_fem
      *  - "anderson": the same fixed-point map accelerated by Anderson
      *    mixing of depth m (Anderson 1965; Walker & Ni 2011, SIAM J. Numer.
      *    Anal. 49, 1715-1735, algorithm AA with the unconstrained least
-     *    squares form).
+     *    squares form), its history cleared when the iteration stagnates
+     *    (nonlinear_step.cc says when and why).
      * Convergence (both): ||r_k|| <= residual tolerance * load_k, with load_k
      * = ||B^T lambda_k|| + ||f_body|| + ||f_p(u_k)||, the norms of the
      * external forces of the step and of the plastic force (which keeps the
