@@ -523,10 +523,27 @@ namespace impact_fem
   void
   SpherePlateSetup::factorize()
   {
+    // "auto": the faster solver measured for the run's kind
+    // (doc/results/fem-model.md, "Parallel"): KLU's back-substitution on one
+    // rank when the steps iterate on the factorisation (an elastic-plastic
+    // body), MUMPS otherwise.
+    std::string solver = parameters.direct_solver;
+    if (solver == "auto")
+      {
+        const bool plastic = !material_of(body_ids::sphere).is_linear() ||
+                             (!parameters.rigid_plate &&
+                              !material_of(body_ids::plate).is_linear());
+        const bool one_rank =
+          Utilities::MPI::n_mpi_processes(mpi_communicator) == 1;
+        solver = plastic && one_rank ? "Amesos_Klu" : "Amesos_Mumps";
+        pcout << "  Solver/Direct solver = " << solver << "  (auto: "
+              << (plastic ? "an elastic-plastic body" : "elastic bodies")
+              << ", " << (one_rank ? "one rank" : "several ranks") << ")"
+              << std::endl;
+      }
     direct_solver = std::make_unique<TrilinosWrappers::SolverDirect>(
       solver_control,
-      TrilinosWrappers::SolverDirect::AdditionalData(false,
-                                                     parameters.direct_solver));
+      TrilinosWrappers::SolverDirect::AdditionalData(false, solver));
     direct_solver->initialize(effective_stiffness);
   }
 

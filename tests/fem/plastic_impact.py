@@ -8,6 +8,9 @@
     > 0, restitution below the elastic one, a permanent approach > 0, the
     summary's plastic entries present, and the two strategies (anderson,
     modified newton) agree;
+  - the direct solver `auto` is KLU on one rank with an elastic-plastic body
+    and MUMPS with elastic bodies (the log says which), and the two give the
+    same yielding impact (force history to 1e-9 of the peak);
   - a step that cannot converge (Maximum iterations = 1) stops the run:
     non-zero exit, a message naming the step, its time and the criterion,
     history.incomplete.h5 kept, no history.h5 or summary.json.
@@ -35,7 +38,9 @@ def bodies(model, yield_strength=YIELD, extra=None):
 
 
 elastic_dir = f"{work}/plastic_elastic_reference"
-run(binary, elastic_dir, bodies("elastic"))
+_, elastic_output = run(binary, elastic_dir, bodies("elastic"))
+checks.check("Solver/Direct solver = Amesos_Mumps  (auto: elastic bodies, one rank)" in elastic_output,
+             "direct solver auto: MUMPS for elastic bodies, and the log says so")
 e_force, = history(elastic_dir, "contact_force")
 e = summary(elastic_dir)
 
@@ -60,6 +65,18 @@ for strategy in ("anderson", "modified newton"):
     iterations, residual, energy_error, work_p = history(
         directory, "newton_iterations", "newton_residual", "energy_error", "plastic_work")
     results[strategy] = s
+    if strategy == "anderson":
+        klu = "Solver/Direct solver = Amesos_Klu  (auto: an elastic-plastic body, one rank)"
+        checks.check(klu in output, "direct solver auto: KLU on one rank with an elastic-plastic body, "
+                     "and the log says so")
+        mumps_dir = f"{work}/plastic_anderson_mumps"
+        run(binary, mumps_dir, bodies("elastic-plastic", extra={"Solver/Direct solver": "Amesos_Mumps"}))
+        klu_force, = history(directory, "contact_force")
+        mumps_force, = history(mumps_dir, "contact_force")
+        diff = (np.max(np.abs(klu_force - mumps_force)) / np.max(mumps_force)
+                if len(klu_force) == len(mumps_force) else np.inf)
+        print(f"KLU against MUMPS: force histories differ by {diff:.1e} of the peak")
+        checks.check(diff < 1e-9, "KLU and MUMPS give the same yielding impact (1e-9 of the peak)")
     print(f"{strategy}: iterations per step max {iterations.max():.0f}, total {iterations.sum():.0f}, "
           f"largest accepted residual {residual.max():.2e}; e = {s['restitution']:.5f} "
           f"(elastic {e['restitution']:.5f}), plastic work {s['plastic_work_fraction']*100:.3f} %, "
