@@ -172,19 +172,20 @@ namespace impact_fem
         force.begin();
       auto flank_zero = [&](const bool rising) {
         const std::size_t begin =
-          rising ? first : last - std::min(last - peak, flank_samples - 1);
+          rising ? first :
+                   std::max(peak, last + 1 - std::min(last + 1, flank_samples));
         const std::size_t end =
-          rising ? first + std::min(peak - first, flank_samples - 1) : last;
+          rising ? std::min(peak, first + flank_samples - 1) : last;
         const std::vector<double> t(time.begin() + begin,
                                     time.begin() + end + 1),
           F(force.begin() + begin, force.begin() + end + 1);
-        // The sample that brackets the phase on that side (NaN: none).
-        const double bracket = rising ? (first > 0 ? time[first - 1] : nan) :
-                                        (last + 1 < n ? time[last + 1] : nan);
+        const double bound = rising ? (first > 0 ? time[first - 1] : nan) :
+                                      (last + 1 < n ? time[last + 1] : nan);
         if (t.size() >= 3)
-          return power_law_zero(t, F, rising, bracket);
+          return power_law_zero(t, F, rising, bound);
         // Too few samples: the step that brackets the change.
-        return std::isfinite(bracket) ? bracket : time[rising ? first : last];
+        return rising ? (first > 0 ? time[first - 1] : time[first]) :
+                        (last + 1 < n ? time[last + 1] : time[last]);
       };
       s.first_contact_time =
         std::isfinite(contact_start) ? contact_start : flank_zero(true);
