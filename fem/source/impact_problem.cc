@@ -483,11 +483,9 @@ namespace impact_fem
     // with the histories.
     std::map<std::string, std::string> text_attributes = parameter_attributes();
     text_attributes["definition: contact_time"] =
-      "separation_time - first_contact_time; first_contact_time is the "
-      "instant the bodies touch (the initial gap is crossed analytically), "
-      "separation_time the zero of the power law F = A (t* - t)^p fitted "
-      "(least squares in ln F) to the last six force samples of the contact "
-      "phase (first run of F > 0), kept before the first zero sample";
+      "separation_time - first_contact_time; both are zeros of the power law "
+      "F = A |t - t*|^p through the three force samples next to each end of "
+      "the contact phase (first run of F > 0), kept within the bracketing step";
     text_attributes["definition: force_max"] =
       "vertex of the parabola through the largest force sample and its "
       "neighbours (time_force_max its time; approach_max likewise)";

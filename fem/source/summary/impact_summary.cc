@@ -31,8 +31,7 @@ namespace impact_fem
     double
     power_law_zero(const std::vector<double> &t,
                    const std::vector<double> &F,
-                   const bool                 rising,
-                   const double               bound)
+                   const bool                 rising)
     {
       const std::size_t   n = t.size();
       std::vector<double> log_force(n);
@@ -60,11 +59,8 @@ namespace impact_fem
       const double h    = (t[n - 1] - t[0]) / (n - 1);
       const double end  = rising ? t[0] : t[n - 1];
       const double sign = rising ? -1 : 1;
-      // t* = end + sign s, s in (0, 20 h], and not beyond a zero sample:
-      // golden section on s.
-      double low = 1e-9 * h, high = 20 * h;
-      if (std::isfinite(bound))
-        high = std::min(high, std::abs(bound - end));
+      // t* = end + sign s, s in (0, 20 h]: golden section on s.
+      double       low = 1e-9 * h, high = 20 * h;
       const double golden = 0.5 * (std::sqrt(5.) - 1);
       double a = high - golden * (high - low), b = low + golden * (high - low);
       double ra = residual(end + sign * a), rb = residual(end + sign * b);
@@ -163,26 +159,22 @@ namespace impact_fem
       if (phase.empty(n))
         return s;
 
-      // The flanks: the flank_samples samples of the contact phase next to
-      // each end, on that side of the peak; the zero lies before the zero
-      // sample that brackets the phase.
+      // The flanks: samples up to flank_fraction of the peak force.
       const std::size_t first = phase.first, last = phase.last;
       const std::size_t peak =
         std::max_element(force.begin() + first, force.begin() + last + 1) -
         force.begin();
       auto flank_zero = [&](const bool rising) {
-        const std::size_t begin =
-          rising ? first :
-                   std::max(peak, last + 1 - std::min(last + 1, flank_samples));
-        const std::size_t end =
-          rising ? std::min(peak, first + flank_samples - 1) : last;
-        const std::vector<double> t(time.begin() + begin,
-                                    time.begin() + end + 1),
-          F(force.begin() + begin, force.begin() + end + 1);
-        const double bound = rising ? (first > 0 ? time[first - 1] : nan) :
-                                      (last + 1 < n ? time[last + 1] : nan);
+        std::vector<double> t, F;
+        for (std::size_t i = rising ? first : peak; i <= (rising ? peak : last);
+             ++i)
+          if (force[i] <= flank_fraction * force[peak])
+            {
+              t.push_back(time[i]);
+              F.push_back(force[i]);
+            }
         if (t.size() >= 3)
-          return power_law_zero(t, F, rising, bound);
+          return power_law_zero(t, F, rising);
         // Too few samples: the step that brackets the change.
         return rising ? (first > 0 ? time[first - 1] : time[first]) :
                         (last + 1 < n ? time[last + 1] : time[last]);

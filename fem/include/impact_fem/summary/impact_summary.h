@@ -20,14 +20,9 @@ namespace impact_fem
    *   (impact-fem starts every run there: the initial gap is crossed
    *   analytically); otherwise, like the release, the zero t* of the power
    *   law F = A |t - t*|^p fitted (least squares in ln F, A, p and t* free)
-   *   to the flank_samples samples of the contact phase next to that end,
-   *   t* kept between the last loaded and the first zero sample. Local, so
-   *   that it converges with the step: a viscous contact's force falls
-   *   linearly to zero at release while further up its flank it follows
-   *   Hertz's 3/2, and a plastic unloading's exponent changes along the
-   *   flank; a fit over a fixed fraction of the flank (the earlier one took
-   *   F <= 25 % of the peak) carries that change into t* at every step
-   *   (tests/fem/test_impact_summary.cpp);
+   *   to the samples of that flank with F <= 25 % of the peak: a fit over
+   *   tens of samples, not the last one, so the instant does not depend on
+   *   which step the last contact node lets go in;
    * - the peaks of force and approach are the vertices of the parabola
    *   through the largest sample and its neighbours (error O(h^3)).
    */
@@ -56,21 +51,17 @@ namespace impact_fem
      * (increasing times, all F_k > 0, at least 3): for each t* the best
      * (ln A, p) is linear least squares, t* minimises the residual (golden
      * section within 20 mean sample spacings before the first sample,
-     * rising, or after the last, falling, and not beyond @p bound, the time
-     * of a sample known to carry no force; NaN: no such sample). Exact for
-     * noise-free power-law samples of any exponent.
+     * rising, or after the last, falling). Exact for noise-free power-law
+     * samples of any exponent.
      */
     double
     power_law_zero(const std::vector<double> &t,
                    const std::vector<double> &F,
-                   const bool                 rising,
-                   const double               bound = nan);
+                   const bool                 rising);
 
-    /// The samples of a flank used by power_law_zero: the contact phase's
-    /// last six (first six) on the falling (rising) side of the peak. Six,
-    /// not three: three more than the fit's unknowns, so that a contact
-    /// node letting go inside them does not decide t* alone.
-    constexpr std::size_t flank_samples = 6;
+    /// The flank of the contact phase used by power_law_zero: samples with
+    /// 0 < F <= fraction * max F on the rising (falling) side of the peak.
+    constexpr double flank_fraction = 0.25;
 
     /// (time, value) of a peak from the parabola through the largest sample
     /// and its neighbours; the sample itself at either end of the series.
