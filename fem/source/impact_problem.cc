@@ -483,9 +483,12 @@ namespace impact_fem
     // with the histories.
     std::map<std::string, std::string> text_attributes = parameter_attributes();
     text_attributes["definition: contact_time"] =
-      "separation_time - first_contact_time; both are zeros of the power law "
-      "F = A |t - t*|^p through the three force samples next to each end of "
-      "the contact phase (first run of F > 0), kept within the bracketing step";
+      "separation_time - first_contact_time. first_contact_time: the instant "
+      "the bodies touch (the run starts there). separation_time: the zero t* "
+      "of the power law F = A (t* - t)^p (A, p, t* free) fitted by weighted "
+      "least squares in ln F to the falling flank of the contact phase (first "
+      "run of F > 0), the samples with F <= 25 % of the peak, each weighted "
+      "(1 - F / (0.25 max F))^2";
     text_attributes["definition: force_max"] =
       "vertex of the parabola through the largest force sample and its "
       "neighbours (time_force_max its time; approach_max likewise)";

@@ -148,3 +148,58 @@ TEST(SummarizeImpact, NoContactNoSeparation) {
   EXPECT_TRUE(std::isnan(open.separation_time));
   EXPECT_TRUE(std::isnan(open.restitution));
 }
+
+// A viscous or plastic unloading is not one power law: here the falling
+// flank goes from F ~ s^(1/2) at the release (s = t* - t) to s^(3/2)
+// further up, as Kuwabara-Kono's F = x^(3/2) + c x^(1/2) dx/dt does. When
+// the samples slide by fractions of a step, samples cross the flank's edge
+// (25 % of the peak) one by one; the fitted release must follow them
+// continuously (flank_weight), where equal weights made it jump, which on
+// the FEM's levels read as a contact time that moved with the step like
+// noise.
+TEST(SummarizeImpact, ReleaseOfAFlankThatIsNotOnePowerLawMovesContinuously) {
+  const double T = 1e-4, h = T / 300;
+  auto force = [&](const double t) {
+    const double s = std::sin(M_PI * t / T);
+    return t > 0 && t < T ? 1e3 * (std::pow(s, 1.5) + 0.3 * std::sqrt(s)) : 0.;
+  };
+  auto release = [&](const double offset, const bool weighted) {
+    const std::vector<double> t = samples(offset, h, 330);
+    std::vector<double> F(t.size()), x(t.size()), v(t.size(), -0.9);
+    for (std::size_t i = 0; i < t.size(); ++i) {
+      F[i] = force(t[i]);
+      x[i] = F[i];
+    }
+    if (weighted) return summarize_impact(t, F, x, v, 1.0, 0.0, 0.0).separation_time;
+    const std::size_t peak = std::max_element(F.begin(), F.end()) - F.begin();
+    std::vector<double> tf, Ff;
+    for (std::size_t i = peak; i < F.size() && F[i] > 0; ++i)
+      if (F[i] <= flank_fraction * F[peak]) {
+        tf.push_back(t[i]);
+        Ff.push_back(F[i]);
+      }
+    return power_law_zero(tf, Ff, false);
+  };
+  // Offsets -k h / 400, k = 80..400: the last loaded sample lies 0.2 h to
+  // 1 h before the release (nearer, its ln F pulls any log fit), and one
+  // sample crosses the flank's edge (at k = 306).
+  double largest_jump[2] = {0, 0}, largest_error[2] = {0, 0};
+  for (const bool weighted : {false, true}) {
+    double previous = release(-80 * h / 400, weighted);
+    for (int k = 81; k <= 400; ++k) {
+      const double now = release(-k * h / 400, weighted);
+      largest_jump[weighted] = std::max(largest_jump[weighted], std::abs(now - previous));
+      largest_error[weighted] = std::max(largest_error[weighted], std::abs(now - T));
+      previous = now;
+    }
+  }
+  // Measured: equal weights jump by 3.5e-2 h as the sample crosses the
+  // edge; weighted, the largest change between offsets h / 400 apart is
+  // 2.3e-3 h (the smooth drift with the offset: this flank's exponent runs
+  // from 1/2 to 3/2, so no power law fits it exactly).
+  EXPECT_GT(largest_jump[false], 1e-2 * h);
+  EXPECT_LT(largest_jump[true], 1e-2 * h);
+  // And the weights cost no accuracy (largest error 1.41 h equal, 0.92 h
+  // weighted, on this deliberately hard flank).
+  EXPECT_LT(largest_error[true], largest_error[false]);
+}

@@ -48,20 +48,33 @@ namespace impact_fem
     /**
      * Zero t* of F = A (t - t*)^p (@p rising) or A (t* - t)^p (falling)
      * fitted by least squares in ln F to the samples (t_k, F_k), k = 0..n-1
-     * (increasing times, all F_k > 0, at least 3): for each t* the best
-     * (ln A, p) is linear least squares, t* minimises the residual (golden
-     * section within 20 mean sample spacings before the first sample,
-     * rising, or after the last, falling). Exact for noise-free power-law
-     * samples of any exponent.
+     * (increasing times, all F_k > 0, at least 3), each residual weighted by
+     * @p weight[k] (all 1 if empty; else n values >= 0, at least 3
+     * positive): for each t* the best (ln A, p) is linear least squares, t*
+     * minimises the residual (golden section within 20 mean sample spacings
+     * before the first sample, rising, or after the last, falling). Exact
+     * for noise-free power-law samples of any exponent, whatever the weights.
      */
     double
     power_law_zero(const std::vector<double> &t,
                    const std::vector<double> &F,
-                   const bool                 rising);
+                   const bool                 rising,
+                   const std::vector<double> &weight = {});
 
     /// The flank of the contact phase used by power_law_zero: samples with
     /// 0 < F <= fraction * max F on the rising (falling) side of the peak.
     constexpr double flank_fraction = 0.25;
+
+    /// Weight of a flank sample of force @p F_over_peak = F / max F in the
+    /// fit: (1 - F / (flank_fraction max F))^2, zero at the flank's edge and
+    /// with a zero slope there, so that the fitted zero changes continuously
+    /// when a change of the step moves a sample across the edge.
+    inline double
+    flank_weight(const double F_over_peak)
+    {
+      const double u = 1 - F_over_peak / flank_fraction;
+      return u > 0 ? u * u : 0.;
+    }
 
     /// (time, value) of a peak from the parabola through the largest sample
     /// and its neighbours; the sample itself at either end of the series.
