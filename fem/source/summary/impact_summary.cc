@@ -34,8 +34,8 @@ namespace impact_fem
                    const bool                 rising,
                    const std::vector<double> &weight)
     {
-      const std::size_t   n = t.size();
-      auto                w = [&](const std::size_t k) {
+      const std::size_t n = t.size();
+      auto              w = [&](const std::size_t k) {
         return weight.empty() ? 1. : weight[k];
       };
       std::vector<double> log_force(n);
@@ -43,7 +43,7 @@ namespace impact_fem
         log_force[k] = std::log(F[k]);
       // Residual of the best (ln A, p) for a given zero.
       auto residual = [&](const double zero) {
-        double sw = 0, sx = 0, sy = 0, sxx = 0, sxy = 0;
+        double              sw = 0, sx = 0, sy = 0, sxx = 0, sxy = 0;
         std::vector<double> x(n);
         for (std::size_t k = 0; k < n; ++k)
           {
