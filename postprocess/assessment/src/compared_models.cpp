@@ -313,6 +313,8 @@ std::optional<std::string> damped_label(const std::string& key) {
     return "Hunt–Crossley on Thornton, b ∝ V^-4/5";
   if (key == model_keys::hunt_crossley_jackson_green_from_a)
     return "Hunt–Crossley on Jackson–Green, b ∝ V^-4/5";
+  if (key == model_keys::kuwabara_kono_thornton) return "Kuwabara–Kono on Thornton";
+  if (key == model_keys::kuwabara_kono_jackson_green) return "Kuwabara–Kono on Jackson–Green";
   return std::nullopt;
 }
 
@@ -390,9 +392,14 @@ void add_reference_models(std::vector<ReportModel>& models, const std::vector<Re
   if (const auto* damped = reference(std::string(model_keys::hunt_crossley_thornton_material)))
     models.push_back(
         reference_model(runs, fem_runs, *damped, "Hunt–Crossley on Thornton (from the material)"));
-  if (const auto* damped = reference(std::string(model_keys::hunt_crossley_jackson_green_material)))
-    models.push_back(reference_model(runs, fem_runs, *damped,
-                                     "Hunt–Crossley on Jackson–Green (from the material)"));
+  for (const auto& [key, label] : {std::pair{model_keys::hunt_crossley_jackson_green_material,
+                                             "Hunt–Crossley on Jackson–Green (from the material)"},
+                                   std::pair{model_keys::kuwabara_kono_thornton_material,
+                                             "Kuwabara–Kono on Thornton (from the material)"},
+                                   std::pair{model_keys::kuwabara_kono_jackson_green_material,
+                                             "Kuwabara–Kono on Jackson–Green (from the material)"}})
+    if (const auto* damped = reference(std::string(key)))
+      models.push_back(reference_model(runs, fem_runs, *damped, label));
   if (const auto* published = reference(std::string(model_keys::hunt_crossley_published)))
     models.push_back(reference_model(runs, fem_runs, *published, published->label));
   if (const auto* hertz = reference(std::string(model_keys::hertz)))

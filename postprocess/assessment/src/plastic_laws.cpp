@@ -138,7 +138,11 @@ void add_damped_laws(PlasticLaws& laws, const Calibration& calibration,
        {std::pair{model_keys::hunt_crossley_thornton_material,
                   "Hunt–Crossley on Thornton (from the material, no fit)"},
         std::pair{model_keys::hunt_crossley_jackson_green_material,
-                  "Hunt–Crossley on Jackson–Green (from the material, no fit)"}})
+                  "Hunt–Crossley on Jackson–Green (from the material, no fit)"},
+        std::pair{model_keys::kuwabara_kono_thornton_material,
+                  "Kuwabara–Kono on Thornton (from the material, no fit)"},
+        std::pair{model_keys::kuwabara_kono_jackson_green_material,
+                  "Kuwabara–Kono on Jackson–Green (from the material, no fit)"}})
     for (const auto& reference : campaign.reference_models)
       if (reference.key == key) try {
           std::vector<std::string> names{reference.parameter_name}, units{reference.parameter_unit};
@@ -161,7 +165,10 @@ void add_damped_laws(PlasticLaws& laws, const Calibration& calibration,
         std::pair{model_keys::hunt_crossley_thornton_from_a,
                   "Hunt–Crossley on Thornton, b ∝ V^-4/5 (fitted)"},
         std::pair{model_keys::hunt_crossley_jackson_green_from_a,
-                  "Hunt–Crossley on Jackson–Green, b ∝ V^-4/5 (fitted)"}})
+                  "Hunt–Crossley on Jackson–Green, b ∝ V^-4/5 (fitted)"},
+        std::pair{model_keys::kuwabara_kono_thornton, "Kuwabara–Kono on Thornton (fitted)"},
+        std::pair{model_keys::kuwabara_kono_jackson_green,
+                  "Kuwabara–Kono on Jackson–Green (fitted)"}})
     if (const CampaignModelFit* fit = campaign.find(std::string(key)))
       if (fit->fit.converged) try {
           const ModelFit& parameters = fit->fit;

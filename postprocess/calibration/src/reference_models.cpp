@@ -105,7 +105,8 @@ void add_reference_models(CampaignCalibration& campaign, const std::vector<FemRu
   // fitted (none without a yield strength or with A = 0, where they are the rate-independent
   // laws above).
   for (const auto& damped :
-       {material_hunt_crossley_thornton(fem_runs), material_hunt_crossley_jackson_green(fem_runs)})
+       {material_hunt_crossley_thornton(fem_runs), material_hunt_crossley_jackson_green(fem_runs),
+        material_kuwabara_kono_thornton(fem_runs), material_kuwabara_kono_jackson_green(fem_runs)})
     if (damped)
       campaign.reference_models.push_back(
           reference_model(damped->key, damped->label, damped->model, damped->basis,

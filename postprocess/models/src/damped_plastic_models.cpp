@@ -14,10 +14,12 @@
 #include <impact_reduced/hunt_crossley.hpp>
 #include <impact_reduced/hunt_crossley_elastic_plastic.hpp>
 #include <impact_reduced/invalid_input.hpp>
+#include <impact_reduced/kuwabara_kono_elastic_plastic.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <string_view>
 
 namespace impact::postprocess {
 
@@ -31,6 +33,11 @@ const std::string matched_damping_formula =
 bool from_dissipative_constant(const std::string& name) {
   return name == model_keys::hunt_crossley_thornton_from_a ||
          name == model_keys::hunt_crossley_jackson_green_from_a;
+}
+
+bool kuwabara_kono_damping(const std::string& name) {
+  return name == model_keys::kuwabara_kono_thornton ||
+         name == model_keys::kuwabara_kono_jackson_green;
 }
 
 // ---- Hunt–Crossley damping: the reduced library's closed form ------------------------------
@@ -137,12 +144,39 @@ private:
   reduced::HuntCrossleyElasticPlasticImpact impact_;
 };
 
-// ---- Kuwabara–Kono damping: reserved -------------------------------------------------------
-// F = F_s(x) + A k_t(x) x' waits for the reduced library's law
-// (impact_reduced/kuwabara_kono_elastic_plastic.hpp, being written). Its models go here: a
-// DampedPlasticImpact over that law, SpringDamping::kuwabara_kono models with (yield
-// parameter, A) like the "-from-a" ones but with the A of the law itself, their names in
-// damped_plastic_model_names() and the material variant beside material_hunt_crossley_thornton.
+// ---- Kuwabara–Kono damping: the reduced library's integration -----------------------------
+
+class KuwabaraKonoPlasticImpact final : public DampedPlasticImpact {
+public:
+  KuwabaraKonoPlasticImpact(double mass,
+                            std::shared_ptr<const reduced::ElasticPlasticContact> spring,
+                            double dissipative_constant, double velocity)
+      : spring_(std::move(spring)),
+        mass_(mass),
+        velocity_(velocity),
+        a_(dissipative_constant),
+        result_(reduced::kuwabara_kono_elastic_plastic_impact(mass, velocity, *spring_, a_)) {}
+
+  reduced::ImpactFigures figures() const override { return result_.figures(); }
+  double restitution() const override { return result_.restitution; }
+  double separation_approach() const override { return result_.approach_at_separation; }
+  // The library's samples, each re-stepped from the start of its step (no interpolation).
+  std::vector<reduced::ImpactSample> history(std::size_t points) const override {
+    return reduced::kuwabara_kono_elastic_plastic_history(mass_, velocity_, *spring_, a_, points);
+  }
+  // The branch of this impact's x_max once the approach falls; no tension (the contact ends
+  // where the force returns to 0, so an interpolated state just past it carries none).
+  double force(double approach, double approach_rate) const override {
+    return std::max(0.0, reduced::kuwabara_kono_elastic_plastic_force(
+                             *spring_, a_, std::max(approach, 0.0), approach_rate,
+                             approach_rate > 0 ? 0.0 : result_.approach_max));
+  }
+
+private:
+  std::shared_ptr<const reduced::ElasticPlasticContact> spring_;
+  double mass_, velocity_, a_;
+  reduced::OdeImpactResult result_;
+};
 
 std::optional<double> material_dissipative_constant(const std::vector<FemRun>& runs,
                                                     std::string& basis) {
@@ -176,7 +210,9 @@ const std::vector<std::string>& damped_plastic_model_names() {
       std::string(model_keys::hunt_crossley_thornton),
       std::string(model_keys::hunt_crossley_jackson_green),
       std::string(model_keys::hunt_crossley_thornton_from_a),
-      std::string(model_keys::hunt_crossley_jackson_green_from_a)};
+      std::string(model_keys::hunt_crossley_jackson_green_from_a),
+      std::string(model_keys::kuwabara_kono_thornton),
+      std::string(model_keys::kuwabara_kono_jackson_green)};
   return names;
 }
 
@@ -187,7 +223,8 @@ bool is_damped_plastic_model(const std::string& name) {
 
 bool damped_plastic_needs_scenario(const std::string& name) {
   return name == model_keys::hunt_crossley_jackson_green ||
-         name == model_keys::hunt_crossley_jackson_green_from_a;
+         name == model_keys::hunt_crossley_jackson_green_from_a ||
+         name == model_keys::kuwabara_kono_jackson_green;
 }
 
 ContactModel damped_plastic_model(const std::string& name, const ContactModel& spring) {
@@ -196,7 +233,8 @@ ContactModel damped_plastic_model(const std::string& name, const ContactModel& s
                                 "model must be one of the damped elastic-plastic models "
                                 "(hunt-crossley-thornton, hunt-crossley-jackson-green, "
                                 "hunt-crossley-thornton-from-a, "
-                                "hunt-crossley-jackson-green-from-a), got '" +
+                                "hunt-crossley-jackson-green-from-a, kuwabara-kono-thornton, "
+                                "kuwabara-kono-jackson-green), got '" +
                                     name + "'");
   if (!spring.plastic_contact || spring.damped_plastic())
     throw reduced::InvalidInput("spring", "the spring of " + name +
@@ -204,6 +242,22 @@ ContactModel damped_plastic_model(const std::string& name, const ContactModel& s
                                               spring.name + "'");
   ContactModel model = spring;
   model.name = name;
+  if (kuwabara_kono_damping(name)) {
+    model.spring_damping = SpringDamping::kuwabara_kono;
+    model.formula =
+        "F = F_s(x) + A k_t(x) x', k_t = dF_s/dx of the current branch, F_s the "
+        "spring (" +
+        spring.name + "): " + spring.formula;
+    model.reference =
+        "Kuwabara and Kono, Jpn. J. Appl. Phys. 26 (1987) 1230; Brilliantov et "
+        "al., Phys. Rev. E 53 (1996) 5382 (damping), on " +
+        spring.reference;
+    // A of metals: retardation times of 1e-8 to 1e-4 s (as the "-from-a" models).
+    model.extra_parameters = {{"A", "s", 1e-6, 0.0, 1e-2, 1e-6}};
+    model.spring_damping_constant = [](const std::vector<double>& p, double,
+                                       const reduced::ContactSetup&) { return p.at(1); };
+    return model;
+  }
   model.spring_damping = SpringDamping::hunt_crossley;
   const bool matched = from_dissipative_constant(name);
   model.formula = (matched ? "F = F_s(x) (1 + b(V) x'), " + matched_damping_formula
@@ -260,11 +314,8 @@ std::unique_ptr<const DampedPlasticImpact> damped_plastic_impact(
       return std::make_unique<HuntCrossleyPlasticImpact>(
           mass, model.plastic_contact(yield_parameter, setup), damping, velocity);
     case SpringDamping::kuwabara_kono:
-      throw reduced::InvalidInput("model", "Kuwabara-Kono damping on an elastic-plastic spring (" +
-                                               model.name +
-                                               ") is not available yet: it waits for "
-                                               "the reduced library's law "
-                                               "(kuwabara_kono_elastic_plastic.hpp)");
+      return std::make_unique<KuwabaraKonoPlasticImpact>(
+          mass, model.plastic_contact(yield_parameter, setup), damping, velocity);
     case SpringDamping::none:
       break;
   }
@@ -272,37 +323,74 @@ std::unique_ptr<const DampedPlasticImpact> damped_plastic_impact(
                               "the model " + model.name + " is not a damped elastic-plastic model");
 }
 
-std::optional<MaterialDampedPlastic> material_hunt_crossley_thornton(
-    const std::vector<FemRun>& runs) {
-  const auto thornton = material_thornton(runs);
-  if (!thornton) return std::nullopt;
+namespace {
+
+// The damped law `model_name` on a spring from the material (Thornton's or Jackson–Green's)
+// with A of the materials; none without either.
+std::optional<MaterialDampedPlastic> material_damped(const std::vector<FemRun>& runs,
+                                                     std::string_view key, std::string label,
+                                                     std::string_view model_name) {
+  const bool thornton = !damped_plastic_needs_scenario(std::string(model_name));
+  std::optional<double> stiffness, yield_parameter;
+  std::string spring_basis;
+  ContactModel model;
+  if (thornton) {
+    const auto material = material_thornton(runs);
+    if (!material) return std::nullopt;
+    stiffness = material->stiffness;
+    yield_parameter = material->yield_approach;
+    spring_basis = material->basis;
+    model = damped_plastic_model(std::string(model_name));
+  } else {
+    const auto material = material_jackson_green(runs);
+    if (!material) return std::nullopt;
+    stiffness = material->stiffness;
+    yield_parameter = material->yield_strength;
+    spring_basis = material->basis;
+    model = damped_plastic_model(std::string(model_name), material->model);
+  }
   std::string source;
   const auto a = material_dissipative_constant(runs, source);
   if (!a) return std::nullopt;
-  return MaterialDampedPlastic{
-      std::string(model_keys::hunt_crossley_thornton_material),
+  const std::string damping = model.spring_damping == SpringDamping::kuwabara_kono
+                                  ? "A = " + significant(*a, 6) + " s from " + source +
+                                        ", the law's own constant (F = F_s(x) + A k_t(x) x')"
+                                  : damping_basis(*a, source, *stiffness, runs);
+  return MaterialDampedPlastic{std::string(key),       std::move(label),
+                               std::move(model),       *stiffness,
+                               {*yield_parameter, *a}, spring_basis + "; " + damping};
+}
+
+} // namespace
+
+std::optional<MaterialDampedPlastic> material_hunt_crossley_thornton(
+    const std::vector<FemRun>& runs) {
+  return material_damped(
+      runs, model_keys::hunt_crossley_thornton_material,
       "Hunt–Crossley on Thornton, p_y = 1.6 Y and b(V) from A of the material (no fit)",
-      damped_plastic_model(std::string(model_keys::hunt_crossley_thornton_from_a)),
-      thornton->stiffness,
-      {thornton->yield_approach, *a},
-      thornton->basis + "; " + damping_basis(*a, source, thornton->stiffness, runs)};
+      model_keys::hunt_crossley_thornton_from_a);
 }
 
 std::optional<MaterialDampedPlastic> material_hunt_crossley_jackson_green(
     const std::vector<FemRun>& runs) {
-  const auto jackson_green = material_jackson_green(runs);
-  if (!jackson_green) return std::nullopt;
-  std::string source;
-  const auto a = material_dissipative_constant(runs, source);
-  if (!a) return std::nullopt;
-  return MaterialDampedPlastic{
-      std::string(model_keys::hunt_crossley_jackson_green_material),
+  return material_damped(
+      runs, model_keys::hunt_crossley_jackson_green_material,
       "Hunt–Crossley on Jackson–Green, E*, Y, nu and b(V) from A of the material (no fit)",
-      damped_plastic_model(std::string(model_keys::hunt_crossley_jackson_green_from_a),
-                           jackson_green->model),
-      jackson_green->stiffness,
-      {jackson_green->yield_strength, *a},
-      jackson_green->basis + "; " + damping_basis(*a, source, jackson_green->stiffness, runs)};
+      model_keys::hunt_crossley_jackson_green_from_a);
+}
+
+std::optional<MaterialDampedPlastic> material_kuwabara_kono_thornton(
+    const std::vector<FemRun>& runs) {
+  return material_damped(runs, model_keys::kuwabara_kono_thornton_material,
+                         "Kuwabara–Kono on Thornton, p_y = 1.6 Y and A of the material (no fit)",
+                         model_keys::kuwabara_kono_thornton);
+}
+
+std::optional<MaterialDampedPlastic> material_kuwabara_kono_jackson_green(
+    const std::vector<FemRun>& runs) {
+  return material_damped(runs, model_keys::kuwabara_kono_jackson_green_material,
+                         "Kuwabara–Kono on Jackson–Green, E*, Y, nu and A of the material (no fit)",
+                         model_keys::kuwabara_kono_jackson_green);
 }
 
 } // namespace impact::postprocess

@@ -50,7 +50,12 @@ const std::map<std::string, std::string>& model_colors() {
       {std::string(model_keys::hunt_crossley_thornton_from_a), "darkmagenta"},
       {std::string(model_keys::hunt_crossley_jackson_green), "tab:olive"},
       {std::string(model_keys::hunt_crossley_jackson_green_material), "tab:olive"},
-      {std::string(model_keys::hunt_crossley_jackson_green_from_a), "teal"}};
+      {std::string(model_keys::hunt_crossley_jackson_green_from_a), "teal"},
+      // Kuwabara–Kono damping on the springs: goldenrod on Thornton's, navy on Jackson–Green's.
+      {std::string(model_keys::kuwabara_kono_thornton), "goldenrod"},
+      {std::string(model_keys::kuwabara_kono_thornton_material), "goldenrod"},
+      {std::string(model_keys::kuwabara_kono_jackson_green), "navy"},
+      {std::string(model_keys::kuwabara_kono_jackson_green_material), "navy"}};
   return colors;
 }
 

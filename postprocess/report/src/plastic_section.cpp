@@ -72,9 +72,11 @@ std::string comparison_words(const PlasticLaws& laws, const std::vector<ReportRu
 std::string color_of(const PlasticLawCurve& law) {
   if (law.key == model_keys::jackson_green_marghitu_material) return "tab:purple";
   // The damped laws: Hunt–Crossley on Thornton's spring (pink; b(V) from A fitted: dark
-  // magenta), on Jackson–Green's (olive; b(V) from A fitted: teal), as in the errors figure.
+  // magenta), on Jackson–Green's (olive; b(V) from A fitted: teal), Kuwabara–Kono on them
+  // (goldenrod, navy), as in the errors figure.
   if (law.damped) {
     const bool thornton = law.key.find("thornton") != std::string::npos;
+    if (law.key.rfind("kuwabara-kono", 0) == 0) return thornton ? "goldenrod" : "navy";
     if (law.key == model_keys::hunt_crossley_thornton_from_a ||
         law.key == model_keys::hunt_crossley_jackson_green_from_a)
       return thornton ? "darkmagenta" : "teal";

@@ -69,8 +69,8 @@ struct HuntCrossleyElasticPlasticResponse {
 ///
 /// Accuracy (relative; tests/reduced/test_hunt_crossley_elastic_plastic.cpp): against 50-digit
 /// references for the Hertz and Thornton springs (beta = b V in [0, 10], V/V_y in [0.5, 1e3])
-/// and an independent long-double RKF 7(8) integration for Jackson-Green (beta in [0, 1],
-/// V/V_y in {3, 30}): restitution, x_max and F_max within 1e-12, compression and contact time
+/// and an independent long-double RKF 7(8) integration for Jackson-Green and Ghaednia
+/// (E_t = 0.02 E_s; beta in [0, 1], V/V_y in {3, 30}): restitution, x_max and F_max within 1e-12, compression and contact time
 /// within 1e-10 (worst measured 3.5e-15). On the Hertz spring every figure equals
 /// HuntCrossleyImpact's (the same code) within 1e-14.
 class HuntCrossleyElasticPlasticImpact {

@@ -51,8 +51,7 @@ enum class SpringDamping {
   none,
   /// F = F_s(x) (1 + b x'), reduced::HuntCrossleyElasticPlasticImpact.
   hunt_crossley,
-  /// F = F_s(x) + A k_t(x) x', k_t = dF_s/dx: reserved for the reduced library's
-  /// Kuwabara–Kono law on an elastic-plastic spring (not implemented yet).
+  /// F = F_s(x) + A k_t(x) x', k_t = dF_s/dx (reduced::kuwabara_kono_elastic_plastic_impact).
   kuwabara_kono,
 };
 

@@ -39,9 +39,16 @@
 /// E* and R; the yield parameter moves the knee of the loading curve, so a free c trades
 /// against it (a stiffer c with an earlier yield gives nearly the same loading curve).
 ///
-/// Kuwabara–Kono damping on the same springs, F = F_s(x) + A k_t(x) x' (k_t = dF_s/dx of the
-/// current branch), has its place here (SpringDamping::kuwabara_kono) but no model yet: it
-/// waits for the reduced library's law (impact_reduced/kuwabara_kono_elastic_plastic.hpp).
+/// Kuwabara–Kono damping on the same springs (reduced/kuwabara_kono_elastic_plastic.hpp):
+///     F = F_s(x) + A k_t(x) x',   k_t = dF_s/dx of the current branch,
+/// the viscoelastic sphere's damping (2 E* a x' A on Hertz's spring) carried onto the
+/// elastic-plastic contact's stiffness; no closed form (integrated by the library).
+///   - "kuwabara-kono-thornton": Thornton's spring with A [s] free: (x_y, A).
+///   - "kuwabara-kono-jackson-green": Jackson–Green's spring: (Y, A). Needs the scenario.
+/// With A from the materials' retardation times (scenario_materials, the formula of
+/// "Kuwabara–Kono from the material") these are "kuwabara-kono-thornton-material" and
+/// "kuwabara-kono-jackson-green-material". The two dampings differ above yield: Hunt–Crossley's
+/// force scales with F_s, Kuwabara–Kono's with the stiffness dF_s/dx of the branch.
 
 #include "impact_postprocess/models/contact_models.hpp"
 #include "impact_postprocess/run/fem_run.hpp"
@@ -102,7 +109,7 @@ public:
 
 /// The impact of `model` (damped_plastic()) for a body of `mass` [kg] at `velocity` [m/s],
 /// stiffness c and the dissipation parameters. Throws what the library throws, and
-/// reduced::InvalidInput("model") for Kuwabara–Kono damping (not available yet).
+/// reduced::InvalidInput("model") for a model that is not damped.
 std::unique_ptr<const DampedPlasticImpact> damped_plastic_impact(
     const ContactModel& model, double mass, double velocity, double stiffness,
     const std::vector<double>& dissipation);
@@ -122,6 +129,11 @@ struct MaterialDampedPlastic {
 std::optional<MaterialDampedPlastic> material_hunt_crossley_thornton(
     const std::vector<FemRun>& runs);
 std::optional<MaterialDampedPlastic> material_hunt_crossley_jackson_green(
+    const std::vector<FemRun>& runs);
+/// The Kuwabara–Kono laws from the material: the same springs, A of the materials.
+std::optional<MaterialDampedPlastic> material_kuwabara_kono_thornton(
+    const std::vector<FemRun>& runs);
+std::optional<MaterialDampedPlastic> material_kuwabara_kono_jackson_green(
     const std::vector<FemRun>& runs);
 
 } // namespace impact::postprocess

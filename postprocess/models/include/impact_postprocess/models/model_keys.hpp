@@ -38,6 +38,12 @@ inline constexpr std::string_view hunt_crossley_thornton_material =
 /// The same on Jackson–Green's spring (E*, Y, nu from the material).
 inline constexpr std::string_view hunt_crossley_jackson_green_material =
     "hunt-crossley-jackson-green-material";
+/// Kuwabara–Kono damping on Thornton's spring and on Jackson–Green's, the spring and A from
+/// the material (damped_plastic_models.hpp).
+inline constexpr std::string_view kuwabara_kono_thornton_material =
+    "kuwabara-kono-thornton-material";
+inline constexpr std::string_view kuwabara_kono_jackson_green_material =
+    "kuwabara-kono-jackson-green-material";
 /// Jackson, Green & Marghitu's (2010) restitution fit from the material: e only, no force
 /// history (impact_reduced/jackson_green_marghitu.hpp); drawn in the report's elastic-plastic
 /// section, not ranked (the ranking judges t_c, F_max and x_max as well).
@@ -59,6 +65,10 @@ inline constexpr std::string_view hunt_crossley_jackson_green = "hunt-crossley-j
 inline constexpr std::string_view hunt_crossley_thornton_from_a = "hunt-crossley-thornton-from-a";
 inline constexpr std::string_view hunt_crossley_jackson_green_from_a =
     "hunt-crossley-jackson-green-from-a";
+/// Kuwabara–Kono damping F = F_s(x) + A k_t(x) x' on Thornton's spring, x_y and A free.
+inline constexpr std::string_view kuwabara_kono_thornton = "kuwabara-kono-thornton";
+/// The same on Jackson–Green's spring, Y and A free.
+inline constexpr std::string_view kuwabara_kono_jackson_green = "kuwabara-kono-jackson-green";
 
 // ---- Roles on the page ---------------------------------------------------------------------
 /// The calibrated Hunt–Crossley law: the campaign's hunt_crossley fit.
