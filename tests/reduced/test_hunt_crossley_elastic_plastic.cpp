@@ -24,7 +24,7 @@
 
 #include "high_precision_reference.hpp"
 
-#include <boost/numeric/odeint/stepper/runge_kutta_fehlberg78.hpp>
+#include "graded_event_integration.hpp"
 
 #include <gtest/gtest.h>
 
@@ -40,6 +40,7 @@ namespace {
 using namespace impact::reduced;
 using hp::Real100;
 using hp::Real50;
+using impact::test_reference::GradedEventIntegration;
 
 constexpr double pi = 3.14159265358979323846;
 
@@ -359,38 +360,12 @@ OdeReference fitted_ode_reference(const FittedLoading& fit, long double m, long 
     return k_u * s * std::sqrt(s);
   };
   auto force = [&](const State& y) { return spring(y[0]) * (1 + b * y[1]); };
-  const auto system = [&](const State& y, State& dydt, Real) {
-    dydt[0] = y[1];
-    dydt[1] = -force(y) / m;
-  };
-  boost::numeric::odeint::runge_kutta_fehlberg78<State, Real> stepper;
-  auto step = [&](const State& from, Real length) {
-    State to = from;
-    stepper.do_step(system, to, 0.0L, length);
-    return to;
-  };
-  const Real h = std::pow(1.25L * m * V * V / c, 0.4L) / V / steps;
-  State state{0, V};
-  Real time = 0, grading = 1e-12L;
-  auto run_to = [&](const std::function<Real(const State&)>& event) {
-    for (long count = 0; count < 100000000; ++count) {
-      const Real length = h * std::min(Real(1), grading);
-      grading *= 2;
-      const State next = step(state, length);
-      if (event(next) > 0) {
-        state = next;
-        time += length;
-        continue;
-      }
-      Real lower = 0, upper = length;
-      for (int i = 0; i < 200 && upper - lower > 1e-24L * length; ++i) {
-        const Real middle = (lower + upper) / 2;
-        (event(step(state, middle)) > 0 ? lower : upper) = middle;
-      }
-      state = step(state, upper);
-      time += upper;
-      return;
-    }
+  GradedEventIntegration integration(force, m, V,
+                                     std::pow(1.25L * m * V * V / c, 0.4L) / V / steps);
+  auto& state = integration.state;
+  auto& time = integration.time;
+  const auto run_to = [&](const GradedEventIntegration::Function& event) {
+    integration.run_to(event);
   };
   OdeReference r{};
   auto force_rate = [&](const State& y) {

@@ -18,7 +18,7 @@
 #include "impact_reduced/thornton.hpp"
 #include "impact_reduced/contact_formulas.hpp"
 
-#include <boost/numeric/odeint/stepper/runge_kutta_fehlberg78.hpp>
+#include "graded_event_integration.hpp"
 
 #include <gtest/gtest.h>
 
@@ -30,6 +30,7 @@
 namespace {
 
 using namespace impact::reduced;
+using impact::test_reference::GradedEventIntegration;
 using Real = long double;
 using State = std::array<Real, 2>; // x, x'
 
@@ -74,7 +75,6 @@ struct ReferenceResult {
 
 ReferenceResult reference(const ReferenceThornton& spring, Real m, Real V, Real A,
                           long steps = 20000) {
-  namespace odeint = boost::numeric::odeint;
   Real x_max = 0, k_u = 0, x_r = 0;
   bool restoring = false;
   auto force = [&](const State& y) -> Real {
@@ -90,44 +90,13 @@ ReferenceResult reference(const ReferenceThornton& spring, Real m, Real V, Real 
     return spring.slope(y[0]) * y[1] + A * spring.slope_rate(y[0]) * y[1] * y[1] +
            A * spring.slope(y[0]) * a;
   };
-  const auto system = [&](const State& y, State& dydt, Real) {
-    dydt[0] = y[1];
-    dydt[1] = -force(y) / m;
-  };
-  odeint::runge_kutta_fehlberg78<State, Real> stepper;
-  const auto step = [&](const State& from, Real length) {
-    State to = from;
-    stepper.do_step(system, to, 0.0L, length);
-    return to;
-  };
   // Scale: the Hertz impact's x_max / V.
   const Real x_scale = std::pow(1.25L * m * V * V / spring.c, 0.4L);
-  const Real h = x_scale / V / steps;
-  State state{Real(0), V};
-  Real time = 0;
-  // The steps grow geometrically from 1e-12 h at first contact, where the damping term
-  // ~ x^(1/2) makes the solution non-smooth (x ~ V t - k t^(5/2)): fixed steps there would
-  // limit the reference to ~1e-10.
-  Real grading = 1e-12L;
-  auto run_to = [&](const std::function<Real(const State&)>& event) {
-    for (long count = 0; count < 100000000; ++count) {
-      const Real length = h * std::min(Real(1), grading);
-      grading *= 2;
-      const State next = step(state, length);
-      if (event(next) > 0) {
-        state = next;
-        time += length;
-        continue;
-      }
-      Real lower = 0, upper = length;
-      for (int i = 0; i < 200 && upper - lower > 1e-24L * length; ++i) {
-        const Real middle = 0.5L * (lower + upper);
-        (event(step(state, middle)) > 0 ? lower : upper) = middle;
-      }
-      state = step(state, upper);
-      time += upper;
-      return;
-    }
+  GradedEventIntegration integration(force, m, V, x_scale / V / steps);
+  auto& state = integration.state;
+  auto& time = integration.time;
+  const auto run_to = [&](const GradedEventIntegration::Function& event) {
+    integration.run_to(event);
   };
   ReferenceResult r{};
   // The first step from x = 0 has dF/dt > 0 (slope ~ x^(1/2)); the peak where dF/dt = 0,
@@ -324,7 +293,6 @@ ReferenceFit ghaednia_fit() {
 }
 
 ReferenceResult fit_reference(const ReferenceFit& fit, Real m, Real V, Real A, long steps) {
-  namespace odeint = boost::numeric::odeint;
   const Real c = fit.c, x_t = fit.x_t;
   // The branch is chosen by the phase, not by x: the RK stages of the step that ends at x_t
   // reach beyond it and must not see the fit's jump.
@@ -345,38 +313,12 @@ ReferenceResult fit_reference(const ReferenceFit& fit, Real m, Real V, Real A, l
     const Real a = -force(y) / m;
     return slope(y[0]) * y[1] + A * slope_rate(y[0]) * y[1] * y[1] + A * slope(y[0]) * a;
   };
-  const auto system = [&](const State& y, State& dydt, Real) {
-    dydt[0] = y[1];
-    dydt[1] = -force(y) / m;
-  };
-  odeint::runge_kutta_fehlberg78<State, Real> stepper;
-  const auto step = [&](const State& from, Real length) {
-    State to = from;
-    stepper.do_step(system, to, 0.0L, length);
-    return to;
-  };
-  const Real h = std::pow(1.25L * m * V * V / c, 0.4L) / V / steps;
-  State state{Real(0), V};
-  Real time = 0, grading = 1e-12L; // graded steps from first contact, as in reference()
-  auto run_to = [&](const std::function<Real(const State&)>& event) {
-    for (long count = 0; count < 100000000; ++count) {
-      const Real length = h * std::min(Real(1), grading);
-      grading *= 2;
-      const State next = step(state, length);
-      if (event(next) > 0) {
-        state = next;
-        time += length;
-        continue;
-      }
-      Real lower = 0, upper = length;
-      for (int i = 0; i < 200 && upper - lower > 1e-24L * length; ++i) {
-        const Real middle = 0.5L * (lower + upper);
-        (event(step(state, middle)) > 0 ? lower : upper) = middle;
-      }
-      state = step(state, upper);
-      time += upper;
-      return;
-    }
+  GradedEventIntegration integration(force, m, V,
+                                     std::pow(1.25L * m * V * V / c, 0.4L) / V / steps);
+  auto& state = integration.state;
+  auto& time = integration.time;
+  const auto run_to = [&](const GradedEventIntegration::Function& event) {
+    integration.run_to(event);
   };
   ReferenceResult r{};
   const auto candidate = [&] {

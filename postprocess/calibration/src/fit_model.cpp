@@ -34,7 +34,13 @@ PreparedRun prepare(const FemRun& run) {
       prepared.loading_approach.push_back(run.approach[i]);
       prepared.loading_force.push_back(run.contact_force[i]);
     }
-  prepared.points = std::clamp<std::size_t>(4 * in_contact, 400, 20000);
+  // Samples of each simulated impact, interpolated (cubic Hermite) at the FEM's instants: as
+  // many as the FEM has in contact, at least 400. Four times as many (the former rule) cost
+  // 2.6 times as much in the Kuwabara–Kono fits (each sample is a re-taken ODE step) and moved
+  // no fitted parameter of either study by more than 5.4e-4 relative (b of
+  // hunt-crossley-thornton in the plastic study, 0.2 % of its 95 % interval's half-width), no
+  // ranking score by more than 6.7e-6 relative, and no rank (2026-12-05).
+  prepared.points = std::clamp<std::size_t>(in_contact, 400, 20000);
   return prepared;
 }
 
