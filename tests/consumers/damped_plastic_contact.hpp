@@ -1,18 +1,21 @@
 #pragma once
 // The contact force of a restitution table's law (impact-export, restitution/<law>.json) as a
 // simulator's extension computes it, step by step, from the tool's own state: Hunt–Crossley
-// damping on an elastic-plastic spring,
-//     F = F_s(x) (1 + b x'),
+// or Kuwabara–Kono damping on an elastic-plastic spring,
+//     F = F_s(x) (1 + b x')   or   F = F_s(x) + A k_t(x) x',  k_t = dF_s/dx,
 // F_s the spring's loading branch while the approach x grows (x' > 0) and, once it falls, the
 // Hertzian unloading branch from the largest approach so far, x_max: the history variable the
 // tool keeps (Simbody: a continuous state, LAMMPS: a variable of the fix's callback). The
-// spring is the reduced library's (the table's law.reduced_library), b from the table
-// (constant, or b(V) from A with the impact speed). As the library's closed form
-// (hunt_crossley_elastic_plastic.hpp): a branch that would return more energy than the
-// loading stored unloads along the loading branch; the contact cannot pull.
+// spring is the reduced library's (the table's law.reduced_library); b from the table
+// (constant, or b(V) from A with the impact speed), or A (the table's law.damping.kind
+// "kuwabara-kono": the library's kuwabara_kono_elastic_plastic_force). As the library's
+// closed form (hunt_crossley_elastic_plastic.hpp): a Hunt–Crossley branch that would return
+// more energy than the loading stored unloads along the loading branch; the contact cannot
+// pull.
 
 #include <impact_reduced/comparison_laws.hpp>
 #include <impact_reduced/elastic_plastic_impact.hpp>
+#include <impact_reduced/kuwabara_kono_elastic_plastic.hpp>
 #include <impact_reduced/sphere_flat_fits.hpp>
 #include <impact_reduced/thornton.hpp>
 
@@ -54,6 +57,10 @@ public:
     else
       throw std::runtime_error(table.string() + ": unknown spring '" + spring + "'");
     const nlohmann::json& damping = law.at("damping");
+    const std::string kind = damping.at("kind").get<std::string>();
+    if (kind != "hunt-crossley" && kind != "kuwabara-kono")
+      throw std::runtime_error(table.string() + ": unknown damping '" + kind + "'");
+    kuwabara_kono_ = kind == "kuwabara-kono";
     from_dissipative_constant_ = damping.contains("A");
     damping_parameter_ = from_dissipative_constant_ ? damping.at("A").at("value").get<double>()
                                                     : damping.at("b").at("value").get<double>();
@@ -62,19 +69,23 @@ public:
   double mass() const { return mass_; }
   const reduced::ElasticPlasticContact& spring() const { return *spring_; }
 
-  /// b [s/m] for an impact at speed V [m/s]: b(V) = (3/2) gamma_1 A (c/m)^(2/5) V^(-4/5) for
-  /// a law with A, else the constant b.
+  /// The damping of an impact at speed V [m/s]: Kuwabara–Kono's A [s]; Hunt–Crossley's b
+  /// [s/m], b(V) = (3/2) gamma_1 A (c/m)^(2/5) V^(-4/5) for a law with A, else the constant b.
   double damping(double impact_velocity) const {
-    if (!from_dissipative_constant_) return damping_parameter_;
+    if (kuwabara_kono_ || !from_dissipative_constant_) return damping_parameter_;
     return 1.5 * reduced::brilliantov_gamma1() * damping_parameter_ *
            std::pow(stiffness_ / mass_, 0.4) * std::pow(impact_velocity, -0.8);
   }
 
   /// The force [N] pushing the bodies apart at approach x [m], approach rate v [m/s] (> 0
   /// closing), the largest approach so far x_max [m] (>= x where the tool keeps it exactly)
-  /// and damping b [s/m].
+  /// and the damping of damping(V) (b [s/m] or A [s]).
   double force(double approach, double approach_rate, double approach_max, double b) const {
     if (!(approach > 0)) return 0;
+    if (kuwabara_kono_)
+      return std::max(0.0, reduced::kuwabara_kono_elastic_plastic_force(
+                               *spring_, b, approach, approach_rate,
+                               approach_rate > 0 ? 0.0 : std::max(approach_max, approach)));
     double spring_force;
     if (approach_rate > 0 || !(approach_max > 0)) {
       spring_force = spring_->loading_force(approach);
@@ -112,7 +123,7 @@ private:
   }
 
   double mass_, stiffness_, damping_parameter_;
-  bool from_dissipative_constant_;
+  bool kuwabara_kono_, from_dissipative_constant_;
   std::shared_ptr<const reduced::ElasticPlasticContact> spring_;
   mutable Branch branch_;
 };

@@ -18,3 +18,7 @@ run_step(${CALIBRATE} --campaign ${WORK_DIR}/campaign --output ${WORK_DIR}/calib
 # Thornton's spring from the material, which yields at every velocity of the fixture.
 run_step(${EXPORT} --campaign ${WORK_DIR}/campaign --calibration ${WORK_DIR}/calibration.json
          --output ${WORK_DIR}/export --law hunt-crossley-thornton-material)
+# The same for Kuwabara-Kono damping on Thornton's spring from the material: the force
+# F_s + A k_t x' of the table's law in the same two tools.
+run_step(${EXPORT} --campaign ${WORK_DIR}/campaign --calibration ${WORK_DIR}/calibration.json
+         --output ${WORK_DIR}/export-kuwabara-kono --law kuwabara-kono-thornton-material)

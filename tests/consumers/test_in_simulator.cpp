@@ -7,15 +7,17 @@
 //   LIGGGHTS: e, t_c within 4e-4 and F_max within 5e-5 of Thornton's law as LIGGGHTS
 //     integrates it (reduced::LiggghtsThorntonImpact) at 5000 steps per Hertz contact time, the
 //     error halving with the step, and the Richardson extrapolation within 1e-5;
-//   Simbody (Force::Custom), LAMMPS (fix external): the damped elastic-plastic law of the
-//     restitution table (Hunt–Crossley on Thornton's spring from the material, yielding at
-//     every velocity), e within 1e-3 and t_c, F_max within 1 % of the law; LAMMPS's step
-//     error halving with the step, its Richardson extrapolation within 1e-6.
+//   Simbody (Force::Custom), LAMMPS (fix external): the damped elastic-plastic laws of two
+//     restitution tables (Hunt–Crossley and Kuwabara–Kono damping on Thornton's spring from
+//     the material, yielding at every velocity), e within 1e-3 and t_c, F_max within 1 % of
+//     the law; LAMMPS's step error halving with the step, its Richardson extrapolation within
+//     1e-6.
 
 #include <impact_reduced/comparison_laws.hpp>
 #include <impact_reduced/hunt_crossley.hpp>
 #include <impact_reduced/hunt_crossley_elastic_plastic.hpp>
 #include <impact_reduced/impact_ode.hpp>
+#include <impact_reduced/kuwabara_kono_elastic_plastic.hpp>
 #include <impact_reduced/liggghts_thornton.hpp>
 #include <impact_reduced/thornton.hpp>
 
@@ -45,12 +47,13 @@ json read_json(const fs::path& path) {
   return json::parse(in);
 }
 
-// Runs the tool on the fixture's export; returns its result files.
-json run_tool(const std::string& tool, const std::string& result) {
-  const fs::path output = work / ("in_simulator_" + tool);
+// Runs the tool on one of the fixture's exports; returns its result file.
+json run_tool(const std::string& tool, const std::string& result,
+              const std::string& export_name = "export") {
+  const fs::path output = work / ("in_simulator_" + tool + "_" + export_name);
   fs::remove_all(output);
   const std::string command = "IMPACT_BUILD_DIR='" + std::string(IMPACT_BUILD_DIR) + "' bash '" +
-                              IMPACT_RUN_IN_SIMULATORS + "' '" + (work / "export").string() +
+                              IMPACT_RUN_IN_SIMULATORS + "' '" + (work / export_name).string() +
                               "' '" + output.string() + "' " + tool;
   const int status = std::system(command.c_str());
   if (status != 0)
@@ -288,21 +291,32 @@ TEST(Liggghts, ReproducesThorntonsLawAsLiggghtsImplementsIt) {
 
 namespace {
 
-// The law of the fixture's restitution table, computed here from the calibration JSON with
-// the reduced library (not from the export): the reference model
-// "hunt-crossley-thornton-material" (c, x_y, A), Thornton's spring (the law depends on R only
-// through c and x_y: R = 1 m, E* = 3 c / 4, p_y = 3 c sqrt(x_y) / (2 pi)) and
+// The fixture's restitution tables: the reference models from the material, Hunt–Crossley
+// (export/) and Kuwabara–Kono (export-kuwabara-kono/) damping on Thornton's spring.
+const std::string hunt_crossley_table = "hunt-crossley-thornton-material";
+const std::string kuwabara_kono_table = "kuwabara-kono-thornton-material";
+const std::string kuwabara_kono_export = "export-kuwabara-kono";
+
+// The law of a restitution table, computed here from the calibration JSON with the reduced
+// library (not from the export): the reference model `key` (c, x_y, A), Thornton's spring
+// (the law depends on R only through c and x_y: R = 1 m, E* = 3 c / 4,
+// p_y = 3 c sqrt(x_y) / (2 pi)), and Kuwabara–Kono's A or Hunt–Crossley's
 // b(V) = (3/2) gamma_1 A (c/m)^(2/5) V^(-4/5).
-Figures table_law(const json& calibration, double mass, double velocity) {
+Figures table_law(const json& calibration, const std::string& key, double mass, double velocity) {
   const json* model = nullptr;
   for (const auto& entry : calibration.at("campaign").at("reference_models"))
-    if (entry.at("key") == "hunt-crossley-thornton-material") model = &entry;
-  if (!model) throw std::runtime_error("the calibration has no hunt-crossley-thornton-material");
+    if (entry.at("key") == key) model = &entry;
+  if (!model) throw std::runtime_error("the calibration has no " + key);
   const json& parameters = model->at("parameters");
   const double c = parameters.at("c"), x_y = parameters.at("x_y"), a = parameters.at("A");
   const double pi = 3.14159265358979323846;
   const auto spring =
       std::make_shared<reduced::ThorntonContact>(1.0, 0.75 * c, 3 * c * std::sqrt(x_y) / (2 * pi));
+  if (key == kuwabara_kono_table) {
+    const auto impact = reduced::kuwabara_kono_elastic_plastic_impact(mass, velocity, *spring, a);
+    EXPECT_GT(impact.approach_at_separation, 0) << "the law yields at V = " << velocity;
+    return {impact.restitution, impact.contact_time, impact.force_max};
+  }
   const double b =
       1.5 * reduced::brilliantov_gamma1() * a * std::pow(c / mass, 0.4) * std::pow(velocity, -0.8);
   const auto response =
@@ -319,9 +333,10 @@ Errors errors(const Figures& tool, const Figures& law) {
           tool.force_max / law.force_max - 1};
 }
 
-// Every run of `result` within 1e-3 in e and 1 % in t_c, F_max of the table's law.
-void expect_reproduces_table_law(const json& calibration, const json& result) {
-  ASSERT_EQ(result.at("model"), "hunt-crossley-thornton-material");
+// Every run of `result` within 1e-3 in e and 1 % in t_c, F_max of the table's law `key`.
+void expect_reproduces_table_law(const json& calibration, const json& result,
+                                 const std::string& key) {
+  ASSERT_EQ(result.at("model"), key);
   ASSERT_GE(result.at("runs").size(), 3u);
   std::printf("%s (%s) against the law (tool / law - 1):\n",
               result.at("tool").get<std::string>().c_str(),
@@ -329,7 +344,7 @@ void expect_reproduces_table_law(const json& calibration, const json& result) {
   for (const auto& run : result.at("runs")) {
     const double velocity = run.at("impact_velocity");
     const double mass = calibration_run(calibration, velocity).at("mass");
-    const Errors error = errors(tool_figures(run), table_law(calibration, mass, velocity));
+    const Errors error = errors(tool_figures(run), table_law(calibration, key, mass, velocity));
     std::printf("  V = %-5.3g m/s: e %+.2e, t_c %+.2e, F_max %+.2e\n", velocity, error.restitution,
                 error.contact_time, error.force_max);
     EXPECT_LT(std::abs(error.restitution), 1e-3) << "V = " << velocity;
@@ -342,18 +357,28 @@ TEST(SimbodyCustom, RunsTheRestitutionTablesLawAsAForceCustom) {
   const json calibration = read_json(work / "calibration.json");
   const json result = run_tool("simbody-custom", "simbody-custom.json");
   EXPECT_EQ(result.at("tool_version"), "3.7");
-  expect_reproduces_table_law(calibration, result);
+  expect_reproduces_table_law(calibration, result, hunt_crossley_table);
   print_against_fem("Simbody, Force::Custom", calibration, result);
+}
+
+TEST(SimbodyCustom, RunsTheKuwabaraKonoTablesLawAsAForceCustom) {
+  const json calibration = read_json(work / "calibration.json");
+  const json result = run_tool("simbody-custom", "simbody-custom.json", kuwabara_kono_export);
+  expect_reproduces_table_law(calibration, result, kuwabara_kono_table);
+  print_against_fem("Simbody, Force::Custom, Kuwabara-Kono", calibration, result);
 }
 
 // LAMMPS's velocity Verlet gives the force the half-step velocity: first order in the step.
 // Measured on this fixture (tests/consumers, N = 2000 and 4000 steps per contact time): errors
 // at N = 2000 up to 5e-6 in e, 1.5e-4 in t_c (mostly where the sampled force is taken to
 // vanish), 6e-5 in F_max, halving with the step; the Richardson extrapolation within 3e-7.
-TEST(LammpsExternal, RunsTheRestitutionTablesLawThroughFixExternal) {
-  const json calibration = read_json(work / "calibration.json");
-  const json result = run_tool("lammps-external", "lammps-external.json");
-  expect_reproduces_table_law(calibration, result);
+// Kuwabara–Kono: the same within 2.1e-7, but in t_c: its force returns to 0 at a finite rate
+// while the approach is still above x_r (the bodies part there), and measure_drop extrapolates
+// that zero linearly from the last two samples, an error of about h^2 F''/(2 F') that is second
+// order in the step h and stays in the Richardson extrapolation (measured 1.9e-6 to 2.7e-6,
+// always positive, at N = 2000 and 4000); the first-order error itself still halves.
+void expect_step_error_halves(const json& calibration, const json& result, const std::string& key,
+                              double richardson_contact_time) {
   ASSERT_EQ(result.at("time_steps_per_contact_time"), 2000);
   ASSERT_EQ(result.at("refined").at("time_steps_per_contact_time"), 4000);
   const json& runs = result.at("runs");
@@ -366,7 +391,7 @@ TEST(LammpsExternal, RunsTheRestitutionTablesLawThroughFixExternal) {
     const double velocity = runs[i].at("impact_velocity");
     ASSERT_EQ(refined[i].at("impact_velocity").get<double>(), velocity);
     const double mass = calibration_run(calibration, velocity).at("mass");
-    const Figures law = table_law(calibration, mass, velocity);
+    const Figures law = table_law(calibration, key, mass, velocity);
     const Figures coarse = tool_figures(runs[i]), fine = tool_figures(refined[i]);
     const struct {
       const char* name;
@@ -382,10 +407,26 @@ TEST(LammpsExternal, RunsTheRestitutionTablesLawThroughFixExternal) {
                   error_fine, richardson);
       EXPECT_GT(error_fine / error_coarse, 0.4) << check.name << " at V = " << velocity;
       EXPECT_LT(error_fine / error_coarse, 0.6) << check.name << " at V = " << velocity;
-      EXPECT_LT(std::abs(richardson), 1e-6) << check.name << " at V = " << velocity;
+      const double bound = check.name == std::string("t_c") ? richardson_contact_time : 1e-6;
+      EXPECT_LT(std::abs(richardson), bound) << check.name << " at V = " << velocity;
     }
   }
+}
+
+TEST(LammpsExternal, RunsTheRestitutionTablesLawThroughFixExternal) {
+  const json calibration = read_json(work / "calibration.json");
+  const json result = run_tool("lammps-external", "lammps-external.json");
+  expect_reproduces_table_law(calibration, result, hunt_crossley_table);
+  expect_step_error_halves(calibration, result, hunt_crossley_table, 1e-6);
   print_against_fem("LAMMPS, fix external", calibration, result);
+}
+
+TEST(LammpsExternal, RunsTheKuwabaraKonoTablesLawThroughFixExternal) {
+  const json calibration = read_json(work / "calibration.json");
+  const json result = run_tool("lammps-external", "lammps-external.json", kuwabara_kono_export);
+  expect_reproduces_table_law(calibration, result, kuwabara_kono_table);
+  expect_step_error_halves(calibration, result, kuwabara_kono_table, 5e-6);
+  print_against_fem("LAMMPS, fix external, Kuwabara-Kono", calibration, result);
 }
 
 } // namespace

@@ -19,6 +19,7 @@
 #include <impact_reduced/comparison_laws.hpp>
 #include <impact_reduced/hunt_crossley_elastic_plastic.hpp>
 #include <impact_reduced/invalid_input.hpp>
+#include <impact_reduced/kuwabara_kono_elastic_plastic.hpp>
 #include <impact_reduced/sphere_flat_fits.hpp>
 #include <impact_reduced/thornton.hpp>
 
@@ -163,6 +164,21 @@ protected:
     }
     calibration->campaign.fitted = true;
     calibration->campaign.reference_models.push_back(material);
+    // Kuwabara–Kono damping on the same spring with the same A (not ranked: a table of it is
+    // asked for by name).
+    ReferenceModel kuwabara_kono = material;
+    kuwabara_kono.key = "kuwabara-kono-thornton-material";
+    kuwabara_kono.model = "kuwabara-kono-thornton";
+    kuwabara_kono.label = "Kuwabara-Kono on Thornton from the material";
+    const double c = truth.stiffness(), x_y = truth.yield_approach();
+    const reduced::ThorntonContact thornton(1.0, 0.75 * c,
+                                            3 * c * std::sqrt(x_y) / (2 * 3.14159265358979323846));
+    for (auto& residual : kuwabara_kono.runs)
+      static_cast<ImpactFigures&>(residual.prediction) =
+          reduced::kuwabara_kono_elastic_plastic_impact(truth.mass, residual.velocity, thornton,
+                                                        tau)
+              .figures();
+    calibration->campaign.reference_models.push_back(kuwabara_kono);
     calibration->campaign.comparison_laws.push_back(fit);
     calibration->campaign.ranking = {{"kuwabara-kono", 2, 0.005, true, 0.01, 0.005, 0.01, true, {}},
                                      {material.key, 0, 0.01, true, 0.02, 0.01, 0.01, true, {}},
@@ -201,7 +217,7 @@ TEST_F(RestitutionTableTest, TabulatesTheFirstRankedDampedLawAsTheReducedLibrary
   EXPECT_EQ(table.law.key, "hunt-crossley-thornton-material");
   EXPECT_EQ(table.law.model, "hunt-crossley-thornton-from-a");
   EXPECT_EQ(table.law.spring, "thornton");
-  EXPECT_TRUE(table.law.damping_from_dissipative_constant);
+  EXPECT_EQ(table.law.damping, TableDamping::hunt_crossley_of_velocity);
   EXPECT_GE(table.law.rank, 1u);
   // The material's c, x_y and A: those of the truth.
   const double c = table.law.stiffness, x_y = table.law.yield_parameter;
@@ -359,12 +375,53 @@ TEST_F(RestitutionTableTest, CsvAndJsonCarryEveryColumnWithItsUnit) {
 
 // Named, the fitted law on Jackson-Green's spring: the reduced library's numbers, and the
 // error of the fit without each velocity beside that of the fit to all.
+// Kuwabara–Kono damping: the rows are the library's integration of F = F_s + A k_t x' (no b
+// column), and the JSON says which damping the simulator must apply.
+TEST_F(RestitutionTableTest, TabulatesAKuwabaraKonoLawAsTheReducedLibraryIntegratesIt) {
+  const RestitutionTable table =
+      restitution_table(*calibration, *runs, std::string("kuwabara-kono-thornton-material"), 5);
+  EXPECT_EQ(table.law.model, "kuwabara-kono-thornton");
+  EXPECT_EQ(table.law.damping, TableDamping::kuwabara_kono);
+  EXPECT_EQ(table.law.damping_parameter, tau);
+  EXPECT_EQ(table.law.rank, 0u);
+  const double c = table.law.stiffness, x_y = table.law.yield_parameter;
+  const double pi = 3.14159265358979323846;
+  const reduced::ThorntonContact spring(1.0, 0.75 * c, 3 * c * std::sqrt(x_y) / (2 * pi));
+  ASSERT_EQ(table.rows.size(), 6u); // 5 log-spaced, both ends at runs, and the run between
+  for (const auto& row : table.rows) {
+    EXPECT_TRUE(std::isnan(row.damping));
+    const auto direct =
+        reduced::kuwabara_kono_elastic_plastic_impact(truth.mass, row.velocity, spring, tau);
+    EXPECT_EQ(row.law.restitution, direct.restitution) << row.velocity;
+    EXPECT_EQ(row.law.contact_time, direct.contact_time) << row.velocity;
+    EXPECT_EQ(row.law.force_max, direct.force_max) << row.velocity;
+    EXPECT_EQ(row.law.approach_max, direct.approach_max) << row.velocity;
+    EXPECT_EQ(row.law.separation_approach, direct.approach_at_separation) << row.velocity;
+    EXPECT_GT(row.law.separation_approach, 0); // it yields at every velocity of the fixture
+    if (!row.fem) continue;
+    for (std::size_t q = 0; q < 3; ++q) {
+      EXPECT_TRUE(std::isfinite(row.fem->error[q]));
+      EXPECT_NEAR(row.fem->out_of_sample_error[q], row.fem->error[q], 1e-15); // fits nothing
+    }
+  }
+  const nlohmann::json json = restitution_table_json(table);
+  const nlohmann::json& damping = json.at("law").at("damping");
+  EXPECT_EQ(damping.at("kind"), "kuwabara-kono");
+  EXPECT_EQ(damping.at("A").at("value").get<double>(), tau);
+  EXPECT_FALSE(damping.contains("b"));
+  EXPECT_NE(json.at("law").at("force_law").get<std::string>().find("A k_t(x) x'"),
+            std::string::npos);
+  for (const auto& row : json.at("rows")) EXPECT_TRUE(row.at("damping").is_null());
+  const std::string csv = restitution_table_csv(table);
+  EXPECT_NE(csv.find("Kuwabara-Kono: F = F_s + A k_t x'"), std::string::npos);
+}
+
 TEST_F(RestitutionTableTest, TabulatesAFittedLawOnJacksonGreensSpring) {
   const RestitutionTable table =
       restitution_table(*calibration, *runs, std::string("hunt-crossley-jackson-green"), 4);
   EXPECT_EQ(table.law.spring, "jackson-green");
   EXPECT_EQ(table.law.rank, 3u);
-  EXPECT_FALSE(table.law.damping_from_dissipative_constant);
+  EXPECT_EQ(table.law.damping, TableDamping::hunt_crossley);
   EXPECT_EQ(table.law.poisson_ratio, 0.3);
   EXPECT_NEAR(table.law.radius / truth.radius, 1, 1e-15);
   const auto spring = jackson_green_spring(truth);

@@ -12,6 +12,7 @@
 #include <impact_reduced/comparison_laws.hpp>
 #include <impact_reduced/hunt_crossley_elastic_plastic.hpp>
 #include <impact_reduced/invalid_input.hpp>
+#include <impact_reduced/kuwabara_kono_elastic_plastic.hpp>
 #include <impact_reduced/sphere_flat_fits.hpp>
 #include <impact_reduced/thornton.hpp>
 
@@ -28,24 +29,26 @@ using json = nlohmann::json;
 constexpr double nan = std::numeric_limits<double>::quiet_NaN();
 
 bool jackson_green_spring(const std::string& model) {
-  return model == model_keys::hunt_crossley_jackson_green ||
-         model == model_keys::hunt_crossley_jackson_green_from_a;
+  return damped_plastic_needs_scenario(model);
 }
 
-bool from_dissipative_constant(const std::string& model) {
-  return model == model_keys::hunt_crossley_thornton_from_a ||
-         model == model_keys::hunt_crossley_jackson_green_from_a;
+TableDamping table_damping_of(const std::string& model) {
+  if (model == model_keys::kuwabara_kono_thornton ||
+      model == model_keys::kuwabara_kono_jackson_green)
+    return TableDamping::kuwabara_kono;
+  if (model == model_keys::hunt_crossley_thornton_from_a ||
+      model == model_keys::hunt_crossley_jackson_green_from_a)
+    return TableDamping::hunt_crossley_of_velocity;
+  return TableDamping::hunt_crossley;
 }
 
-// A key of the calibration that names a Hunt–Crossley-damped elastic-plastic law: a fitted
-// model or the reference model from the material. The Kuwabara–Kono-damped laws are ranked
-// but not tabled: their force A k_t(x) x' needs the spring's slope, which the table's
-// simulators (Simbody's Force::Custom, LAMMPS's fix external) are not given.
+// A key of the calibration that names a damped elastic-plastic law: a fitted model or a
+// reference model from the material.
 bool damped_key(const std::string& key) {
-  const bool hunt_crossley = key.rfind("hunt-crossley-", 0) == 0;
-  return hunt_crossley &&
-         (is_damped_plastic_model(key) || key == model_keys::hunt_crossley_thornton_material ||
-          key == model_keys::hunt_crossley_jackson_green_material);
+  return is_damped_plastic_model(key) || key == model_keys::hunt_crossley_thornton_material ||
+         key == model_keys::hunt_crossley_jackson_green_material ||
+         key == model_keys::kuwabara_kono_thornton_material ||
+         key == model_keys::kuwabara_kono_jackson_green_material;
 }
 
 // Where the calibration holds the law: its fit (with the out-of-sample predictions) or its
@@ -100,7 +103,9 @@ const std::vector<Column>& columns() {
   static const std::vector<Column> list = {
       {"impact_velocity", "m/s", "V, the normal speed at first contact"},
       {"row", "-", "fem: a velocity of the FEM campaign; interpolated: a velocity between them"},
-      {"damping", "s/m", "b(V), the law's Hunt-Crossley damping at this V"},
+      {"damping", "s/m",
+       "b(V), the law's Hunt-Crossley damping at this V (empty: Kuwabara-Kono damping, whose A "
+       "does not depend on V)"},
       {"restitution", "1", "e of the law"},
       {"contact_time", "s", "t_c of the law"},
       {"force_max", "N", "F_max of the law"},
@@ -176,20 +181,40 @@ json law_json(const RestitutionTableLaw& law) {
                        {"contact_modulus", 0.75 * law.stiffness / std::sqrt(law.radius)},
                        {"yield_strength", law.yield_parameter},
                        {"poisson_ratio", law.poisson_ratio}};
+  const bool kuwabara_kono = law.damping == TableDamping::kuwabara_kono;
   reduced_library["impact"] =
-      "impact::reduced::HuntCrossleyElasticPlasticImpact(mass, spring, b(V), V)";
-  json damping = law.damping_from_dissipative_constant
-                     ? json{{"A", {{"value", law.damping_parameter}, {"unit", "s"}}},
-                            {"b(V)", "(3/2) gamma_1 A (c/m)^(2/5) V^(-4/5), gamma_1 = " +
-                                         impact_fem::as_written(reduced::brilliantov_gamma1())}}
-                     : json{{"b", {{"value", law.damping_parameter}, {"unit", "s/m"}}}};
+      kuwabara_kono ? "impact::reduced::kuwabara_kono_elastic_plastic_impact(mass, V, spring, A)"
+                    : "impact::reduced::HuntCrossleyElasticPlasticImpact(mass, spring, b(V), V)";
+  if (kuwabara_kono)
+    reduced_library["force"] =
+        "impact::reduced::kuwabara_kono_elastic_plastic_force(spring, A, x, x', x_max)";
+  json damping;
+  switch (law.damping) {
+    case TableDamping::hunt_crossley:
+      damping = {{"kind", "hunt-crossley"},
+                 {"b", {{"value", law.damping_parameter}, {"unit", "s/m"}}}};
+      break;
+    case TableDamping::hunt_crossley_of_velocity:
+      damping = {{"kind", "hunt-crossley"},
+                 {"A", {{"value", law.damping_parameter}, {"unit", "s"}}},
+                 {"b(V)", "(3/2) gamma_1 A (c/m)^(2/5) V^(-4/5), gamma_1 = " +
+                              impact_fem::as_written(reduced::brilliantov_gamma1())}};
+      break;
+    case TableDamping::kuwabara_kono:
+      damping = {{"kind", "kuwabara-kono"},
+                 {"A", {{"value", law.damping_parameter}, {"unit", "s"}}}};
+      break;
+  }
   return {{"key", law.key},
           {"model", law.model},
           {"label", law.label},
           {"force_law",
-           "F = F_s(x) (1 + b x'), x the approach, x' its rate; F_s the loading "
-           "branch while x grows, the Hertzian unloading branch from x_max after; "
-           "contact ends where the unloading branch returns to 0"},
+           std::string(kuwabara_kono
+                           ? "F = F_s(x) + A k_t(x) x', k_t = dF_s/dx of the current branch"
+                           : "F = F_s(x) (1 + b x')") +
+               ", x the approach, x' its rate; F_s the loading branch while x grows, the "
+               "Hertzian unloading branch from x_max after; contact ends where " +
+               (kuwabara_kono ? "the force returns to 0" : "the unloading branch returns to 0")},
           {"formula", law.formula},
           {"reference", law.reference},
           {"basis", law.basis},
@@ -216,9 +241,16 @@ std::shared_ptr<const reduced::ElasticPlasticContact> table_spring(const Restitu
 }
 
 double table_damping(const RestitutionTableLaw& law, double velocity) {
-  if (!law.damping_from_dissipative_constant) return law.damping_parameter;
-  return matched_hunt_crossley_damping(law.damping_parameter, velocity,
-                                       {law.mass, law.stiffness, 1.5});
+  switch (law.damping) {
+    case TableDamping::hunt_crossley:
+      return law.damping_parameter;
+    case TableDamping::hunt_crossley_of_velocity:
+      return matched_hunt_crossley_damping(law.damping_parameter, velocity,
+                                           {law.mass, law.stiffness, 1.5});
+    case TableDamping::kuwabara_kono:
+      break;
+  }
+  return nan;
 }
 
 std::vector<std::string> restitution_table_laws(const Calibration& calibration) {
@@ -241,7 +273,7 @@ std::string table_law_key(const Calibration& calibration, const std::optional<st
   if (model) {
     if (!damped_key(*model))
       throw RestitutionTableError("--law " + *model +
-                                  ": not a Hunt–Crossley-damped elastic-plastic law (the "
+                                  ": not a damped elastic-plastic law (the "
                                   "calibration has " +
                                   list(available) + ")");
     key = *model;
@@ -282,7 +314,7 @@ RestitutionTableLaw table_law(const Calibration& calibration, const std::string&
     throw RestitutionTableError(key + ": expected two dissipation parameters (yield, damping)");
   law.yield_parameter = dissipation[0];
   law.damping_parameter = dissipation[1];
-  law.damping_from_dissipative_constant = from_dissipative_constant(law.model);
+  law.damping = table_damping_of(law.model);
   law.spring = jackson_green_spring(law.model) ? "jackson-green" : "thornton";
   law.rank = 0;
   law.score = nan;
@@ -365,6 +397,25 @@ RestitutionTableFem fem_at(const FemRun& fem_run, const Calibration& calibration
   return fem;
 }
 
+// The law's impact at V: the closed form (Hunt–Crossley) or the integration (Kuwabara–Kono).
+RestitutionTableResponse table_response(
+    const RestitutionTableLaw& law,
+    const std::shared_ptr<const reduced::ElasticPlasticContact>& spring, double velocity) {
+  if (law.damping == TableDamping::kuwabara_kono) {
+    const reduced::OdeImpactResult r =
+        reduced::kuwabara_kono_elastic_plastic_impact(law.mass, velocity, *spring,
+                                                      law.damping_parameter);
+    return {r.restitution,    r.contact_time, r.force_max,
+            r.time_force_max, r.approach_max, r.approach_at_separation};
+  }
+  const reduced::HuntCrossleyElasticPlasticResponse r =
+      reduced::HuntCrossleyElasticPlasticImpact(law.mass, spring, table_damping(law, velocity),
+                                                velocity)
+          .response();
+  return {r.restitution,    r.contact_time, r.force_max,
+          r.time_force_max, r.approach_max, r.separation_approach};
+}
+
 } // namespace
 
 RestitutionTable restitution_table(const Calibration& calibration, const std::vector<FemRun>& runs,
@@ -385,8 +436,7 @@ RestitutionTable restitution_table(const Calibration& calibration, const std::ve
     row.velocity = velocity;
     row.damping = table_damping(law, velocity);
     try {
-      row.law = reduced::HuntCrossleyElasticPlasticImpact(law.mass, spring, row.damping, velocity)
-                    .response();
+      row.law = table_response(law, spring, velocity);
     } catch (const std::exception& error) {
       throw RestitutionTableError(key + " at V = " + std::to_string(velocity) +
                                   " m/s: " + error.what());
@@ -412,11 +462,19 @@ std::string restitution_table_csv(const RestitutionTable& table) {
   if (law.spring == "jackson-green")
     out << "; R = " << impact_fem::as_written(law.radius)
         << " m; nu = " << impact_fem::as_written(law.poisson_ratio);
-  if (law.damping_from_dissipative_constant)
-    out << "; A = " << impact_fem::as_written(law.damping_parameter)
-        << " s, b(V) = (3/2) gamma_1 A (c/m)^(2/5) V^(-4/5)";
-  else
-    out << "; b = " << impact_fem::as_written(law.damping_parameter) << " s/m";
+  switch (law.damping) {
+    case TableDamping::hunt_crossley:
+      out << "; b = " << impact_fem::as_written(law.damping_parameter) << " s/m";
+      break;
+    case TableDamping::hunt_crossley_of_velocity:
+      out << "; A = " << impact_fem::as_written(law.damping_parameter)
+          << " s, b(V) = (3/2) gamma_1 A (c/m)^(2/5) V^(-4/5)";
+      break;
+    case TableDamping::kuwabara_kono:
+      out << "; A = " << impact_fem::as_written(law.damping_parameter)
+          << " s (Kuwabara-Kono: F = F_s + A k_t x')";
+      break;
+  }
   out << "\n# basis: " << law.basis << "\n"
       << "# FEM uncertainty: relative, the interval FEM value (1 +- U) that the report's "
          "verdict uses (GCI of the run's verification, else what the history shows)\n"

@@ -179,7 +179,10 @@ void result_subsection(Document& doc, const Report& report, const SimulatorResul
     const fs::path table = fs::path(result.file).replace_extension(".csv");
     doc.paragraph(
         "The damped elastic-plastic law " + result.model +
-        " (F = F_s(x) (1 + b x'), the spring's loading branch while the approach grows and "
+        (result.model.rfind("kuwabara-kono", 0) == 0
+             ? " (F = F_s(x) + A k_t(x) x', k_t = dF_s/dx, F_s"
+             : " (F = F_s(x) (1 + b x'), F_s") +
+        " the spring's loading branch while the approach grows and "
         "its unloading branch from the largest approach x_max after) is no built-in contact "
         "of " +
         simulator_tool_name(result.tool.substr(0, result.tool.find('-'))) + ": it runs " +

@@ -1,8 +1,9 @@
 #pragma once
 /// @file
 /// The velocity-dependent restitution table of impact-export: for one calibrated damped
-/// elastic-plastic law (damped_plastic_models.hpp: Hunt–Crossley damping on Thornton's or
-/// Jackson–Green's spring), e(V), t_c(V) and F_max(V) over the campaign's velocity range, for
+/// elastic-plastic law (damped_plastic_models.hpp: Hunt–Crossley or Kuwabara–Kono damping on
+/// Thornton's or Jackson–Green's spring), e(V), t_c(V) and F_max(V) over the campaign's
+/// velocity range, for
 /// an impulse-based engine that takes a restitution per impact speed. Each row at a velocity
 /// of the FEM carries the FEM's values, their numerical uncertainty (fem_uncertainty: the GCI
 /// of the run's verification, else what its history shows; the interval the report's verdict
@@ -15,7 +16,7 @@
 #include "impact_postprocess/run/fem_run.hpp"
 
 #include <impact_reduced/elastic_plastic_impact.hpp>
-#include <impact_reduced/hunt_crossley_elastic_plastic.hpp>
+#include <impact_reduced/impact_figures.hpp>
 
 #include <nlohmann/json.hpp>
 
@@ -28,6 +29,13 @@
 #include <vector>
 
 namespace impact::postprocess {
+
+/// How the table's law damps its spring F_s.
+enum class TableDamping {
+  hunt_crossley,             ///< F = F_s(x) (1 + b x'), b constant
+  hunt_crossley_of_velocity, ///< the same with b(V) from the dissipative constant A
+  kuwabara_kono,             ///< F = F_s(x) + A k_t(x) x', k_t = dF_s/dx of the branch
+};
 
 /// The law of the table and everything needed to evaluate it again with the reduced library.
 struct RestitutionTableLaw {
@@ -43,9 +51,10 @@ struct RestitutionTableLaw {
   /// The spring's yield parameter: x_y [m] (Thornton) or Y [Pa] (Jackson–Green).
   double yield_parameter;
   double poisson_ratio; ///< nu of the yielding body (Jackson–Green), NaN for Thornton
-  /// b [s/m] constant, or A [s] with b(V) = (3/2) gamma_1 A (c/m)^(2/5) V^(-4/5).
+  /// b [s/m] (hunt_crossley), or A [s]: b(V) = (3/2) gamma_1 A (c/m)^(2/5) V^(-4/5)
+  /// (hunt_crossley_of_velocity) or the Kuwabara–Kono constant (kuwabara_kono).
   double damping_parameter;
-  bool damping_from_dissipative_constant;
+  TableDamping damping;
 };
 
 /// The spring of `law` as the reduced library builds it: reduced::ThorntonContact(R = 1 m,
@@ -53,8 +62,24 @@ struct RestitutionTableLaw {
 /// plastic_models.hpp) or reduced::JacksonGreenContact({R, E* = 3 c / (4 sqrt R), Y, nu}).
 std::shared_ptr<const reduced::ElasticPlasticContact> table_spring(const RestitutionTableLaw& law);
 
-/// The Hunt–Crossley b [s/m] of `law` at impact velocity V [m/s].
+/// The Hunt–Crossley b [s/m] of `law` at impact velocity V [m/s]; NaN for Kuwabara–Kono
+/// damping (its A does not depend on V).
 double table_damping(const RestitutionTableLaw& law, double velocity);
+
+/// The law's impact at one velocity: the reduced library's closed form for Hunt–Crossley
+/// damping (HuntCrossleyElasticPlasticImpact), its integration for Kuwabara–Kono
+/// (kuwabara_kono_elastic_plastic_impact, tolerance 1e-10).
+struct RestitutionTableResponse {
+  double restitution;         ///< e [1]
+  double contact_time;        ///< t_c [s]
+  double force_max;           ///< F_max [N]
+  double time_force_max;      ///< t(F_max) [s]
+  double approach_max;        ///< x_max [m]
+  double separation_approach; ///< x_s [m], where the bodies part (0: elastic)
+  reduced::ImpactFigures figures() const {
+    return {restitution, contact_time, force_max, time_force_max, approach_max};
+  }
+};
 
 /// The FEM at a row of the table.
 struct RestitutionTableFem {
@@ -73,8 +98,8 @@ struct RestitutionTableFem {
 
 struct RestitutionTableRow {
   double velocity; ///< V [m/s]
-  double damping;  ///< b(V) [s/m]
-  reduced::HuntCrossleyElasticPlasticResponse law;
+  double damping;  ///< b(V) [s/m] (NaN: Kuwabara–Kono damping)
+  RestitutionTableResponse law;
   std::optional<RestitutionTableFem> fem; ///< at the FEM's velocities only
 };
 
