@@ -50,7 +50,8 @@ json read_json(const fs::path& path) {
 // Runs the tool on one of the fixture's exports; returns its result file.
 json run_tool(const std::string& tool, const std::string& result,
               const std::string& export_name = "export") {
-  const fs::path output = work / ("in_simulator_" + tool + "_" + export_name);
+  const fs::path output =
+      work / ("in_simulator_" + tool + (export_name == "export" ? "" : "_" + export_name));
   fs::remove_all(output);
   const std::string command = "IMPACT_BUILD_DIR='" + std::string(IMPACT_BUILD_DIR) + "' bash '" +
                               IMPACT_RUN_IN_SIMULATORS + "' '" + (work / export_name).string() +
