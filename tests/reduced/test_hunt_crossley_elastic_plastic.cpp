@@ -364,9 +364,6 @@ OdeReference fitted_ode_reference(const FittedLoading& fit, long double m, long 
                                      std::pow(1.25L * m * V * V / c, 0.4L) / V / steps);
   auto& state = integration.state;
   auto& time = integration.time;
-  const auto run_to = [&](const GradedEventIntegration::Function& event) {
-    integration.run_to(event);
-  };
   OdeReference r{};
   auto force_rate = [&](const State& y) {
     return slope(y[0]) * y[1] * (1 + b * y[1]) - b * loading(y[0]) * force(y) / m;
@@ -376,7 +373,7 @@ OdeReference fitted_ode_reference(const FittedLoading& fit, long double m, long 
   Real peak = 0;
   bool seek_peak = true;
   while (state[1] > 0) {
-    run_to([&](const State& y) {
+    integration.run_to([&](const State& y) {
       Real event = y[1];
       if (!passed) event = std::min(event, x_t - y[0]);
       if (seek_peak) event = std::min(event, force_rate(y));
@@ -410,7 +407,7 @@ OdeReference fitted_ode_reference(const FittedLoading& fit, long double m, long 
   restoring = true;
   state[1] = 0;
   const Real x_s = std::max(Real(0), x_r);
-  run_to([&](const State& y) { return y[0] - x_s; });
+  integration.run_to([&](const State& y) { return y[0] - x_s; });
   r.contact_time = time;
   r.rebound_velocity = state[1];
   return r;

@@ -95,21 +95,18 @@ ReferenceResult reference(const ReferenceThornton& spring, Real m, Real V, Real 
   GradedEventIntegration integration(force, m, V, x_scale / V / steps);
   auto& state = integration.state;
   auto& time = integration.time;
-  const auto run_to = [&](const GradedEventIntegration::Function& event) {
-    integration.run_to(event);
-  };
   ReferenceResult r{};
   // The first step from x = 0 has dF/dt > 0 (slope ~ x^(1/2)); the peak where dF/dt = 0,
   // unless the body stops first (then the peak is at x_max: F = F_L(x_max) there).
-  run_to([&](const State& y) { return std::min(force_rate(y), y[1]); });
+  integration.run_to([&](const State& y) { return std::min(force_rate(y), y[1]); });
   r.force_max = force(state);
   r.time_force_max = time;
-  if (state[1] > 0) run_to([](const State& y) { return y[1]; });
+  if (state[1] > 0) integration.run_to([](const State& y) { return y[1]; });
   r.approach_max = x_max = state[0];
   r.force_max = std::max(r.force_max, force(state));
   std::tie(k_u, x_r) = spring.unloading(x_max);
   restoring = true;
-  run_to([&](const State& y) { return std::min(force(y), y[0]); });
+  integration.run_to([&](const State& y) { return std::min(force(y), y[0]); });
   r.contact_time = time;
   r.rebound_velocity = state[1];
   return r;
@@ -317,9 +314,6 @@ ReferenceResult fit_reference(const ReferenceFit& fit, Real m, Real V, Real A, l
                                      std::pow(1.25L * m * V * V / c, 0.4L) / V / steps);
   auto& state = integration.state;
   auto& time = integration.time;
-  const auto run_to = [&](const GradedEventIntegration::Function& event) {
-    integration.run_to(event);
-  };
   ReferenceResult r{};
   const auto candidate = [&] {
     const Real F = force(state);
@@ -332,7 +326,7 @@ ReferenceResult fit_reference(const ReferenceFit& fit, Real m, Real V, Real A, l
   // and at a force peak on either side of it; every stop is a candidate for F_max.
   bool seek_peak = true;
   while (state[1] > 0) {
-    run_to([&](const State& y) {
+    integration.run_to([&](const State& y) {
       Real event = y[1];
       if (!passed) event = std::min(event, x_t - y[0]);
       if (seek_peak) event = std::min(event, force_rate(y));
@@ -355,7 +349,7 @@ ReferenceResult fit_reference(const ReferenceFit& fit, Real m, Real V, Real A, l
   else
     std::tie(k_u, x_r) = std::pair{c, Real(0)};
   restoring = true;
-  run_to([&](const State& y) { return std::min(force(y), y[0]); });
+  integration.run_to([&](const State& y) { return std::min(force(y), y[0]); });
   r.contact_time = time;
   r.rebound_velocity = state[1];
   return r;

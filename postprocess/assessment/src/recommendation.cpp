@@ -13,12 +13,19 @@ namespace impact::postprocess::detail {
 
 namespace {
 
-// The prediction of a calibration entry at each report run: out of sample where it has one.
-std::vector<std::optional<ImpactFigures>> judged_at_runs(const Assessment& report,
-                                                         const std::vector<RunResidual>& runs,
-                                                         bool& out_of_sample) {
-  std::vector<std::optional<ImpactFigures>> judged(report.runs.size());
-  out_of_sample = !runs.empty();
+// The predictions of a calibration entry at each report run: out of sample where it has one
+// (`judged`), and of the fit to every velocity (`in_sample`).
+struct EntryPredictions {
+  std::vector<std::optional<ImpactFigures>> judged, in_sample;
+  bool out_of_sample = false;
+};
+
+EntryPredictions predictions_at_runs(const Assessment& report,
+                                     const std::vector<RunResidual>& runs) {
+  EntryPredictions predictions;
+  predictions.judged.resize(report.runs.size());
+  predictions.in_sample.resize(report.runs.size());
+  predictions.out_of_sample = !runs.empty();
   for (std::size_t i = 0; i < report.runs.size(); ++i) {
     const RunResidual* found = nullptr;
     for (const auto& run : runs)
@@ -28,20 +35,21 @@ std::vector<std::optional<ImpactFigures>> judged_at_runs(const Assessment& repor
         if (same_velocity(run.velocity, report.runs[i].velocity)) found = &run;
     if (!found) continue;
     const ImpactFigures& figures = found->out_of_sample ? *found->out_of_sample : found->prediction;
-    out_of_sample = out_of_sample && found->out_of_sample.has_value();
-    if (std::isfinite(figures.restitution)) judged[i] = figures;
+    predictions.out_of_sample = predictions.out_of_sample && found->out_of_sample.has_value();
+    if (std::isfinite(figures.restitution)) predictions.judged[i] = figures;
+    if (std::isfinite(found->prediction.restitution)) predictions.in_sample[i] = found->prediction;
   }
-  return judged;
+  return predictions;
 }
 
 bool hunt_crossley_model(const std::string& model) {
   return model == model_keys::hunt_crossley || model == model_keys::hunt_crossley_velocity_damping;
 }
 
-// The entry of `key`: its label, whether it has the Hunt–Crossley form, and its judged
-// predictions; false when the calibration does not hold it.
+// The entry of `key`: its label, whether it has the Hunt–Crossley form, its predictions and its
+// fit (none for a law with nothing fitted); false when the calibration does not hold it.
 bool judge_entry(const Assessment& report, const RankedModel& entry, JudgedLaw& law,
-                 std::vector<std::optional<ImpactFigures>>& judged) {
+                 EntryPredictions& predictions, const CampaignModelFit*& fitted) {
   const CampaignCalibration& campaign = report.calibration->campaign;
   // The page's label, not the role "(best law)" the same law has in the verdict's tables.
   const ReportModel* shown = nullptr;
@@ -58,8 +66,9 @@ bool judge_entry(const Assessment& report, const RankedModel& entry, JudgedLaw& 
   if (const CampaignModelFit* fit = campaign.find(entry.key)) {
     law.label = shown ? shown_label : fit->label;
     law.hunt_crossley_form = hunt_crossley_model(fit->fit.model);
-    judged = judged_at_runs(report, fit->runs, law.out_of_sample);
-    law.out_of_sample = law.out_of_sample && !fit->held_out.empty();
+    predictions = predictions_at_runs(report, fit->runs);
+    law.out_of_sample = predictions.out_of_sample && !fit->held_out.empty();
+    fitted = fit;
     return true;
   }
   for (const auto& reference : campaign.reference_models)
@@ -69,11 +78,54 @@ bool judge_entry(const Assessment& report, const RankedModel& entry, JudgedLaw& 
         for (const auto& curve : report.plastic_laws->laws)
           if (curve.key == entry.key) law.label = curve.label;
       law.hunt_crossley_form = hunt_crossley_model(reference.model);
-      judged = judged_at_runs(report, reference.runs, law.out_of_sample);
+      predictions = predictions_at_runs(report, reference.runs);
       law.out_of_sample = true; // nothing fitted: every run is a prediction
       return true;
     }
   return false;
+}
+
+// The fitted parameter of `fit` that moves most, relative to its value in the fit to every
+// velocity, in the fit without `velocity`; false without that held-out fit.
+bool largest_shift(const CampaignModelFit& fit, double velocity, BreakingRun& breaking) {
+  const std::vector<double> values = fit.fit.parameter_values();
+  const std::vector<std::string> names = fit.fit.parameter_names();
+  std::vector<std::string> units{"N/m^" + short_number(fit.fit.exponent.value), "1",
+                                 fit.fit.parameter_unit};
+  for (const auto& extra : fit.fit.extra) units.push_back(extra.unit);
+  for (const auto& held : fit.held_out) {
+    if (!same_velocity(held.velocity, velocity)) continue;
+    double largest = -1;
+    for (std::size_t k = 0; k < values.size() && k < held.parameters.size(); ++k) {
+      const double shift = std::abs(held.parameters[k] - values[k]) / std::abs(values[k]);
+      if (!std::isfinite(shift) || shift <= largest) continue;
+      largest = shift;
+      breaking.parameter = k < names.size() ? names[k] : "";
+      breaking.unit = k < units.size() ? units[k] : "";
+      breaking.fitted_value = values[k];
+      breaking.held_out_value = held.parameters[k];
+    }
+    return largest >= 0;
+  }
+  return false;
+}
+
+// Why the law is not within the band at run i, by the quantity that keeps it out.
+BreakingRun break_at(const Assessment& report, std::size_t i, Quantity quantity,
+                     const EntryPredictions& predictions, const CampaignModelFit* fit,
+                     double tolerance) {
+  BreakingRun breaking{i, quantity, BreakCause::law_shape, 0, 0, 0, "", "", 0, 0};
+  breaking.error = relative_error(*predictions.judged[i], report.runs[i].fem, quantity);
+  breaking.uncertainty = report.runs[i].uncertainty[std::size_t(quantity)].relative;
+  breaking.in_sample_error = predictions.in_sample[i] ? relative_error(*predictions.in_sample[i],
+                                                                       report.runs[i].fem, quantity)
+                                                      : NAN;
+  if (std::abs(breaking.error) <= tolerance)
+    breaking.cause = BreakCause::fem_uncertainty;
+  else if (fit && std::abs(breaking.in_sample_error) <= tolerance &&
+           largest_shift(*fit, report.runs[i].velocity, breaking))
+    breaking.cause = BreakCause::held_out;
+  return breaking;
 }
 
 // The index of the best law among `laws` that `take` accepts: within at the most runs, the
@@ -123,18 +175,20 @@ void add_recommendation(Assessment& report) {
     law.key = ranking[rank].key;
     law.rank = rank;
     law.score = ranking[rank].score;
-    std::vector<std::optional<ImpactFigures>> judged;
-    if (!judge_entry(report, ranking[rank], law, judged)) continue;
+    EntryPredictions predictions;
+    const CampaignModelFit* fit = nullptr;
+    if (!judge_entry(report, ranking[rank], law, predictions, fit)) continue;
+    const auto& judged = predictions.judged;
     const ToleranceVerdict verdict =
         tolerance_verdict(report, judged, recommendation.tolerance, quantities);
     law.decisions = verdict.decisions;
     law.worst_error = 0;
     law.worst_quantity = quantities.front();
-    law.breaking.assign(report.runs.size(), std::nullopt);
     for (std::size_t i = 0; i < report.runs.size(); ++i) {
       if (law.decisions[i] == Decision::within) ++law.within;
       if (!judged[i]) continue;
       double excess = -INFINITY;
+      std::optional<Quantity> breaking;
       for (Quantity quantity : quantities) {
         if (law.decisions[i] == Decision::within) break;
         const double error = std::abs(relative_error(*judged[i], report.runs[i].fem, quantity));
@@ -143,9 +197,12 @@ void add_recommendation(Assessment& report) {
         if (std::isfinite(error) && error + margin > recommendation.tolerance &&
             error - margin > excess) {
           excess = error - margin;
-          law.breaking[i] = quantity;
+          breaking = quantity;
         }
       }
+      if (breaking)
+        law.breaks.push_back(
+            break_at(report, i, *breaking, predictions, fit, recommendation.tolerance));
       for (Quantity quantity : quantities) {
         const double error = relative_error(*judged[i], report.runs[i].fem, quantity);
         if (std::isfinite(error) && std::abs(error) > std::abs(law.worst_error)) {

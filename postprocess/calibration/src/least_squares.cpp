@@ -2,6 +2,8 @@
 
 #include <ceres/ceres.h>
 
+#include <Eigen/SVD>
+
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -34,6 +36,9 @@ public:
     std::vector<double> plus(n), minus(n);
     for (std::size_t j = 0; j < p; ++j) {
       if (jacobians[j] == nullptr) continue;
+      // The rank check before the covariance and the covariance itself ask for the same
+      // Jacobian at the solution: the second is the first, kept.
+      if (cached_column(theta, j, jacobians[j])) continue;
       const double h = steps_[j];
       std::vector<double> shifted = theta;
       shifted[j] = theta[j] + h;
@@ -41,11 +46,12 @@ public:
       shifted[j] = theta[j] - h;
       if (function_(shifted.data(), minus.data())) {
         for (std::size_t i = 0; i < n; ++i) jacobians[j][i] = (plus[i] - minus[i]) / (2 * h);
-        continue;
+      } else {
+        // A parameter at the edge of the model's domain (a damping at its bound 0, where the
+        // law is not defined below): the forward difference.
+        for (std::size_t i = 0; i < n; ++i) jacobians[j][i] = (plus[i] - residuals[i]) / h;
       }
-      // A parameter at the edge of the model's domain (a damping at its bound 0, where the
-      // law is not defined below): the forward difference.
-      for (std::size_t i = 0; i < n; ++i) jacobians[j][i] = (plus[i] - residuals[i]) / h;
+      keep_column(theta, j, jacobians[j]);
     }
     return true;
   }
@@ -74,12 +80,60 @@ private:
     return true;
   }
 
+  // Column j of the Jacobian at theta, when the last one computed there is kept.
+  bool cached_column(const std::vector<double>& theta, std::size_t j, double* column) const {
+    std::lock_guard<std::mutex> lock(cache_mutex_);
+    if (j >= jacobian_kept_.size() || !jacobian_kept_[j] || jacobian_theta_ != theta) return false;
+    std::copy(cached_jacobian_[j].begin(), cached_jacobian_[j].end(), column);
+    return true;
+  }
+
+  void keep_column(const std::vector<double>& theta, std::size_t j, const double* column) const {
+    std::lock_guard<std::mutex> lock(cache_mutex_);
+    if (jacobian_theta_ != theta) {
+      jacobian_theta_ = theta;
+      jacobian_kept_.assign(steps_.size(), false);
+      cached_jacobian_.assign(steps_.size(), {});
+    }
+    cached_jacobian_[j].assign(column, column + num_residuals());
+    jacobian_kept_[j] = true;
+  }
+
   ResidualFunction function_;
   std::vector<double> steps_;
   mutable std::mutex cache_mutex_;
+  mutable std::vector<double> jacobian_theta_;
+  mutable std::vector<bool> jacobian_kept_;
+  mutable std::vector<std::vector<double>> cached_jacobian_;
   mutable std::vector<double> cached_theta_; // empty until a successful evaluation
   mutable std::vector<double> cached_residuals_;
 };
+
+// Whether J^T J of the free parameters at the solution has a reciprocal condition number of
+// at least 1e-14, ceres::Covariance's own test (min_reciprocal_condition_number): a parameter
+// without effect there (a damping at its bound 0 on a forward difference, a yield strength
+// above every run's stress) makes it singular. Tested here so that ceres::Covariance is not
+// asked: it would log an error for a case the fit reports as an interval not known.
+bool well_conditioned(ceres::Problem& problem) {
+  std::vector<double*> blocks;
+  problem.GetParameterBlocks(&blocks);
+  ceres::Problem::EvaluateOptions options;
+  for (double* block : blocks)
+    if (!problem.IsParameterBlockConstant(block)) options.parameter_blocks.push_back(block);
+  ceres::CRSMatrix jacobian;
+  double cost = 0;
+  if (options.parameter_blocks.empty() ||
+      !problem.Evaluate(options, &cost, nullptr, nullptr, &jacobian))
+    return false;
+  Eigen::MatrixXd dense = Eigen::MatrixXd::Zero(jacobian.num_rows, jacobian.num_cols);
+  for (int row = 0; row < jacobian.num_rows; ++row)
+    for (int k = jacobian.rows[std::size_t(row)]; k < jacobian.rows[std::size_t(row) + 1]; ++k)
+      dense(row, jacobian.cols[std::size_t(k)]) = jacobian.values[std::size_t(k)];
+  if (!dense.allFinite()) return false;
+  const Eigen::VectorXd sigma = Eigen::JacobiSVD<Eigen::MatrixXd>(dense).singularValues();
+  return sigma.size() > 0 && sigma(0) > 0 &&
+         std::pow(sigma(sigma.size() - 1) / sigma(0), 2) >= 1e-14;
+}
 
 } // namespace
 
@@ -148,7 +202,7 @@ LeastSquaresResult solve_least_squares(const std::vector<FitParameter>& paramete
   // SVD would work on an undefined Jacobian.
   const bool evaluated =
       summary.termination_type != ceres::FAILURE && std::isfinite(summary.final_cost);
-  if (degrees_of_freedom == 0 || pairs.empty() || !evaluated ||
+  if (degrees_of_freedom == 0 || pairs.empty() || !evaluated || !well_conditioned(problem) ||
       !covariance.Compute(pairs, &problem)) {
     result.covariance.clear();
     return result;

@@ -1,7 +1,8 @@
 #pragma once
 // Nonlinear least squares on Ceres for models that are evaluated by simulation (no
 // automatic derivatives): residual blocks given as functions of the parameter vector,
-// Jacobians by central differences, and the covariance s^2 (J^T J)^-1 from ceres::Covariance.
+// Jacobians by central differences, and the covariance s^2 (J^T J)^-1 from ceres::Covariance
+// (not asked where J^T J is singular by its own test: the covariance is then not known).
 
 #include <cstddef>
 #include <functional>

@@ -28,20 +28,6 @@ namespace {
 using json = nlohmann::json;
 constexpr double nan = std::numeric_limits<double>::quiet_NaN();
 
-bool jackson_green_spring(const std::string& model) {
-  return damped_plastic_needs_scenario(model);
-}
-
-TableDamping table_damping_of(const std::string& model) {
-  if (model == model_keys::kuwabara_kono_thornton ||
-      model == model_keys::kuwabara_kono_jackson_green)
-    return TableDamping::kuwabara_kono;
-  if (model == model_keys::hunt_crossley_thornton_from_a ||
-      model == model_keys::hunt_crossley_jackson_green_from_a)
-    return TableDamping::hunt_crossley_of_velocity;
-  return TableDamping::hunt_crossley;
-}
-
 // A key of the calibration that names a damped elastic-plastic law: a fitted model or a
 // reference model from the material.
 bool damped_key(const std::string& key) {
@@ -314,8 +300,8 @@ RestitutionTableLaw table_law(const Calibration& calibration, const std::string&
     throw RestitutionTableError(key + ": expected two dissipation parameters (yield, damping)");
   law.yield_parameter = dissipation[0];
   law.damping_parameter = dissipation[1];
-  law.damping = table_damping_of(law.model);
-  law.spring = jackson_green_spring(law.model) ? "jackson-green" : "thornton";
+  law.damping = damped_plastic_damping(law.model);
+  law.spring = damped_plastic_needs_scenario(law.model) ? "jackson-green" : "thornton";
   law.rank = 0;
   law.score = nan;
   for (std::size_t i = 0; i < calibration.campaign.ranking.size(); ++i)

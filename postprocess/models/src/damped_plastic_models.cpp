@@ -30,16 +30,6 @@ const std::string matched_damping_formula =
     "b(V) = (3/2) gamma_1 A (c/m)^(2/5) V^(-4/5), gamma_1 = 1.730173, V the speed at first "
     "contact";
 
-bool from_dissipative_constant(const std::string& name) {
-  return name == model_keys::hunt_crossley_thornton_from_a ||
-         name == model_keys::hunt_crossley_jackson_green_from_a;
-}
-
-bool kuwabara_kono_damping(const std::string& name) {
-  return name == model_keys::kuwabara_kono_thornton ||
-         name == model_keys::kuwabara_kono_jackson_green;
-}
-
 // ---- Hunt–Crossley damping: the reduced library's closed form ------------------------------
 
 class HuntCrossleyPlasticImpact final : public DampedPlasticImpact {
@@ -221,6 +211,17 @@ bool is_damped_plastic_model(const std::string& name) {
   return std::find(names.begin(), names.end(), name) != names.end();
 }
 
+DampedPlasticDamping damped_plastic_damping(const std::string& name) {
+  if (!is_damped_plastic_model(name))
+    throw reduced::InvalidInput("model", name + " is not a damped elastic-plastic model");
+  if (name == model_keys::kuwabara_kono_thornton || name == model_keys::kuwabara_kono_jackson_green)
+    return DampedPlasticDamping::kuwabara_kono;
+  if (name == model_keys::hunt_crossley_thornton_from_a ||
+      name == model_keys::hunt_crossley_jackson_green_from_a)
+    return DampedPlasticDamping::hunt_crossley_of_velocity;
+  return DampedPlasticDamping::hunt_crossley;
+}
+
 bool damped_plastic_needs_scenario(const std::string& name) {
   return name == model_keys::hunt_crossley_jackson_green ||
          name == model_keys::hunt_crossley_jackson_green_from_a ||
@@ -242,7 +243,7 @@ ContactModel damped_plastic_model(const std::string& name, const ContactModel& s
                                               spring.name + "'");
   ContactModel model = spring;
   model.name = name;
-  if (kuwabara_kono_damping(name)) {
+  if (damped_plastic_damping(name) == DampedPlasticDamping::kuwabara_kono) {
     model.spring_damping = SpringDamping::kuwabara_kono;
     model.formula =
         "F = F_s(x) + A k_t(x) x', k_t = dF_s/dx of the current branch, F_s the "
@@ -259,7 +260,8 @@ ContactModel damped_plastic_model(const std::string& name, const ContactModel& s
     return model;
   }
   model.spring_damping = SpringDamping::hunt_crossley;
-  const bool matched = from_dissipative_constant(name);
+  const bool matched =
+      damped_plastic_damping(name) == DampedPlasticDamping::hunt_crossley_of_velocity;
   model.formula = (matched ? "F = F_s(x) (1 + b(V) x'), " + matched_damping_formula
                            : std::string("F = F_s(x) (1 + b x'), b constant")) +
                   ", F_s the spring (" + spring.name + "): " + spring.formula;

@@ -57,17 +57,54 @@ std::string law_name(const JudgedLaw& law) {
   return law.label.rfind(law.key, 0) == 0 ? law.key : law.label + " (" + law.key + ")";
 }
 
-std::string breaking_text(const Report& report, const JudgedLaw& law) {
-  // Grouped by quantity, in the order of the verdict's quantities.
-  std::string text;
-  for (Quantity quantity : verdict_quantities) {
-    std::vector<double> at;
-    for (std::size_t i = 0; i < law.breaking.size(); ++i)
-      if (law.breaking[i] == quantity) at.push_back(report.runs[i].velocity);
-    if (at.empty()) continue;
-    text += std::string(text.empty() ? "" : ", ") + quantity_symbol(quantity) +
-            " at V = " + velocity_list(at);
+namespace {
+
+// Why a law is not within the band at the runs of one group (one quantity, one cause).
+std::string cause_words(const Report& report, const std::vector<const BreakingRun*>& runs) {
+  const BreakingRun& first = *runs.front();
+  const std::string band = band_name(report.recommendation->tolerance);
+  switch (first.cause) {
+    case BreakCause::fem_uncertainty:
+      return "not decided: within " + band + " by less than the FEM's uncertainty";
+    case BreakCause::law_shape:
+      if (!std::isfinite(first.in_sample_error) || first.in_sample_error == first.error)
+        return "nothing fitted: the law's shape or its constants";
+      return runs.size() == 1
+                 ? "the law's shape: " + percent_cell(first.in_sample_error) +
+                       " even in the fit to every velocity"
+                 : "the law's shape: beyond " + band + " even in the fit to every velocity";
+    case BreakCause::held_out:
+      if (runs.size() > 1)
+        return "held out: within " + band +
+               " in the fit to every velocity, not in the fits without each";
+      return "held out: " + percent_cell(first.in_sample_error) +
+             " in the fit to every velocity; the fit without " +
+             short_number(report.runs[first.run].velocity) + " m/s moves " + first.parameter +
+             " from " + significant(first.fitted_value, 4) + " to " +
+             significant(first.held_out_value, 4) + (first.unit == "1" ? "" : " " + first.unit);
   }
+  return "";
+}
+
+} // namespace
+
+std::string breaking_text(const Report& report, const JudgedLaw& law) {
+  // Grouped by quantity, in the order of the verdict's quantities, then by cause.
+  std::string text;
+  for (Quantity quantity : verdict_quantities)
+    for (BreakCause cause :
+         {BreakCause::law_shape, BreakCause::held_out, BreakCause::fem_uncertainty}) {
+      std::vector<const BreakingRun*> runs;
+      std::vector<double> at;
+      for (const auto& breaking : law.breaks)
+        if (breaking.quantity == quantity && breaking.cause == cause) {
+          runs.push_back(&breaking);
+          at.push_back(report.runs[breaking.run].velocity);
+        }
+      if (runs.empty()) continue;
+      text += std::string(text.empty() ? "" : ", ") + quantity_symbol(quantity) +
+              " at V = " + velocity_list(at) + " (" + cause_words(report, runs) + ")";
+    }
   return text;
 }
 
@@ -129,8 +166,7 @@ std::string recommendation_line(const Report& report) {
       text += " Closest: " + law_name(closest) + ", ranked first by " +
               (closest.out_of_sample ? "out-of-sample" : "in-sample") + " error (RMS " +
               unsigned_percent(closest.score) + "); " + largest_error(report, closest) +
-              "; not within " + band + " (outside, or not decided for the FEM's uncertainty) by " +
-              breaking_text(report, closest) + ".";
+              "; not within " + band + " by " + breaking_text(report, closest) + ".";
     }
     return text;
   }
@@ -140,8 +176,7 @@ std::string recommendation_line(const Report& report) {
                      unsigned_percent(law.score) + ").";
   // Elsewhere: what keeps it out, which other law holds there, and where none does.
   if (law.within < report.runs.size())
-    text += " Not within " + band + " (outside, or not decided for the FEM's uncertainty) by " +
-            breaking_text(report, law) + ".";
+    text += " Not within " + band + " by " + breaking_text(report, law) + ".";
   std::vector<std::size_t> elsewhere;
   for (std::size_t i = 0; i < report.runs.size(); ++i)
     if (law.decisions[i] != Decision::within &&

@@ -132,6 +132,58 @@ void verdict_section(Document& doc, const Report& report) {
   doc.table(models);
 }
 
+namespace {
+
+// Where the recommended law (the closest when none holds) is not within the loosest band, and
+// why: the quantity that keeps it out, its error out of sample and in the fit to every
+// velocity, the FEM's uncertainty, and the cause the assessment measured.
+void breaks_table(Document& doc, const Report& report) {
+  if (!report.recommendation) return;
+  const LawRecommendation& recommendation = *report.recommendation;
+  const auto chosen =
+      recommendation.recommended ? recommendation.recommended : recommendation.closest;
+  if (!chosen) return;
+  const JudgedLaw& law = recommendation.laws[*chosen];
+  if (law.breaks.empty()) return;
+  const std::string band = band_name(recommendation.tolerance);
+  doc.paragraph(
+      "Where " + law_name(law) + " (" +
+      (recommendation.recommended ? "recommended" : "the closest") + ") is not within " + band +
+      ", and why. The cause is measured: the FEM's uncertainty, where the error is within " + band +
+      " by less than the FEM's uncertainty U; the law's shape, where even the fit to every "
+      "velocity is beyond " +
+      band +
+      " (or nothing is fitted); held out, where the fit to every "
+      "velocity is within " +
+      band + " and the fit without this velocity is not (the parameter that moves most is given).");
+  Table table{{"V [m/s]", "quantity", "out of sample [%]", "U [%]", "fit to every velocity [%]",
+               "cause"},
+              {}};
+  for (const auto& breaking : law.breaks) {
+    std::string cause;
+    switch (breaking.cause) {
+      case BreakCause::fem_uncertainty:
+        cause = "the FEM's uncertainty";
+        break;
+      case BreakCause::law_shape:
+        cause = "the law's shape";
+        break;
+      case BreakCause::held_out:
+        cause = "held out: " + breaking.parameter + " " + significant(breaking.fitted_value, 4) +
+                " -> " + significant(breaking.held_out_value, 4) +
+                (breaking.unit == "1" ? "" : " " + breaking.unit);
+        break;
+    }
+    table.rows.push_back({short_number(report.runs[breaking.run].velocity),
+                          quantity_symbol(breaking.quantity), cell(breaking.error * 100),
+                          cell(breaking.uncertainty * 100), cell(breaking.in_sample_error * 100),
+                          cause});
+  }
+  doc.table(table);
+}
+
+} // namespace
+
 void ranking_section(Document& doc, const Report& report) {
   if (!report.calibration) return;
   const CampaignCalibration& campaign = report.calibration->campaign;
@@ -206,6 +258,7 @@ void ranking_section(Document& doc, const Report& report) {
   }
   doc.table(table);
   doc.list(families);
+  breaks_table(doc, report);
 }
 
 namespace {

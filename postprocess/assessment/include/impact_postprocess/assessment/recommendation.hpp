@@ -13,6 +13,36 @@
 
 namespace impact::postprocess {
 
+/// Why a law is not within the band at a run, measured from the calibration (the verdict's
+/// rule, the fit to every velocity and the fit without this one).
+enum class BreakCause {
+  /// |error| is within the band, |error| + U is not: the FEM's own uncertainty U leaves it open.
+  fem_uncertainty,
+  /// Beyond the band also in the fit to every velocity, or nothing is fitted: no parameters the
+  /// law was given follow the FEM there (the law's shape, or for a law from the material its
+  /// constants).
+  law_shape,
+  /// Within the band in the fit to every velocity, beyond it in the fit without this velocity:
+  /// what the other velocities say of the parameters does not carry over to this one.
+  held_out,
+};
+
+/// A run at which a law is not within the band: the quantity that keeps it out and why.
+struct BreakingRun {
+  std::size_t run;   ///< index in the report's runs
+  Quantity quantity; ///< the largest |error| - U of those with |error| + U beyond the band
+  BreakCause cause;
+  double error;           ///< out of sample, signed relative
+  double uncertainty;     ///< the FEM's U of the quantity, relative (NaN: not recorded)
+  double in_sample_error; ///< of the fit to every velocity (the same for a law with nothing fitted)
+  /// held_out: the fitted parameter that moves most (relative to the fit to every velocity),
+  /// its value in that fit and in the fit without this velocity; "" otherwise.
+  std::string parameter;
+  std::string unit;
+  double fitted_value = 0;
+  double held_out_value = 0;
+};
+
 /// A ranked law judged at every run of the report by the verdict's rule (decide, with the
 /// FEM's uncertainty) in the loosest band: where it holds, and its largest error.
 struct JudgedLaw {
@@ -28,10 +58,8 @@ struct JudgedLaw {
   /// as it is (Simbody's HuntCrossleyForce, the force of the block "For a multibody code").
   bool hunt_crossley_form = false;
   std::vector<Decision> decisions; ///< per report run, in the loosest band
-  /// Per report run where it is not within: the quantity that keeps it out (the largest
-  /// |error| - U of those with |error| + U beyond the band; U the FEM's uncertainty); none
-  /// where it is within or has no prediction.
-  std::vector<std::optional<Quantity>> breaking;
+  /// The runs where it is not within and has a prediction, in run order.
+  std::vector<BreakingRun> breaks;
   std::size_t within = 0;    ///< runs within
   double worst_error;        ///< largest |relative error| of the judged quantities (signed)
   Quantity worst_quantity;   ///< where it is

@@ -13,6 +13,7 @@
 
 #include "impact_postprocess/calibration/calibration.hpp"
 #include "impact_postprocess/impact_quantities.hpp"
+#include "impact_postprocess/models/damped_plastic_models.hpp"
 #include "impact_postprocess/run/fem_run.hpp"
 
 #include <impact_reduced/elastic_plastic_impact.hpp>
@@ -30,12 +31,8 @@
 
 namespace impact::postprocess {
 
-/// How the table's law damps its spring F_s.
-enum class TableDamping {
-  hunt_crossley,             ///< F = F_s(x) (1 + b x'), b constant
-  hunt_crossley_of_velocity, ///< the same with b(V) from the dissipative constant A
-  kuwabara_kono,             ///< F = F_s(x) + A k_t(x) x', k_t = dF_s/dx of the branch
-};
+/// How the table's law damps its spring F_s: the damping of its damped model.
+using TableDamping = DampedPlasticDamping;
 
 /// The law of the table and everything needed to evaluate it again with the reduced library.
 struct RestitutionTableLaw {

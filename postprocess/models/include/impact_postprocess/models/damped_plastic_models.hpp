@@ -70,6 +70,17 @@ const std::vector<std::string>& damped_plastic_model_names();
 /// True for a name of damped_plastic_model_names().
 bool is_damped_plastic_model(const std::string& name);
 
+/// How a damped elastic-plastic model damps its spring F_s.
+enum class DampedPlasticDamping {
+  hunt_crossley,             ///< F = F_s(x) (1 + b x'), b constant
+  hunt_crossley_of_velocity, ///< the same with b(V) from the dissipative constant A ("-from-a")
+  kuwabara_kono,             ///< F = F_s(x) + A k_t(x) x', k_t = dF_s/dx of the branch
+};
+
+/// The damping of the damped model `name` (a name of damped_plastic_model_names()); throws
+/// reduced::InvalidInput("model") for another name.
+DampedPlasticDamping damped_plastic_damping(const std::string& name);
+
 /// Whether a damped model needs the scenario's sphere radius and Poisson ratio (the
 /// Jackson–Green spring).
 bool damped_plastic_needs_scenario(const std::string& name);
