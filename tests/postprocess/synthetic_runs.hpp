@@ -11,8 +11,11 @@
 #include <impact_reduced/hunt_crossley.hpp>
 #include <impact_reduced/impact_ode.hpp>
 
+#include <nlohmann/json.hpp>
+
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
 #include <random>
 #include <sstream>
 #include <string>
@@ -146,6 +149,35 @@ inline std::filesystem::path scratch_directory(const std::string& name) {
   std::filesystem::remove_all(directory);
   std::filesystem::create_directories(directory);
   return directory;
+}
+
+/// The verification.json of impact-fem in `directory` (a run's folder), with relative GCI `gci`
+/// of t_c, t(F_max) and x_max, 2 gci of F_max and gci / 2 of e.
+inline void write_verification(const std::filesystem::path& directory,
+                               const postprocess::FemRun& run, double gci) {
+  const auto quantity = [&](double fine, double relative) {
+    return nlohmann::json{{"unit", "1"},
+                          {"fine", fine},
+                          {"medium", fine},
+                          {"coarse", fine},
+                          {"observed_order", 2.0},
+                          {"extrapolated", fine},
+                          {"gci_fine", relative},
+                          {"gci_fine_absolute", relative * fine},
+                          {"convergence", "monotone"}};
+  };
+  std::ofstream(directory / "verification.json")
+      << nlohmann::json{{"format", "impact-verification"},
+                        {"format_version", 1},
+                        {"refinement_ratio", 1.5},
+                        {"levels", nlohmann::json::array()},
+                        {"quantities",
+                         {{"contact_time", quantity(run.contact_time, gci)},
+                          {"force_max", quantity(run.force_max, 2 * gci)},
+                          {"time_force_max", quantity(run.time_force_max, gci)},
+                          {"approach_max", quantity(run.approach_max, gci)},
+                          {"restitution", quantity(run.restitution, 0.5 * gci)}}}}
+             .dump(2);
 }
 
 } // namespace impact::testing

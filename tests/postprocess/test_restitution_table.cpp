@@ -73,33 +73,6 @@ FemRun damped_thornton_run(const Truth& truth, double retardation_time, double v
   return run;
 }
 
-// The verification.json of impact-fem with relative GCIs of e, t_c and F_max.
-void write_verification(const fs::path& directory, const FemRun& run, double gci) {
-  const auto quantity = [&](double fine, double relative) {
-    return nlohmann::json{{"unit", "1"},
-                          {"fine", fine},
-                          {"medium", fine},
-                          {"coarse", fine},
-                          {"observed_order", 2.0},
-                          {"extrapolated", fine},
-                          {"gci_fine", relative},
-                          {"gci_fine_absolute", relative * fine},
-                          {"convergence", "monotone"}};
-  };
-  std::ofstream(directory / "verification.json")
-      << nlohmann::json{{"format", "impact-verification"},
-                        {"format_version", 1},
-                        {"refinement_ratio", 1.5},
-                        {"levels", nlohmann::json::array()},
-                        {"quantities",
-                         {{"contact_time", quantity(run.contact_time, gci)},
-                          {"force_max", quantity(run.force_max, 2 * gci)},
-                          {"time_force_max", quantity(run.time_force_max, gci)},
-                          {"approach_max", quantity(run.approach_max, gci)},
-                          {"restitution", quantity(run.restitution, 0.5 * gci)}}}}
-             .dump(2);
-}
-
 ImpactPrediction figures_of(const reduced::HuntCrossleyElasticPlasticResponse& response,
                             double damping) {
   ImpactPrediction prediction;
@@ -143,7 +116,7 @@ protected:
       const FemRun made = damped_thornton_run(truth, tau, velocity);
       const fs::path run_directory = *directory / ("run" + std::to_string(index++));
       write_fem_run(made, run_directory);
-      if (index == 2) write_verification(run_directory, made, 0.004);
+      if (index == 2) impact::testing::write_verification(run_directory, made, 0.004);
       runs->push_back(read_fem_run(run_directory));
       const FemRun& run = runs->back();
       calibration->runs.push_back({run.source, run.impact_velocity, run.mass,

@@ -111,7 +111,7 @@ bool largest_shift(const CampaignModelFit& fit, double velocity, BreakingRun& br
 }
 
 // Why the law is not within the band at run i, by the quantity that keeps it out.
-BreakingRun break_at(const Assessment& report, std::size_t i, Quantity quantity,
+BreakingRun break_at(const Assessment& report, std::size_t i, Quantity quantity, Decision decision,
                      const EntryPredictions& predictions, const CampaignModelFit* fit,
                      double tolerance) {
   BreakingRun breaking{i, quantity, BreakCause::law_shape, 0, 0, 0, "", "", 0, 0};
@@ -120,7 +120,7 @@ BreakingRun break_at(const Assessment& report, std::size_t i, Quantity quantity,
   breaking.in_sample_error = predictions.in_sample[i] ? relative_error(*predictions.in_sample[i],
                                                                        report.runs[i].fem, quantity)
                                                       : NAN;
-  if (std::abs(breaking.error) <= tolerance)
+  if (decision == Decision::undecided)
     breaking.cause = BreakCause::fem_uncertainty;
   else if (fit && std::abs(breaking.in_sample_error) <= tolerance &&
            largest_shift(*fit, report.runs[i].velocity, breaking))
@@ -201,8 +201,8 @@ void add_recommendation(Assessment& report) {
         }
       }
       if (breaking)
-        law.breaks.push_back(
-            break_at(report, i, *breaking, predictions, fit, recommendation.tolerance));
+        law.breaks.push_back(break_at(report, i, *breaking, law.decisions[i], predictions, fit,
+                                      recommendation.tolerance));
       for (Quantity quantity : quantities) {
         const double error = relative_error(*judged[i], report.runs[i].fem, quantity);
         if (std::isfinite(error) && std::abs(error) > std::abs(law.worst_error)) {

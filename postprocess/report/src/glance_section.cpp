@@ -65,7 +65,10 @@ std::string cause_words(const Report& report, const std::vector<const BreakingRu
   const std::string band = band_name(report.recommendation->tolerance);
   switch (first.cause) {
     case BreakCause::fem_uncertainty:
-      return "not decided: within " + band + " by less than the FEM's uncertainty";
+      return runs.size() == 1
+                 ? "not decided: " + percent_cell(first.error) + " against the FEM's uncertainty " +
+                       unsigned_percent(first.uncertainty)
+                 : "not decided for the FEM's uncertainty";
     case BreakCause::law_shape:
       if (!std::isfinite(first.in_sample_error) || first.in_sample_error == first.error)
         return "nothing fitted: the law's shape or its constants";

@@ -16,7 +16,7 @@ namespace impact::postprocess {
 /// Why a law is not within the band at a run, measured from the calibration (the verdict's
 /// rule, the fit to every velocity and the fit without this one).
 enum class BreakCause {
-  /// |error| is within the band, |error| + U is not: the FEM's own uncertainty U leaves it open.
+  /// Not decided: the band lies within |error| ± U, the FEM's own uncertainty U leaves it open.
   fem_uncertainty,
   /// Beyond the band also in the fit to every velocity, or nothing is fitted: no parameters the
   /// law was given follow the FEM there (the law's shape, or for a law from the material its
