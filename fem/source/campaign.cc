@@ -497,7 +497,8 @@ namespace impact_fem
     std::filesystem::create_directories(directory);
     std::cout << "impact-fem campaign: ";
     if (axes.empty())
-      std::cout << velocities.size() << " velocities";
+      std::cout << velocities.size()
+                << (velocities.size() == 1 ? " velocity" : " velocities");
     else
       {
         std::cout << points.size() << " runs (";
