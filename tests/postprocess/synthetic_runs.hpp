@@ -151,32 +151,42 @@ inline std::filesystem::path scratch_directory(const std::string& name) {
   return directory;
 }
 
+/// One quantity of impact-fem's verification.json, the same on every level: its value `fine`,
+/// relative GCI `relative` (a number, or null where impact-fem has none) and absolute GCI.
+inline nlohmann::json verification_quantity(double fine, nlohmann::json relative, double absolute) {
+  return nlohmann::json{{"unit", "1"},
+                        {"fine", fine},
+                        {"medium", fine},
+                        {"coarse", fine},
+                        {"observed_order", 2.0},
+                        {"extrapolated", fine},
+                        {"gci_fine", std::move(relative)},
+                        {"gci_fine_absolute", absolute},
+                        {"convergence", "monotone"}};
+}
+
+/// impact-fem's verification.json of `run` with these quantities (verification_quantity).
+inline nlohmann::json verification_json(nlohmann::json quantities) {
+  return nlohmann::json{{"format", "impact-verification"},
+                        {"format_version", 1},
+                        {"refinement_ratio", 1.5},
+                        {"levels", nlohmann::json::array()},
+                        {"quantities", std::move(quantities)}};
+}
+
 /// The verification.json of impact-fem in `directory` (a run's folder), with relative GCI `gci`
 /// of t_c, t(F_max) and x_max, 2 gci of F_max and gci / 2 of e.
 inline void write_verification(const std::filesystem::path& directory,
                                const postprocess::FemRun& run, double gci) {
-  const auto quantity = [&](double fine, double relative) {
-    return nlohmann::json{{"unit", "1"},
-                          {"fine", fine},
-                          {"medium", fine},
-                          {"coarse", fine},
-                          {"observed_order", 2.0},
-                          {"extrapolated", fine},
-                          {"gci_fine", relative},
-                          {"gci_fine_absolute", relative * fine},
-                          {"convergence", "monotone"}};
+  const auto quantity = [](double fine, double relative) {
+    return verification_quantity(fine, relative, relative * fine);
   };
   std::ofstream(directory / "verification.json")
-      << nlohmann::json{{"format", "impact-verification"},
-                        {"format_version", 1},
-                        {"refinement_ratio", 1.5},
-                        {"levels", nlohmann::json::array()},
-                        {"quantities",
-                         {{"contact_time", quantity(run.contact_time, gci)},
-                          {"force_max", quantity(run.force_max, 2 * gci)},
-                          {"time_force_max", quantity(run.time_force_max, gci)},
-                          {"approach_max", quantity(run.approach_max, gci)},
-                          {"restitution", quantity(run.restitution, 0.5 * gci)}}}}
+      << verification_json({{"contact_time", quantity(run.contact_time, gci)},
+                            {"force_max", quantity(run.force_max, 2 * gci)},
+                            {"time_force_max", quantity(run.time_force_max, gci)},
+                            {"approach_max", quantity(run.approach_max, gci)},
+                            {"restitution", quantity(run.restitution, 0.5 * gci)}})
              .dump(2);
 }
 

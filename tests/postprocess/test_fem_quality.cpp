@@ -172,29 +172,16 @@ TEST_F(FemRunRecordTest, SummaryKeysOfTheFemAreRead) {
 TEST_F(FemRunRecordTest, VerificationGivesTheUncertainty) {
   const FemRun made = impact::testing::synthetic_run({}, 1.0);
   written(made);
-  const auto quantity = [](double fine, nlohmann::json gci, double absolute) {
-    return nlohmann::json{{"unit", "1"},
-                          {"fine", fine},
-                          {"medium", fine},
-                          {"coarse", fine},
-                          {"observed_order", 2.0},
-                          {"extrapolated", fine},
-                          {"gci_fine", gci},
-                          {"gci_fine_absolute", absolute},
-                          {"convergence", "monotone"}};
-  };
+  const auto quantity = impact::testing::verification_quantity;
   const double e = made.restitution;
-  std::ofstream(directory / "run" / "verification.json") << nlohmann::json{
-      {"format", "impact-verification"},
-      {"format_version", 1},
-      {"refinement_ratio", 1.5},
-      {"levels", nlohmann::json::array()},
-      {"quantities",
-       {{"contact_time", quantity(made.contact_time, 0.002, 2e-7)},
-        {"force_max", quantity(made.force_max, 0.004, 14.0)},
-        {"time_force_max", quantity(made.time_force_max, 0.003, 1.5e-7)},
-        {"approach_max", quantity(made.approach_max, 0.001, 3e-8)},
-        {"restitution", quantity(e, nullptr, 0.001)}}}}.dump(2);
+  std::ofstream(directory / "run" / "verification.json")
+      << impact::testing::verification_json(
+             {{"contact_time", quantity(made.contact_time, 0.002, 2e-7)},
+              {"force_max", quantity(made.force_max, 0.004, 14.0)},
+              {"time_force_max", quantity(made.time_force_max, 0.003, 1.5e-7)},
+              {"approach_max", quantity(made.approach_max, 0.001, 3e-8)},
+              {"restitution", quantity(e, nullptr, 0.001)}})
+             .dump(2);
   const FemRun run = read_fem_run(directory / "run");
   const FemRunRecord record = read_fem_run_record(run);
   ASSERT_TRUE(record.verification) << record.verification_problem;

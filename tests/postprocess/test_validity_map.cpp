@@ -89,27 +89,13 @@ std::string run_name(double thickness, double velocity) {
 }
 
 json verification_with_force_gci(const FemRun& run, double gci) {
-  const auto quantity = [](double fine, json relative, double absolute) {
-    return json{{"unit", "1"},
-                {"fine", fine},
-                {"medium", fine},
-                {"coarse", fine},
-                {"observed_order", 2.0},
-                {"extrapolated", fine},
-                {"gci_fine", relative},
-                {"gci_fine_absolute", absolute},
-                {"convergence", "monotone"}};
-  };
-  return json{{"format", "impact-verification"},
-              {"format_version", 1},
-              {"refinement_ratio", 1.5},
-              {"levels", json::array()},
-              {"quantities",
-               {{"contact_time", quantity(run.contact_time, 1e-4, 1e-4 * run.contact_time)},
-                {"force_max", quantity(run.force_max, gci, gci * run.force_max)},
-                {"time_force_max", quantity(run.time_force_max, 1e-4, 1e-10)},
-                {"approach_max", quantity(run.approach_max, 1e-4, 1e-4 * run.approach_max)},
-                {"restitution", quantity(run.restitution, 1e-6, 1e-6 * run.restitution)}}}};
+  const auto quantity = impact::testing::verification_quantity;
+  return impact::testing::verification_json(
+      {{"contact_time", quantity(run.contact_time, 1e-4, 1e-4 * run.contact_time)},
+       {"force_max", quantity(run.force_max, gci, gci * run.force_max)},
+       {"time_force_max", quantity(run.time_force_max, 1e-4, 1e-10)},
+       {"approach_max", quantity(run.approach_max, 1e-4, 1e-4 * run.approach_max)},
+       {"restitution", quantity(run.restitution, 1e-6, 1e-6 * run.restitution)}});
 }
 
 // The campaign written as impact-fem --sweep writes it; the run at (h_verified, V_verified)
