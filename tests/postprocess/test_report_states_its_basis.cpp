@@ -284,6 +284,7 @@ void expect_causes_as_defined(const Written& written) {
       const std::string where = law.key + " at run " + std::to_string(breaking.run);
       EXPECT_NE(law.decisions[breaking.run], Decision::within) << where;
       const double error = std::abs(breaking.error);
+      EXPECT_EQ(breaking.fitted, fit != nullptr) << where;
       switch (breaking.cause) {
         case BreakCause::fem_uncertainty:
           EXPECT_EQ(law.decisions[breaking.run], Decision::undecided) << where;

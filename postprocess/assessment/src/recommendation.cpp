@@ -114,7 +114,7 @@ bool largest_shift(const CampaignModelFit& fit, double velocity, BreakingRun& br
 BreakingRun break_at(const Assessment& report, std::size_t i, Quantity quantity, Decision decision,
                      const EntryPredictions& predictions, const CampaignModelFit* fit,
                      double tolerance) {
-  BreakingRun breaking{i, quantity, BreakCause::law_shape, 0, 0, 0, "", "", 0, 0};
+  BreakingRun breaking{i, quantity, BreakCause::law_shape, 0, 0, 0, fit != nullptr, "", "", 0, 0};
   breaking.error = relative_error(*predictions.judged[i], report.runs[i].fem, quantity);
   breaking.uncertainty = report.runs[i].uncertainty[std::size_t(quantity)].relative;
   breaking.in_sample_error = predictions.in_sample[i] ? relative_error(*predictions.in_sample[i],

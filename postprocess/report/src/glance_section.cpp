@@ -70,8 +70,7 @@ std::string cause_words(const Report& report, const std::vector<const BreakingRu
                        unsigned_percent(first.uncertainty)
                  : "not decided for the FEM's uncertainty";
     case BreakCause::law_shape:
-      if (!std::isfinite(first.in_sample_error) || first.in_sample_error == first.error)
-        return "nothing fitted: the law's shape or its constants";
+      if (!first.fitted) return "nothing fitted: the law's shape or its constants";
       return runs.size() == 1
                  ? "the law's shape: " + percent_cell(first.in_sample_error) +
                        " even in the fit to every velocity"

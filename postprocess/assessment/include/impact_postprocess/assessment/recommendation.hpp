@@ -35,6 +35,7 @@ struct BreakingRun {
   double error;           ///< out of sample, signed relative
   double uncertainty;     ///< the FEM's U of the quantity, relative (NaN: not recorded)
   double in_sample_error; ///< of the fit to every velocity (the same for a law with nothing fitted)
+  bool fitted;            ///< the law has a fit (false: its parameters come from the material)
   /// held_out: the fitted parameter that moves most (relative to the fit to every velocity),
   /// its value in that fit and in the fit without this velocity; "" otherwise.
   std::string parameter;
