@@ -311,6 +311,46 @@ void expect_causes_as_defined(const Written& written) {
   }
 }
 
+// Thornton's law at 2, 5 and 20 V_y with a linear hardening recorded, and at 50 V_y a force
+// 20 % above the law's (what a hardening sphere adds there): the law named on the first screen
+// breaks at 50 V_y by F_max, by its shape, and the page says which hardening its spring leaves
+// out.
+TEST(ReportStatesItsBasis, ASpringWithoutHardeningSaysWhichHardeningItLeavesOut) {
+  const impact::testing::Truth truth;
+  const double yield_velocity =
+      thornton_yield_velocity(truth.yield_approach(), truth.mass, truth.stiffness());
+  std::vector<FemRun> runs;
+  for (double ratio : {2.0, 5.0, 20.0, 50.0}) {
+    FemRun run = impact::testing::thornton_run(truth, ratio * yield_velocity);
+    run.text_attributes["Sphere/Elastic-plastic/Hardening law"] = "linear";
+    run.text_attributes["Sphere/Elastic-plastic/Hardening modulus"] = "2e9";
+    if (ratio == 50.0) {
+      run.force_max *= 1.2;
+      for (double& force : run.contact_force) force *= 1.2;
+    }
+    runs.push_back(run);
+  }
+  const Written written = report_of(runs, {"thornton"}, "report_basis_hardening");
+  expect_causes_as_defined(written);
+  const LawRecommendation& recommendation = *written.report.recommendation;
+  const auto chosen =
+      recommendation.recommended ? recommendation.recommended : recommendation.closest;
+  ASSERT_TRUE(chosen);
+  const JudgedLaw& law = recommendation.laws[*chosen];
+  ASSERT_FALSE(law.breaks.empty()) << law.key;
+  const BreakingRun& last = law.breaks.back();
+  EXPECT_EQ(last.run, 3u) << law.key;
+  EXPECT_EQ(last.quantity, Quantity::force_max) << law.key;
+  EXPECT_EQ(last.cause, BreakCause::law_shape) << law.key;
+  const std::string hardening = "the Sphere's linear hardening modulus 2e+09 Pa";
+  EXPECT_TRUE(contains(glance(written.markdown),
+                       "the runs' material hardens (" + hardening + "), the law's spring does not"))
+      << glance(written.markdown);
+  EXPECT_TRUE(contains(section(written.markdown, "Ranking of the models"),
+                       "The runs' material hardens (" + hardening + ")"))
+      << section(written.markdown, "Ranking of the models");
+}
+
 // ---- The block for a multibody code ----------------------------------------------------------
 
 // Made by Hunt–Crossley: its fit holds within 5 % over the whole range and is offered, with

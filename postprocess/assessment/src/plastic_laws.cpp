@@ -10,6 +10,7 @@
 #include "impact_postprocess/models/jackson_green_model.hpp"
 #include "impact_postprocess/models/model_keys.hpp"
 #include "impact_postprocess/models/plastic_models.hpp"
+#include "impact_postprocess/run/scenario_plastic_contact.hpp"
 
 #include <impact_reduced/invalid_input.hpp>
 #include <impact_reduced/jackson_green_marghitu.hpp>
@@ -267,6 +268,7 @@ std::optional<PlasticLaws> plastic_laws(const std::vector<FemRun>& fem_runs,
   laws.mass = mass;
   laws.yield_strength = *scenario->yield_strength;
   laws.material_basis = scenario->basis;
+  laws.hardening_left_out = impact::postprocess::hardening_left_out(fem_runs.front());
   const auto grid = velocity_grid(runs, laws.yield_velocity);
 
   laws.laws.push_back(curve_of(std::string(model_keys::thornton_material),

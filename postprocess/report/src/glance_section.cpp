@@ -57,10 +57,18 @@ std::string law_name(const JudgedLaw& law) {
   return law.label.rfind(law.key, 0) == 0 ? law.key : law.label + " (" + law.key + ")";
 }
 
+std::string hardening_left_out_by(const Report& report, const JudgedLaw& law) {
+  if (!report.plastic_laws) return "";
+  for (const auto& curve : report.plastic_laws->laws)
+    if (curve.key == law.key) return report.plastic_laws->hardening_left_out;
+  return "";
+}
+
 namespace {
 
 // Why a law is not within the band at the runs of one group (one quantity, one cause).
-std::string cause_words(const Report& report, const std::vector<const BreakingRun*>& runs) {
+std::string cause_words(const Report& report, const JudgedLaw& law,
+                        const std::vector<const BreakingRun*>& runs) {
   const BreakingRun& first = *runs.front();
   const std::string band = band_name(report.recommendation->tolerance);
   switch (first.cause) {
@@ -69,12 +77,18 @@ std::string cause_words(const Report& report, const std::vector<const BreakingRu
                  ? "not decided: " + percent_cell(first.error) + " against the FEM's uncertainty " +
                        unsigned_percent(first.uncertainty)
                  : "not decided for the FEM's uncertainty";
-    case BreakCause::law_shape:
-      if (!first.fitted) return "nothing fitted: the law's shape or its constants";
-      return runs.size() == 1
-                 ? "the law's shape: " + percent_cell(first.in_sample_error) +
-                       " even in the fit to every velocity"
-                 : "the law's shape: beyond " + band + " even in the fit to every velocity";
+    case BreakCause::law_shape: {
+      const std::string hardening = hardening_left_out_by(report, law);
+      const std::string spring = hardening.empty() ? ""
+                                                   : "; the runs' material hardens (" + hardening +
+                                                         "), the law's spring does not";
+      if (!first.fitted) return "nothing fitted: the law's shape or its constants" + spring;
+      return (runs.size() == 1
+                  ? "the law's shape: " + percent_cell(first.in_sample_error) +
+                        " even in the fit to every velocity"
+                  : "the law's shape: beyond " + band + " even in the fit to every velocity") +
+             spring;
+    }
     case BreakCause::held_out:
       if (runs.size() > 1)
         return "held out: within " + band +
@@ -105,7 +119,7 @@ std::string breaking_text(const Report& report, const JudgedLaw& law) {
         }
       if (runs.empty()) continue;
       text += std::string(text.empty() ? "" : ", ") + quantity_symbol(quantity) +
-              " at V = " + velocity_list(at) + " (" + cause_words(report, runs) + ")";
+              " at V = " + velocity_list(at) + " (" + cause_words(report, law, runs) + ")";
     }
   return text;
 }

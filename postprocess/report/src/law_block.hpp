@@ -34,6 +34,10 @@ std::string largest_error(const Report& report, const JudgedLaw& law);
 /// 1.841e+09 Pa),
 /// F_max at V = 5 m/s (the law's shape: -6.4 % even in the fit to every velocity)".
 std::string breaking_text(const Report& report, const JudgedLaw& law);
+/// The hardening the runs record that the law's elastic-plastic spring leaves out ("the
+/// Plate's Johnson-Cook B = 2.75e+08 Pa, C = 0.022"); "" when the law has no such spring or the
+/// runs record none.
+std::string hardening_left_out_by(const Report& report, const JudgedLaw& law);
 /// Where a law is within the band: "over the whole tested range, V = 0.5 to 5 m/s" or
 /// "at V = 0.5 to 1 and 3 to 5 m/s".
 std::string where_within(const Report& report, const JudgedLaw& law);

@@ -8,6 +8,7 @@
 #include "impact_postprocess/models/model_keys.hpp"
 #include "impact_postprocess/calibration/calibration_json.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -156,6 +157,12 @@ void breaks_table(Document& doc, const Report& report) {
       " (or nothing is fitted); held out, where the fit to every "
       "velocity is within " +
       band + " and the fit without this velocity is not (the parameter that moves most is given).");
+  const std::string hardening = hardening_left_out_by(report, law);
+  if (!hardening.empty() &&
+      std::any_of(law.breaks.begin(), law.breaks.end(),
+                  [](const BreakingRun& run) { return run.cause == BreakCause::law_shape; }))
+    doc.paragraph("The runs' material hardens (" + hardening + "); the law's spring is " +
+                  "elastic-perfectly-plastic and carries none of it.");
   Table table{{"V [m/s]", "quantity", "out of sample [%]", "U [%]", "fit to every velocity [%]",
                "cause"},
               {}};

@@ -96,7 +96,7 @@ std::optional<PlasticContact> scenario_plastic_contact(const std::vector<FemRun>
   return contact;
 }
 
-std::string hardening_note(const FemRun& run) {
+std::string hardening_left_out(const FemRun& run) {
   std::string left_out;
   for (const std::string body : {fem_format::sphere_body, fem_format::plate_body}) {
     const auto model = run.text_attributes.find(fem_format::material_model_parameter(body));
@@ -120,6 +120,11 @@ std::string hardening_note(const FemRun& run) {
     if (!hardening.empty())
       left_out += (left_out.empty() ? "" : "; ") + std::string("the ") + body + "'s " + hardening;
   }
+  return left_out;
+}
+
+std::string hardening_note(const FemRun& run) {
+  const std::string left_out = hardening_left_out(run);
   return left_out.empty() ? "no hardening: the law is elastic-perfectly-plastic, like the runs' "
                             "material"
                           : "no hardening enters the law (elastic-perfectly-plastic): it leaves "

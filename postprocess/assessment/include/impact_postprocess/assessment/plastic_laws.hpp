@@ -44,6 +44,9 @@ struct PlasticLaws {
   /// Where the material's constants come from (the models layer's words,
   /// SphereFlatScenario::basis).
   std::string material_basis;
+  /// The runs' hardening that the elastic-plastic springs leave out (hardening_left_out of the
+  /// first run; "" when the runs record none).
+  std::string hardening_left_out;
   /// No-fit Thornton and Jackson–Green, Jackson–Green–Marghitu's restitution fit (e only,
   /// no loops), then the campaign fits; then the damped elastic-plastic laws
   /// (damped_plastic_models.hpp) from the material and fitted.

@@ -54,4 +54,8 @@ std::optional<PlasticContact> scenario_plastic_contact(const std::vector<FemRun>
 /// johnson-cook with "Johnson-Cook B" or "Johnson-Cook C" > 0) that the laws leave out.
 std::string hardening_note(const FemRun& run);
 
+/// The hardening of each elastic-plastic body of the run that those laws leave out, in words
+/// ("the Plate's Johnson-Cook B = 2.75e+08 Pa, C = 0.022"); "" when the run records none.
+std::string hardening_left_out(const FemRun& run);
+
 } // namespace impact::postprocess
