@@ -463,6 +463,11 @@ TEST(ReportStatesItsBasis, ThePageSaysWhyTheLawItNamesBreaks) {
   const auto tables = impact::testing::markdown_tables(ranking);
   const MarkdownTable* table = table_with(tables, "fit to every velocity [%]");
   ASSERT_NE(table, nullptr) << ranking;
+  // The rule above the table is the assessment's: not decided is the FEM's uncertainty.
+  EXPECT_TRUE(contains(ranking,
+                       "the FEM's uncertainty, where the verdict cannot decide (the band "
+                       "lies between |error| - U and |error| + U"))
+      << ranking;
   ASSERT_EQ(table->size(), law.breaks.size() + 1);
   const std::string first = glance(written.markdown);
   for (std::size_t k = 0; k < law.breaks.size(); ++k) {

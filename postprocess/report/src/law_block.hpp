@@ -31,8 +31,8 @@ std::string law_block_text(const std::string& heading, const LawBlock& block);
 std::string largest_error(const Report& report, const JudgedLaw& law);
 /// What keeps a law out of the band, by quantity and cause: "1 - e^2 at V = 2 m/s (held out:
 /// -4.63 % in the fit to every velocity; the fit without 2 m/s moves Y from 1.796e+09 to
-/// 1.841e+09 Pa),
-/// F_max at V = 5 m/s (the law's shape: -6.4 % even in the fit to every velocity)".
+/// 1.841e+09 Pa), F_max at V = 5 m/s (the law's shape: -6.5 % even in the fit to every
+/// velocity)".
 std::string breaking_text(const Report& report, const JudgedLaw& law);
 /// The hardening the runs record that the law's elastic-plastic spring leaves out ("the
 /// Plate's Johnson-Cook B = 2.75e+08 Pa, C = 0.022"); "" when the law has no such spring or the

@@ -150,9 +150,9 @@ void breaks_table(Document& doc, const Report& report) {
   doc.paragraph(
       "Where " + law_name(law) + " (" +
       (recommendation.recommended ? "recommended" : "the closest") + ") is not within " + band +
-      ", and why. The cause is measured: the FEM's uncertainty, where the error is within " + band +
-      " by less than the FEM's uncertainty U; the law's shape, where even the fit to every "
-      "velocity is beyond " +
+      ", and why. The cause is measured: the FEM's uncertainty, where the verdict cannot decide "
+      "(the band lies between |error| - U and |error| + U, U the FEM's uncertainty); the law's "
+      "shape, where even the fit to every velocity is beyond " +
       band +
       " (or nothing is fitted); held out, where the fit to every "
       "velocity is within " +
