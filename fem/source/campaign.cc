@@ -551,9 +551,6 @@ namespace impact_fem
     if (group_root)
       log.open(run_directory + "/run.log",
                complete ? std::ios::app : std::ios::out);
-    // The problem outlives the try block: its destructor (collective
-    // over the group) must not run while an exception unwinds.
-    std::unique_ptr<ImpactProblem> problem;
     try
       {
         if (verify)
@@ -563,17 +560,11 @@ namespace impact_fem
                                complete);
         else
           {
-            problem =
-              std::make_unique<ImpactProblem>(prm,
-                                              group_comm,
-                                              group_root ? log : std::cout);
-            problem->run();
-            problem.reset();
+            run_impact(prm, group_comm, group_root ? log : std::cout);
           }
       }
     catch (const std::exception &error)
       {
-        problem.reset();
         if (group_root)
           {
             log << "\nimpact-fem: error: " << error.what() << std::endl;

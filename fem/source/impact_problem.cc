@@ -1,4 +1,5 @@
 #include <impact_fem/as_written.h>
+#include <impact_fem/discretisation/automatic_discretisation.h>
 #include <impact_fem/impact_problem.h>
 #include <impact_fem/result_files.h>
 #include <impact_fem/summary/impact_summary.h>
@@ -51,8 +52,14 @@ namespace impact_fem
 
   ImpactProblem::ImpactProblem(ParameterHandler &prm,
                                const MPI_Comm    comm,
-                               std::ostream     &log)
-    : ImpactProblem(prm, comm, log, Loading{&expected_contact, false, {}}, true)
+                               std::ostream     &log,
+                               const double      step_refinement)
+    : ImpactProblem(prm,
+                    comm,
+                    log,
+                    Loading{&expected_contact, false, {}},
+                    true,
+                    step_refinement)
   {}
 
 
@@ -60,18 +67,31 @@ namespace impact_fem
                                const MPI_Comm    comm,
                                std::ostream     &log,
                                const Loading    &loading,
-                               const bool        impact)
+                               const bool        impact,
+                               const double      refinement)
     : SpherePlateSetup(prm, comm, log, loading)
     , time_stepper(time_integration::create_time_stepper(prm))
     , postprocessors(postprocess::create_postprocessors(prm))
   {
+    step_sized_for_energy = impact && parameters.prescribed_time_step == 0 &&
+                            parameters.steps_per_contact_time_automatic;
+    if (step_sized_for_energy)
+      step_refinement = refinement;
     if (impact && parameters.prescribed_time_step == 0)
-      discretisation_choice.entries.push_back(
-        {"Time integration/Steps per contact time",
-         "1",
-         parameters.steps_per_contact_time,
-         parameters.steps_per_contact_time_automatic,
-         discretisation::AutomaticDiscretisation::steps_rule()});
+      {
+        std::ostringstream rule;
+        rule << discretisation::AutomaticDiscretisation::steps_rule();
+        if (step_refinement > 1)
+          rule << std::setprecision(3) << "; x " << step_refinement
+               << " here: the rule's step lost too much energy to the "
+                  "contact activation";
+        discretisation_choice.entries.push_back(
+          {"Time integration/Steps per contact time",
+           "1",
+           parameters.steps_per_contact_time * step_refinement,
+           parameters.steps_per_contact_time_automatic,
+           rule.str()});
+      }
     describe_bodies();
     if (impact)
       check_contact_surface(parameters.hertz.contact_radius_max());
@@ -99,7 +119,30 @@ namespace impact_fem
   double
   ImpactProblem::time_step() const
   {
-    return parameters.time_step();
+    return parameters.time_step() / step_refinement;
+  }
+
+
+  double
+  ImpactProblem::energy_step_refinement() const
+  {
+    using discretisation::AutomaticDiscretisation;
+    // The balance at the end of an impact: a run cut before the bodies
+    // separate (Maximum time) is not judged.
+    if (!step_sized_for_energy || separation_time < 0 ||
+        !history.has("energy_error") || !history.has("contact_work") ||
+        !history.has("kinetic_energy") || history.n_steps() == 0)
+      return 1;
+    // The balance's error is relative to the impact energy, the kinetic
+    // energy at the start (the bodies unstrained, gravity's work zero).
+    const double initial = history["kinetic_energy"].front();
+    const double refinement =
+      AutomaticDiscretisation::step_refinement_for_energy(
+        history["energy_error"].back(),
+        history["contact_work"].back() / initial);
+    // Once: a run already refined keeps its step (the report flags a
+    // balance that still misses).
+    return step_refinement > 1 ? 1 : refinement;
   }
 
 
@@ -604,10 +647,64 @@ namespace impact_fem
 
     time_loop();
     warn_if_not_separated();
+    // Decided on the first rank, so that every rank throws or none.
+    const double refinement =
+      Utilities::MPI::broadcast(mpi_communicator, energy_step_refinement(), 0);
+    if (refinement > 1)
+      {
+        write_results(false);
+        std::ostringstream message;
+        message
+          << std::setprecision(3) << "the energy balance ends "
+          << history["energy_error"].back() << " off (target "
+          << discretisation::AutomaticDiscretisation::energy_balance_target
+          << "), of which the contact activation "
+          << history["contact_work"].back() / history["kinetic_energy"].front()
+          << ": the automatic step is made " << refinement
+          << " times finer than the rule's and the run made again";
+        throw StepTooCoarseForEnergy(message.str(), refinement);
+      }
     write_results(true);
     if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
       std::filesystem::remove(parameters.output_directory +
                               "/history.incomplete.h5");
     computing_timer->print_summary();
+  }
+
+
+  void
+  run_impact(ParameterHandler              &prm,
+             const MPI_Comm                 comm,
+             std::ostream                  &log,
+             std::unique_ptr<ImpactProblem> problem)
+  {
+    // The problem outlives each try block: its destructor (collective
+    // over comm) must not run while an exception unwinds.
+    double refinement = 1;
+    for (;;)
+      {
+        try
+          {
+            if (!problem)
+              problem =
+                std::make_unique<ImpactProblem>(prm, comm, log, refinement);
+            problem->run();
+            problem.reset();
+            return;
+          }
+        catch (const ImpactProblem::StepTooCoarseForEnergy &finer)
+          {
+            // Thrown only by a run not refined yet: the next one is final.
+            problem.reset();
+            if (Utilities::MPI::this_mpi_process(comm) == 0)
+              log << "impact-fem: " << finer.what() << "." << std::endl;
+            refinement = finer.refinement();
+          }
+        catch (...)
+          {
+            problem.reset();
+            throw;
+          }
+      }
   }
 } // namespace impact_fem

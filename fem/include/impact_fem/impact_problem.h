@@ -12,6 +12,7 @@
 
 #include <iostream>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -44,10 +45,38 @@ namespace impact_fem
     static discretisation::ExpectedContact
     expected_contact(const Parameters &parameters);
 
-    /// Progress and results go to `log` on the first rank of `comm`.
+    /// Progress and results go to `log` on the first rank of `comm`. An
+    /// automatic step count is raised @p step_refinement times (the second
+    /// run of run_impact()).
     ImpactProblem(ParameterHandler &prm,
                   const MPI_Comm    comm,
-                  std::ostream     &log = std::cout);
+                  std::ostream     &log             = std::cout,
+                  const double      step_refinement = 1);
+
+    /**
+     * Thrown by run() at the end of a run whose automatic step lost more
+     * energy to the contact activation than the energy balance allows
+     * (AutomaticDiscretisation::step_refinement_for_energy()); the run is
+     * left incomplete, for run_impact() to make again with the step
+     * refinement() times finer.
+     */
+    class StepTooCoarseForEnergy : public std::runtime_error
+    {
+    public:
+      StepTooCoarseForEnergy(const std::string &what, const double refinement)
+        : std::runtime_error(what)
+        , factor(refinement)
+      {}
+      /// The total refinement of the automatic step count to run with [-].
+      double
+      refinement() const
+      {
+        return factor;
+      }
+
+    private:
+      double factor;
+    };
 
     void
     run();
@@ -86,12 +115,14 @@ namespace impact_fem
 
     /// For the analyses on this time loop, under their @p loading:
     /// @p impact false leaves out what only a sphere flying at the plate
-    /// has (the step from the contact time, the expected contact radius).
+    /// has (the step from the contact time, the expected contact radius,
+    /// the @p step_refinement of an automatic step).
     ImpactProblem(ParameterHandler &prm,
                   const MPI_Comm    comm,
                   std::ostream     &log,
                   const Loading    &loading,
-                  const bool        impact);
+                  const bool        impact,
+                  const double      step_refinement = 1);
 
     /// The time step [s] (Parameters::time_step()); time_stepper is made.
     virtual double
@@ -164,10 +195,34 @@ namespace impact_fem
     /// The report of the postprocessors, printed with the result.
     std::string report;
 
+    /// The refinement of the automatic step count this run makes [-], and
+    /// whether its energy balance may raise it (an impact whose step count
+    /// is automatic).
+    double step_refinement       = 1;
+    bool   step_sized_for_energy = false;
+
+    /// The refinement the energy balance asks for (1: none), said on the
+    /// log when it is more than this run's.
+    double
+    energy_step_refinement() const;
+
     double end_time         = 0;
     double separation_time  = -1;
     double first_force_time = -1;
   };
+
+  /**
+   * Runs the impact of @p prm (an ImpactProblem, progress to @p log): once,
+   * or, when its automatic step lost too much energy to the contact
+   * activation (ImpactProblem::StepTooCoarseForEnergy), again with the
+   * finer step it asks for (once). @p first, if given, is the
+   * problem of the first run (made from @p prm).
+   */
+  void
+  run_impact(ParameterHandler              &prm,
+             const MPI_Comm                 comm,
+             std::ostream                  &log,
+             std::unique_ptr<ImpactProblem> first = nullptr);
 } // namespace impact_fem
 
 #endif

@@ -46,7 +46,7 @@ namespace impact_fem
         verification::verify(*parameters, communicator, std::cout);
         return 0;
       }
-    problem->run();
+    run_impact(*parameters, communicator, std::cout, std::move(problem));
     return 0;
   }
 

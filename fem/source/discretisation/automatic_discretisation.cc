@@ -4,6 +4,7 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -40,6 +41,25 @@ namespace impact_fem
                                  steps_per_expected_contact_time *
                                    hertz_contact_time / expected.contact_time :
                                  steps_per_expected_contact_time;
+    }
+
+
+    double
+    AutomaticDiscretisation::step_refinement_for_energy(
+      const double balance,
+      const double activation_work)
+    {
+      const double design = energy_design_fraction * energy_balance_target;
+      // The activation, of the balance's sign, is the larger part of it.
+      const bool activation_dominates =
+        activation_work * balance > 0 &&
+        std::abs(activation_work) >= 0.5 * std::abs(balance);
+      if (!std::isfinite(balance) || !std::isfinite(activation_work) ||
+          std::abs(balance) <= energy_balance_target || !activation_dominates)
+        return 1;
+      return std::min(std::pow(std::abs(balance) / design,
+                               1 / activation_work_order),
+                      maximum_step_refinement);
     }
 
 
@@ -91,8 +111,10 @@ namespace impact_fem
     AutomaticDiscretisation::steps_rule()
     {
       return number(steps_per_expected_contact_time) +
-             " per expected contact time; the entry counts per Hertz contact "
-             "time";
+             " per expected contact time, raised if the contact activation "
+             "loses more than the energy balance allows (" +
+             number(energy_balance_target) +
+             "); the entry counts per Hertz contact time";
     }
 
 
@@ -182,9 +204,14 @@ namespace impact_fem
     {
       nlohmann::json j = {{"expected_contact", expected.to_json()}};
       for (const auto &e : entries)
-        j["entries"][e.path] = {{"value", e.value},
-                                {"unit", e.unit},
-                                {"origin", e.automatic ? "auto" : "scenario"}};
+        {
+          j["entries"][e.path] = {{"value", e.value},
+                                  {"unit", e.unit},
+                                  {"origin",
+                                   e.automatic ? "auto" : "scenario"}};
+          if (e.automatic)
+            j["entries"][e.path]["rule"] = e.rule;
+        }
       return j;
     }
   } // namespace discretisation

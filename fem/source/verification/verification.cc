@@ -167,6 +167,21 @@ namespace impact_fem
       }
 
 
+      /// The steps per contact time a run's summary records (its
+      /// discretisation entries), or @p otherwise when it records none.
+      double
+      steps_per_contact_time_of(const nlohmann::json &summary,
+                                const double          otherwise)
+      {
+        const nlohmann::json::json_pointer steps(
+          "/discretisation/entries/Time integration~1Steps per contact "
+          "time/value");
+        return summary.contains(steps) && summary[steps].is_number() ?
+                 summary[steps].get<double>() :
+                 otherwise;
+      }
+
+
       /// One level of the three: 0 fine (the run), 1 medium, 2 coarse.
       struct Level
       {
@@ -304,16 +319,12 @@ namespace impact_fem
                       std::to_string(level.refinements) + ", step x " :
                     std::string(" (sizes and step x "))
               << level.scale << ") -> " << level.directory << std::endl;
-        std::unique_ptr<ImpactProblem> problem;
         try
           {
-            problem = std::make_unique<ImpactProblem>(prm, comm, log);
-            problem->run();
-            problem.reset();
+            run_impact(prm, comm, log);
           }
         catch (...)
           {
-            problem.reset();
             changed.restore();
             throw;
           }
@@ -483,8 +494,8 @@ namespace impact_fem
            std::ostream     &log,
            const bool        fine_done)
     {
-      const FineLevel fine = read_fine_level(prm);
-      ChangedEntries  changed(prm);
+      FineLevel      fine = read_fine_level(prm);
+      ChangedEntries changed(prm);
 
       std::vector<nlohmann::json> levels;
       for (unsigned int index = 0; index < 3; ++index)
@@ -495,6 +506,10 @@ namespace impact_fem
           MPI_Barrier(comm);
           levels.push_back(
             level_record(level, read_json(level.directory + "/summary.json")));
+          // The coarser levels' steps follow the fine level's as it ran: an
+          // automatic step count may have been raised for its energy balance.
+          if (index == 0 && fine.dt == 0)
+            fine.n = steps_per_contact_time_of(levels[0]["summary"], fine.n);
         }
       if (Utilities::MPI::this_mpi_process(comm) == 0)
         write_verification(fine, levels, log);

@@ -46,6 +46,13 @@ namespace impact_fem
     const std::vector<double> &
     operator[](const std::string &name) const;
 
+    /// Whether the quantity @p name is declared.
+    bool
+    has(const std::string &name) const
+    {
+      return index.count(name) > 0;
+    }
+
     /// A dataset that is not per step (e.g. a pressure profile); replaced
     /// on each call.
     void
