@@ -3,6 +3,7 @@
 #include <impact_fem/campaign/run_identity.h>
 #include <impact_fem/impact_problem.h>
 #include <impact_fem/parameters.h>
+#include <impact_fem/result_files.h>
 #include <impact_fem/verification/verification.h>
 
 #include <deal.II/base/exceptions.h>
@@ -332,12 +333,15 @@ namespace impact_fem
       if (problem.empty() &&
           std::count(listed.begin(), listed.end(), name) == 0)
         problem = std::string(name) + ": not in " + checksums::manifest_name;
+    int version = 0;
     if (problem.empty())
       try
         {
-          if (!nlohmann::json::parse(read_file(run_directory + "/summary.json"))
-                 .value("complete", false))
+          const nlohmann::json summary =
+            nlohmann::json::parse(read_file(run_directory + "/summary.json"));
+          if (!summary.value(result_files::complete_key, false))
             problem = "summary.json: not complete";
+          version = summary.value(result_files::summary_version_key, 1);
         }
       catch (...)
         {
@@ -345,6 +349,13 @@ namespace impact_fem
         }
     if (!problem.empty())
       return "damaged, redone (" + problem + ")";
+    // Not reused: its peaks were derived by another definition, and a
+    // verification would compare them with its levels'.
+    if (version != result_files::summary_version)
+      return "summary version " + std::to_string(version) +
+             ", this build's is " +
+             std::to_string(result_files::summary_version) +
+             " (another definition of the peak force), redone";
     verified =
       std::count(listed.begin(), listed.end(), "verification.json") > 0;
     return std::string();

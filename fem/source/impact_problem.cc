@@ -482,9 +482,10 @@ namespace impact_fem
                          std::ostringstream           &report)
   {
     nlohmann::json result;
-    result[result_files::complete_key]           = complete;
-    result[result_files::impact_velocity_key]    = parameters.impact_velocity;
-    result[result_files::contact_velocity_key]   = first_contact_speed;
+    result[result_files::complete_key]         = complete;
+    result[result_files::summary_version_key]  = result_files::summary_version;
+    result[result_files::impact_velocity_key]  = parameters.impact_velocity;
+    result[result_files::contact_velocity_key] = first_contact_speed;
     result[result_files::first_contact_time_key] = number(s.first_contact_time);
     result["separation_time"]                    = number(s.separation_time);
     result[result_files::contact_time_key]       = number(s.contact_time);
@@ -533,8 +534,11 @@ namespace impact_fem
       "run of F > 0), the samples with F <= 25 % of the peak, each weighted "
       "(1 - F / (0.25 max F))^2";
     text_attributes["definition: force_max"] =
-      "vertex of the parabola through the largest force sample and its "
-      "neighbours (time_force_max its time; approach_max likewise)";
+      "vertex of the parabola fitted by least squares to the contiguous force "
+      "samples around the largest one within 3 % of it (time_force_max its "
+      "time; fewer than 5 samples there: the parabola through the largest "
+      "sample and its neighbours). approach_max: vertex of the parabola "
+      "through the largest approach sample and its neighbours";
     text_attributes["definition: force_oscillation"] =
       "max |F_i - (F_{i-1} + F_{i+1})/2| / force_max inside the contact phase, "
       "5 samples at each end excluded";

@@ -11,7 +11,12 @@ One run (1 m/s) of the tests' steel bodies on the coarse mesh of sweep.py
 - restarted with the sphere's Young's modulus changed: "parameters changed",
   run again, its restitution and peak force those of the new modulus;
 - restarted with Nonlinear solver/Residual tolerance changed (a tolerance is part of
-  the run): run again."""
+  the run): run again;
+- its summary.json made one of an earlier build (no summary_version, its checksum
+  updated so that only the version differs): run again, the status naming the
+  versions, the new summary.json of this build's version."""
+import hashlib
+import json
 import os
 import re
 import shutil
@@ -79,4 +84,24 @@ code, status = campaign("Residual tolerance", {"Sphere/Elastic/Young's modulus":
                                                "Nonlinear solver/Residual tolerance": 1e-7})
 checks.check(code == 0 and status.startswith("parameters changed") and stamp() != before,
              f"Nonlinear solver/Residual tolerance changed: the run is done again (status '{status}')")
+
+# A summary of an earlier build: the peak force was then defined otherwise, so
+# keeping the run would mix definitions within a campaign and its verification.
+with open(f"{RUN}/summary.json") as f:
+    old = json.load(f)
+old.pop("summary_version", None)
+with open(f"{RUN}/summary.json", "w") as f:
+    json.dump(old, f, indent=2)
+digest = hashlib.sha256(open(f"{RUN}/summary.json", "rb").read()).hexdigest()
+manifest = open(f"{RUN}/checksums.sha256").read().splitlines()
+with open(f"{RUN}/checksums.sha256", "w") as f:
+    for line in manifest:
+        f.write((f"{digest}  summary.json" if line.endswith("  summary.json") else line) + "\n")
+before = stamp()
+code, status = campaign("summary of an earlier build", {"Sphere/Elastic/Young's modulus": 2.1e11,
+                                                        "Nonlinear solver/Residual tolerance": 1e-7})
+checks.check(code == 0 and status.startswith("summary version 1, this build's is") and stamp() != before,
+             f"a summary.json without summary_version: the run is done again (status '{status}')")
+checks.check(summary(RUN).get("summary_version", 0) >= 2,
+             "  ... and its new summary.json records this build's version")
 checks.finish()

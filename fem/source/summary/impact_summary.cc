@@ -114,6 +114,73 @@ namespace impact_fem
     }
 
 
+    Peak
+    fitted_peak(const std::vector<double> &time,
+                const std::vector<double> &values)
+    {
+      const std::size_t n = values.size();
+      if (n == 0)
+        return {};
+      const std::size_t i =
+        std::max_element(values.begin(), values.end()) - values.begin();
+      const double floor = (1 - peak_window_fraction) * values[i];
+      std::size_t  first = i, last = i;
+      while (first > 0 && values[first - 1] >= floor)
+        --first;
+      while (last + 1 < n && values[last + 1] >= floor)
+        ++last;
+      if (last - first + 1 < 5 || first == 0 || last + 1 == n ||
+          !(values[i] > 0))
+        return interpolated_peak(time, values);
+      // Least squares for v = c0 + c1 u + c2 u^2 in u = (t - t_mid) / half
+      // width, in [-1, 1]: normal equations of a condition number ~ 10^2
+      // rather than the ~ 10^16 of the raw times.
+      const double middle = 0.5 * (time[first] + time[last]);
+      const double half   = 0.5 * (time[last] - time[first]);
+      double       s[5] = {0, 0, 0, 0, 0}, r[3] = {0, 0, 0};
+      for (std::size_t k = first; k <= last; ++k)
+        {
+          const double u     = (time[k] - middle) / half;
+          double       power = 1;
+          for (unsigned int p = 0; p < 5; ++p, power *= u)
+            {
+              s[p] += power;
+              if (p < 3)
+                r[p] += power * values[k];
+            }
+        }
+      // Cramer's rule on the symmetric 3 x 3 system [s0 s1 s2; s1 s2 s3;
+      // s2 s3 s4] c = r.
+      const auto det3 = [](const double a,
+                           const double b,
+                           const double c,
+                           const double d,
+                           const double e,
+                           const double f,
+                           const double g,
+                           const double h,
+                           const double k) {
+        return a * (e * k - f * h) - b * (d * k - f * g) + c * (d * h - e * g);
+      };
+      const double det =
+        det3(s[0], s[1], s[2], s[1], s[2], s[3], s[2], s[3], s[4]);
+      if (!(std::abs(det) > 0))
+        return interpolated_peak(time, values);
+      const double c0 =
+        det3(r[0], s[1], s[2], r[1], s[2], s[3], r[2], s[3], s[4]) / det;
+      const double c1 =
+        det3(s[0], r[0], s[2], s[1], r[1], s[3], s[2], r[2], s[4]) / det;
+      const double c2 =
+        det3(s[0], s[1], r[0], s[1], s[2], r[1], s[2], s[3], r[2]) / det;
+      if (!(c2 < 0))
+        return interpolated_peak(time, values);
+      const double vertex = -0.5 * c1 / c2;
+      if (!(std::abs(vertex) <= 1))
+        return interpolated_peak(time, values);
+      return {middle + vertex * half, c0 - 0.25 * c1 * c1 / c2};
+    }
+
+
     double
     step_oscillation(const std::vector<double> &force,
                      const unsigned int         excluded)
@@ -199,7 +266,7 @@ namespace impact_fem
         s.separation_time = flank_zero(false);
       s.contact_time = s.separation_time - s.first_contact_time;
 
-      const Peak force_peak    = interpolated_peak(time, force);
+      const Peak force_peak    = fitted_peak(time, force);
       s.force_max              = force_peak.value;
       s.time_force_max         = force_peak.time;
       const Peak approach_peak = interpolated_peak(time, approach);

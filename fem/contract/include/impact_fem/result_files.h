@@ -64,6 +64,13 @@ namespace impact_fem::result_files
   // ---- Keys of summary.json (and, with the prefix above, of the result attributes) ---------
   // Their units: summary_units below.
   inline constexpr const char *complete_key = "complete"; // boolean
+  // Which definitions of the derived quantities (contact time, peaks,
+  // oscillation) wrote the summary: 2 since the peak force is the vertex of a
+  // least-squares parabola (absent before). A campaign redoes a run whose
+  // summary has another version, so that a verification never compares peaks
+  // of two definitions.
+  inline constexpr const char *summary_version_key = "summary_version"; // 1
+  inline constexpr int         summary_version     = 2;
   inline constexpr const char *impact_velocity_key =
     "impact_velocity"; // m/s, at t = 0
   inline constexpr const char *contact_velocity_key =
@@ -120,6 +127,7 @@ namespace impact_fem::result_files
     const char *unit;
   };
   inline constexpr KeyUnit summary_units[] = {
+    {summary_version_key, "1"},
     {impact_velocity_key, "m/s"},
     {contact_velocity_key, "m/s"},
     {sphere_mass_key, "kg"},

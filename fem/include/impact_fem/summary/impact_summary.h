@@ -23,8 +23,15 @@ namespace impact_fem
    *   to the samples of that flank with F <= 25 % of the peak: a fit over
    *   tens of samples, not the last one, so the instant does not depend on
    *   which step the last contact node lets go in;
-   * - the peaks of force and approach are the vertices of the parabola
-   *   through the largest sample and its neighbours (error O(h^3)).
+   * - the peak of the force is the vertex of the least-squares parabola
+   *   through the samples within peak_window_fraction of the largest one
+   *   (fitted_peak): tens of samples, so the step-to-step oscillation of a
+   *   contact whose nodes enter one by one averages out instead of deciding
+   *   which sample is largest, as it did through the three-point parabola
+   *   (GCI of F_max 1.5 to 3 % at 5 m/s, the levels' oscillation 0.4 to
+   *   0.6 %);
+   * - the peak of the approach, a smooth curve, is the vertex of the
+   *   parabola through the largest sample and its neighbours (error O(h^3)).
    */
   namespace summary
   {
@@ -86,6 +93,30 @@ namespace impact_fem
     Peak
     interpolated_peak(const std::vector<double> &time,
                       const std::vector<double> &values);
+
+    /// The band below the largest sample that fitted_peak fits: 3 %. Wide
+    /// enough for tens of samples at the automatic step (16 to 200 in the
+    /// verified runs at 0.1 to 5 m/s), narrow enough that a smooth peak is a
+    /// parabola there: for sin(pi t / T)^(3/2) the fit's vertex is off by
+    /// -2e-5 of the peak (the fourth-order term), whatever the step.
+    constexpr double peak_window_fraction = 0.03;
+
+    /**
+     * (time, value) of the peak of a noisy series: the vertex of the
+     * parabola fitted by (unweighted) least squares to the contiguous samples
+     * around the largest one whose values are at least (1 -
+     * peak_window_fraction) times it. Exact for a parabola; for a smooth
+     * peak plus noise of amplitude epsilon, off by about epsilon / sqrt(N)
+     * for N samples in the band of independent noise, and by far less for a
+     * step-to-step alternation, instead of the three-point parabola's
+     * epsilon. Falls back
+     * to interpolated_peak where the band holds fewer than five samples,
+     * touches an end of the series, or the fit is not concave with its vertex
+     * inside the band (a peak not resolved by the samples).
+     */
+    Peak
+    fitted_peak(const std::vector<double> &time,
+                const std::vector<double> &values);
 
     /**
      * max |F_i - (F_{i-1} + F_{i+1}) / 2| / max F over the contact phase,
