@@ -1,5 +1,7 @@
 #include <impact_fem/summary/impact_summary.h>
 
+#include <Eigen/QR>
+
 #include <algorithm>
 #include <cmath>
 
@@ -133,45 +135,24 @@ namespace impact_fem
           !(values[i] > 0))
         return interpolated_peak(time, values);
       // Least squares for v = c0 + c1 u + c2 u^2 in u = (t - t_mid) / half
-      // width, in [-1, 1]: normal equations of a condition number ~ 10^2
-      // rather than the ~ 10^16 of the raw times.
-      const double middle = 0.5 * (time[first] + time[last]);
-      const double half   = 0.5 * (time[last] - time[first]);
-      double       s[5] = {0, 0, 0, 0, 0}, r[3] = {0, 0, 0};
-      for (std::size_t k = first; k <= last; ++k)
+      // width, in [-1, 1] (the raw times would make the columns differ by
+      // ~10^10), by Householder QR.
+      const double       middle = 0.5 * (time[first] + time[last]);
+      const double       half   = 0.5 * (time[last] - time[first]);
+      const Eigen::Index m      = last - first + 1;
+      Eigen::MatrixX3d   powers(m, 3);
+      Eigen::VectorXd    band(m);
+      for (Eigen::Index k = 0; k < m; ++k)
         {
-          const double u     = (time[k] - middle) / half;
-          double       power = 1;
-          for (unsigned int p = 0; p < 5; ++p, power *= u)
-            {
-              s[p] += power;
-              if (p < 3)
-                r[p] += power * values[k];
-            }
+          const double u = (time[first + k] - middle) / half;
+          powers.row(k) << 1, u, u * u;
+          band(k) = values[first + k];
         }
-      // Cramer's rule on the symmetric 3 x 3 system [s0 s1 s2; s1 s2 s3;
-      // s2 s3 s4] c = r.
-      const auto det3 = [](const double a,
-                           const double b,
-                           const double c,
-                           const double d,
-                           const double e,
-                           const double f,
-                           const double g,
-                           const double h,
-                           const double k) {
-        return a * (e * k - f * h) - b * (d * k - f * g) + c * (d * h - e * g);
-      };
-      const double det =
-        det3(s[0], s[1], s[2], s[1], s[2], s[3], s[2], s[3], s[4]);
-      if (!(std::abs(det) > 0))
+      const auto qr = powers.colPivHouseholderQr();
+      if (qr.rank() < 3)
         return interpolated_peak(time, values);
-      const double c0 =
-        det3(r[0], s[1], s[2], r[1], s[2], s[3], r[2], s[3], s[4]) / det;
-      const double c1 =
-        det3(s[0], r[0], s[2], s[1], r[1], s[3], s[2], r[2], s[4]) / det;
-      const double c2 =
-        det3(s[0], s[1], r[0], s[1], s[2], r[1], s[2], s[3], r[2]) / det;
+      const Eigen::Vector3d c  = qr.solve(band);
+      const double          c0 = c(0), c1 = c(1), c2 = c(2);
       if (!(c2 < 0))
         return interpolated_peak(time, values);
       const double vertex = -0.5 * c1 / c2;
