@@ -47,11 +47,18 @@ TEST(PowerLawZero, RecoversTheZeroOfAnExactPowerLawOfAnyExponent) {
       }
 }
 
+namespace {
+// 7 - 3 (t - 0.437)^2 at @p t: its vertex is (0.437, 7).
+std::vector<double> parabola_at(const std::vector<double>& t) {
+  std::vector<double> v(t.size());
+  for (std::size_t i = 0; i < t.size(); ++i) v[i] = 7 - 3 * (t[i] - 0.437) * (t[i] - 0.437);
+  return v;
+}
+} // namespace
+
 TEST(InterpolatedPeak, ExactForAParabolaThirdOrderForASine) {
   const std::vector<double> t = samples(0, 0.1, 11);
-  std::vector<double> parabola(t.size());
-  for (std::size_t i = 0; i < t.size(); ++i) parabola[i] = 7 - 3 * (t[i] - 0.437) * (t[i] - 0.437);
-  const Peak exact = interpolated_peak(t, parabola);
+  const Peak exact = interpolated_peak(t, parabola_at(t));
   EXPECT_NEAR(exact.time, 0.437, 1e-14);
   EXPECT_NEAR(exact.value, 7, 1e-14);
 
@@ -84,9 +91,7 @@ std::pair<std::vector<double>, std::vector<double>> noisy_pulse(const double T, 
 
 TEST(FittedPeak, ExactForAParabola) {
   const std::vector<double> t = samples(0, 0.01, 101);
-  std::vector<double> parabola(t.size());
-  for (std::size_t i = 0; i < t.size(); ++i) parabola[i] = 7 - 3 * (t[i] - 0.437) * (t[i] - 0.437);
-  const Peak peak = fitted_peak(t, parabola);
+  const Peak peak = fitted_peak(t, parabola_at(t));
   EXPECT_NEAR(peak.time, 0.437, 1e-12);
   EXPECT_NEAR(peak.value, 7, 1e-12);
 }

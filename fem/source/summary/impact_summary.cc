@@ -93,15 +93,25 @@ namespace impact_fem
     }
 
 
+    namespace
+    {
+      // The index of the largest of non-empty @p values (the first of equal
+      // ones).
+      std::size_t
+      largest_sample(const std::vector<double> &values)
+      {
+        return std::max_element(values.begin(), values.end()) - values.begin();
+      }
+    } // namespace
+
+
     Peak
     interpolated_peak(const std::vector<double> &time,
                       const std::vector<double> &values)
     {
-      const std::size_t n = values.size();
-      if (n == 0)
+      if (values.empty())
         return {};
-      const std::size_t i =
-        std::max_element(values.begin(), values.end()) - values.begin();
+      const std::size_t n = values.size(), i = largest_sample(values);
       if (i == 0 || i + 1 == n)
         return {time[i], values[i]};
       const double h    = 0.5 * (time[i + 1] - time[i - 1]);
@@ -120,13 +130,11 @@ namespace impact_fem
     fitted_peak(const std::vector<double> &time,
                 const std::vector<double> &values)
     {
-      const std::size_t n = values.size();
-      if (n == 0)
+      if (values.empty())
         return {};
-      const std::size_t i =
-        std::max_element(values.begin(), values.end()) - values.begin();
-      const double floor = (1 - peak_window_fraction) * values[i];
-      std::size_t  first = i, last = i;
+      const std::size_t n = values.size(), i = largest_sample(values);
+      const double      floor = (1 - peak_window_fraction) * values[i];
+      std::size_t       first = i, last = i;
       while (first > 0 && values[first - 1] >= floor)
         --first;
       while (last + 1 < n && values[last + 1] >= floor)
