@@ -533,12 +533,17 @@ namespace impact_fem
       "least squares in ln F to the falling flank of the contact phase (first "
       "run of F > 0), the samples with F <= 25 % of the peak, each weighted "
       "(1 - F / (0.25 max F))^2";
+    // From the constants fitted_peak uses, so that the file states the
+    // definition of the build that wrote it.
     text_attributes["definition: force_max"] =
       "vertex of the parabola fitted by least squares to the contiguous force "
-      "samples around the largest one within 3 % of it (time_force_max its "
-      "time; fewer than 5 samples there: the parabola through the largest "
-      "sample and its neighbours). approach_max: vertex of the parabola "
-      "through the largest approach sample and its neighbours";
+      "samples around the largest one within " +
+      as_written(100 * summary::peak_window_fraction) +
+      " % of it (time_force_max its time; fewer than " +
+      std::to_string(summary::peak_window_minimum_samples) +
+      " samples there: the parabola through the largest sample and its "
+      "neighbours). approach_max: vertex of the parabola through the largest "
+      "approach sample and its neighbours";
     text_attributes["definition: force_oscillation"] =
       "max |F_i - (F_{i-1} + F_{i+1})/2| / force_max inside the contact phase, "
       "5 samples at each end excluded";

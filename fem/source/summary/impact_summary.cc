@@ -139,8 +139,8 @@ namespace impact_fem
         --first;
       while (last + 1 < n && values[last + 1] >= floor)
         ++last;
-      if (last - first + 1 < 5 || first == 0 || last + 1 == n ||
-          !(values[i] > 0))
+      if (last - first + 1 < peak_window_minimum_samples || first == 0 ||
+          last + 1 == n || !(values[i] > 0))
         return interpolated_peak(time, values);
       // Least squares for v = c0 + c1 u + c2 u^2 in u = (t - t_mid) / half
       // width, in [-1, 1] (the raw times would make the columns differ by

@@ -101,6 +101,10 @@ namespace impact_fem
     /// -2e-5 of the peak (the fourth-order term), whatever the step.
     constexpr double peak_window_fraction = 0.03;
 
+    /// The fewest samples in that band that fitted_peak fits a parabola to;
+    /// with fewer it falls back to interpolated_peak.
+    constexpr unsigned int peak_window_minimum_samples = 5;
+
     /**
      * (time, value) of the peak of a noisy series: the vertex of the
      * parabola fitted by (unweighted) least squares to the contiguous samples
