@@ -50,45 +50,65 @@ namespace impact_fem
   }
 
 
-  ImpactProblem::ImpactProblem(ParameterHandler &prm,
-                               const MPI_Comm    comm,
-                               std::ostream     &log,
-                               const double      step_refinement)
+  ImpactProblem::ImpactProblem(ParameterHandler       &prm,
+                               const MPI_Comm          comm,
+                               std::ostream           &log,
+                               const EnergyRefinement &refinement)
     : ImpactProblem(prm,
                     comm,
                     log,
                     Loading{&expected_contact, false, {}},
                     true,
-                    step_refinement)
+                    refinement)
   {}
 
 
-  ImpactProblem::ImpactProblem(ParameterHandler &prm,
-                               const MPI_Comm    comm,
-                               std::ostream     &log,
-                               const Loading    &loading,
-                               const bool        impact,
-                               const double      refinement)
+  ImpactProblem::ImpactProblem(ParameterHandler       &prm,
+                               const MPI_Comm          comm,
+                               std::ostream           &log,
+                               const Loading          &loading,
+                               const bool              impact,
+                               const EnergyRefinement &refinement)
     : SpherePlateSetup(prm, comm, log, loading)
     , time_stepper(time_integration::create_time_stepper(prm))
     , postprocessors(postprocess::create_postprocessors(prm))
   {
     step_sized_for_energy = impact && parameters.prescribed_time_step == 0 &&
                             parameters.steps_per_contact_time_automatic;
+    // The rule refines only contact nodes it placed itself.
+    spacing_sized_for_energy = step_sized_for_energy &&
+                               mesh.automatic_surface_refinements &&
+                               mesh.automatic_size[0];
     if (step_sized_for_energy)
-      step_refinement = refinement;
+      energy_refinement.step = refinement.step;
+    if (spacing_sized_for_energy && refinement.contact_spacing_halvings > 0)
+      {
+        energy_refinement.contact_spacing_halvings =
+          refinement.contact_spacing_halvings;
+        mesh.contact_surface_refinements += refinement.contact_spacing_halvings;
+        for (auto &entry : discretisation_choice.entries)
+          if (entry.path == "Mesh/Contact surface refinements")
+            {
+              entry.value = mesh.contact_surface_refinements;
+              entry.rule += "; +" +
+                            std::to_string(
+                              refinement.contact_spacing_halvings) +
+                            " here: the energy balance missed mostly by the "
+                            "integrator's damping";
+            }
+      }
     if (impact && parameters.prescribed_time_step == 0)
       {
         std::ostringstream rule;
         rule << discretisation::AutomaticDiscretisation::steps_rule();
-        if (step_refinement > 1)
-          rule << std::setprecision(3) << "; x " << step_refinement
+        if (energy_refinement.step > 1)
+          rule << std::setprecision(3) << "; x " << energy_refinement.step
                << " here: the rule's step lost too much energy to the "
                   "contact activation";
         discretisation_choice.entries.push_back(
           {"Time integration/Steps per contact time",
            "1",
-           parameters.steps_per_contact_time * step_refinement,
+           parameters.steps_per_contact_time * energy_refinement.step,
            parameters.steps_per_contact_time_automatic,
            rule.str()});
       }
@@ -119,30 +139,54 @@ namespace impact_fem
   double
   ImpactProblem::time_step() const
   {
-    return parameters.time_step() / step_refinement;
+    return parameters.time_step() / energy_refinement.step;
   }
 
 
-  double
-  ImpactProblem::energy_step_refinement() const
+  ImpactProblem::EnergyRefinement
+  ImpactProblem::next_energy_refinement(std::string &reason) const
   {
     using discretisation::AutomaticDiscretisation;
+    EnergyRefinement next = energy_refinement;
     // The balance at the end of an impact: a run cut before the bodies
     // separate (Maximum time) is not judged.
     if (!step_sized_for_energy || separation_time < 0 ||
         !history.has("energy_error") || !history.has("contact_work") ||
         !history.has("kinetic_energy") || history.n_steps() == 0)
-      return 1;
+      return next;
     // The balance's error is relative to the impact energy, the kinetic
     // energy at the start (the bodies unstrained, gravity's work zero).
-    const double initial = history["kinetic_energy"].front();
-    const double refinement =
-      AutomaticDiscretisation::step_refinement_for_energy(
-        history["energy_error"].back(),
-        history["contact_work"].back() / initial);
-    // Once: a run already refined keeps its step (the report flags a
-    // balance that still misses).
-    return step_refinement > 1 ? 1 : refinement;
+    const double balance = history["energy_error"].back();
+    const double activation =
+      history["contact_work"].back() / history["kinetic_energy"].front();
+    std::ostringstream why;
+    why << std::setprecision(3) << "the energy balance ends " << balance
+        << " off (target " << AutomaticDiscretisation::energy_balance_target
+        << "), of which the contact activation " << activation << ": ";
+    // Each refinement once: a run refined both ways keeps its sizes (the
+    // report flags a balance that still misses).
+    const double step =
+      AutomaticDiscretisation::step_refinement_for_energy(balance, activation);
+    if (energy_refinement.step == 1 && step > 1)
+      {
+        next.step = step;
+        why << "the automatic step is made " << step
+            << " times finer than the rule's";
+      }
+    else if (spacing_sized_for_energy &&
+             energy_refinement.contact_spacing_halvings == 0 &&
+             mesh.contact_surface_refinements < 6 &&
+             AutomaticDiscretisation::contact_spacing_halving_for_energy(
+               balance, activation))
+      {
+        next.contact_spacing_halvings = 1;
+        why << "the automatic contact nodes are made twice as dense";
+      }
+    else
+      return next;
+    why << " and the run made again";
+    reason = why.str();
+    return next;
   }
 
 
@@ -657,21 +701,20 @@ namespace impact_fem
     time_loop();
     warn_if_not_separated();
     // Decided on the first rank, so that every rank throws or none.
-    const double refinement =
-      Utilities::MPI::broadcast(mpi_communicator, energy_step_refinement(), 0);
-    if (refinement > 1)
+    std::string      reason;
+    EnergyRefinement next = next_energy_refinement(reason);
+    next.step = Utilities::MPI::broadcast(mpi_communicator, next.step, 0);
+    next.contact_spacing_halvings =
+      Utilities::MPI::broadcast(mpi_communicator,
+                                next.contact_spacing_halvings,
+                                0);
+    reason = Utilities::MPI::broadcast(mpi_communicator, reason, 0);
+    if (next.step != energy_refinement.step ||
+        next.contact_spacing_halvings !=
+          energy_refinement.contact_spacing_halvings)
       {
         write_results(false);
-        std::ostringstream message;
-        message
-          << std::setprecision(3) << "the energy balance ends "
-          << history["energy_error"].back() << " off (target "
-          << discretisation::AutomaticDiscretisation::energy_balance_target
-          << "), of which the contact activation "
-          << history["contact_work"].back() / history["kinetic_energy"].front()
-          << ": the automatic step is made " << refinement
-          << " times finer than the rule's and the run made again";
-        throw StepTooCoarseForEnergy(message.str(), refinement);
+        throw TooCoarseForEnergy(reason, next);
       }
     write_results(true);
     if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
@@ -689,7 +732,7 @@ namespace impact_fem
   {
     // The problem outlives each try block: its destructor (collective
     // over comm) must not run while an exception unwinds.
-    double refinement = 1;
+    ImpactProblem::EnergyRefinement refinement;
     for (;;)
       {
         try
@@ -701,9 +744,9 @@ namespace impact_fem
             problem.reset();
             return;
           }
-        catch (const ImpactProblem::StepTooCoarseForEnergy &finer)
+        catch (const ImpactProblem::TooCoarseForEnergy &finer)
           {
-            // Thrown only by a run not refined yet: the next one is final.
+            // Each refinement is asked for once: at most three runs.
             problem.reset();
             if (Utilities::MPI::this_mpi_process(comm) == 0)
               log << "impact-fem: " << finer.what() << "." << std::endl;

@@ -45,37 +45,43 @@ namespace impact_fem
     static discretisation::ExpectedContact
     expected_contact(const Parameters &parameters);
 
+    /// The refinements of the automatic step and contact nodes for the
+    /// energy balance.
+    using EnergyRefinement =
+      discretisation::AutomaticDiscretisation::EnergyRefinement;
+
     /// Progress and results go to `log` on the first rank of `comm`. An
-    /// automatic step count is raised @p step_refinement times (the second
-    /// run of run_impact()).
-    ImpactProblem(ParameterHandler &prm,
-                  const MPI_Comm    comm,
-                  std::ostream     &log             = std::cout,
-                  const double      step_refinement = 1);
+    /// automatic step count and contact-node spacing are refined as
+    /// @p refinement says (the later runs of run_impact()).
+    ImpactProblem(ParameterHandler       &prm,
+                  const MPI_Comm          comm,
+                  std::ostream           &log        = std::cout,
+                  const EnergyRefinement &refinement = {});
 
     /**
-     * Thrown by run() at the end of a run whose automatic step lost more
-     * energy to the contact activation than the energy balance allows
-     * (AutomaticDiscretisation::step_refinement_for_energy()); the run is
-     * left incomplete, for run_impact() to make again with the step
-     * refinement() times finer.
+     * Thrown by run() at the end of a run whose automatic step or contact
+     * nodes lost more energy than the energy balance allows
+     * (AutomaticDiscretisation::step_refinement_for_energy(),
+     * contact_spacing_halving_for_energy()); the run is left incomplete,
+     * for run_impact() to make again with refinement().
      */
-    class StepTooCoarseForEnergy : public std::runtime_error
+    class TooCoarseForEnergy : public std::runtime_error
     {
     public:
-      StepTooCoarseForEnergy(const std::string &what, const double refinement)
+      TooCoarseForEnergy(const std::string      &what,
+                         const EnergyRefinement &refinement)
         : std::runtime_error(what)
-        , factor(refinement)
+        , next(refinement)
       {}
-      /// The total refinement of the automatic step count to run with [-].
-      double
+      /// The refinement to run with (the totals, not increments).
+      const EnergyRefinement &
       refinement() const
       {
-        return factor;
+        return next;
       }
 
     private:
-      double factor;
+      EnergyRefinement next;
     };
 
     void
@@ -116,13 +122,13 @@ namespace impact_fem
     /// For the analyses on this time loop, under their @p loading:
     /// @p impact false leaves out what only a sphere flying at the plate
     /// has (the step from the contact time, the expected contact radius,
-    /// the @p step_refinement of an automatic step).
-    ImpactProblem(ParameterHandler &prm,
-                  const MPI_Comm    comm,
-                  std::ostream     &log,
-                  const Loading    &loading,
-                  const bool        impact,
-                  const double      step_refinement = 1);
+    /// the @p refinement of an automatic step and contact nodes).
+    ImpactProblem(ParameterHandler       &prm,
+                  const MPI_Comm          comm,
+                  std::ostream           &log,
+                  const Loading          &loading,
+                  const bool              impact,
+                  const EnergyRefinement &refinement = {});
 
     /// The time step [s] (Parameters::time_step()); time_stepper is made.
     virtual double
@@ -195,16 +201,18 @@ namespace impact_fem
     /// The report of the postprocessors, printed with the result.
     std::string report;
 
-    /// The refinement of the automatic step count this run makes [-], and
-    /// whether its energy balance may raise it (an impact whose step count
-    /// is automatic).
-    double step_refinement       = 1;
-    bool   step_sized_for_energy = false;
+    /// Whether the energy balance may refine this run's automatic step (an
+    /// impact whose step count is automatic) and its contact nodes (also
+    /// placed by the rule), and the refinement this run makes (its step
+    /// factor 1 where the step is not sized for the energy balance).
+    bool             step_sized_for_energy    = false;
+    bool             spacing_sized_for_energy = false;
+    EnergyRefinement energy_refinement;
 
-    /// The refinement the energy balance asks for (1: none), said on the
-    /// log when it is more than this run's.
-    double
-    energy_step_refinement() const;
+    /// The refinement the energy balance asks for the next run, the same
+    /// as this run's when it asks for none; @p reason says why.
+    EnergyRefinement
+    next_energy_refinement(std::string &reason) const;
 
     double end_time         = 0;
     double separation_time  = -1;
@@ -213,9 +221,10 @@ namespace impact_fem
 
   /**
    * Runs the impact of @p prm (an ImpactProblem, progress to @p log): once,
-   * or, when its automatic step lost too much energy to the contact
-   * activation (ImpactProblem::StepTooCoarseForEnergy), again with the
-   * finer step it asks for (once). @p first, if given, is the
+   * or, when its automatic step or contact nodes lost too much energy
+   * (ImpactProblem::TooCoarseForEnergy), again with the finer step or
+   * the denser contact nodes it asks for (each once, so at most three
+   * runs). @p first, if given, is the
    * problem of the first run (made from @p prm).
    */
   void

@@ -63,6 +63,19 @@ namespace impact_fem
     }
 
 
+    bool
+    AutomaticDiscretisation::contact_spacing_halving_for_energy(
+      const double balance,
+      const double activation_work)
+    {
+      if (!std::isfinite(balance) || !std::isfinite(activation_work) ||
+          std::abs(balance) <= energy_balance_target)
+        return false;
+      const double rest = balance - activation_work;
+      return rest * balance > 0 && std::abs(rest) >= 0.5 * std::abs(balance);
+    }
+
+
     namespace
     {
       std::string
@@ -103,7 +116,10 @@ namespace impact_fem
              " if a body is expected to yield (contact nodes every a / " +
              number(elements_per_contact_radius *
                     (1u << plastic_contact_surface_refinements)) +
-             ") and the contact element size is auto, else 0";
+             ") and the contact element size is auto, else 0; one more if "
+             "the run's energy balance misses " +
+             number(energy_balance_target) +
+             " mostly by the integrator's damping";
     }
 
 

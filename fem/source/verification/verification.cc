@@ -182,6 +182,21 @@ namespace impact_fem
       }
 
 
+      /// The contact surface refinements a run's summary records, or
+      /// @p otherwise when it records none.
+      unsigned int
+      surface_refinements_of(const nlohmann::json &summary,
+                             const unsigned int    otherwise)
+      {
+        const nlohmann::json::json_pointer refinements(
+          "/discretisation/entries/Mesh~1Contact surface refinements/value");
+        return summary.contains(refinements) &&
+                   summary[refinements].is_number() ?
+                 summary[refinements].get<unsigned int>() :
+                 otherwise;
+      }
+
+
       /// One level of the three: 0 fine (the run), 1 medium, 2 coarse.
       struct Level
       {
@@ -506,10 +521,15 @@ namespace impact_fem
           MPI_Barrier(comm);
           levels.push_back(
             level_record(level, read_json(level.directory + "/summary.json")));
-          // The coarser levels' steps follow the fine level's as it ran: an
-          // automatic step count may have been raised for its energy balance.
+          // The coarser levels' steps and contact surfaces follow the fine
+          // level's as it ran: an automatic step count may have been raised,
+          // and automatic contact nodes made denser, for its energy balance.
           if (index == 0 && fine.dt == 0)
             fine.n = steps_per_contact_time_of(levels[0]["summary"], fine.n);
+          if (index == 0)
+            fine.surface_refinements =
+              surface_refinements_of(levels[0]["summary"],
+                                     fine.surface_refinements);
         }
       if (Utilities::MPI::this_mpi_process(comm) == 0)
         write_verification(fine, levels, log);

@@ -69,6 +69,17 @@ namespace impact_fem
       /// The most the automatic step count is raised for the energy balance.
       static constexpr double maximum_step_refinement = 8;
 
+      /// How a run's automatic step and contact nodes are refined for its
+      /// energy balance: each at most once (run_impact() makes a run at
+      /// most three times).
+      struct EnergyRefinement
+      {
+        /// The factor of the automatic step count [-], >= 1.
+        double step = 1;
+        /// Halvings of the automatic contact nodes' spacing: 0 or 1.
+        unsigned int contact_spacing_halvings = 0;
+      };
+
       /**
        * The factor by which a run's automatic step count is raised so that
        * its energy balance meets energy_balance_target, from what the run
@@ -89,6 +100,24 @@ namespace impact_fem
        */
       static double
       step_refinement_for_energy(double balance, double activation_work);
+
+      /**
+       * Whether a run's automatic contact nodes are made twice as dense for
+       * its energy balance (one more refinement of the contact surfaces'
+       * cells), from the same @p balance and @p activation_work as
+       * step_refinement_for_energy(): when the balance misses
+       * energy_balance_target and the rest of it (balance - activation
+       * work, of the balance's sign) is the larger part. That rest is the
+       * time integrator's damping of what the nodes entering contact excite
+       * in the mesh: on AISI 52100 on AISI 1006 at 5 m/s it grew with a
+       * finer step (-4.8e-5 at 308 steps to -1.1e-4 at 2228) and halving
+       * the contact nodes' spacing from a / 160 to a / 320 divided it by
+       * 2.6 to 3.1, leaving the activation work within 15 %
+       * (doc/results/fem-benchmarks.md). false for a non-finite input.
+       */
+      static bool
+      contact_spacing_halving_for_energy(double balance,
+                                         double activation_work);
 
       /// The sizes of the rule for @p expected on a sphere of radius R [m]
       /// whose Hertz contact time is @p hertz_contact_time [s] (the time
