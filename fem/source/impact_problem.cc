@@ -173,7 +173,10 @@ namespace impact_fem
         why << "the automatic step is made " << step
             << " times finer than the rule's";
       }
-    else if (spacing_sized_for_energy &&
+    // Only after a finer step: the rest it leaves is then the damping of
+    // what the nodes entering contact excite, which denser nodes reduce;
+    // a rest that dominates from the first run has another cause.
+    else if (spacing_sized_for_energy && energy_refinement.step > 1 &&
              energy_refinement.contact_spacing_halvings == 0 &&
              mesh.contact_surface_refinements < 6 &&
              AutomaticDiscretisation::contact_spacing_halving_for_energy(

@@ -140,7 +140,9 @@ namespace impact_fem
                       "balance then misses 1e-4 mostly by the contact "
                       "activation's work, the run is made once more with "
                       "(|error| / 8e-5)^(1/1.2) times the steps, at most 8 "
-                      "times.");
+                      "times (and if it still misses, mostly by the rest of "
+                      "the error, once more with automatic contact nodes "
+                      "twice as dense: Mesh/Contact surface refinements).");
     prm.declare_entry("Time step",
                       "0",
                       Patterns::Double(),

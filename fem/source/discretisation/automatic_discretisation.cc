@@ -117,9 +117,10 @@ namespace impact_fem
              number(elements_per_contact_radius *
                     (1u << plastic_contact_surface_refinements)) +
              ") and the contact element size is auto, else 0; one more if "
-             "the run's energy balance misses " +
+             "a run whose step was refined for its energy balance still "
+             "misses " +
              number(energy_balance_target) +
-             " mostly by the integrator's damping";
+             ", mostly by the rest of the error (the integrator's damping)";
     }
 
 

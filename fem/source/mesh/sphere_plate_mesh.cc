@@ -84,8 +84,8 @@ namespace impact_fem
                       "'auto': " +
                         discretisation::AutomaticDiscretisation::
                           contact_surface_refinements_rule() +
-                        " (a fully plastic contact force rises in a step as "
-                        "each node enters contact).");
+                        ". A fully plastic contact force rises in a step as "
+                        "each node enters contact.");
     prm.declare_entry("Polynomial degree",
                       "2",
                       Patterns::Integer(1, 4),

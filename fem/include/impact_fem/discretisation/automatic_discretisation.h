@@ -105,15 +105,19 @@ namespace impact_fem
        * Whether a run's automatic contact nodes are made twice as dense for
        * its energy balance (one more refinement of the contact surfaces'
        * cells), from the same @p balance and @p activation_work as
-       * step_refinement_for_energy(): when the balance misses
-       * energy_balance_target and the rest of it (balance - activation
-       * work, of the balance's sign) is the larger part. That rest is the
-       * time integrator's damping of what the nodes entering contact excite
-       * in the mesh: on AISI 52100 on AISI 1006 at 5 m/s it grew with a
-       * finer step (-4.8e-5 at 308 steps to -1.1e-4 at 2228) and halving
-       * the contact nodes' spacing from a / 160 to a / 320 divided it by
-       * 2.6 to 3.1, leaving the activation work within 15 %
-       * (doc/results/fem-benchmarks.md). false for a non-finite input.
+       * step_refinement_for_energy(), of a run whose step that rule has
+       * already refined: when the balance misses energy_balance_target and
+       * the rest of it (balance - activation work, of the balance's sign)
+       * is the larger part. That rest is then BDF2's damping of what the
+       * nodes entering contact excite in the mesh: on AISI 52100 on AISI
+       * 1006 at 5 m/s it grew with a finer step (-4.8e-5 at 308 steps to
+       * -1.1e-4 at 2228) and halving the contact nodes' spacing from a / 160
+       * to a / 320 divided it by 2.6 to 3.1, leaving the activation work
+       * within 15 % (doc/results/fem-benchmarks.md). (A rest that dominates
+       * the first run has another cause: Newmark with gamma = 0.6 on a
+       * 52100 ball on a rigid flat at 15 m/s lost -2.7e-3 with the contact
+       * nodes at a / 160 and at a / 320 alike.) false for a non-finite
+       * input.
        */
       static bool
       contact_spacing_halving_for_energy(double balance,
