@@ -147,44 +147,33 @@ namespace impact_fem
   ImpactProblem::next_energy_refinement(std::string &reason) const
   {
     using discretisation::AutomaticDiscretisation;
-    EnergyRefinement next = energy_refinement;
     // The balance at the end of an impact: a run cut before the bodies
     // separate (Maximum time) is not judged.
     if (!step_sized_for_energy || separation_time < 0 ||
         !history.has("energy_error") || !history.has("contact_work") ||
         !history.has("kinetic_energy") || history.n_steps() == 0)
-      return next;
+      return energy_refinement;
     // The balance's error is relative to the impact energy, the kinetic
     // energy at the start (the bodies unstrained, gravity's work zero).
     const double balance = history["energy_error"].back();
     const double activation =
       history["contact_work"].back() / history["kinetic_energy"].front();
+    const EnergyRefinement next =
+      AutomaticDiscretisation::next_refinement_for_energy(
+        energy_refinement,
+        balance,
+        activation,
+        spacing_sized_for_energy && mesh.contact_surface_refinements < 6);
     std::ostringstream why;
     why << std::setprecision(3) << "the energy balance ends " << balance
         << " off (target " << AutomaticDiscretisation::energy_balance_target
         << "), of which the contact activation " << activation << ": ";
-    // Each refinement once: a run refined both ways keeps its sizes (the
-    // report flags a balance that still misses).
-    const double step =
-      AutomaticDiscretisation::step_refinement_for_energy(balance, activation);
-    if (energy_refinement.step == 1 && step > 1)
-      {
-        next.step = step;
-        why << "the automatic step is made " << step
-            << " times finer than the rule's";
-      }
-    // Only after a finer step: the rest it leaves is then the damping of
-    // what the nodes entering contact excite, which denser nodes reduce;
-    // a rest that dominates from the first run has another cause.
-    else if (spacing_sized_for_energy && energy_refinement.step > 1 &&
-             energy_refinement.contact_spacing_halvings == 0 &&
-             mesh.contact_surface_refinements < 6 &&
-             AutomaticDiscretisation::contact_spacing_halving_for_energy(
-               balance, activation))
-      {
-        next.contact_spacing_halvings = 1;
-        why << "the automatic contact nodes are made twice as dense";
-      }
+    if (next.step != energy_refinement.step)
+      why << "the automatic step is made " << next.step
+          << " times finer than the rule's";
+    else if (next.contact_spacing_halvings !=
+             energy_refinement.contact_spacing_halvings)
+      why << "the automatic contact nodes are made twice as dense";
     else
       return next;
     why << " and the run made again";

@@ -76,6 +76,29 @@ namespace impact_fem
     }
 
 
+    AutomaticDiscretisation::EnergyRefinement
+    AutomaticDiscretisation::next_refinement_for_energy(
+      const EnergyRefinement &current,
+      const double            balance,
+      const double            activation_work,
+      const bool              spacing_refinable)
+    {
+      EnergyRefinement next = current;
+      const double     step =
+        step_refinement_for_energy(balance, activation_work);
+      if (current.step == 1 && step > 1)
+        next.step = step;
+      // Only after a finer step: the rest it leaves is then the damping of
+      // what the nodes entering contact excite, which denser nodes reduce;
+      // a rest that dominates from the first run has another cause.
+      else if (spacing_refinable && current.step > 1 &&
+               current.contact_spacing_halvings == 0 &&
+               contact_spacing_halving_for_energy(balance, activation_work))
+        next.contact_spacing_halvings = 1;
+      return next;
+    }
+
+
     namespace
     {
       std::string

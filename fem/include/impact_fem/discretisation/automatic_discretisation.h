@@ -123,6 +123,23 @@ namespace impact_fem
       contact_spacing_halving_for_energy(double balance,
                                          double activation_work);
 
+      /**
+       * The refinement of a run's next try, from the refinement @p current
+       * it ran with and its @p balance and @p activation_work (as
+       * step_refinement_for_energy()); @p current itself when the run is
+       * kept. Each refinement is made once: first the step
+       * (step_refinement_for_energy()), then, if the refined run still
+       * misses mostly by the rest, the contact nodes
+       * (contact_spacing_halving_for_energy(); only where
+       * @p spacing_refinable: the rule placed them and one more refinement
+       * is allowed).
+       */
+      static EnergyRefinement
+      next_refinement_for_energy(const EnergyRefinement &current,
+                                 double                  balance,
+                                 double                  activation_work,
+                                 bool                    spacing_refinable);
+
       /// The sizes of the rule for @p expected on a sphere of radius R [m]
       /// whose Hertz contact time is @p hertz_contact_time [s] (the time
       /// step is Hertz's contact time / Steps per contact time). Throws an
