@@ -7,11 +7,12 @@
 # 6061-T6, C11000 annealed copper on AISI 1006 steel; velocities VELOCITIES (default
 # "0.5 2 5" m/s).
 # Prints per run: V/V_y and the contact radius of the expected contact, the chosen contact
-# element size and steps per Hertz contact time, the fine level's cells and wall time, the GCI
-# of t_c, F_max, x_max (relative) and of e (absolute) with the convergence of the levels, the
-# force oscillation and the energy balance error at the end; exits 2 naming each miss of the
-# targets: GCI <= 1 % in t_c, F_max, x_max and <= 0.005 in e, force oscillation <= 0.5 %,
-# |energy balance error| <= 1e-4.
+# element size, the contact nodes' spacing s (as a / s) and steps per Hertz contact time, the
+# fine level's cells and wall time, the GCI of t_c, F_max, x_max (relative) and of e (absolute)
+# with the convergence of the levels, the force oscillation and the energy balance error at the
+# end; exits 2 naming each miss of the targets: GCI <= 1 % in t_c, F_max, x_max and <= 0.005 in
+# e, force oscillation <= 0.5 %, |energy balance error| <= 1e-4 (and each coarser level whose
+# contact surface refinements differ from the fine level's).
 #
 # Usage: fem/bench/automatic_discretisation.sh [BUILD_DIR] [OUTPUT_DIR]
 #   environment: VELOCITIES (default "0.5 2 5"), PAIRS (default all four, by their names
@@ -60,7 +61,7 @@ import glob, json, os, sys
 out, pairs = sys.argv[1], sys.argv[2].split()
 targets = {"contact_time": 0.01, "force_max": 0.01, "approach_max": 0.01}
 missed = []
-print(f"{'pair':<16} {'V':>4} {'V/V_y':>7} {'a [mm]':>7} {'h [um]':>7} {'steps':>6} {'cells':>6} "
+print(f"{'pair':<16} {'V':>4} {'V/V_y':>7} {'a [mm]':>7} {'h [um]':>7} {'a/s':>4} {'steps':>6} {'cells':>6} "
       f"{'wall [s]':>8} {'GCI t_c':>14} {'GCI F_max':>14} {'GCI x_max':>14} {'GCI e':>16} "
       f"{'osc':>7} {'E err':>9}")
 short = {"monotone": "m", "oscillatory": "o", "divergent": "d", "converged": "c"}
@@ -79,8 +80,22 @@ for pair in pairs:
         x = d["expected_contact"]
         h = d["entries"]["Mesh/Contact element size"]["value"]
         n = d["entries"]["Time integration/Steps per contact time"]["value"]
+        k = d["entries"]["Mesh/Contact surface refinements"]["value"]
+        # The coarser levels keep the fine level's contact surface refinements as it ran (the
+        # energy balance may have raised them).
+        for level in (1, 2):
+            try:
+                lk = json.load(open(os.path.join(run, "verification", f"level{level}",
+                                                 "summary.json")))["discretisation"]["entries"][
+                    "Mesh/Contact surface refinements"]["value"]
+            except (OSError, KeyError, ValueError):
+                lk = None
+            if lk != k:
+                missed.append(f"{name}: level {level} has contact surface refinements {lk}, "
+                              f"the fine level {k}")
         cells = [f"{pair:<16} {s['impact_velocity']:>4g} {x.get('velocity_ratio', 0):>7.1f} "
-                 f"{x['contact_radius'] * 1e3:>7.3f} {h * 1e6:>7.2f} {n:>6.0f} {s['cells']:>6} "
+                 f"{x['contact_radius'] * 1e3:>7.3f} {h * 1e6:>7.2f} "
+                 f"{x['contact_radius'] / (h / 2 ** k):>4.0f} {n:>6.0f} {s['cells']:>6} "
                  f"{s['wall_time']:>8.0f}"]
         for key, target in targets.items():
             g = q[key]["gci_fine"]
