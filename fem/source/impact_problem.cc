@@ -90,11 +90,10 @@ namespace impact_fem
           if (entry.path == "Mesh/Contact surface refinements")
             {
               entry.value = mesh.contact_surface_refinements;
-              entry.rule += "; +" +
-                            std::to_string(
-                              refinement.contact_spacing_halvings) +
-                            " here: the energy balance missed mostly by the "
-                            "integrator's damping";
+              entry.rule +=
+                "; +" + std::to_string(refinement.contact_spacing_halvings) +
+                " here: the energy balance missed mostly by the "
+                "integrator's damping";
             }
       }
     if (impact && parameters.prescribed_time_step == 0)

@@ -9,146 +9,115 @@
 #include <cmath>
 #include <limits>
 
-namespace
-{
-  using Rule             = impact_fem::discretisation::AutomaticDiscretisation;
-  using EnergyRefinement = Rule::EnergyRefinement;
+namespace {
+using Rule = impact_fem::discretisation::AutomaticDiscretisation;
+using EnergyRefinement = Rule::EnergyRefinement;
 
-  constexpr EnergyRefinement first_run{};
+constexpr EnergyRefinement first_run{};
 
-  EnergyRefinement
-  refined_step(const double factor)
-  {
-    EnergyRefinement r;
-    r.step = factor;
-    return r;
-  }
+EnergyRefinement refined_step(const double factor) {
+  EnergyRefinement r;
+  r.step = factor;
+  return r;
+}
+
+/// The next run of a run refined as @p current that ended @p balance off
+/// with @p activation of it, its contact nodes placed by the rule.
+EnergyRefinement next_of(const EnergyRefinement& current, const double balance,
+                         const double activation) {
+  return Rule::next_refinement_for_energy(current, balance, activation, true);
+}
+
+void expect_refinement(const EnergyRefinement& got, const double step,
+                       const unsigned int halvings) {
+  EXPECT_EQ(got.step, step);
+  EXPECT_EQ(got.contact_spacing_halvings, halvings);
+}
 } // namespace
-
 
 // AISI 52100 hardened on AISI 1006 at 5 m/s, the rule's step: -8.60e-4, of
 // which the activation -8.12e-4 (the log's three digits): the step is made
 // (8.60e-4 / 8e-5)^(1/1.2) = 7.24 times finer (7.23 from the unrounded
 // balance), the contact nodes stay.
-TEST(EnergyRefinement, FirstRunMissedByTheActivationRefinesTheStep)
-{
-  const EnergyRefinement next =
-    Rule::next_refinement_for_energy(first_run, -8.60e-4, -8.12e-4, true);
+TEST(EnergyRefinement, FirstRunMissedByTheActivationRefinesTheStep) {
+  const EnergyRefinement next = next_of(first_run, -8.60e-4, -8.12e-4);
   EXPECT_NEAR(next.step, std::pow(8.60e-4 / 8e-5, 1 / 1.2), 1e-12);
   EXPECT_EQ(next.contact_spacing_halvings, 0u);
 }
 
-
-TEST(EnergyRefinement, StepRefinementIsCappedAtEight)
-{
-  const EnergyRefinement next =
-    Rule::next_refinement_for_energy(first_run, -2e-3, -1.9e-3, true);
+TEST(EnergyRefinement, StepRefinementIsCappedAtEight) {
+  const EnergyRefinement next = next_of(first_run, -2e-3, -1.9e-3);
   EXPECT_EQ(next.step, Rule::maximum_step_refinement);
   EXPECT_EQ(Rule::maximum_step_refinement, 8);
 }
 
-
 // The same case at 7.23 times the steps: -1.59e-4, of which the activation
 // -4.8e-5 and the rest -1.1e-4: the contact nodes are made twice as dense,
 // the step kept.
-TEST(EnergyRefinement, RefinedRunMissedByTheRestHalvesTheSpacing)
-{
-  const EnergyRefinement next =
-    Rule::next_refinement_for_energy(refined_step(7.23), -1.59e-4, -4.8e-5, true);
-  EXPECT_EQ(next.step, 7.23);
-  EXPECT_EQ(next.contact_spacing_halvings, 1u);
+TEST(EnergyRefinement, RefinedRunMissedByTheRestHalvesTheSpacing) {
+  const EnergyRefinement next = next_of(refined_step(7.23), -1.59e-4, -4.8e-5);
+  expect_refinement(next, 7.23, 1u);
 }
 
-
-TEST(EnergyRefinement, ContactNodesTheScenarioPlacedAreKept)
-{
+TEST(EnergyRefinement, ContactNodesTheScenarioPlacedAreKept) {
   const EnergyRefinement next =
-    Rule::next_refinement_for_energy(refined_step(7.23), -1.59e-4, -4.8e-5, false);
-  EXPECT_EQ(next.step, 7.23);
-  EXPECT_EQ(next.contact_spacing_halvings, 0u);
+      Rule::next_refinement_for_energy(refined_step(7.23), -1.59e-4, -4.8e-5, false);
+  expect_refinement(next, 7.23, 0u);
 }
-
 
 // A refined run still missed mostly by the activation (the step factor
 // capped): the step is not refined twice, and denser nodes do not reduce
 // the activation work.
-TEST(EnergyRefinement, RefinedRunMissedByTheActivationIsKept)
-{
-  const EnergyRefinement next =
-    Rule::next_refinement_for_energy(refined_step(8), -1.5e-4, -1.2e-4, true);
-  EXPECT_EQ(next.step, 8);
-  EXPECT_EQ(next.contact_spacing_halvings, 0u);
+TEST(EnergyRefinement, RefinedRunMissedByTheActivationIsKept) {
+  const EnergyRefinement next = next_of(refined_step(8), -1.5e-4, -1.2e-4);
+  expect_refinement(next, 8, 0u);
 }
 
-
-TEST(EnergyRefinement, RunRefinedBothWaysIsKept)
-{
+TEST(EnergyRefinement, RunRefinedBothWaysIsKept) {
   EnergyRefinement current = refined_step(7.23);
   current.contact_spacing_halvings = 1;
-  const EnergyRefinement next =
-    Rule::next_refinement_for_energy(current, -3e-4, -2.8e-4, true);
-  EXPECT_EQ(next.step, 7.23);
-  EXPECT_EQ(next.contact_spacing_halvings, 1u);
-  const EnergyRefinement again =
-    Rule::next_refinement_for_energy(current, -3e-4, -0.2e-4, true);
+  const EnergyRefinement next = next_of(current, -3e-4, -2.8e-4);
+  expect_refinement(next, 7.23, 1u);
+  const EnergyRefinement again = next_of(current, -3e-4, -0.2e-4);
   EXPECT_EQ(again.contact_spacing_halvings, 1u);
 }
-
 
 // A first run missed mostly by the rest has another cause (a / 10 contact
 // elements: -1.24e-3 with activation -2.4e-4; Newmark gamma = 0.6: -2.73e-3
 // with -1.59e-4): neither the step nor the nodes are refined.
-TEST(EnergyRefinement, FirstRunMissedByTheRestIsKept)
-{
-  for (const auto &[balance, activation] :
-       {std::pair{-1.24e-3, -2.4e-4}, std::pair{-2.73e-3, -1.59e-4}})
-    {
-      const EnergyRefinement next =
-        Rule::next_refinement_for_energy(first_run, balance, activation, true);
-      EXPECT_EQ(next.step, 1);
-      EXPECT_EQ(next.contact_spacing_halvings, 0u);
-    }
+TEST(EnergyRefinement, FirstRunMissedByTheRestIsKept) {
+  for (const auto& [balance, activation] :
+       {std::pair{-1.24e-3, -2.4e-4}, std::pair{-2.73e-3, -1.59e-4}}) {
+    const EnergyRefinement next = next_of(first_run, balance, activation);
+    expect_refinement(next, 1, 0u);
+  }
 }
 
-
-TEST(EnergyRefinement, BalanceMetIsKept)
-{
-  for (const EnergyRefinement &current : {first_run, refined_step(3.)})
-    {
-      const EnergyRefinement next =
-        Rule::next_refinement_for_energy(current, -9.7e-5, -5.5e-5, true);
-      EXPECT_EQ(next.step, current.step);
-      EXPECT_EQ(next.contact_spacing_halvings, 0u);
-    }
+TEST(EnergyRefinement, BalanceMetIsKept) {
+  for (const EnergyRefinement& current : {first_run, refined_step(3.)}) {
+    const EnergyRefinement next = next_of(current, -9.7e-5, -5.5e-5);
+    expect_refinement(next, current.step, 0u);
+  }
   EXPECT_EQ(Rule::energy_balance_target, 1e-4);
 }
 
-
 // A rest of the other sign than the balance (the activation larger than the
 // whole error) is not "the larger part of it".
-TEST(EnergyRefinement, RestOfTheOtherSignIsNotTheCause)
-{
+TEST(EnergyRefinement, RestOfTheOtherSignIsNotTheCause) {
   EXPECT_FALSE(Rule::contact_spacing_halving_for_energy(-1.5e-4, -2.0e-4));
   EXPECT_TRUE(Rule::contact_spacing_halving_for_energy(-1.5e-4, -0.7e-4));
   EXPECT_FALSE(Rule::contact_spacing_halving_for_energy(-1.5e-4, -0.8e-4));
   EXPECT_TRUE(Rule::contact_spacing_halving_for_energy(1.5e-4, 0.));
 }
 
-
-TEST(EnergyRefinement, NonFiniteInputIsKept)
-{
+TEST(EnergyRefinement, NonFiniteInputIsKept) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const double inf = std::numeric_limits<double>::infinity();
-  for (const auto &[balance, activation] :
-       {std::pair{nan, -1e-4}, std::pair{-1e-3, nan}, std::pair{-inf, -inf},
-        std::pair{-1e-3, -inf}})
-    {
-      for (const EnergyRefinement &current : {first_run, refined_step(4.)})
-        {
-          const EnergyRefinement next = Rule::next_refinement_for_energy(
-            current, balance, activation, true);
-          EXPECT_EQ(next.step, current.step);
-          EXPECT_EQ(next.contact_spacing_halvings, 0u);
-        }
+  for (const auto& [balance, activation] : {std::pair{nan, -1e-4}, std::pair{-1e-3, nan},
+                                            std::pair{-inf, -inf}, std::pair{-1e-3, -inf}}) {
+    for (const EnergyRefinement& current : {first_run, refined_step(4.)}) {
+      const EnergyRefinement next = next_of(current, balance, activation);
+      expect_refinement(next, current.step, 0u);
     }
+  }
 }

@@ -84,8 +84,7 @@ namespace impact_fem
       const bool              spacing_refinable)
     {
       EnergyRefinement next = current;
-      const double     step =
-        step_refinement_for_energy(balance, activation_work);
+      const double step = step_refinement_for_energy(balance, activation_work);
       if (current.step == 1 && step > 1)
         next.step = step;
       // Only after a finer step: the rest it leaves is then the damping of
