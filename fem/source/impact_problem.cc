@@ -700,9 +700,8 @@ namespace impact_fem
                                 next.contact_spacing_halvings,
                                 0);
     reason = Utilities::MPI::broadcast(mpi_communicator, reason, 0);
-    if (next.step != energy_refinement.step ||
-        next.contact_spacing_halvings !=
-          energy_refinement.contact_spacing_halvings)
+    // A reason is given exactly when the next run differs from this one.
+    if (!reason.empty())
       {
         write_results(false);
         throw TooCoarseForEnergy(reason, next);

@@ -167,32 +167,19 @@ namespace impact_fem
       }
 
 
-      /// The steps per contact time a run's summary records (its
-      /// discretisation entries), or @p otherwise when it records none.
+      /// The value of the discretisation entry @p path (e.g. "Mesh/Contact
+      /// surface refinements") a run's summary records, or @p otherwise when
+      /// it records none.
       double
-      steps_per_contact_time_of(const nlohmann::json &summary,
-                                const double          otherwise)
+      discretisation_entry_of(const nlohmann::json &summary,
+                              const std::string    &path,
+                              const double          otherwise)
       {
-        const nlohmann::json::json_pointer steps(
-          "/discretisation/entries/Time integration~1Steps per contact "
-          "time/value");
-        return summary.contains(steps) && summary[steps].is_number() ?
-                 summary[steps].get<double>() :
-                 otherwise;
-      }
-
-
-      /// The contact surface refinements a run's summary records, or
-      /// @p otherwise when it records none.
-      unsigned int
-      surface_refinements_of(const nlohmann::json &summary,
-                             const unsigned int    otherwise)
-      {
-        const nlohmann::json::json_pointer refinements(
-          "/discretisation/entries/Mesh~1Contact surface refinements/value");
-        return summary.contains(refinements) &&
-                   summary[refinements].is_number() ?
-                 summary[refinements].get<unsigned int>() :
+        const nlohmann::json::json_pointer value(
+          "/discretisation/entries/" + path.substr(0, path.find('/')) + "~1" +
+          path.substr(path.find('/') + 1) + "/value");
+        return summary.contains(value) && summary[value].is_number() ?
+                 summary[value].get<double>() :
                  otherwise;
       }
 
@@ -525,11 +512,15 @@ namespace impact_fem
           // level's as it ran: an automatic step count may have been raised,
           // and automatic contact nodes made denser, for its energy balance.
           if (index == 0 && fine.dt == 0)
-            fine.n = steps_per_contact_time_of(levels[0]["summary"], fine.n);
+            fine.n = discretisation_entry_of(levels[0]["summary"],
+                                             "Time integration/Steps per "
+                                             "contact time",
+                                             fine.n);
           if (index == 0)
-            fine.surface_refinements =
-              surface_refinements_of(levels[0]["summary"],
-                                     fine.surface_refinements);
+            fine.surface_refinements = static_cast<unsigned int>(
+              discretisation_entry_of(levels[0]["summary"],
+                                      "Mesh/Contact surface refinements",
+                                      fine.surface_refinements));
         }
       if (Utilities::MPI::this_mpi_process(comm) == 0)
         write_verification(fine, levels, log);
