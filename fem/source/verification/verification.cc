@@ -175,9 +175,11 @@ namespace impact_fem
                               const std::string    &path,
                               const double          otherwise)
       {
-        const nlohmann::json::json_pointer value(
-          "/discretisation/entries/" + path.substr(0, path.find('/')) + "~1" +
-          path.substr(path.find('/') + 1) + "/value");
+        // The entry's name is one reference token: the library escapes its
+        // slashes (and any '~').
+        const nlohmann::json::json_pointer value =
+          nlohmann::json::json_pointer("/discretisation/entries") / path /
+          "value";
         return summary.contains(value) && summary[value].is_number() ?
                  summary[value].get<double>() :
                  otherwise;
