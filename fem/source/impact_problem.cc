@@ -246,17 +246,56 @@ namespace impact_fem
   ImpactProblem::factorize_effective_stiffness()
   {
     TimerOutput::Scope t(*computing_timer, "factorize");
-    const double       dt = time_step();
-    effective_stiffness.copy_from(system.stiffness);
-    effective_stiffness.add(time_stepper->mass_weight() / (dt * dt),
-                            system.mass);
-    effective_stiffness.add(time_stepper->damping_weight() / dt,
-                            system.boundary_damping);
-    effective_stiffness.add(time_stepper->damping_weight() / dt,
-                            system.material_damping);
-    // The Maxwell arms' algorithmic tangent (constant for a constant step).
-    effective_stiffness.add(1., system.internal_stiffness);
+    assemble_effective_stiffness(time_step(), effective_stiffness);
     factorize();
+  }
+
+
+  void
+  ImpactProblem::assemble_effective_stiffness(
+    const double                    dt,
+    TrilinosWrappers::SparseMatrix &matrix) const
+  {
+    matrix.copy_from(system.stiffness);
+    matrix.add(time_stepper->mass_weight() / (dt * dt), system.mass);
+    matrix.add(time_stepper->damping_weight() / dt, system.boundary_damping);
+    matrix.add(time_stepper->damping_weight() / dt, system.material_damping);
+    // The Maxwell arms' algorithmic tangent (constant for a constant step).
+    matrix.add(1., system.internal_stiffness);
+  }
+
+
+  void
+  ImpactProblem::setup_entry_sub_steps()
+  {
+    entry_sub_steps = parameters.entry_sub_steps;
+    bool maxwell_arms = material_of(sphere).internal_tangent(1).norm() > 0;
+    if (!parameters.rigid_plate)
+      maxwell_arms =
+        maxwell_arms || material_of(plate).internal_tangent(1).norm() > 0;
+    if (entry_sub_steps > 1 && maxwell_arms)
+      {
+        // The Maxwell arms' tangent and history force are made for one
+        // step length.
+        pcout << "  no sub-steps at contact entry: a body has Maxwell arms"
+              << std::endl;
+        entry_sub_steps = 1;
+      }
+    if (entry_sub_steps == 1)
+      return;
+    TimerOutput::Scope t(*computing_timer, "factorize");
+    entry_stiffness = std::make_unique<TrilinosWrappers::SparseMatrix>();
+    entry_stiffness->reinit(effective_stiffness);
+    assemble_effective_stiffness(time_step() / entry_sub_steps,
+                                 *entry_stiffness);
+    entry_solver  = direct_solver_of(*entry_stiffness, false);
+    entry_contact = contact;
+    entry_contact.compute_influence(
+      [this](VectorType &x, const VectorType &b) { entry_solver->solve(x, b); },
+      locally_owned_dofs,
+      mpi_communicator);
+    pcout << "  a step in which a contact node enters is taken as "
+          << entry_sub_steps << " sub-steps" << std::endl;
   }
 
 
@@ -286,10 +325,10 @@ namespace impact_fem
 
 
   void
-  ImpactProblem::solve_time_step()
+  ImpactProblem::solve_step_equation(VectorType &displacement)
   {
     VectorType rhs(locally_owned_dofs, mpi_communicator), mass_term(rhs),
-      damping_term(rhs), damping_force(rhs), displacement(rhs);
+      damping_term(rhs), damping_force(rhs);
     {
       TimerOutput::Scope t(*computing_timer, "assemble right-hand side");
       // f + M m + C c - (Maxwell arms' history force)
@@ -309,6 +348,12 @@ namespace impact_fem
       solve_nonlinear_step(rhs, displacement);
     else
       solve_linear_step(rhs, displacement);
+  }
+
+
+  void
+  ImpactProblem::accept_step(const VectorType &displacement)
+  {
     TimerOutput::Scope t(*computing_timer, "update state");
     time_stepper->advance(displacement);
     refresh_ghosted_state();
@@ -320,6 +365,65 @@ namespace impact_fem
                   ghosted_u,
                   time_stepper->time_step(),
                   internal_force_predictor);
+  }
+
+
+  void
+  ImpactProblem::take_time_step()
+  {
+    const auto active_set_changed = [this](const Vector<double> &before) {
+      bool changed = false;
+      for (unsigned int j = 0; j < pressures.size(); ++j)
+        changed = changed || ((pressures[j] > 0) != (before[j] > 0));
+      return changed;
+    };
+    Vector<double> start_pressures = pressures;
+    VectorType displacement(locally_owned_dofs, mpi_communicator);
+    if (entry_sub_steps == 1 || !divide_next_step)
+      {
+        solve_step_equation(displacement);
+        if (entry_sub_steps == 1 || !active_set_changed(start_pressures))
+          {
+            accept_step(displacement);
+            postprocess_step();
+            return;
+          }
+        pressures = start_pressures;
+      }
+    // A node entered or left contact: its pressure at the end of the step,
+    // times the gap it closed within the step, is work lost (or gained) by
+    // the activation, trapezoidal, first order in the step. The step is
+    // taken again in sub-steps, with their own factorisation and contact
+    // influence swapped in for them (solve_linear_step uses the setup's).
+    // So is the next step: its three-point stencil would otherwise span the
+    // jump of the force, and BDF2's velocity across it gains energy.
+    ++entry_steps_divided;
+    divide_next_step = false;
+    time_stepper->begin_sub_steps(entry_sub_steps);
+    const auto swap_systems = [this]() {
+      std::swap(direct_solver, entry_solver);
+      std::swap(contact, entry_contact);
+    };
+    swap_systems();
+    try
+      {
+        for (unsigned int i = 0; i < entry_sub_steps; ++i)
+          {
+            start_pressures = pressures;
+            solve_step_equation(displacement);
+            divide_next_step =
+              divide_next_step || active_set_changed(start_pressures);
+            accept_step(displacement);
+            postprocess_step();
+          }
+      }
+    catch (...)
+      {
+        swap_systems();
+        throw;
+      }
+    swap_systems();
+    time_stepper->end_sub_steps();
   }
 
 
@@ -477,17 +581,17 @@ namespace impact_fem
                              " s; the history so far is in " + directory +
                              "/history.incomplete.h5."));
     };
-    auto last_checkpoint = std::chrono::steady_clock::now();
+    auto last_checkpoint    = std::chrono::steady_clock::now();
+    bool checkpoint_written = false;
     try
       {
         while (time_stepper->time() <
                end_time - 0.5 * time_stepper->time_step())
           {
             stop_if_interrupted();
-            solve_time_step();
-            postprocess_step();
+            take_time_step();
             const bool checkpoint_due =
-              time_stepper->step_number() == 1 ||
+              !checkpoint_written ||
               Utilities::MPI::broadcast(mpi_communicator,
                                         std::chrono::steady_clock::now() -
                                             last_checkpoint >
@@ -496,7 +600,8 @@ namespace impact_fem
             if (checkpoint_due)
               {
                 write_results(false);
-                last_checkpoint = std::chrono::steady_clock::now();
+                checkpoint_written = true;
+                last_checkpoint    = std::chrono::steady_clock::now();
               }
           }
         stop_if_interrupted();
@@ -548,6 +653,7 @@ namespace impact_fem
     result["dofs"]          = dof_handler.n_dofs();
     result["contact_nodes"] = contact.n_contact_nodes();
     result["steps"]         = time_stepper->step_number();
+    result["steps_divided_at_contact_entry"] = entry_steps_divided;
     result["ranks"]         = Utilities::MPI::n_mpi_processes(mpi_communicator);
     result["wall_time"]     = wall_time;
     return result;
@@ -679,6 +785,7 @@ namespace impact_fem
     weights.body_force *= -body_acceleration();
     factorize_effective_stiffness();
     setup_contact();
+    setup_entry_sub_steps();
     set_initial_conditions();
     history.declare(result_files::time_dataset,
                     result_files::time_unit,

@@ -149,6 +149,14 @@ namespace impact_fem
                       "Fixed time step [s], 0 or in [t_c / 1e6, t_c / 10], "
                       "t_c the Hertz contact time; 0 takes it from "
                       "'Steps per contact time'.");
+    prm.declare_entry("Sub-steps at contact entry",
+                      "1",
+                      Patterns::Integer(),
+                      "A step in which a contact node starts to carry "
+                      "pressure is taken again as this many sub-steps [-], "
+                      "in [1, 64] (1: never): the work its pressure does "
+                      "over the gap it closes within the step, lost to the "
+                      "contact activation, shrinks with the sub-step.");
     prm.declare_entry("Time after separation",
                       "0.1",
                       Patterns::Double(),
@@ -347,12 +355,17 @@ namespace impact_fem
     scheme                = prm.get("Scheme");
     prescribed_time_step  = prm.get_double("Time step");
     time_after_separation = prm.get_double("Time after separation");
+    entry_sub_steps       = prm.get_integer("Sub-steps at contact entry");
     maximum_time          = prm.get_double("Maximum time");
     prm.leave_subsection();
     AssertThrow(prescribed_time_step >= 0,
                 ExcMessage("Time integration/Time step must not be negative, "
                            "got " +
                            text(prescribed_time_step) + " s."));
+    AssertThrow(entry_sub_steps >= 1 && entry_sub_steps <= 64,
+                ExcMessage("Time integration/Sub-steps at contact entry must "
+                           "lie in [1, 64], got " +
+                           std::to_string(entry_sub_steps) + "."));
     AssertThrow(time_after_separation >= 0 && time_after_separation <= 10,
                 ExcMessage("Time integration/Time after separation must lie "
                            "in [0, 10], got " +

@@ -523,6 +523,14 @@ namespace impact_fem
   void
   SpherePlateSetup::factorize()
   {
+    direct_solver = direct_solver_of(effective_stiffness, true);
+  }
+
+
+  std::unique_ptr<TrilinosWrappers::SolverDirect>
+  SpherePlateSetup::direct_solver_of(const TrilinosWrappers::SparseMatrix &matrix,
+                                     const bool say_which)
+  {
     // "auto": the faster solver measured for the run's kind
     // (doc/results/fem-model.md, "Parallel"): KLU's back-substitution on one
     // rank when the steps iterate on the factorisation (an elastic-plastic
@@ -536,15 +544,17 @@ namespace impact_fem
         const bool one_rank =
           Utilities::MPI::n_mpi_processes(mpi_communicator) == 1;
         solver = plastic && one_rank ? "Amesos_Klu" : "Amesos_Mumps";
-        pcout << "  Solver/Direct solver = " << solver << "  (auto: "
-              << (plastic ? "an elastic-plastic body" : "elastic bodies")
-              << ", " << (one_rank ? "one rank" : "several ranks") << ")"
-              << std::endl;
+        if (say_which)
+          pcout << "  Solver/Direct solver = " << solver << "  (auto: "
+                << (plastic ? "an elastic-plastic body" : "elastic bodies")
+                << ", " << (one_rank ? "one rank" : "several ranks") << ")"
+                << std::endl;
       }
-    direct_solver = std::make_unique<TrilinosWrappers::SolverDirect>(
+    auto factorisation = std::make_unique<TrilinosWrappers::SolverDirect>(
       solver_control,
       TrilinosWrappers::SolverDirect::AdditionalData(false, solver));
-    direct_solver->initialize(effective_stiffness);
+    factorisation->initialize(matrix);
+    return factorisation;
   }
 
 

@@ -164,10 +164,28 @@ namespace impact_fem
     setup_dynamic_state();
     void
     factorize_effective_stiffness();
+    /// K + (kappa / dt^2) M + (delta / dt) C + the Maxwell arms' tangent.
+    void
+    assemble_effective_stiffness(const double                    dt,
+                                 TrilinosWrappers::SparseMatrix &matrix) const;
+    /// The factorisation and contact influence of the sub-steps at contact
+    /// entry (Time integration/Sub-steps at contact entry).
+    void
+    setup_entry_sub_steps();
     void
     set_initial_conditions();
+    /// The equation of the next step (of the stepper's current length)
+    /// solved, with contact; nothing accepted yet.
     void
-    solve_time_step();
+    solve_step_equation(VectorType &displacement);
+    /// The state advanced to @p displacement, the internal variables
+    /// committed.
+    void
+    accept_step(const VectorType &displacement);
+    /// One step, or its sub-steps if a contact node entered in it; each
+    /// postprocessed.
+    void
+    take_time_step();
     /// The step of plastic bodies: iterations of solve_linear_step.
     void
     solve_nonlinear_step(const VectorType &rhs, VectorType &displacement);
@@ -213,6 +231,16 @@ namespace impact_fem
     /// as this run's when it asks for none; @p reason says why.
     EnergyRefinement
     next_energy_refinement(std::string &reason) const;
+
+    /// Sub-steps at contact entry: their number (1: none), effective
+    /// matrix, factorisation and contact influence, and the steps divided.
+    unsigned int                                    entry_sub_steps = 1;
+    std::unique_ptr<TrilinosWrappers::SparseMatrix> entry_stiffness;
+    std::unique_ptr<TrilinosWrappers::SolverDirect> entry_solver;
+    MortarContact                                   entry_contact;
+    unsigned int                                    entry_steps_divided = 0;
+    /// The last sub-steps changed the active set: divide the next step too.
+    bool divide_next_step = false;
 
     double end_time         = 0;
     double separation_time  = -1;

@@ -244,6 +244,11 @@ namespace impact_fem
     /// The direct solver of effective_stiffness.
     void
     factorize();
+    /// A factorisation of @p matrix by "Solver/Direct solver" ("auto" said
+    /// on the log if @p say_which); @p matrix must outlive it.
+    std::unique_ptr<TrilinosWrappers::SolverDirect>
+    direct_solver_of(const TrilinosWrappers::SparseMatrix &matrix,
+                     const bool                            say_which);
     void
     setup_contact();
     /// The internal variables, relaxed, on the displacement ghosted_u.

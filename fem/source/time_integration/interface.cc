@@ -37,6 +37,29 @@ namespace impact_fem
 
 
     void
+    Interface::begin_sub_steps(const unsigned int n)
+    {
+      Assert(n >= 1, ExcMessage("at least one sub-step"));
+      u_start   = u;
+      v_start   = v;
+      t_start   = t;
+      full_step = dt;
+      dt        = full_step / n;
+      past_for_sub_steps(full_step);
+    }
+
+
+    void
+    Interface::end_sub_steps()
+    {
+      dt = full_step;
+      // The end of the step exactly, not t_start plus n rounded sub-steps.
+      t = t_start + full_step;
+      past_after_sub_steps(u_start, v_start);
+    }
+
+
+    void
     declare_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Time integration");

@@ -69,6 +69,22 @@ namespace impact_fem
       void
       advance(const VectorType &new_displacement);
 
+      /**
+       * Take the next step of length dt as @p n sub-steps of dt / n (n >= 1):
+       * the step becomes dt / n and the scheme's past is rebuilt for it from
+       * the state at the start (a multistep scheme's values at t - dt / n,
+       * interpolated to third order in dt / n from its past at t - dt). The
+       * caller takes n steps with the effective matrix of dt / n, then calls
+       * end_sub_steps().
+       */
+      void
+      begin_sub_steps(const unsigned int n);
+
+      /// Back to the step dt at the time reached by the n sub-steps, the
+      /// scheme's past the exact state at the start of the sub-steps.
+      void
+      end_sub_steps();
+
       double
       mass_coefficient() const
       {
@@ -122,10 +138,28 @@ namespace impact_fem
       virtual void
       update(const VectorType &new_displacement) = 0;
 
+      /// The past rebuilt for sub-steps dt, the state (u, v, a) at t
+      /// unchanged and the past made for the step @p full_dt.
+      virtual void
+      past_for_sub_steps(const double /*full_dt*/)
+      {}
+
+      /// The past after the sub-steps, the step dt again: @p u_start and
+      /// @p v_start are the state at t - dt (the start of the sub-steps).
+      virtual void
+      past_after_sub_steps(const VectorType & /*u_start*/,
+                           const VectorType & /*v_start*/)
+      {}
+
       VectorType   u, v, a;
       double       dt   = 0;
       double       t    = 0;
       unsigned int step = 0;
+
+    private:
+      // The state at the start of the sub-steps and the step they divide.
+      VectorType u_start, v_start;
+      double     t_start = 0, full_step = 0;
     };
 
 
