@@ -81,6 +81,10 @@ namespace impact_fem
                                mesh.automatic_size[0];
     if (step_sized_for_energy)
       energy_refinement.step = refinement.step;
+    sub_steps_sized_for_energy =
+      step_sized_for_energy && parameters.entry_sub_steps_automatic;
+    if (sub_steps_sized_for_energy)
+      energy_refinement.entry_sub_steps = refinement.entry_sub_steps;
     if (spacing_sized_for_energy && refinement.contact_spacing_halvings > 0)
       {
         energy_refinement.contact_spacing_halvings =
@@ -110,6 +114,29 @@ namespace impact_fem
            parameters.steps_per_contact_time * energy_refinement.step,
            parameters.steps_per_contact_time_automatic,
            rule.str()});
+      }
+    if (impact)
+      {
+        std::string rule =
+          "1, unless the step's refinement for the energy balance is capped "
+          "at " +
+          as_written(
+            discretisation::AutomaticDiscretisation::maximum_step_refinement) +
+          " times: then as many as take the contact activation's work to " +
+          as_written(discretisation::AutomaticDiscretisation::
+                       capped_activation_fraction) +
+          " of the target";
+        if (energy_refinement.entry_sub_steps > 1)
+          rule +=
+            "; " + std::to_string(energy_refinement.entry_sub_steps) + " here";
+        discretisation_choice.entries.push_back(
+          {"Time integration/Sub-steps at contact entry",
+           "1",
+           double(sub_steps_sized_for_energy ?
+                    energy_refinement.entry_sub_steps :
+                    parameters.entry_sub_steps),
+           parameters.entry_sub_steps_automatic,
+           rule});
       }
     describe_bodies();
     if (impact)
@@ -162,14 +189,21 @@ namespace impact_fem
         energy_refinement,
         balance,
         activation,
-        spacing_sized_for_energy && mesh.contact_surface_refinements < 6);
+        spacing_sized_for_energy && mesh.contact_surface_refinements < 6,
+        sub_steps_sized_for_energy);
     std::ostringstream why;
     why << std::setprecision(3) << "the energy balance ends " << balance
         << " off (target " << AutomaticDiscretisation::energy_balance_target
         << "), of which the contact activation " << activation << ": ";
     if (next.step != energy_refinement.step)
-      why << "the automatic step is made " << next.step
-          << " times finer than the rule's";
+      {
+        why << "the automatic step is made " << next.step
+            << " times finer than the rule's";
+        if (next.entry_sub_steps != energy_refinement.entry_sub_steps)
+          why << " (the most it is made), and the steps in which the "
+                 "contact's active set changes are taken as "
+              << next.entry_sub_steps << " sub-steps";
+      }
     else if (next.contact_spacing_halvings !=
              energy_refinement.contact_spacing_halvings)
       why << "the automatic contact nodes are made twice as dense";
@@ -268,11 +302,15 @@ namespace impact_fem
   void
   ImpactProblem::setup_entry_sub_steps()
   {
-    entry_sub_steps = parameters.entry_sub_steps;
-    bool maxwell_arms = material_of(sphere).internal_tangent(1).norm() > 0;
+    entry_sub_steps = sub_steps_sized_for_energy ?
+                        energy_refinement.entry_sub_steps :
+                        parameters.entry_sub_steps;
+    bool maxwell_arms =
+      material_of(body_ids::sphere).internal_tangent(1).norm() > 0;
     if (!parameters.rigid_plate)
       maxwell_arms =
-        maxwell_arms || material_of(plate).internal_tangent(1).norm() > 0;
+        maxwell_arms ||
+        material_of(body_ids::plate).internal_tangent(1).norm() > 0;
     if (entry_sub_steps > 1 && maxwell_arms)
       {
         // The Maxwell arms' tangent and history force are made for one
@@ -378,7 +416,7 @@ namespace impact_fem
       return changed;
     };
     Vector<double> start_pressures = pressures;
-    VectorType displacement(locally_owned_dofs, mpi_communicator);
+    VectorType     displacement(locally_owned_dofs, mpi_communicator);
     if (entry_sub_steps == 1 || !divide_next_step)
       {
         solve_step_equation(displacement);
@@ -654,8 +692,8 @@ namespace impact_fem
     result["contact_nodes"] = contact.n_contact_nodes();
     result["steps"]         = time_stepper->step_number();
     result["steps_divided_at_contact_entry"] = entry_steps_divided;
-    result["ranks"]         = Utilities::MPI::n_mpi_processes(mpi_communicator);
-    result["wall_time"]     = wall_time;
+    result["ranks"]     = Utilities::MPI::n_mpi_processes(mpi_communicator);
+    result["wall_time"] = wall_time;
     return result;
   }
 
@@ -806,6 +844,8 @@ namespace impact_fem
       Utilities::MPI::broadcast(mpi_communicator,
                                 next.contact_spacing_halvings,
                                 0);
+    next.entry_sub_steps =
+      Utilities::MPI::broadcast(mpi_communicator, next.entry_sub_steps, 0);
     reason = Utilities::MPI::broadcast(mpi_communicator, reason, 0);
     // A reason is given exactly when the next run differs from this one.
     if (!reason.empty())

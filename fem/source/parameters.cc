@@ -140,7 +140,8 @@ namespace impact_fem
                       "balance then misses 1e-4 mostly by the contact "
                       "activation's work, the run is made once more with "
                       "(|error| / 8e-5)^(1/1.2) times the steps, at most 8 "
-                      "times (and if it still misses, mostly by the rest of "
+                      "times (where capped, with 'Sub-steps at contact "
+                      "entry'; and if it still misses, mostly by the rest of "
                       "the error, once more with automatic contact nodes "
                       "twice as dense: Mesh/Contact surface refinements).");
     prm.declare_entry("Time step",
@@ -150,13 +151,20 @@ namespace impact_fem
                       "t_c the Hertz contact time; 0 takes it from "
                       "'Steps per contact time'.");
     prm.declare_entry("Sub-steps at contact entry",
-                      "1",
-                      Patterns::Integer(),
-                      "A step in which a contact node starts to carry "
-                      "pressure is taken again as this many sub-steps [-], "
-                      "in [1, 64] (1: never): the work its pressure does "
-                      "over the gap it closes within the step, lost to the "
-                      "contact activation, shrinks with the sub-step.");
+                      "auto",
+                      *discretisation::number_or_auto_pattern(),
+                      "A step in which a contact node starts or stops "
+                      "carrying pressure is taken again as this many "
+                      "sub-steps, and so is the step after it [-], an "
+                      "integer in [1, 64] (1: never): the work the node's "
+                      "pressure does over the gap it closes within the step, "
+                      "lost to the contact activation, falls with the "
+                      "sub-step. 'auto': 1, unless the automatic step's "
+                      "refinement for the energy balance is capped at 8 "
+                      "times: then as many as take the activation's work to "
+                      "0.4 of the balance's target (the run's log and "
+                      "summary say how many). Not with Maxwell arms, whose "
+                      "tangent is made for one step length.");
     prm.declare_entry("Time after separation",
                       "0.1",
                       Patterns::Double(),
@@ -355,17 +363,25 @@ namespace impact_fem
     scheme                = prm.get("Scheme");
     prescribed_time_step  = prm.get_double("Time step");
     time_after_separation = prm.get_double("Time after separation");
-    entry_sub_steps       = prm.get_integer("Sub-steps at contact entry");
-    maximum_time          = prm.get_double("Maximum time");
+    const double sub_steps =
+      discretisation::number_or_auto(prm,
+                                     "Sub-steps at contact entry",
+                                     "Time integration/Sub-steps at contact "
+                                     "entry",
+                                     1,
+                                     entry_sub_steps_automatic);
+    maximum_time = prm.get_double("Maximum time");
     prm.leave_subsection();
     AssertThrow(prescribed_time_step >= 0,
                 ExcMessage("Time integration/Time step must not be negative, "
                            "got " +
                            text(prescribed_time_step) + " s."));
-    AssertThrow(entry_sub_steps >= 1 && entry_sub_steps <= 64,
+    AssertThrow(sub_steps >= 1 && sub_steps <= 64 &&
+                  sub_steps == std::floor(sub_steps),
                 ExcMessage("Time integration/Sub-steps at contact entry must "
-                           "lie in [1, 64], got " +
-                           std::to_string(entry_sub_steps) + "."));
+                           "be 'auto' or an integer in [1, 64], got " +
+                           text(sub_steps) + "."));
+    entry_sub_steps = static_cast<unsigned int>(sub_steps);
     AssertThrow(time_after_separation >= 0 && time_after_separation <= 10,
                 ExcMessage("Time integration/Time after separation must lie "
                            "in [0, 10], got " +

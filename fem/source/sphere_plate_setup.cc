@@ -528,8 +528,9 @@ namespace impact_fem
 
 
   std::unique_ptr<TrilinosWrappers::SolverDirect>
-  SpherePlateSetup::direct_solver_of(const TrilinosWrappers::SparseMatrix &matrix,
-                                     const bool say_which)
+  SpherePlateSetup::direct_solver_of(
+    const TrilinosWrappers::SparseMatrix &matrix,
+    const bool                            say_which)
   {
     // "auto": the faster solver measured for the run's kind
     // (doc/results/fem-model.md, "Parallel"): KLU's back-substitution on one

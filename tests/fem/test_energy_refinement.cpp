@@ -25,7 +25,7 @@ EnergyRefinement refined_step(const double factor) {
 /// with @p activation of it, its contact nodes placed by the rule.
 EnergyRefinement next_of(const EnergyRefinement& current, const double balance,
                          const double activation) {
-  return Rule::next_refinement_for_energy(current, balance, activation, true);
+  return Rule::next_refinement_for_energy(current, balance, activation, true, true);
 }
 
 void expect_refinement(const EnergyRefinement& got, const double step,
@@ -61,7 +61,7 @@ TEST(EnergyRefinement, RefinedRunMissedByTheRestHalvesTheSpacing) {
 
 TEST(EnergyRefinement, ContactNodesTheScenarioPlacedAreKept) {
   const EnergyRefinement next =
-      Rule::next_refinement_for_energy(refined_step(7.23), -1.59e-4, -4.8e-5, false);
+      Rule::next_refinement_for_energy(refined_step(7.23), -1.59e-4, -4.8e-5, false, true);
   expect_refinement(next, 7.23, 0u);
 }
 
@@ -120,4 +120,54 @@ TEST(EnergyRefinement, NonFiniteInputIsKept) {
       expect_refinement(next, current.step, 0u);
     }
   }
+}
+
+// C11000 annealed on AISI 1006 at 5 m/s, the rule's step: -1.20e-3, of which
+// the activation -1.08e-3. The factor the balance asks for, (1.2e-3 /
+// 8e-5)^(1/1.2) = 9.6, is capped at 8, and the steps in which the active set
+// changes are divided into ceil(1.08e-3 / (8 * 0.4 * 1e-4)) = 4 sub-steps.
+TEST(EnergyRefinement, CappedStepComesWithSubStepsAtContactEntry) {
+  const EnergyRefinement next = next_of(first_run, -1.20e-3, -1.08e-3);
+  EXPECT_EQ(next.step, 8);
+  EXPECT_EQ(next.entry_sub_steps, 4u);
+  EXPECT_EQ(next.contact_spacing_halvings, 0u);
+  // At 2 m/s: -1.06e-3, of which -1.03e-3: (13.25)^(1/1.2) = 8.6, capped.
+  EXPECT_EQ(next_of(first_run, -1.06e-3, -1.03e-3).entry_sub_steps, 4u);
+}
+
+// A factor within the cap (52100 on 1006 at 5 m/s: 7.23) asks for none.
+TEST(EnergyRefinement, StepWithinTheCapTakesNoSubSteps) {
+  EXPECT_EQ(next_of(first_run, -8.60e-4, -8.12e-4).entry_sub_steps, 1u);
+  // Exactly at the cap's edge: (|balance| / 8e-5)^(1/1.2) = 8.
+  const double edge = 8e-5 * std::pow(8., 1.2);
+  EXPECT_EQ(Rule::entry_sub_steps_for_energy(-edge, -edge), 1u);
+  EXPECT_GT(Rule::entry_sub_steps_for_energy(-1.01 * edge, -1.01 * edge), 1u);
+}
+
+// Sub-steps the scenario gave are its own: the rule asks for none.
+TEST(EnergyRefinement, SubStepsTheScenarioGaveAreKept) {
+  const EnergyRefinement next =
+      Rule::next_refinement_for_energy(first_run, -1.20e-3, -1.08e-3, true, false);
+  EXPECT_EQ(next.step, 8);
+  EXPECT_EQ(next.entry_sub_steps, 1u);
+}
+
+// Made once: the run with the capped step and its sub-steps, still missing
+// mostly by the activation, is kept.
+TEST(EnergyRefinement, RunWithSubStepsMissedByTheActivationIsKept) {
+  EnergyRefinement current = refined_step(8);
+  current.entry_sub_steps = 4;
+  const EnergyRefinement next = next_of(current, -2.0e-4, -1.5e-4);
+  EXPECT_EQ(next.step, 8);
+  EXPECT_EQ(next.entry_sub_steps, 4u);
+  EXPECT_EQ(next.contact_spacing_halvings, 0u);
+}
+
+// An activation far beyond the target asks for at most 64 sub-steps; a
+// non-finite one for none.
+TEST(EnergyRefinement, SubStepsAreBounded) {
+  EXPECT_EQ(Rule::entry_sub_steps_for_energy(-1, -1), Rule::maximum_entry_sub_steps);
+  EXPECT_EQ(Rule::maximum_entry_sub_steps, 64u);
+  EXPECT_EQ(Rule::entry_sub_steps_for_energy(std::nan(""), -1e-3), 1u);
+  EXPECT_EQ(Rule::entry_sub_steps_for_energy(-1e-3, std::numeric_limits<double>::infinity()), 1u);
 }

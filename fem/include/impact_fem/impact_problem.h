@@ -223,8 +223,10 @@ namespace impact_fem
     /// impact whose step count is automatic) and its contact nodes (also
     /// placed by the rule), and the refinement this run makes (its step
     /// factor 1 where the step is not sized for the energy balance).
-    bool             step_sized_for_energy    = false;
-    bool             spacing_sized_for_energy = false;
+    bool step_sized_for_energy    = false;
+    bool spacing_sized_for_energy = false;
+    /// ... and its sub-steps at contact entry (left "auto").
+    bool             sub_steps_sized_for_energy = false;
     EnergyRefinement energy_refinement;
 
     /// The refinement the energy balance asks for the next run, the same

@@ -124,8 +124,10 @@ namespace impact_fem
     double prescribed_time_step  = 0; ///< [s], 0: from steps_per_contact_time
     double time_after_separation = 0; ///< fraction of the contact time [-]
     /// Time integration/Sub-steps at contact entry [-], 1: none
-    long int entry_sub_steps = 1;
-    double maximum_time          = 0; ///< [s], 0: automatic
+    unsigned int entry_sub_steps = 1;
+    /// Whether it was "auto" (the energy balance's rule may raise it).
+    bool   entry_sub_steps_automatic = true;
+    double maximum_time              = 0; ///< [s], 0: automatic
 
     std::string direct_solver;
     std::string output_directory;

@@ -63,6 +63,28 @@ namespace impact_fem
     }
 
 
+    unsigned int
+    AutomaticDiscretisation::entry_sub_steps_for_energy(
+      const double balance,
+      const double activation_work)
+    {
+      if (step_refinement_for_energy(balance, activation_work) <
+          maximum_step_refinement)
+        return 1;
+      const double design = energy_design_fraction * energy_balance_target;
+      // The factor the balance asks for, had it no cap.
+      if (std::pow(std::abs(balance) / design, 1 / activation_work_order) <=
+          maximum_step_refinement)
+        return 1;
+      const double n =
+        std::ceil(std::abs(activation_work) /
+                  (maximum_step_refinement * capped_activation_fraction *
+                   energy_balance_target));
+      return static_cast<unsigned int>(
+        std::clamp(n, 1., double(maximum_entry_sub_steps)));
+    }
+
+
     bool
     AutomaticDiscretisation::contact_spacing_halving_for_energy(
       const double balance,
@@ -81,12 +103,18 @@ namespace impact_fem
       const EnergyRefinement &current,
       const double            balance,
       const double            activation_work,
-      const bool              spacing_refinable)
+      const bool              spacing_refinable,
+      const bool              sub_steps_refinable)
     {
       EnergyRefinement next = current;
       const double step = step_refinement_for_energy(balance, activation_work);
       if (current.step == 1 && step > 1)
-        next.step = step;
+        {
+          next.step = step;
+          if (sub_steps_refinable)
+            next.entry_sub_steps =
+              entry_sub_steps_for_energy(balance, activation_work);
+        }
       // Only after a finer step: the rest it leaves is then the damping of
       // what the nodes entering contact excite, which denser nodes reduce;
       // a rest that dominates from the first run has another cause.

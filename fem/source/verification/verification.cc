@@ -88,10 +88,11 @@ namespace impact_fem
         double       hc;          ///< contact element size, "auto" resolved
         unsigned int surface_refinements; ///< "auto" resolved
         double       hmax;
-        double       g;      ///< growth factor
-        double       across; ///< elements across the plate thickness
-        double       dt;     ///< time step, 0: steps per contact time
-        double       n;      ///< steps per contact time, "auto" resolved
+        double       g;             ///< growth factor
+        double       across;        ///< elements across the plate thickness
+        double       dt;            ///< time step, 0: steps per contact time
+        double       n;             ///< steps per contact time, "auto" resolved
+        double       sub_steps = 1; ///< sub-steps at contact entry, as run
       };
 
 
@@ -155,8 +156,9 @@ namespace impact_fem
         fine.g    = get_number(prm, "Mesh", "Growth factor");
         fine.across =
           get_number(prm, "Mesh", "Elements across the plate thickness");
-        fine.dt = get_number(prm, "Time integration", "Time step");
-        fine.n  = scenario.steps_per_contact_time;
+        fine.dt        = get_number(prm, "Time integration", "Time step");
+        fine.n         = scenario.steps_per_contact_time;
+        fine.sub_steps = scenario.entry_sub_steps;
         AssertThrow(fine.dt > 0 || fine.n / (fine.r * fine.r) >= 10,
                     ExcMessage("Verification: the coarsest level would have "
                                "fewer than 10 steps per contact time; raise "
@@ -254,6 +256,10 @@ namespace impact_fem
                      "Time integration",
                      "Steps per contact time",
                      fine.n / level.scale);
+        set_number(prm,
+                   "Time integration",
+                   "Sub-steps at contact entry",
+                   fine.sub_steps);
         prm.enter_subsection("Output");
         prm.set("Directory", level.directory);
         prm.leave_subsection();
@@ -297,6 +303,7 @@ namespace impact_fem
           {"Mesh", "Contact surface refinements"},
           {"Time integration", "Time step"},
           {"Time integration", "Steps per contact time"},
+          {"Time integration", "Sub-steps at contact entry"},
           {"Output", "Directory"}};
 
         ParameterHandler        &prm;
@@ -518,6 +525,13 @@ namespace impact_fem
                                              "Time integration/Steps per "
                                              "contact time",
                                              fine.n);
+          // The same sub-steps at contact entry (of each level's step).
+          if (index == 0)
+            fine.sub_steps =
+              discretisation_entry_of(levels[0]["summary"],
+                                      "Time integration/Sub-steps at "
+                                      "contact entry",
+                                      fine.sub_steps);
           if (index == 0)
             fine.surface_refinements = static_cast<unsigned int>(
               discretisation_entry_of(levels[0]["summary"],

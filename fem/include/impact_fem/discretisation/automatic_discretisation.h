@@ -68,6 +68,15 @@ namespace impact_fem
       static constexpr double activation_work_order = 1.2;
       /// The most the automatic step count is raised for the energy balance.
       static constexpr double maximum_step_refinement = 8;
+      /// The share of energy_balance_target left to the contact activation
+      /// where the step's factor is capped: those are the most plastic
+      /// impacts, whose rest of the error took up to 0.64 of the target with
+      /// contact nodes at a / 320 (C11000 annealed on AISI 1006 at 5 m/s,
+      /// doc/results/fem-benchmarks.md).
+      static constexpr double capped_activation_fraction = 0.4;
+      /// The most sub-steps at contact entry the rule asks for (the entry's
+      /// own bound).
+      static constexpr unsigned int maximum_entry_sub_steps = 64;
 
       /// How a run's automatic step and contact nodes are refined for its
       /// energy balance: each at most once (run_impact() makes a run at
@@ -78,6 +87,9 @@ namespace impact_fem
         double step = 1;
         /// Halvings of the automatic contact nodes' spacing: 0 or 1.
         unsigned int contact_spacing_halvings = 0;
+        /// Sub-steps of the steps in which the contact's active set
+        /// changes (Time integration/Sub-steps at contact entry), >= 1.
+        unsigned int entry_sub_steps = 1;
       };
 
       /**
@@ -124,6 +136,23 @@ namespace impact_fem
                                          double activation_work);
 
       /**
+       * The sub-steps at contact entry a run asks for together with its
+       * step factor, from the same @p balance and @p activation_work as
+       * step_refinement_for_energy(): 1 unless that factor is capped at
+       * maximum_step_refinement; then as many as take the activation work
+       * to capped_activation_fraction of the target, it falling as the step
+       * (by maximum_step_refinement) and as the sub-step (by n):
+       *   n = ceil(|activation_work| / (maximum_step_refinement
+       *            capped_activation_fraction energy_balance_target)),
+       * in [1, maximum_entry_sub_steps]. Measured: the activation work fell
+       * as dt^1.0 over the capped factor (C11000 annealed on AISI 1006 at 5
+       * m/s), and as 1 / n with n = 4 and 8 sub-steps (the same case on a
+       * coarse mesh: by 4.0 and 8.2); doc/results/fem-benchmarks.md.
+       */
+      static unsigned int
+      entry_sub_steps_for_energy(double balance, double activation_work);
+
+      /**
        * The refinement of a run's next try, from the refinement @p current
        * it ran with and its @p balance and @p activation_work (as
        * step_refinement_for_energy()); @p current itself when the run is
@@ -132,13 +161,16 @@ namespace impact_fem
        * misses mostly by the rest, the contact nodes
        * (contact_spacing_halving_for_energy(); only where
        * @p spacing_refinable: the rule placed them and one more refinement
-       * is allowed).
+       * is allowed). A capped step comes with sub-steps at contact entry
+       * (entry_sub_steps_for_energy(); only where @p sub_steps_refinable:
+       * the scenario left them "auto").
        */
       static EnergyRefinement
       next_refinement_for_energy(const EnergyRefinement &current,
                                  double                  balance,
                                  double                  activation_work,
-                                 bool                    spacing_refinable);
+                                 bool                    spacing_refinable,
+                                 bool                    sub_steps_refinable);
 
       /// The sizes of the rule for @p expected on a sphere of radius R [m]
       /// whose Hertz contact time is @p hertz_contact_time [s] (the time
