@@ -85,6 +85,32 @@ for name in QUANTITIES:
     checks.check(abs(q["gci_fine"] - q["gci_fine_absolute"] / abs(q["fine"])) < 1e-15,
                  f"{name}: relative GCI = absolute / |fine|")
 
+# A coarser level made before with the same entries and complete is kept (a verification stopped
+# in its last level keeps the others): the same --verify again makes only the fine level, with the
+# same verification.json; a level that did not finish, or whose entries changed, is made again.
+again_command = [binary, STEEL_PRM, "--set", "Output/Directory=" + directory, "--verify"] + \
+    sum((["--set", f"{k}={x}"] for k, x in SMALL.items()), [])
+stamps = [os.stat(f"{directory}/verification/level{k}/summary.json").st_mtime_ns for k in (1, 2)]
+again = subprocess.run(again_command, capture_output=True, text=True)
+with open(f"{directory}/verification.json") as f:
+    v_again = json.load(f)
+checks.check(again.returncode == 0 and all(f"verification: level {k} kept" in again.stdout
+                                           for k in (1, 2))
+             and [os.stat(f"{directory}/verification/level{k}/summary.json").st_mtime_ns
+                  for k in (1, 2)] == stamps
+             and v_again["quantities"] == v["quantities"],
+             "the same --verify again keeps both coarser levels, and the same result")
+os.remove(f"{directory}/verification/level2/summary.json")
+partial = subprocess.run(again_command, capture_output=True, text=True)
+checks.check(partial.returncode == 0 and "verification: level 1 kept" in partial.stdout
+             and "verification: level 2 kept" not in partial.stdout
+             and os.path.exists(f"{directory}/verification/level2/summary.json"),
+             "a level without its summary is made again, the other kept")
+changed = subprocess.run(again_command + ["--set", "Time integration/Steps per contact time=160"],
+                         capture_output=True, text=True)
+checks.check(changed.returncode == 0 and "kept" not in changed.stdout,
+             "a changed step makes both coarser levels again")
+
 # A campaign verifies every run and links the files; a restart skips them.
 campaign = f"{work}/verification_campaign"
 result = verify(campaign, SMALL, ("--velocities", "1,2"))

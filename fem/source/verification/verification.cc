@@ -1,7 +1,9 @@
 #include <impact_fem/discretisation/automatic_discretisation.h>
 #include <impact_fem/parameters.h>
 #include <impact_fem/as_written.h>
+#include <impact_fem/campaign/run_identity.h>
 #include <impact_fem/impact_problem.h>
+#include <impact_fem/result_files.h>
 #include <impact_fem/mesh/sphere_plate_mesh.h>
 #include <impact_fem/verification/grid_convergence.h>
 #include <impact_fem/verification/verification.h>
@@ -49,6 +51,16 @@ namespace impact_fem
         std::ifstream in(name);
         AssertThrow(in, ExcMessage("Verification: cannot read " + name + "."));
         return nlohmann::json::parse(in);
+      }
+
+      /// The text of a file, empty if it cannot be read.
+      std::string
+      text_of(const std::string &name)
+      {
+        std::ifstream      in(name);
+        std::ostringstream text;
+        text << in.rdbuf();
+        return in ? text.str() : std::string();
       }
 
       /// Set "Section/Entry" to a number.
@@ -323,7 +335,47 @@ namespace impact_fem
       {
         if (level.index > 0)
           set_level_parameters(prm, fine, level);
-        if (Utilities::MPI::this_mpi_process(comm) == 0)
+        // A coarser level made before with the same entries (its
+        // parameters.prm, the run identity of a campaign run) and complete
+        // is kept: a verification stopped in its last level keeps the
+        // others, and its levels can be made in separate sessions.
+        const bool         root = Utilities::MPI::this_mpi_process(comm) == 0;
+        std::ostringstream parameters;
+        prm.print_parameters(parameters, ParameterHandler::ShortPRM);
+        const std::string prm_file = level.directory + "/parameters.prm";
+        bool              kept     = false;
+        if (level.index > 0 && root)
+          try
+            {
+              kept = run_identity::of(text_of(prm_file)) ==
+                       run_identity::of(parameters.str()) &&
+                     read_json(level.directory + "/summary.json")
+                       .value(result_files::complete_key, false);
+            }
+          catch (...)
+            {
+              kept = false;
+            }
+        kept = Utilities::MPI::broadcast(comm, kept, 0);
+        if (kept)
+          {
+            if (root)
+              log << "verification: level " << level.index
+                  << " kept: made before with the same entries ("
+                  << level.directory << ")" << std::endl;
+            changed.restore();
+            return;
+          }
+        if (level.index > 0 && root)
+          {
+            std::filesystem::create_directories(level.directory);
+            std::filesystem::remove(level.directory + "/summary.json");
+            const std::string temporary = prm_file + ".tmp";
+            std::ofstream(temporary) << parameters.str();
+            std::filesystem::rename(temporary, prm_file);
+          }
+        MPI_Barrier(comm);
+        if (root)
           log << "verification: level " << level.index
               << (fine.nested ?
                     " (contact refinements " +
