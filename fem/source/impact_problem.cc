@@ -10,10 +10,12 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
+#include <limits>
 #include <sstream>
 
 namespace impact_fem
@@ -89,6 +91,7 @@ namespace impact_fem
       {
         energy_refinement.contact_spacing_halvings =
           refinement.contact_spacing_halvings;
+        energy_refinement.spacing_for_force = refinement.spacing_for_force;
         mesh.contact_surface_refinements += refinement.contact_spacing_halvings;
         for (auto &entry : discretisation_choice.entries)
           if (entry.path == "Mesh/Contact surface refinements")
@@ -96,8 +99,11 @@ namespace impact_fem
               entry.value = mesh.contact_surface_refinements;
               entry.rule +=
                 "; +" + std::to_string(refinement.contact_spacing_halvings) +
-                " here: the energy balance missed mostly by the "
-                "integrator's damping";
+                (refinement.spacing_for_force ?
+                   " here: a contact node entering at the peak added more "
+                   "than the target's share of the force" :
+                   " here: the energy balance missed mostly by the "
+                   "integrator's damping");
             }
       }
     if (impact && parameters.prescribed_time_step == 0)
@@ -184,28 +190,47 @@ namespace impact_fem
     const double balance = history["energy_error"].back();
     const double activation =
       history["contact_work"].back() / history["kinetic_energy"].front();
+    // At the largest force, as ContactQuantities recorded it; only where a
+    // body is expected to yield: an elastic edge's pressure falls to zero,
+    // so that a node enters carrying none and the force does not step.
+    const auto  &forces = history[result_files::contact_force_dataset];
+    const double node_force =
+      discretisation_choice.expected.velocity_ratio > 1 ?
+        AutomaticDiscretisation::entering_node_force(
+          history.profile("contact_node_radius"),
+          history.profile("pressure_at_force_max"),
+          forces.empty() ? 0. :
+                           *std::max_element(forces.begin(), forces.end())) :
+        std::numeric_limits<double>::quiet_NaN();
     const EnergyRefinement next =
       AutomaticDiscretisation::next_refinement_for_energy(
         energy_refinement,
         balance,
         activation,
+        node_force,
         spacing_sized_for_energy && mesh.contact_surface_refinements < 6,
         sub_steps_sized_for_energy);
     std::ostringstream why;
     why << std::setprecision(3) << "the energy balance ends " << balance
         << " off (target " << AutomaticDiscretisation::energy_balance_target
-        << "), of which the contact activation " << activation << ": ";
+        << "), of which the contact activation " << activation
+        << "; a contact node entering at the peak adds " << 100 * node_force
+        << " % of the force (target "
+        << 100 * AutomaticDiscretisation::entering_node_force_target << " %): ";
+    const bool denser = next.contact_spacing_halvings !=
+                        energy_refinement.contact_spacing_halvings;
     if (next.step != energy_refinement.step)
       {
         why << "the automatic step is made " << next.step
             << " times finer than the rule's";
         if (next.entry_sub_steps != energy_refinement.entry_sub_steps)
-          why << " (the most it is made), and the steps in which the "
+          why << " (the most it is made), the steps in which the "
                  "contact's active set changes are taken as "
               << next.entry_sub_steps << " sub-steps";
+        if (denser)
+          why << ", the automatic contact nodes are made twice as dense";
       }
-    else if (next.contact_spacing_halvings !=
-             energy_refinement.contact_spacing_halvings)
+    else if (denser)
       why << "the automatic contact nodes are made twice as dense";
     else
       return next;
@@ -846,6 +871,8 @@ namespace impact_fem
                                 0);
     next.entry_sub_steps =
       Utilities::MPI::broadcast(mpi_communicator, next.entry_sub_steps, 0);
+    next.spacing_for_force =
+      Utilities::MPI::broadcast(mpi_communicator, next.spacing_for_force, 0);
     reason = Utilities::MPI::broadcast(mpi_communicator, reason, 0);
     // A reason is given exactly when the next run differs from this one.
     if (!reason.empty())

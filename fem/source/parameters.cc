@@ -143,7 +143,9 @@ namespace impact_fem
                       "times (where capped, with 'Sub-steps at contact "
                       "entry'; and if it still misses, mostly by the rest of "
                       "the error, once more with automatic contact nodes "
-                      "twice as dense: Mesh/Contact surface refinements).");
+                      "twice as dense, unless a contact node's force at the "
+                      "peak made them so already: Mesh/Contact surface "
+                      "refinements).");
     prm.declare_entry("Time step",
                       "0",
                       Patterns::Double(),

@@ -8,12 +8,15 @@ A balance missed for another reason is left to the report: a finer step is no re
 Cases (fem/scenarios/plastic_on_rigid.prm, the mesh and the step "auto", and your_impact.prm):
 1. a hardened 52100 ball on a rigid flat at 15 m/s (V/V_y about 66), Q1 elements, verified:
    the rule's step loses about 1.6e-4 of the impact energy to the contact activation, the run is
-   made again 2.4 times finer, and the coarser levels' steps follow the fine level's refined
-   count (r and r^2 times coarser), not the rule's;
+   made again 2.4 times finer; a node entering at the peak adds more than 1 % of the force at
+   a / 160 (its contact is plastic to the edge), so that run has its contact nodes at a / 320;
+   the coarser levels' steps follow the fine level's refined count (r and r^2 times coarser),
+   not the rule's, and they keep its contact nodes;
 2. AISI 304 on 6061-T6 at 2 m/s on contact elements of a / 10 (no surface refinement): the
    balance ends about 1.2e-3 off, the activation only a fifth of it: not refined.
 argv: impact-fem, work directory, mpiexec."""
 import json
+import math
 import os
 import re
 import shutil
@@ -31,8 +34,26 @@ AUTO = {"Mesh/Contact element size": "auto", "Mesh/Uniform zone radius": "auto",
         "Time integration/Steps per contact time": "auto"}
 TARGET, DESIGN, ORDER, MOST = 1e-4, 0.8e-4, 1.2, 8
 MESSAGE = re.compile(r"the energy balance ends (\S+) off \(target 0\.0001\), of which the "
-                     r"contact activation (\S+): the automatic step is made (\S+) times finer")
+                     r"contact activation (\S+); a contact node entering at the peak adds \S+ % "
+                     r"of the force \(target 1 %\): the automatic step is made (\S+) times finer")
 STEPS = re.compile(r"Time integration/Steps per contact time = (\S+)")
+NODE_FORCE = re.compile(r"a contact node entering at the peak adds (\S+) % of the force \(target 1 %\): "
+                        r"the automatic step is made \S+ times finer than the rule's, the automatic "
+                        r"contact nodes are made twice as dense")
+REFINEMENTS = re.compile(r"Mesh/Contact surface refinements = (\S+)")
+
+
+def entering_node_force(history):
+    """2 pi r_o dr p_edge / F at the largest force: r_o the outermost loaded node, dr its distance to
+    the next inside, p_edge the mean pressure of the loaded nodes beyond 0.9 r_o."""
+    with h5py.File(history, "r") as f:
+        radius, pressure = f["contact_node_radius"][:], f["pressure_at_force_max"][:]
+        force = f["contact_force"][:].max()
+    nodes = sorted(zip(radius, pressure))
+    k = max(i for i, (_, p) in enumerate(nodes) if p > 0)
+    r_o, dr = nodes[k][0], nodes[k][0] - nodes[k - 1][0]
+    edge = [p for r, p in nodes if r > 0.9 * r_o and p > 0]
+    return 2 * math.pi * r_o * dr * sum(edge) / len(edge) / force
 
 
 def run(scenario, directory, settings, extra=()):
@@ -101,8 +122,25 @@ checks.check(status == "complete"
 checks.check(abs(fine["time_step"] - (time[-1] - time[-2])) <= 1e-6 * fine["time_step"],
              f"the history's step {time[-1] - time[-2]:.6e} s is the summary's "
              f"{fine['time_step']:.6e} s")
+# Its plastic contact carries about its mean pressure up to the edge: at a / 160 a node entering at
+# the peak adds more than 1 % of the force, so the contact nodes are made twice as dense together
+# with the step (one run, not two), and at a / 320 it adds less.
+found = NODE_FORCE.search(log)
+checks.check(found is not None and float(found.group(1)) > 1,
+             "52100 on rigid, 15 m/s: the first run's node force "
+             f"{found.group(1) if found else '(no message)'} % > 1 %: nodes made denser with the step")
+counts = [float(x) for x in REFINEMENTS.findall(log)]
+surface = fine["discretisation"]["entries"]["Mesh/Contact surface refinements"]
+checks.check(counts[:2] == [3, 4] and surface["value"] == 4 and surface["origin"] == "auto"
+             and "+1 here: a contact node entering at the peak" in surface["rule"],
+             f"contact surface refinements {counts[:2]}, summary {surface['value']}: 3, then 4")
+node_force = entering_node_force(os.path.join(directory, "history.h5"))
+checks.check(node_force <= 0.01, f"the kept run's node force {100 * node_force:.3f} % <= 1 %")
 if refined is not None:
     levels = [summary_of(os.path.join(directory, "verification", f"level{k}")) for k in (1, 2)]
+    got = [x["discretisation"]["entries"]["Mesh/Contact surface refinements"]["value"]
+           for x in levels]
+    checks.check(got == [4, 4], f"verified: the levels keep the fine level's refinements: {got}")
     got = [steps_entry(x)["value"] for x in levels]
     checks.check(all(abs(got[k] - refined / 1.5 ** (k + 1)) <= 1e-9 * refined for k in (0, 1))
                  and all(steps_entry(x)["origin"] == "scenario" for x in levels),

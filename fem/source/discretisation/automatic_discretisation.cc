@@ -2,10 +2,12 @@
 #include <impact_fem/discretisation/automatic_discretisation.h>
 
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/numbers.h>
 #include <deal.II/base/utilities.h>
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 namespace impact_fem
@@ -98,15 +100,64 @@ namespace impact_fem
     }
 
 
+    double
+    AutomaticDiscretisation::entering_node_force(
+      const std::vector<double> &node_radius,
+      const std::vector<double> &pressure,
+      const double               force)
+    {
+      if (node_radius.size() != pressure.size() || !(force > 0))
+        return std::numeric_limits<double>::quiet_NaN();
+      std::vector<std::pair<double, double>> nodes;
+      for (std::size_t i = 0; i < node_radius.size(); ++i)
+        nodes.emplace_back(node_radius[i], pressure[i]);
+      std::sort(nodes.begin(), nodes.end());
+      std::size_t outermost = nodes.size();
+      for (std::size_t i = nodes.size(); i-- > 0;)
+        if (nodes[i].second > 0)
+          {
+            outermost = i;
+            break;
+          }
+      if (outermost == nodes.size() || outermost == 0)
+        return 0;
+      const double r_o = nodes[outermost].first;
+      const double dr  = r_o - nodes[outermost - 1].first;
+      double       sum = 0;
+      unsigned int n   = 0;
+      for (const auto &[r, p] : nodes)
+        if (r > (1 - edge_band_fraction) * r_o && p > 0)
+          {
+            sum += p;
+            ++n;
+          }
+      return 2 * numbers::PI * r_o * dr * (sum / n) / force;
+    }
+
+
+    bool
+    AutomaticDiscretisation::contact_spacing_halving_for_force(
+      const double entering_node_force)
+    {
+      return std::isfinite(entering_node_force) &&
+             entering_node_force > entering_node_force_target;
+    }
+
+
     AutomaticDiscretisation::EnergyRefinement
     AutomaticDiscretisation::next_refinement_for_energy(
       const EnergyRefinement &current,
       const double            balance,
       const double            activation_work,
+      const double            entering_node_force,
       const bool              spacing_refinable,
       const bool              sub_steps_refinable)
     {
       EnergyRefinement next = current;
+      const bool       spacing_left =
+        spacing_refinable && current.contact_spacing_halvings == 0;
+      const bool for_force =
+        spacing_left && contact_spacing_halving_for_force(entering_node_force);
       const double step = step_refinement_for_energy(balance, activation_work);
       if (current.step == 1 && step > 1)
         {
@@ -118,10 +169,19 @@ namespace impact_fem
       // Only after a finer step: the rest it leaves is then the damping of
       // what the nodes entering contact excite, which denser nodes reduce;
       // a rest that dominates from the first run has another cause.
-      else if (spacing_refinable && current.step > 1 &&
-               current.contact_spacing_halvings == 0 &&
+      else if (spacing_left && current.step > 1 &&
                contact_spacing_halving_for_energy(balance, activation_work))
-        next.contact_spacing_halvings = 1;
+        {
+          next.contact_spacing_halvings = 1;
+          return next;
+        }
+      // The node's force does not change with the step: denser nodes go
+      // with the first refinement of the step, not a run later.
+      if (for_force)
+        {
+          next.contact_spacing_halvings = 1;
+          next.spacing_for_force        = true;
+        }
       return next;
     }
 
@@ -167,8 +227,10 @@ namespace impact_fem
              number(elements_per_contact_radius *
                     (1u << plastic_contact_surface_refinements)) +
              ") and the contact element size is auto, else 0; one more if "
-             "a run whose step was refined for its energy balance still "
-             "misses " +
+             "a contact node entering at the peak adds more than " +
+             number(100 * entering_node_force_target) +
+             " % of the force, or if a run whose step was refined for its "
+             "energy balance still misses " +
              number(energy_balance_target) +
              ", mostly by the rest of the error (the integrator's damping)";
     }

@@ -50,6 +50,17 @@ namespace impact_fem
   }
 
 
+  const std::vector<double> &
+  History::profile(const std::string &name) const
+  {
+    static const std::vector<double> none;
+    for (const auto &profile : profiles)
+      if (profile.name == name)
+        return profile.values;
+    return none;
+  }
+
+
   std::size_t
   History::n_steps() const
   {

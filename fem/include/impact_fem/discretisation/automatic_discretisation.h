@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include <string>
+#include <vector>
 
 namespace impact_fem
 {
@@ -77,6 +78,18 @@ namespace impact_fem
       /// The most sub-steps at contact entry the rule asks for (the entry's
       /// own bound).
       static constexpr unsigned int maximum_entry_sub_steps = 64;
+      /// The largest force a contact node may add as it enters the contact
+      /// at the peak, per peak force [-]: issue 30's target for the GCI of
+      /// F_max (1 %). Near the peak of a plastic impact the contact radius
+      /// stops growing between two nodes, and a level's F_max holds or
+      /// misses the last node's force: the verified GCI of F_max was 0.9 to
+      /// 1.7 times that force (doc/results/fem-benchmarks.md).
+      static constexpr double entering_node_force_target = 0.01;
+      /// The outer share of the contact radius whose loaded nodes' mean
+      /// pressure stands for the edge's: node to node the edge pressure of a
+      /// plastic contact alternates by about 30 % (0.77 and 1.32 times the
+      /// mean pressure on annealed copper).
+      static constexpr double edge_band_fraction = 0.1;
 
       /// How a run's automatic step and contact nodes are refined for its
       /// energy balance: each at most once (run_impact() makes a run at
@@ -90,6 +103,10 @@ namespace impact_fem
         /// Sub-steps of the steps in which the contact's active set
         /// changes (Time integration/Sub-steps at contact entry), >= 1.
         unsigned int entry_sub_steps = 1;
+        /// Whether the contact nodes were made denser for the force a node
+        /// adds entering the contact (contact_spacing_halving_for_force()),
+        /// not for the energy balance.
+        bool spacing_for_force = false;
       };
 
       /**
@@ -136,6 +153,42 @@ namespace impact_fem
                                          double activation_work);
 
       /**
+       * The force a contact node adds as it enters the contact at the time
+       * of the largest force, per that force [-]: 2 pi r_o dr p_edge /
+       * @p force, with r_o the outermost loaded node's radius, dr its
+       * distance to the next node inside, and p_edge the mean pressure of
+       * the loaded nodes beyond (1 - edge_band_fraction) r_o. @p node_radius
+       * [m] and @p pressure [Pa] are the contact nodes' radii and pressures
+       * at that time (any order, same length), @p force [N] the force then.
+       * A fully plastic contact carries about its mean pressure up to its
+       * edge (p_edge 0.92 to 0.98 of F / (pi r_o^2) on the table's plastic
+       * cases), so that this is about 2 dr / r_o: 1.2 % at a / 160, 0.6 %
+       * at a / 320. An elastic (Hertz) edge's pressure falls to zero, so
+       * that its nodes enter carrying none and its force does not step:
+       * this measure, whose band mean is then still 0.45 of the mean
+       * pressure, means a plastic edge only, and the run applies it only
+       * where a body is expected to yield. 0 with fewer than two loaded
+       * nodes; NaN for inputs of different lengths or a force <= 0.
+       */
+      static double
+      entering_node_force(const std::vector<double> &node_radius,
+                          const std::vector<double> &pressure,
+                          double                     force);
+
+      /**
+       * Whether a run's automatic contact nodes are made twice as dense for
+       * its largest force: when @p entering_node_force (as
+       * entering_node_force() gives it) exceeds entering_node_force_target.
+       * Measured: 1.16 and 1.22 % at a / 160 on annealed copper on AISI
+       * 1006 at 2 and 5 m/s, whose verified GCI of F_max was then 2.0 and
+       * 1.08 %; 0.55 and 0.60 % at a / 320 on AISI 304 on 6061-T6 at 5 m/s
+       * and 52100 on 1006 at 2 m/s, GCI 0.52 and 0.42 %
+       * (doc/results/fem-benchmarks.md). false for a non-finite input.
+       */
+      static bool
+      contact_spacing_halving_for_force(double entering_node_force);
+
+      /**
        * The sub-steps at contact entry a run asks for together with its
        * step factor, from the same @p balance and @p activation_work as
        * step_refinement_for_energy(): 1 unless that factor is capped at
@@ -154,21 +207,25 @@ namespace impact_fem
 
       /**
        * The refinement of a run's next try, from the refinement @p current
-       * it ran with and its @p balance and @p activation_work (as
-       * step_refinement_for_energy()); @p current itself when the run is
-       * kept. Each refinement is made once: first the step
-       * (step_refinement_for_energy()), then, if the refined run still
-       * misses mostly by the rest, the contact nodes
-       * (contact_spacing_halving_for_energy(); only where
-       * @p spacing_refinable: the rule placed them and one more refinement
-       * is allowed). A capped step comes with sub-steps at contact entry
-       * (entry_sub_steps_for_energy(); only where @p sub_steps_refinable:
-       * the scenario left them "auto").
+       * it ran with, its @p balance and @p activation_work (as
+       * step_refinement_for_energy()) and its @p entering_node_force (as
+       * entering_node_force()); @p current itself when the run is kept.
+       * Each refinement is made once: the step
+       * (step_refinement_for_energy()) after the first run; the contact
+       * nodes (only where @p spacing_refinable: the rule placed them and
+       * one more refinement is allowed) together with it when a node's
+       * force asks for it (contact_spacing_halving_for_force()), or after
+       * a refined step when the run still misses mostly by the rest
+       * (contact_spacing_halving_for_energy()), or after a run that meets
+       * its balance when a node's force asks for it. A capped step comes
+       * with sub-steps at contact entry (entry_sub_steps_for_energy();
+       * only where @p sub_steps_refinable: the scenario left them "auto").
        */
       static EnergyRefinement
       next_refinement_for_energy(const EnergyRefinement &current,
                                  double                  balance,
                                  double                  activation_work,
+                                 double                  entering_node_force,
                                  bool                    spacing_refinable,
                                  bool                    sub_steps_refinable);
 

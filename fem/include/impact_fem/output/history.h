@@ -61,6 +61,10 @@ namespace impact_fem
                 const std::string         &description,
                 const std::vector<double> &values);
 
+    /// The profile @p name as last set; empty when it was never set.
+    const std::vector<double> &
+    profile(const std::string &name) const;
+
     std::size_t
     n_steps() const;
 
