@@ -167,8 +167,9 @@ namespace impact_fem
        * that its nodes enter carrying none and its force does not step:
        * this measure, whose band mean is then still 0.45 of the mean
        * pressure, means a plastic edge only, and the run applies it only
-       * where a body is expected to yield. 0 with fewer than two loaded
-       * nodes; NaN for inputs of different lengths or a force <= 0.
+       * where a body is expected to yield. 0 when no node carries
+       * pressure but the innermost; NaN for inputs of different lengths or
+       * a force <= 0.
        */
       static double
       entering_node_force(const std::vector<double> &node_radius,
