@@ -213,10 +213,13 @@ namespace impact_fem
     std::ostringstream why;
     why << std::setprecision(3) << "the energy balance ends " << balance
         << " off (target " << AutomaticDiscretisation::energy_balance_target
-        << "), of which the contact activation " << activation
-        << "; a contact node entering at the peak adds " << 100 * node_force
-        << " % of the force (target "
-        << 100 * AutomaticDiscretisation::entering_node_force_target << " %): ";
+        << "), of which the contact activation " << activation;
+    // Measured only where a body is expected to yield.
+    if (std::isfinite(node_force))
+      why << "; a contact node entering at the peak adds " << 100 * node_force
+          << " % of the force (target "
+          << 100 * AutomaticDiscretisation::entering_node_force_target << " %)";
+    why << ": ";
     const bool denser = next.contact_spacing_halvings !=
                         energy_refinement.contact_spacing_halvings;
     if (next.step != energy_refinement.step)
