@@ -565,10 +565,11 @@ namespace impact_fem
     try
       {
         if (verify)
-          verification::verify(prm,
-                               group_comm,
-                               group_root ? log : std::cout,
-                               complete);
+          verification::verify(
+            prm, group_comm, group_root ? log : std::cout, complete, [&]() {
+              if (group_root)
+                certify(point, line, start, true);
+            });
         else
           {
             run_impact(prm, group_comm, group_root ? log : std::cout);
@@ -612,11 +613,17 @@ namespace impact_fem
   }
 
 
-  // The files are final: certify them, and list the run in the index.
+  // The files are final: certify them, and list the run in the index. A
+  // verified run's fine level is certified before its coarser levels are
+  // made, so that a verification stopped there (a signal, a job's time
+  // limit) keeps the fine level: the restart finds it complete and only
+  // verifies it. Its checksums are written again, with verification.json,
+  // once the verification is done.
   bool
   Campaign::certify(const Point                                 &point,
                     const std::string                           &line,
-                    const std::chrono::steady_clock::time_point &start) const
+                    const std::chrono::steady_clock::time_point &start,
+                    const bool fine_level_only) const
   {
     const std::string run_directory = directory + "/" + point.path;
     try
@@ -624,17 +631,21 @@ namespace impact_fem
         std::vector<std::string> files = {"parameters.prm",
                                           "history.h5",
                                           "summary.json"};
-        if (verify)
+        if (verify && !fine_level_only)
           files.push_back("verification.json");
         checksums::write_manifest(run_directory, files);
         const auto summary =
           nlohmann::json::parse(read_file(run_directory + "/summary.json"));
-        std::cout << line << ": done in " << std::setprecision(3)
+        std::cout << line
+                  << (fine_level_only ? ": fine level done in " : ": done in ")
+                  << std::setprecision(3)
                   << std::chrono::duration<double>(
                        std::chrono::steady_clock::now() - start)
                        .count()
                   << " s, restitution " << std::setprecision(6)
-                  << summary["restitution"] << std::endl;
+                  << summary["restitution"]
+                  << (fine_level_only ? ", its coarser levels next" : "")
+                  << std::endl;
         write_index();
         return true;
       }

@@ -8,7 +8,8 @@ extrapolation and GCI of each quantity recomputed from the three values
 (Celik et al. 2008, Fs = 1.25, order capped at 2; Fs = 3 on the largest
 difference for a non-monotone sequence). A campaign with --verify links
 each run's verification.json from index.json, and a restart skips the
-verified runs; a complete campaign verified later keeps its runs. Bad input
+verified runs; a complete campaign verified later keeps its runs, and so
+does one stopped in a coarser level (its fine level certified before them). Bad input
 (refinement ratio below 1.5, a coarsest level with fewer than 10 steps per
 contact time, nested meshes with a ratio other than 2 or fewer than two
 contact refinements) stops with a message naming the entry and writes no
@@ -19,7 +20,9 @@ import math
 import os
 import re
 import shutil
+import signal
 import subprocess
+import time
 from fem_test_lib import *
 
 binary, work, _ = parse_common_arguments()
@@ -154,6 +157,41 @@ later = subprocess.run(base + ["--verify"], capture_output=True, text=True)
 checks.check(later.returncode == 0 and "complete, verifying" in later.stdout and
              os.path.exists(f"{plain}/v1/verification.json") and summary(f"{plain}/v1")["wall_time"] == wall,
              "a complete run is verified later and kept")
+
+# A verified campaign stopped in a coarser level (here by SIGKILL, as a job's time limit may)
+# keeps its fine level: the fine level is certified before the coarser levels are made, so the
+# restart finds the run complete and only verifies it.
+stopped = f"{work}/verification_stopped"
+if os.path.isdir(stopped):
+    shutil.rmtree(stopped)
+base = [binary, STEEL_PRM, "--set", f"Output/Directory={stopped}", "--velocities", "1", "--verify"] + \
+       sum((["--set", f"{k}={x}"] for k, x in SMALL.items()), [])
+process = subprocess.Popen(base, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
+                           start_new_session=True)
+while process.poll() is None and not os.path.exists(f"{stopped}/v1/verification/level1/parameters.prm"):
+    time.sleep(0.005)
+in_level1 = process.poll() is None
+if in_level1:
+    os.killpg(process.pid, signal.SIGKILL)
+output, _ = process.communicate()
+print(output[-600:])
+checks.check(in_level1, "the verified campaign is stopped while its level 1 runs")
+with open(f"{stopped}/v1/checksums.sha256") as f:
+    certified = sorted(line.split()[1] for line in f)
+checks.check(certified == ["history.h5", "parameters.prm", "summary.json"]
+             and not os.path.exists(f"{stopped}/v1/verification.json"),
+             f"the stopped run's fine level is certified, without a verification: {certified}")
+wall = summary(f"{stopped}/v1")["wall_time"]
+resumed = subprocess.run(base, capture_output=True, text=True)
+print(resumed.stdout[-800:])
+with open(f"{stopped}/v1/checksums.sha256") as f:
+    certified = sorted(line.split()[1] for line in f)
+with open(f"{stopped}/index.json") as f:
+    linked = [run.get("verification") for run in json.load(f)["runs"]]
+checks.check(resumed.returncode == 0 and "(v1): complete, verifying" in resumed.stdout
+             and summary(f"{stopped}/v1")["wall_time"] == wall
+             and "verification.json" in certified and linked == ["v1/verification.json"],
+             "the restart keeps the fine level, verifies it, and certifies and links verification.json")
 
 # Nested levels: one contact refinement fewer per level, ratio 2, the
 # contact element size doubling and the mesh beyond the contact surface the

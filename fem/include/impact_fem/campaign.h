@@ -105,11 +105,13 @@ namespace impact_fem
     void
     prepare_run_directory(const Point &point, const bool complete) const;
     /// The checksums of the point's files and the index; false if either
-    /// fails (reported on @p line's behalf).
+    /// fails (reported on @p line's behalf). With @p fine_level_only the
+    /// files of a verified run's fine level, before its coarser levels.
     bool
     certify(const Point                                 &point,
             const std::string                           &line,
-            const std::chrono::steady_clock::time_point &start) const;
+            const std::chrono::steady_clock::time_point &start,
+            const bool fine_level_only = false) const;
     /// The index once the job's points are done, and the campaign's last
     /// line.
     void

@@ -552,10 +552,11 @@ namespace impact_fem
 
 
     void
-    verify(ParameterHandler &prm,
-           const MPI_Comm    comm,
-           std::ostream     &log,
-           const bool        fine_done)
+    verify(ParameterHandler            &prm,
+           const MPI_Comm               comm,
+           std::ostream                &log,
+           const bool                   fine_done,
+           const std::function<void()> &fine_level_finished)
     {
       FineLevel      fine = read_fine_level(prm);
       ChangedEntries changed(prm);
@@ -567,6 +568,8 @@ namespace impact_fem
           if (!(index == 0 && fine_done))
             run_level(prm, comm, log, fine, level, changed);
           MPI_Barrier(comm);
+          if (index == 0 && !fine_done && fine_level_finished)
+            fine_level_finished();
           levels.push_back(
             level_record(level, read_json(level.directory + "/summary.json")));
           // The coarser levels' steps and contact surfaces follow the fine

@@ -4,6 +4,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 
+#include <functional>
 #include <iostream>
 #include <string>
 
@@ -38,13 +39,17 @@ namespace impact_fem
      * it writes Output/Directory/verification.json (observed order,
      * Richardson extrapolation, GCI: grid_convergence.h) and prints the
      * table. With @p fine_done the fine run is taken from its summary.json
-     * instead of being run again.
+     * instead of being run again; otherwise @p fine_level_finished, if
+     * given, is called on every rank of @p comm once the fine level's files
+     * are final (a campaign certifies them then, so that a verification
+     * stopped in a coarser level keeps the fine one).
      */
     void
-    verify(ParameterHandler &prm,
-           const MPI_Comm    comm,
-           std::ostream     &log,
-           const bool        fine_done = false);
+    verify(ParameterHandler            &prm,
+           const MPI_Comm               comm,
+           std::ostream                &log,
+           const bool                   fine_done           = false,
+           const std::function<void()> &fine_level_finished = {});
   } // namespace verification
 } // namespace impact_fem
 
