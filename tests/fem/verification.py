@@ -36,13 +36,16 @@ for body in ("Sphere", "Plate"):
 QUANTITIES = ("contact_time", "force_max", "time_force_max", "approach_max", "restitution")
 
 
+def sets(settings):
+    """The command-line arguments that set each entry of @p settings."""
+    return [argument for key, value in settings.items() for argument in ("--set", f"{key}={value}")]
+
+
 def verify(directory, settings, extra=()):
     if os.path.isdir(directory):
         shutil.rmtree(directory)
     command = [binary, STEEL_PRM, "--set", "Output/Directory=" + directory, "--verify", *extra]
-    for key, value in settings.items():
-        command += ["--set", f"{key}={value}"]
-    return subprocess.run(command, capture_output=True, text=True)
+    return subprocess.run(command + sets(settings), capture_output=True, text=True)
 
 
 def expected(f1, f2, f3, r):
@@ -92,7 +95,7 @@ for name in QUANTITIES:
 # in its last level keeps the others): the same --verify again makes only the fine level, with the
 # same verification.json; a level that did not finish, or whose entries changed, is made again.
 again_command = [binary, STEEL_PRM, "--set", "Output/Directory=" + directory, "--verify"] + \
-    sum((["--set", f"{k}={x}"] for k, x in SMALL.items()), [])
+    sets(SMALL)
 stamps = [os.stat(f"{directory}/verification/level{k}/summary.json").st_mtime_ns for k in (1, 2)]
 again = subprocess.run(again_command, capture_output=True, text=True)
 with open(f"{directory}/verification.json") as f:
@@ -123,7 +126,7 @@ with open(f"{campaign}/index.json") as f:
 checks.check([run.get("verification") for run in index["runs"]] == ["v1/verification.json", "v2/verification.json"],
              "index.json links each run's verification.json")
 again = subprocess.run([binary, STEEL_PRM, "--set", f"Output/Directory={campaign}", "--verify", "--velocities", "1,2"]
-                       + sum((["--set", f"{k}={x}"] for k, x in SMALL.items()), []),
+                       + sets(SMALL),
                        capture_output=True, text=True)
 checks.check(again.returncode == 0 and again.stdout.count("complete, skipped") == 2,
              "a restart skips the verified runs")
@@ -150,7 +153,7 @@ plain = f"{work}/verification_later"
 if os.path.isdir(plain):
     shutil.rmtree(plain)
 base = [binary, STEEL_PRM, "--set", f"Output/Directory={plain}", "--velocities", "1"] + \
-       sum((["--set", f"{k}={x}"] for k, x in SMALL.items()), [])
+       sets(SMALL)
 first = subprocess.run(base, capture_output=True, text=True)
 wall = summary(f"{plain}/v1")["wall_time"]
 later = subprocess.run(base + ["--verify"], capture_output=True, text=True)
@@ -165,7 +168,7 @@ stopped = f"{work}/verification_stopped"
 if os.path.isdir(stopped):
     shutil.rmtree(stopped)
 base = [binary, STEEL_PRM, "--set", f"Output/Directory={stopped}", "--velocities", "1", "--verify"] + \
-       sum((["--set", f"{k}={x}"] for k, x in SMALL.items()), [])
+       sets(SMALL)
 process = subprocess.Popen(base, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
                            start_new_session=True)
 while process.poll() is None and not os.path.exists(f"{stopped}/v1/verification/level1/parameters.prm"):
