@@ -52,14 +52,18 @@ def with_steel(settings):
     return settings
 
 
+def sets(settings):
+    """The command-line arguments that set each entry of @p settings."""
+    return [argument for key, value in settings.items() for argument in ("--set", f"{key}={value}")]
+
+
 def run(binary, directory, settings, ranks=1, mpiexec="", expect_success=True, extra=()):
     """Run one case of steel_bodies.prm with --set overrides and the options @p extra
     (e.g. "--verify"); returns (exit code, stdout+stderr)."""
     if os.path.isdir(directory):
         shutil.rmtree(directory)
-    command = [binary, STEEL_PRM, "--set", "Output/Directory=" + directory, *extra]
-    for key, value in with_steel(settings).items():
-        command += ["--set", f"{key}={value}"]
+    command = [binary, STEEL_PRM, "--set", "Output/Directory=" + directory, *extra] + \
+        sets(with_steel(settings))
     if ranks > 1:
         command = [mpiexec, "--allow-run-as-root", "--oversubscribe",
                    "-np", str(ranks)] + command

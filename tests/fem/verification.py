@@ -36,11 +36,6 @@ for body in ("Sphere", "Plate"):
 QUANTITIES = ("contact_time", "force_max", "time_force_max", "approach_max", "restitution")
 
 
-def sets(settings):
-    """The command-line arguments that set each entry of @p settings."""
-    return [argument for key, value in settings.items() for argument in ("--set", f"{key}={value}")]
-
-
 def verify(directory, settings, extra=()):
     if os.path.isdir(directory):
         shutil.rmtree(directory)
