@@ -2,6 +2,7 @@
 #include <impact_fem/campaign/checksums.h>
 #include <impact_fem/campaign/run_identity.h>
 #include <impact_fem/impact_problem.h>
+#include <impact_fem/output/checkpoint.h>
 #include <impact_fem/parameters.h>
 #include <impact_fem/result_files.h>
 #include <impact_fem/verification/verification.h>
@@ -560,8 +561,10 @@ namespace impact_fem
     const auto    start = std::chrono::steady_clock::now();
     std::ofstream log;
     if (group_root)
+      // A run that goes on from its checkpoint keeps the log of its start.
       log.open(run_directory + "/run.log",
-               complete ? std::ios::app : std::ios::out);
+               complete || checkpoint::exists(run_directory) ? std::ios::app :
+                                                               std::ios::out);
     try
       {
         if (verify)

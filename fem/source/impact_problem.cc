@@ -1,4 +1,5 @@
 #include <impact_fem/as_written.h>
+#include <impact_fem/campaign/run_identity.h>
 #include <impact_fem/discretisation/automatic_discretisation.h>
 #include <impact_fem/impact_problem.h>
 #include <impact_fem/result_files.h>
@@ -26,6 +27,16 @@ namespace impact_fem
     number(const double x)
     {
       return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr);
+    }
+
+    /// The run identity of the entries in @p prm (what a checkpoint must
+    /// match to be resumed).
+    std::string
+    identity_of(const ParameterHandler &prm)
+    {
+      std::ostringstream text;
+      prm.print_parameters(text, ParameterHandler::ShortPRM);
+      return run_identity::of(text.str());
     }
   } // namespace
 
@@ -75,6 +86,9 @@ namespace impact_fem
     , time_stepper(time_integration::create_time_stepper(prm))
     , postprocessors(postprocess::create_postprocessors(prm))
   {
+    resumable = impact;
+    if (resumable)
+      identity = identity_of(prm);
     step_sized_for_energy = impact && parameters.prescribed_time_step == 0 &&
                             parameters.steps_per_contact_time_automatic;
     // The rule refines only contact nodes it placed itself.
@@ -631,16 +645,29 @@ namespace impact_fem
   {
     const std::string &directory = parameters.output_directory;
     // An interrupted run (SIGINT, SIGTERM) and a failing one keep what they
-    // computed in history.incomplete.h5. It is also written after the first
-    // step and refreshed every minute, so that even a killed run leaves its
-    // history behind: mpirun kills ranks that have not stopped within a
-    // second of its SIGTERM, and a rank in a long step (or on a loaded
-    // machine) cannot reach its next check in that time.
+    // computed in history.incomplete.h5, and an impact the checkpoint its
+    // next attempt goes on from (output/checkpoint.h). Both are also written
+    // after the first step and refreshed every minute, so that even a
+    // killed run leaves them behind: mpirun kills ranks that have not
+    // stopped within a second of its SIGTERM, and a rank in a long step (or
+    // on a loaded machine) cannot reach its next check in that time.
     // Checked before every step and once more after the last one, so that a
     // signal received at any time of the loop leaves the run incomplete.
+    const auto write_checkpoint = [&]() {
+      if (resumable)
+        checkpoint::write(
+          directory,
+          checkpoint_stamp(),
+          [this](checkpoint::Writer &writer) { save_state(writer); },
+          mpi_communicator);
+    };
+    // Between two steps: the state of the last one is kept for the run to
+    // go on from.
     const auto stop_if_interrupted = [&]() {
       const int signal =
         Utilities::MPI::max(interrupt_received(), mpi_communicator);
+      if (signal != 0)
+        write_checkpoint();
       AssertThrow(signal == 0,
                   ExcMessage("Interrupted by signal " + std::to_string(signal) +
                              " at t = " + as_written(time_stepper->time()) +
@@ -666,6 +693,7 @@ namespace impact_fem
             if (checkpoint_due)
               {
                 write_results(false);
+                write_checkpoint();
                 checkpoint_written = true;
                 last_checkpoint    = std::chrono::steady_clock::now();
               }
@@ -678,6 +706,99 @@ namespace impact_fem
         write_results(false);
         throw;
       }
+  }
+
+
+  checkpoint::Stamp
+  ImpactProblem::checkpoint_stamp() const
+  {
+    checkpoint::Stamp stamp;
+    stamp.identity                 = identity;
+    stamp.step_refinement          = energy_refinement.step;
+    stamp.contact_spacing_halvings = energy_refinement.contact_spacing_halvings;
+    stamp.entry_sub_steps          = energy_refinement.entry_sub_steps;
+    stamp.ranks = Utilities::MPI::n_mpi_processes(mpi_communicator);
+    stamp.dofs  = dof_handler.n_dofs();
+    stamp.cells = triangulation.n_global_active_cells();
+    stamp.step  = time_stepper->step_number();
+    stamp.time  = time_stepper->time();
+    return stamp;
+  }
+
+
+  void
+  ImpactProblem::save_state(checkpoint::Writer &writer) const
+  {
+    time_stepper->save(writer);
+    arms.save(writer, dof_handler);
+    contact.save(writer);
+    if (entry_sub_steps > 1)
+      entry_contact.save(writer);
+    writer &pressures;
+    checkpoint::save(writer, internal_force_predictor);
+    const double wall_time =
+      earlier_wall_time + std::chrono::duration<double>(
+                            std::chrono::steady_clock::now() - wall_start)
+                            .count();
+    writer &first_contact_speed &divide_next_step &entry_steps_divided &end_time
+      &separation_time &first_force_time &wall_time;
+    history.save(writer);
+    for (const auto &[name, postprocessor] : postprocessors)
+      {
+        std::string kind = name;
+        writer     &kind;
+        postprocessor->save(writer);
+      }
+  }
+
+
+  void
+  ImpactProblem::load_state(checkpoint::Reader &reader)
+  {
+    time_stepper->load(reader, locally_owned_dofs, mpi_communicator);
+    arms.load(reader, dof_handler);
+    contact.load(reader);
+    if (entry_sub_steps > 1)
+      entry_contact.load(reader);
+    reader &pressures;
+    checkpoint::load(reader,
+                     internal_force_predictor,
+                     locally_owned_dofs,
+                     mpi_communicator);
+    reader &first_contact_speed &divide_next_step &entry_steps_divided &end_time
+      &separation_time &first_force_time &earlier_wall_time;
+    history.load(reader);
+    for (const auto &[name, postprocessor] : postprocessors)
+      {
+        std::string kind;
+        reader     &kind;
+        AssertThrow(kind == name,
+                    ExcMessage("The checkpoint has the postprocessor " + kind +
+                               " where the run has " + name + "."));
+        postprocessor->load(reader, *this);
+      }
+  }
+
+
+  bool
+  ImpactProblem::resume_from_checkpoint()
+  {
+    if (!resumable)
+      return false;
+    checkpoint::Stamp found;
+    if (!checkpoint::read(
+          parameters.output_directory,
+          checkpoint_stamp(),
+          found,
+          [this](checkpoint::Reader &reader) { load_state(reader); },
+          mpi_communicator))
+      return false;
+    refresh_ghosted_state();
+    pcout << "impact-fem: resumed from the checkpoint of step " << found.step
+          << " (t = " << found.time * 1e6 << " us, " << earlier_wall_time
+          << " s of wall time before) in "
+          << checkpoint::directory_of(parameters.output_directory) << std::endl;
+    return true;
   }
 
 
@@ -776,9 +897,10 @@ namespace impact_fem
   void
   ImpactProblem::write_results(const bool complete)
   {
-    const double wall_time = std::chrono::duration<double>(
-                               std::chrono::steady_clock::now() - wall_start)
-                               .count();
+    const double wall_time =
+      earlier_wall_time + std::chrono::duration<double>(
+                            std::chrono::steady_clock::now() - wall_start)
+                            .count();
     const summary::ImpactSummary s =
       summary::summarize_impact(history[result_files::time_dataset],
                                 history[result_files::contact_force_dataset],
@@ -860,7 +982,8 @@ namespace impact_fem
       declare_iteration_history("||f_body||");
     for (auto &[name, postprocessor] : postprocessors)
       postprocessor->initialize(*this, history);
-    postprocess_step();
+    if (!resume_from_checkpoint())
+      postprocess_step();
 
     time_loop();
     warn_if_not_separated();
@@ -881,12 +1004,15 @@ namespace impact_fem
     if (!reason.empty())
       {
         write_results(false);
+        // The next run is another run: it starts from the first contact.
+        checkpoint::remove(parameters.output_directory, mpi_communicator);
         throw TooCoarseForEnergy(reason, next);
       }
     write_results(true);
     if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
       std::filesystem::remove(parameters.output_directory +
                               "/history.incomplete.h5");
+    checkpoint::remove(parameters.output_directory, mpi_communicator);
     computing_timer->print_summary();
   }
 
@@ -900,6 +1026,21 @@ namespace impact_fem
     // The problem outlives each try block: its destructor (collective
     // over comm) must not run while an exception unwinds.
     ImpactProblem::EnergyRefinement refinement;
+    // A run stopped in a later try goes on in that try, with its refinement.
+    prm.enter_subsection("Output");
+    const std::string directory = prm.get("Directory");
+    prm.leave_subsection();
+    checkpoint::Stamp stamp;
+    if (checkpoint::read_stamp(directory, stamp, comm) &&
+        stamp.identity == identity_of(prm) &&
+        (stamp.step_refinement != 1 || stamp.contact_spacing_halvings != 0 ||
+         stamp.entry_sub_steps != 1))
+      {
+        refinement.step                     = stamp.step_refinement;
+        refinement.contact_spacing_halvings = stamp.contact_spacing_halvings;
+        refinement.entry_sub_steps          = stamp.entry_sub_steps;
+        problem.reset();
+      }
     for (;;)
       {
         try

@@ -1,6 +1,7 @@
 #ifndef IMPACT_FEM_IMPACT_PROBLEM_H
 #define IMPACT_FEM_IMPACT_PROBLEM_H
 
+#include <impact_fem/output/checkpoint.h>
 #include <impact_fem/postprocess/interface.h>
 #include <impact_fem/sphere_plate_setup.h>
 #include <impact_fem/summary/impact_summary.h>
@@ -196,6 +197,21 @@ namespace impact_fem
     /// The time loop, checkpoints and interrupts included.
     void
     time_loop();
+    /// What a checkpoint of this run is stamped with, at the current step.
+    checkpoint::Stamp
+    checkpoint_stamp() const;
+    /// Everything that carries from one step to the next, in this order:
+    /// the time stepper, the internal variables, the contact's warm starts
+    /// and pressures, the problem's own scalars, the history and each
+    /// postprocessor.
+    void
+    save_state(checkpoint::Writer &writer) const;
+    void
+    load_state(checkpoint::Reader &reader);
+    /// The run goes on from its checkpoint if it has one of the same run
+    /// (true; the log says from where), else from the first contact.
+    bool
+    resume_from_checkpoint();
     void
     write_results(const bool complete);
     /// The summary.json of the run (@p s its summary).
@@ -247,6 +263,13 @@ namespace impact_fem
     double end_time         = 0;
     double separation_time  = -1;
     double first_force_time = -1;
+
+    /// An impact keeps checkpoints (analyses on this time loop do not):
+    /// its run identity (run_identity::of() of its entries) and the wall
+    /// time of the attempts before the one that resumed it [s].
+    bool        resumable = false;
+    std::string identity;
+    double      earlier_wall_time = 0;
   };
 
   /**

@@ -553,4 +553,23 @@ namespace impact_fem
           row_values[j].push_back(value);
         }
   }
+
+
+  void
+  MortarContact::save(checkpoint::Writer &writer) const
+  {
+    writer &active;
+  }
+
+
+  void
+  MortarContact::load(checkpoint::Reader &reader)
+  {
+    std::vector<bool> saved;
+    reader           &saved;
+    AssertThrow(saved.size() == active.size(),
+                ExcMessage("The checkpoint's contact nodes do not fit the "
+                           "run's."));
+    active = saved;
+  }
 } // namespace impact_fem

@@ -69,6 +69,84 @@ namespace impact_fem
     }
 
 
+    void
+    InternalVariables::save(checkpoint::Writer  &writer,
+                            const DoFHandler<2> &dof_handler) const
+    {
+      // Each state's strain, internal variables, plastic strain and
+      // accumulated plastic strain as the doubles they are.
+      std::vector<double> values;
+      const auto          add = [&](const SymmetricTensor<2, 3> &t) {
+        for (unsigned int i = 0; i < t.n_independent_components; ++i)
+          values.push_back(t.access_raw_entry(i));
+      };
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          for (const auto &state : states(cell))
+            {
+              add(state->strain);
+              for (const auto &internal : state->internal)
+                add(internal);
+              add(state->plastic_strain);
+              values.push_back(state->accumulated_plastic_strain);
+            }
+      std::vector<bool> candidates;
+      for (const auto &c : plastic_cells)
+        candidates.push_back(c.candidate);
+      writer &values &candidates &dissipated &stored[0] & stored[1] &
+        plastic &plastic_correction[0] & plastic_correction[1] &
+        max_accumulated[0] & max_accumulated[1];
+      checkpoint::save(writer, plastic_force_now);
+      checkpoint::save(writer, plastic_force_predicted);
+    }
+
+
+    void
+    InternalVariables::load(checkpoint::Reader  &reader,
+                            const DoFHandler<2> &dof_handler)
+    {
+      std::vector<double>                     values;
+      std::vector<bool>                       candidates;
+      reader &values &candidates &dissipated &stored[0] & stored[1] &
+        plastic &plastic_correction[0] & plastic_correction[1] &
+        max_accumulated[0] & max_accumulated[1];
+      AssertThrow(candidates.size() == plastic_cells.size(),
+                  ExcMessage("The checkpoint's plastic cells do not fit the "
+                             "run's."));
+      std::size_t k     = 0;
+      const auto  fetch = [&]() {
+        AssertThrow(k < values.size(),
+                    ExcMessage("The checkpoint's quadrature-point states do "
+                                "not fit the run's."));
+        return values[k++];
+      };
+      const auto read = [&](SymmetricTensor<2, 3> &t) {
+        for (unsigned int i = 0; i < t.n_independent_components; ++i)
+          t.access_raw_entry(i) = fetch();
+      };
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned() && !states(cell).empty())
+          for (const auto &state : storage.get_data(cell))
+            {
+              read(state->strain);
+              for (auto &internal : state->internal)
+                read(internal);
+              read(state->plastic_strain);
+              state->accumulated_plastic_strain = fetch();
+            }
+      AssertThrow(k == values.size(),
+                  ExcMessage("The checkpoint's quadrature-point states do not "
+                             "fit the run's."));
+      for (std::size_t i = 0; i < plastic_cells.size(); ++i)
+        plastic_cells[i].candidate = candidates[i];
+      prepared             = false;
+      const IndexSet owned = plastic_force_now.locally_owned_elements();
+      const MPI_Comm comm  = dof_handler.get_communicator();
+      checkpoint::load(reader, plastic_force_now, owned, comm);
+      checkpoint::load(reader, plastic_force_predicted, owned, comm);
+    }
+
+
     InternalVariables::States
     InternalVariables::states(const CellIterator &cell) const
     {

@@ -74,6 +74,57 @@ namespace impact_fem
 
 
   void
+  History::save(checkpoint::Writer &writer) const
+  {
+    std::vector<std::pair<std::string, std::vector<double>>> values;
+    for (const auto &s : series)
+      values.emplace_back(s.name, s.values);
+    std::vector<std::vector<std::string>> profile_texts;
+    std::vector<std::vector<double>>      profile_values;
+    for (const auto &p : profiles)
+      {
+        profile_texts.push_back({p.name, p.unit, p.description});
+        profile_values.push_back(p.values);
+      }
+    writer &values &profile_texts &profile_values;
+  }
+
+
+  void
+  History::load(checkpoint::Reader &reader)
+  {
+    std::vector<std::pair<std::string, std::vector<double>>> values;
+    std::vector<std::vector<std::string>>                    profile_texts;
+    std::vector<std::vector<double>>                         profile_values;
+    reader &values &profile_texts                           &profile_values;
+    AssertThrow(values.size() == series.size() &&
+                  profile_texts.size() == profile_values.size(),
+                ExcMessage("The checkpoint's history has " +
+                           std::to_string(values.size()) +
+                           " quantities, the run declares " +
+                           std::to_string(series.size()) + "."));
+    for (std::size_t i = 0; i < values.size(); ++i)
+      {
+        AssertThrow(values[i].first == series[i].name,
+                    ExcMessage("The checkpoint's history has " +
+                               values[i].first + " where the run declares " +
+                               series[i].name + "."));
+        series[i].values = std::move(values[i].second);
+      }
+    profiles.clear();
+    for (std::size_t i = 0; i < profile_texts.size(); ++i)
+      {
+        AssertThrow(profile_texts[i].size() == 3,
+                    ExcMessage("The checkpoint's history is damaged."));
+        profiles.push_back({profile_texts[i][0],
+                            profile_texts[i][1],
+                            profile_texts[i][2],
+                            std::move(profile_values[i])});
+      }
+  }
+
+
+  void
   History::write_hdf5(const std::string                        &filename,
                       const std::map<std::string, std::string> &text_attributes,
                       const std::map<std::string, double> &numeric_attributes,

@@ -117,6 +117,18 @@ namespace impact_fem
         report << "  max penetration   " << penetration * 1e9 << " nm\n";
       }
 
+      void
+      save(checkpoint::Writer &writer) const override
+      {
+        writer &largest_force &penetration;
+      }
+
+      void
+      load(checkpoint::Reader &reader, const ImpactProblem &) override
+      {
+        reader &largest_force &penetration;
+      }
+
     private:
       double largest_force = -1;
       double penetration   = 0;

@@ -199,6 +199,25 @@ namespace impact_fem
                << largest_error * 100 << " %\n";
       }
 
+      void
+      save(checkpoint::Writer &writer) const override
+      {
+        checkpoint::save(writer, previous_u);
+        checkpoint::save(writer, previous_v);
+        writer &previous_pressures &previous_gaps &initial &radiated &viscous
+          &gravity_work &contact_work &largest_error;
+      }
+
+      void
+      load(checkpoint::Reader &reader, const ImpactProblem &problem) override
+      {
+        const IndexSet &owned = problem.dofs().locally_owned_dofs();
+        checkpoint::load(reader, previous_u, owned, problem.communicator());
+        checkpoint::load(reader, previous_v, owned, problem.communicator());
+        reader &previous_pressures &previous_gaps &initial &radiated &viscous
+          &gravity_work &contact_work &largest_error;
+      }
+
     private:
       VectorType     product, masked, mean_velocity, previous_u, previous_v;
       Vector<double> previous_pressures, previous_gaps;

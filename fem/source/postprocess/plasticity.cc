@@ -148,6 +148,18 @@ namespace impact_fem
                << summary["yield_onset_velocity"] << " m/s\n";
       }
 
+      void
+      save(checkpoint::Writer &writer) const override
+      {
+        writer &active &onset_time &onset_sphere_velocity;
+      }
+
+      void
+      load(checkpoint::Reader &reader, const ImpactProblem &) override
+      {
+        reader &active &onset_time &onset_sphere_velocity;
+      }
+
     private:
       /// Largest radius of a yielded quadrature point in the cells along
       /// the boundary @p surface, all ranks [m].

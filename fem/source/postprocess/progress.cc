@@ -92,6 +92,19 @@ namespace impact_fem
           out << std::flush;
       }
 
+      /// Progress lines carry nothing into the results.
+      void
+      save(checkpoint::Writer &) const override
+      {}
+
+      /// The rate of the estimate of the remaining time starts anew.
+      void
+      load(checkpoint::Reader &, const ImpactProblem &problem) override
+      {
+        start_time = problem.stepper().time();
+        last       = std::chrono::steady_clock::now();
+      }
+
     private:
       double                                interval = 1, start_time = 0;
       std::chrono::steady_clock::time_point last;

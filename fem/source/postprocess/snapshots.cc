@@ -68,6 +68,18 @@ namespace impact_fem
         write(problem, time);
       }
 
+      void
+      save(checkpoint::Writer &writer) const override
+      {
+        writer &next &records;
+      }
+
+      void
+      load(checkpoint::Reader &reader, const ImpactProblem &) override
+      {
+        reader &next &records;
+      }
+
     private:
       void
       write(const ImpactProblem &problem, const double time)

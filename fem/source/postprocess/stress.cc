@@ -187,6 +187,40 @@ namespace impact_fem
           std::max(peak[sphere].value, peak[plate].value);
       }
 
+      void
+      save(checkpoint::Writer &writer) const override
+      {
+        for (const auto &p : peak)
+          {
+            std::vector<double> values = {p.value,
+                                          p.time,
+                                          p.location[0],
+                                          p.location[1],
+                                          p.first_yield_time,
+                                          p.first_yield_location[0],
+                                          p.first_yield_location[1]};
+            writer             &values;
+          }
+      }
+
+      void
+      load(checkpoint::Reader &reader, const ImpactProblem &) override
+      {
+        for (auto &p : peak)
+          {
+            std::vector<double> values;
+            reader             &values;
+            AssertThrow(values.size() == 7,
+                        ExcMessage("The checkpoint's stress peaks are "
+                                   "damaged."));
+            p.value                = values[0];
+            p.time                 = values[1];
+            p.location             = Point<2>(values[2], values[3]);
+            p.first_yield_time     = values[4];
+            p.first_yield_location = Point<2>(values[5], values[6]);
+          }
+      }
+
     private:
       struct Peak
       {

@@ -101,6 +101,22 @@ namespace impact_fem
       }
 
       void
+      save_past(checkpoint::Writer &writer) const override
+      {
+        checkpoint::save(writer, previous_u);
+        checkpoint::save(writer, previous_v);
+      }
+
+      void
+      load_past(checkpoint::Reader &reader,
+                const IndexSet     &owned,
+                const MPI_Comm      comm) override
+      {
+        checkpoint::load(reader, previous_u, owned, comm);
+        checkpoint::load(reader, previous_v, owned, comm);
+      }
+
+      void
       past_after_sub_steps(const VectorType &u_start,
                            const VectorType &v_start) override
       {

@@ -37,6 +37,30 @@ namespace impact_fem
 
 
     void
+    Interface::save(checkpoint::Writer &writer) const
+    {
+      checkpoint::save(writer, u);
+      checkpoint::save(writer, v);
+      checkpoint::save(writer, a);
+      writer &dt &t &step;
+      save_past(writer);
+    }
+
+
+    void
+    Interface::load(checkpoint::Reader &reader,
+                    const IndexSet     &owned,
+                    const MPI_Comm      comm)
+    {
+      checkpoint::load(reader, u, owned, comm);
+      checkpoint::load(reader, v, owned, comm);
+      checkpoint::load(reader, a, owned, comm);
+      reader &dt &t &step;
+      load_past(reader, owned, comm);
+    }
+
+
+    void
     Interface::begin_sub_steps(const unsigned int n)
     {
       Assert(n >= 1, ExcMessage("at least one sub-step"));

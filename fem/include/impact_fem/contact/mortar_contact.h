@@ -1,6 +1,8 @@
 #ifndef IMPACT_FEM_CONTACT_MORTAR_CONTACT_H
 #define IMPACT_FEM_CONTACT_MORTAR_CONTACT_H
 
+#include <impact_fem/output/checkpoint.h>
+
 #include <deal.II/base/index_set.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/dofs/dof_handler.h>
@@ -138,6 +140,13 @@ namespace impact_fem
      */
     double
     penetration(const TrilinosWrappers::MPI::Vector &displacement) const;
+
+    /// The active set the next solve starts from, for a checkpoint.
+    void
+    save(checkpoint::Writer &writer) const;
+    /// Reads what save() wrote (the same contact nodes).
+    void
+    load(checkpoint::Reader &reader);
 
   private:
     /// B, g_0 and the pointwise gaps of the rigid flat (rigid_flat.cc).

@@ -3,6 +3,7 @@
 
 #include <impact_fem/cell_strain_operator.h>
 #include <impact_fem/materials/interface.h>
+#include <impact_fem/output/checkpoint.h>
 
 #include <deal.II/base/quadrature.h>
 #include <deal.II/base/quadrature_point_data.h>
@@ -176,6 +177,17 @@ namespace impact_fem
       {
         return stored[body];
       }
+
+      /// The states of the owned cells of @p dof_handler (in its order),
+      /// the candidate cells, the plastic forces and the energies, at the
+      /// end of a step, for a checkpoint.
+      void
+      save(checkpoint::Writer &writer, const DoFHandler<2> &dof_handler) const;
+
+      /// Reads what save() wrote into the states initialize() made on the
+      /// same mesh and partition.
+      void
+      load(checkpoint::Reader &reader, const DoFHandler<2> &dof_handler);
 
     private:
       std::function<const Interface &(types::material_id)> material_of;

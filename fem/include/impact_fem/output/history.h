@@ -1,6 +1,8 @@
 #ifndef IMPACT_FEM_OUTPUT_HISTORY_H
 #define IMPACT_FEM_OUTPUT_HISTORY_H
 
+#include <impact_fem/output/checkpoint.h>
+
 #include <map>
 #include <string>
 #include <vector>
@@ -67,6 +69,15 @@ namespace impact_fem
 
     std::size_t
     n_steps() const;
+
+    /// The values of every quantity and the profiles, for a checkpoint.
+    void
+    save(checkpoint::Writer &writer) const;
+
+    /// Reads what save() wrote; the quantities must be declared as they
+    /// were (the same postprocessors), or it throws.
+    void
+    load(checkpoint::Reader &reader);
 
     void
     write_hdf5(const std::string                        &filename,

@@ -1,6 +1,7 @@
 #ifndef IMPACT_FEM_POSTPROCESS_INTERFACE_H
 #define IMPACT_FEM_POSTPROCESS_INTERFACE_H
 
+#include <impact_fem/output/checkpoint.h>
 #include <impact_fem/output/history.h>
 #include <impact_fem/registry.h>
 
@@ -48,6 +49,18 @@ namespace impact_fem
       /// values into the history (appended on every rank alike).
       virtual void
       execute(const ImpactProblem &problem, History &history) = 0;
+
+      /// What the postprocessor carries from one step to the next (its
+      /// accumulators, extremes, the last step's values), for a checkpoint
+      /// of the run; every kind says what, if only that it carries nothing.
+      virtual void
+      save(checkpoint::Writer &writer) const = 0;
+
+      /// Reads what save() wrote, after initialize(), so that the steps
+      /// after the checkpoint are postprocessed as if the run had not
+      /// stopped.
+      virtual void
+      load(checkpoint::Reader &reader, const ImpactProblem &problem) = 0;
 
       /// At the end (and at checkpoints): summary keys, lines of the report.
       virtual void

@@ -1,6 +1,7 @@
 #ifndef IMPACT_FEM_TIME_INTEGRATION_INTERFACE_H
 #define IMPACT_FEM_TIME_INTEGRATION_INTERFACE_H
 
+#include <impact_fem/output/checkpoint.h>
 #include <impact_fem/registry.h>
 
 #include <deal.II/base/parameter_handler.h>
@@ -85,6 +86,18 @@ namespace impact_fem
       void
       end_sub_steps();
 
+      /// The state (u, v, a), the time, the step and the scheme's past at
+      /// the end of a step (not within sub-steps), for a checkpoint.
+      void
+      save(checkpoint::Writer &writer) const;
+
+      /// Reads what save() wrote, the vectors made with the locally owned
+      /// entries @p owned on @p comm.
+      void
+      load(checkpoint::Reader &reader,
+           const IndexSet     &owned,
+           const MPI_Comm      comm);
+
       double
       mass_coefficient() const
       {
@@ -137,6 +150,16 @@ namespace impact_fem
       /// Set u, v, a (and the scheme's past) to the end of the step.
       virtual void
       update(const VectorType &new_displacement) = 0;
+
+      /// The scheme's past (beyond u, v, a) for a checkpoint, and back
+      /// (vectors made with @p owned on @p comm); a scheme whose past is
+      /// the state alone has nothing to add.
+      virtual void
+      save_past(checkpoint::Writer &) const
+      {}
+      virtual void
+      load_past(checkpoint::Reader &, const IndexSet &, const MPI_Comm)
+      {}
 
       /// The past rebuilt for sub-steps dt, the state (u, v, a) at t
       /// unchanged and the past made for the step @p full_dt.
