@@ -654,6 +654,7 @@ namespace impact_fem
     // Checked before every step and once more after the last one, so that a
     // signal received at any time of the loop leaves the run incomplete.
     const auto write_checkpoint = [&]() {
+      TimerOutput::Scope t(*computing_timer, "write checkpoint");
       if (resumable)
         checkpoint::write(
           directory,
@@ -672,7 +673,11 @@ namespace impact_fem
                   ExcMessage("Interrupted by signal " + std::to_string(signal) +
                              " at t = " + as_written(time_stepper->time()) +
                              " s; the history so far is in " + directory +
-                             "/history.incomplete.h5."));
+                             "/history.incomplete.h5" +
+                             (resumable ? ", and the run made again with the "
+                                          "same entries goes on from there" :
+                                          "") +
+                             "."));
     };
     auto last_checkpoint    = std::chrono::steady_clock::now();
     bool checkpoint_written = false;
