@@ -33,6 +33,29 @@ namespace impact_fem
           return current + ".old";
         return "";
       }
+
+      /// Runs @p action on the first rank of @p comm; a failure there is
+      /// thrown on every rank, as "Cannot write the checkpoint @p path".
+      void
+      on_first_rank(const MPI_Comm               comm,
+                    const std::function<void()> &action,
+                    const std::string           &path)
+      {
+        std::string error;
+        if (Utilities::MPI::this_mpi_process(comm) == 0)
+          try
+            {
+              action();
+            }
+          catch (const std::exception &e)
+            {
+              error = e.what();
+            }
+        error = Utilities::MPI::broadcast(comm, error, 0);
+        AssertThrow(error.empty(),
+                    ExcMessage("Cannot write the checkpoint " + path + ": " +
+                               error));
+      }
     } // namespace
 
 
@@ -109,21 +132,13 @@ namespace impact_fem
       const unsigned int rank    = Utilities::MPI::this_mpi_process(comm);
       const std::string  current = directory_of(run_directory);
       const std::string  fresh   = current + ".new";
-      std::string        error;
-      if (rank == 0)
-        try
-          {
-            fs::remove_all(fresh);
-            fs::create_directories(fresh);
-          }
-        catch (const std::exception &e)
-          {
-            error = e.what();
-          }
-      error = Utilities::MPI::broadcast(comm, error, 0);
-      AssertThrow(error.empty(),
-                  ExcMessage("Cannot write the checkpoint " + fresh + ": " +
-                             error));
+      on_first_rank(
+        comm,
+        [&]() {
+          fs::remove_all(fresh);
+          fs::create_directories(fresh);
+        },
+        fresh);
       bool written = false;
       try
         {
@@ -145,25 +160,18 @@ namespace impact_fem
       AssertThrow(written,
                   ExcMessage("Cannot write the checkpoint " + fresh +
                              " (a rank's file failed)."));
-      if (rank == 0)
-        try
-          {
-            // The last whole checkpoint stays readable until the new one
-            // has its name.
-            fs::remove_all(current + ".old");
-            if (fs::exists(current))
-              fs::rename(current, current + ".old");
-            fs::rename(fresh, current);
-            fs::remove_all(current + ".old");
-          }
-        catch (const std::exception &e)
-          {
-            error = e.what();
-          }
-      error = Utilities::MPI::broadcast(comm, error, 0);
-      AssertThrow(error.empty(),
-                  ExcMessage("Cannot write the checkpoint " + current + ": " +
-                             error));
+      // The last whole checkpoint stays readable until the new one has its
+      // name.
+      on_first_rank(
+        comm,
+        [&]() {
+          fs::remove_all(current + ".old");
+          if (fs::exists(current))
+            fs::rename(current, current + ".old");
+          fs::rename(fresh, current);
+          fs::remove_all(current + ".old");
+        },
+        current);
     }
 
 
