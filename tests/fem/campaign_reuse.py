@@ -33,9 +33,7 @@ RUN = f"{directory}/v1"
 
 
 def campaign(label, settings):
-    command = [binary, STEEL_PRM, "--set", f"Output/Directory={directory}"] + BASE
-    for key, value in settings.items():
-        command += ["--set", f"{key}={value}"]
+    command = [binary, STEEL_PRM, "--set", f"Output/Directory={directory}"] + BASE + sets(settings)
     result = subprocess.run(command, capture_output=True, text=True, timeout=600)
     output = result.stdout + result.stderr
     match = re.search(r"\(v1\): (.*)", output)

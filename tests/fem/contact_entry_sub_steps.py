@@ -19,7 +19,7 @@ import subprocess
 import h5py
 import numpy as np
 
-from fem_test_lib import STEEL_PRM, Checks, maxwell_bodies, parse_common_arguments
+from fem_test_lib import STEEL_PRM, Checks, maxwell_bodies, parse_common_arguments, sets
 
 binary, work, mpiexec = parse_common_arguments()
 checks = Checks()
@@ -34,8 +34,7 @@ def run(scenario, name, settings, expect_success=True):
     command = [binary, os.path.join(SCENARIOS, scenario), "--set", "Output/Directory=" + directory]
     if os.path.isabs(scenario):
         command[1] = scenario
-    for key, value in settings.items():
-        command += ["--set", f"{key}={value}"]
+    command += sets(settings)
     result = subprocess.run(command, capture_output=True, text=True)
     output = result.stdout + result.stderr
     if expect_success and result.returncode != 0:

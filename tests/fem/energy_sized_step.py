@@ -24,7 +24,7 @@ import subprocess
 
 import h5py
 
-from fem_test_lib import Checks, parse_common_arguments
+from fem_test_lib import Checks, parse_common_arguments, sets
 
 binary, work, mpiexec = parse_common_arguments()
 checks = Checks()
@@ -60,9 +60,7 @@ def run(scenario, directory, settings, extra=()):
     if os.path.isdir(directory):
         shutil.rmtree(directory)
     command = [binary, os.path.join(SCENARIOS, scenario), "--set", "Output/Directory=" + directory,
-               *extra]
-    for key, value in settings.items():
-        command += ["--set", f"{key}={value}"]
+               *extra] + sets(settings)
     result = subprocess.run(command, capture_output=True, text=True)
     output = result.stdout + result.stderr
     if result.returncode != 0:

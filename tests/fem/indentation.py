@@ -106,9 +106,8 @@ def expect_refusal(name, overrides, words, extra=()):
 def run_with_arguments(directory, overrides, extra):
     import shutil, subprocess
     shutil.rmtree(directory, ignore_errors=True)
-    command = [binary, STEEL_PRM, "--set", "Output/Directory=" + directory] + list(extra)
-    for key, value in dict(settings, **overrides).items():
-        command += ["--set", f"{key}={value}"]
+    command = [binary, STEEL_PRM, "--set", "Output/Directory=" + directory] + list(extra) + \
+        sets(dict(settings, **overrides))
     result = subprocess.run(command, capture_output=True, text=True)
     return result.returncode, result.stdout + result.stderr
 

@@ -34,13 +34,6 @@ def impact_fem(directory, arguments):
     return result.returncode, result.stdout + result.stderr
 
 
-def sets(settings):
-    arguments = []
-    for key, value in settings.items():
-        arguments += ["--set", f"{key}={value}"]
-    return arguments
-
-
 def refused(name, arguments, words):
     directory = f"{work}/materials_{name}"
     code, output = impact_fem(directory, arguments)

@@ -119,9 +119,8 @@ directory = f"{work}/plastic_sweep"
 import shutil
 shutil.rmtree(directory, ignore_errors=True)
 command = [binary, STEEL_PRM, "--velocities", "3", "--sweep", "Sphere/Yield strength=2.03e9,4e9",
-           "--set", "Output/Directory=" + directory, "--set", "Output/Snapshot interval=2e-5"]
-for key, value in bodies("elastic-plastic").items():
-    command += ["--set", f"{key}={value}"]
+           "--set", "Output/Directory=" + directory, "--set", "Output/Snapshot interval=2e-5"] + \
+    sets(bodies("elastic-plastic"))
 result = subprocess.run(command, capture_output=True, text=True)
 print("sweep: exit", result.returncode, (result.stdout + result.stderr).strip().splitlines()[-1:])
 runs = {}

@@ -40,10 +40,8 @@ cases = [
 def run_case(index, entry, value, settings):
     directory = f"{work}/set_value_{index}"
     shutil.rmtree(directory, ignore_errors=True)
-    command = [binary, STEEL_PRM, "--set", "Output/Directory=" + directory]
-    for key, setting in dict(small, **settings).items():
-        command += ["--set", f"{key}={setting}"]
-    command += ["--set", f"{entry}={value}"]
+    command = [binary, STEEL_PRM, "--set", "Output/Directory=" + directory] + \
+        sets(dict(small, **settings)) + ["--set", f"{entry}={value}"]
     try:
         result = subprocess.run(command, capture_output=True, text=True, timeout=120)
     except subprocess.TimeoutExpired:
