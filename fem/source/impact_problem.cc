@@ -714,6 +714,15 @@ namespace impact_fem
   }
 
 
+  double
+  ImpactProblem::run_wall_time() const
+  {
+    return earlier_wall_time + std::chrono::duration<double>(
+                                 std::chrono::steady_clock::now() - wall_start)
+                                 .count();
+  }
+
+
   checkpoint::Stamp
   ImpactProblem::checkpoint_stamp() const
   {
@@ -741,10 +750,7 @@ namespace impact_fem
       entry_contact.save(writer);
     writer &pressures;
     checkpoint::save(writer, internal_force_predictor);
-    const double wall_time =
-      earlier_wall_time + std::chrono::duration<double>(
-                            std::chrono::steady_clock::now() - wall_start)
-                            .count();
+    const double wall_time = run_wall_time();
     writer &first_contact_speed &divide_next_step &entry_steps_divided &end_time
       &separation_time &first_force_time &wall_time;
     history.save(writer);
@@ -902,10 +908,7 @@ namespace impact_fem
   void
   ImpactProblem::write_results(const bool complete)
   {
-    const double wall_time =
-      earlier_wall_time + std::chrono::duration<double>(
-                            std::chrono::steady_clock::now() - wall_start)
-                            .count();
+    const double                 wall_time = run_wall_time();
     const summary::ImpactSummary s =
       summary::summarize_impact(history[result_files::time_dataset],
                                 history[result_files::contact_force_dataset],

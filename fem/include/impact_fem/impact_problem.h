@@ -197,6 +197,10 @@ namespace impact_fem
     /// The time loop, checkpoints and interrupts included.
     void
     time_loop();
+    /// Wall time of the run so far [s]: this attempt's and the earlier
+    /// ones' that its checkpoint carried.
+    double
+    run_wall_time() const;
     /// What a checkpoint of this run is stamped with, at the current step.
     checkpoint::Stamp
     checkpoint_stamp() const;
