@@ -16,7 +16,6 @@
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
-#include <limits>
 #include <sstream>
 
 namespace impact_fem
@@ -105,7 +104,6 @@ namespace impact_fem
       {
         energy_refinement.contact_spacing_halvings =
           refinement.contact_spacing_halvings;
-        energy_refinement.spacing_for_force = refinement.spacing_for_force;
         mesh.contact_surface_refinements += refinement.contact_spacing_halvings;
         for (auto &entry : discretisation_choice.entries)
           if (entry.path == "Mesh/Contact surface refinements")
@@ -113,11 +111,8 @@ namespace impact_fem
               entry.value = mesh.contact_surface_refinements;
               entry.rule +=
                 "; +" + std::to_string(refinement.contact_spacing_halvings) +
-                (refinement.spacing_for_force ?
-                   " here: a contact node entering at the peak added more "
-                   "than the target's share of the force" :
-                   " here: the energy balance missed mostly by the "
-                   "integrator's damping");
+                " here: the energy balance missed mostly by the "
+                "integrator's damping";
             }
       }
     if (impact && parameters.prescribed_time_step == 0)
@@ -204,36 +199,17 @@ namespace impact_fem
     const double balance = history["energy_error"].back();
     const double activation =
       history["contact_work"].back() / history["kinetic_energy"].front();
-    // At the largest force, as ContactQuantities recorded it; only where a
-    // body is expected to yield: an elastic edge's pressure falls to zero,
-    // so that a node enters carrying none and the force does not step.
-    const auto  &forces = history[result_files::contact_force_dataset];
-    const double node_force =
-      discretisation_choice.expected.velocity_ratio > 1 ?
-        AutomaticDiscretisation::entering_node_force(
-          history.profile("contact_node_radius"),
-          history.profile("pressure_at_force_max"),
-          forces.empty() ? 0. :
-                           *std::max_element(forces.begin(), forces.end())) :
-        std::numeric_limits<double>::quiet_NaN();
     const EnergyRefinement next =
       AutomaticDiscretisation::next_refinement_for_energy(
         energy_refinement,
         balance,
         activation,
-        node_force,
         spacing_sized_for_energy && mesh.contact_surface_refinements < 6,
         sub_steps_sized_for_energy);
     std::ostringstream why;
     why << std::setprecision(3) << "the energy balance ends " << balance
         << " off (target " << AutomaticDiscretisation::energy_balance_target
-        << "), of which the contact activation " << activation;
-    // Measured only where a body is expected to yield.
-    if (std::isfinite(node_force))
-      why << "; a contact node entering at the peak adds " << 100 * node_force
-          << " % of the force (target "
-          << 100 * AutomaticDiscretisation::entering_node_force_target << " %)";
-    why << ": ";
+        << "), of which the contact activation " << activation << ": ";
     const bool denser = next.contact_spacing_halvings !=
                         energy_refinement.contact_spacing_halvings;
     if (next.step != energy_refinement.step)
@@ -1005,8 +981,6 @@ namespace impact_fem
                                 0);
     next.entry_sub_steps =
       Utilities::MPI::broadcast(mpi_communicator, next.entry_sub_steps, 0);
-    next.spacing_for_force =
-      Utilities::MPI::broadcast(mpi_communicator, next.spacing_for_force, 0);
     reason = Utilities::MPI::broadcast(mpi_communicator, reason, 0);
     // A reason is given exactly when the next run differs from this one.
     if (!reason.empty())

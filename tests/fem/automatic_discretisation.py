@@ -1,8 +1,8 @@
 """A mesh and a time step that size themselves ("auto", the default of Mesh/Contact element
 size, Uniform zone radius, Contact surface radius and Time integration/Steps per contact time):
 the sizes follow the expected contact radius a and contact time of the scenario (a / 20, 1.5 a,
-2.5 a at most R/2, 300 steps per expected contact time, and the contact surfaces' cells refined
-three times more when a body is expected to yield, kept by the coarser levels of --verify),
+2.5 a at most R/2, 300 steps per expected contact time; when a body is expected to yield a / 30
+and the contact surfaces' cells refined three times more, kept by the coarser levels of --verify),
 Hertz's for elastic bodies and Jackson & Green's elastic-plastic impact when a body can yield;
 each run says what it chose (log and summary.json, its history's attributes carry the numbers);
 a value the scenario sets wins; a contact too large for the sphere is refused, naming the
@@ -67,7 +67,8 @@ for path, value in want.items():
     got = d["entries"][path]
     checks.check(got["origin"] == "auto" and close(got["value"], value, 1e-12),
                  f"{path} = {got['value']:.6e} ({got['origin']}), rule {value:.6e}")
-checks.check("Mesh/Contact element size = " in log and "(auto: a / 20)" in log,
+checks.check("Mesh/Contact element size = " in log
+             and "(auto: a / 20, a / 30 if a body is expected to yield)" in log,
              "the log says what was chosen and why")
 with h5py.File(os.path.join(directory, "history.h5"), "r") as f:
     attribute = f.attrs.get("Mesh/Contact element size")
@@ -183,10 +184,10 @@ checks.check(close(expected["contact_time"], t_jg, 1e-12),
 checks.check(close(expected["velocity_ratio"], cli["impacts"][0]["velocity_ratio"], 1e-12),
              f"V/V_y {expected['velocity_ratio']:.1f} = impact-reduced's")
 got = d["entries"]
-for path, value in {"Mesh/Contact element size": a_jg / 20,
+for path, value in {"Mesh/Contact element size": a_jg / 30,  # a body yields
                     "Mesh/Uniform zone radius": 1.5 * a_jg,
                     "Mesh/Contact surface radius": 2.5 * a_jg,
-                    # V/V_y > 1: a fully plastic contact, its nodes every a / 160
+                    # V/V_y > 1: a fully plastic contact, its nodes every a / 240
                     "Mesh/Contact surface refinements": 3,
                     "Time integration/Steps per contact time": 300 * t_hertz / t_jg}.items():
     checks.check(close(got[path]["value"], value, 1e-6),

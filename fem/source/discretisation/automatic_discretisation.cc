@@ -2,12 +2,10 @@
 #include <impact_fem/discretisation/automatic_discretisation.h>
 
 #include <deal.II/base/exceptions.h>
-#include <deal.II/base/numbers.h>
 #include <deal.II/base/utilities.h>
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <sstream>
 
 namespace impact_fem
@@ -32,13 +30,15 @@ namespace impact_fem
                              "small strains. Give Mesh/Contact element "
                              "size, Uniform zone radius and Contact surface "
                              "radius explicitly only if you know better."));
-      contact_element_size = a / elements_per_contact_radius;
+      const bool yields    = expected.velocity_ratio > 1;
+      contact_element_size = a / (yields ? plastic_elements_per_contact_radius :
+                                           elements_per_contact_radius);
       contact_surface_radius =
         std::min(surface_per_contact_radius * a, 0.5 * sphere_radius);
       uniform_zone_radius =
         std::min(uniform_zone_per_contact_radius * a, contact_surface_radius);
       contact_surface_refinements =
-        expected.velocity_ratio > 1 ? plastic_contact_surface_refinements : 0;
+        yields ? plastic_contact_surface_refinements : 0;
       steps_per_contact_time = expected.contact_time > 0 ?
                                  steps_per_expected_contact_time *
                                    hertz_contact_time / expected.contact_time :
@@ -100,64 +100,17 @@ namespace impact_fem
     }
 
 
-    double
-    AutomaticDiscretisation::entering_node_force(
-      const std::vector<double> &node_radius,
-      const std::vector<double> &pressure,
-      const double               force)
-    {
-      if (node_radius.size() != pressure.size() || !(force > 0))
-        return std::numeric_limits<double>::quiet_NaN();
-      std::vector<std::pair<double, double>> nodes;
-      for (std::size_t i = 0; i < node_radius.size(); ++i)
-        nodes.emplace_back(node_radius[i], pressure[i]);
-      std::sort(nodes.begin(), nodes.end());
-      std::size_t outermost = nodes.size();
-      for (std::size_t i = nodes.size(); i-- > 0;)
-        if (nodes[i].second > 0)
-          {
-            outermost = i;
-            break;
-          }
-      if (outermost == nodes.size() || outermost == 0)
-        return 0;
-      const double r_o = nodes[outermost].first;
-      const double dr  = r_o - nodes[outermost - 1].first;
-      double       sum = 0;
-      unsigned int n   = 0;
-      for (const auto &[r, p] : nodes)
-        if (r > (1 - edge_band_fraction) * r_o && p > 0)
-          {
-            sum += p;
-            ++n;
-          }
-      return 2 * numbers::PI * r_o * dr * (sum / n) / force;
-    }
-
-
-    bool
-    AutomaticDiscretisation::contact_spacing_halving_for_force(
-      const double entering_node_force)
-    {
-      return std::isfinite(entering_node_force) &&
-             entering_node_force > entering_node_force_target;
-    }
-
-
     AutomaticDiscretisation::EnergyRefinement
     AutomaticDiscretisation::next_refinement_for_energy(
       const EnergyRefinement &current,
       const double            balance,
       const double            activation_work,
-      const double            entering_node_force,
       const bool              spacing_refinable,
       const bool              sub_steps_refinable)
     {
       EnergyRefinement next = current;
       const bool       spacing_left =
         spacing_refinable && current.contact_spacing_halvings == 0;
-      const bool for_force =
-        spacing_left && contact_spacing_halving_for_force(entering_node_force);
       const double step = step_refinement_for_energy(balance, activation_work);
       if (current.step == 1 && step > 1)
         {
@@ -171,17 +124,7 @@ namespace impact_fem
       // a rest that dominates from the first run has another cause.
       else if (spacing_left && current.step > 1 &&
                contact_spacing_halving_for_energy(balance, activation_work))
-        {
-          next.contact_spacing_halvings = 1;
-          return next;
-        }
-      // The node's force does not change with the step: denser nodes go
-      // with the first refinement of the step, not a run later.
-      if (for_force)
-        {
-          next.contact_spacing_halvings = 1;
-          next.spacing_for_force        = true;
-        }
+        next.contact_spacing_halvings = 1;
       return next;
     }
 
@@ -201,7 +144,9 @@ namespace impact_fem
     std::string
     AutomaticDiscretisation::contact_element_size_rule()
     {
-      return "a / " + number(elements_per_contact_radius);
+      return "a / " + number(elements_per_contact_radius) + ", a / " +
+             number(plastic_elements_per_contact_radius) +
+             " if a body is expected to yield";
     }
 
 
@@ -224,13 +169,11 @@ namespace impact_fem
     {
       return number(plastic_contact_surface_refinements) +
              " if a body is expected to yield (contact nodes every a / " +
-             number(elements_per_contact_radius *
+             number(plastic_elements_per_contact_radius *
                     (1u << plastic_contact_surface_refinements)) +
              ") and the contact element size is auto, else 0; one more if "
-             "a contact node entering at the peak adds more than " +
-             number(100 * entering_node_force_target) +
-             " % of the force, or if a run whose step was refined for its "
-             "energy balance still misses " +
+             "a run whose step was refined for its energy balance still "
+             "misses " +
              number(energy_balance_target) +
              ", mostly by the rest of the error (the integrator's damping)";
     }

@@ -27,10 +27,10 @@ namespace impact_fem
                       *discretisation::number_or_auto_pattern(),
                       "Edge length of the elements at the contact point "
                       "[m], > 0 and smaller than the sphere radius; 'auto': "
-                      "the expected contact radius a / 20 (a of Hertz, or "
-                      "of Jackson-Green's elastic-plastic impact if a body "
-                      "can yield; the run's log and summary.json say "
-                      "which).");
+                      "the expected contact radius a / 20 (a of Hertz), or "
+                      "a / 30 if a body is expected to yield (a of "
+                      "Jackson-Green's elastic-plastic impact); the run's "
+                      "log and summary.json say which.");
     prm.declare_entry("Uniform zone radius",
                       "auto",
                       *discretisation::number_or_auto_pattern(),

@@ -23,11 +23,11 @@ namespace impact_fem
      * value "auto" (their default) or a number, which wins.
      *
      * The rule, with a the expected contact radius and t_c the expected
-     * contact time (expected_contact.h): contact elements a / 20, a uniform
-     * zone of 1.5 a and a contact surface of 2.5 a (at most R/2, the
-     * largest the mesh allows), the contact surfaces' cells refined three
-     * times more when a body is expected to yield (contact nodes every
-     * a / 160),
+     * contact time (expected_contact.h): contact elements a / 20 (a / 30
+     * when a body is expected to yield), a uniform zone of 1.5 a and a
+     * contact surface of 2.5 a (at most R/2, the largest the mesh allows),
+     * the contact surfaces' cells refined three times more when a body is
+     * expected to yield (contact nodes every a / 240),
      * 300 time steps per expected contact time, raised when the run's contact
      * activation loses more energy than the energy balance allows
      * (step_refinement_for_energy(); the run is then made again).
@@ -40,20 +40,27 @@ namespace impact_fem
      */
     struct AutomaticDiscretisation
     {
-      static constexpr double elements_per_contact_radius     = 20;
-      static constexpr double uniform_zone_per_contact_radius = 1.5;
-      static constexpr double surface_per_contact_radius      = 2.5;
-      static constexpr double steps_per_expected_contact_time = 300;
+      static constexpr double elements_per_contact_radius = 20;
+      /// Contact elements per expected contact radius when a body is
+      /// expected to yield. With plastic_contact_surface_refinements, the
+      /// contact nodes lie every a / 240. A fully plastic contact carries
+      /// nearly the same pressure up to its edge, so its force rises in a
+      /// step each time a contact node enters contact: 2 dr / a of the force
+      /// for a uniform pressure, 10 % at a / 20. Near the peak the contact
+      /// radius stops growing between two nodes, and a level's F_max holds
+      /// or misses the last node's force: the verified GCI of F_max was 0.9
+      /// to 1.7 times that force. At a / 160 the GCI of F_max was 2.0 % on
+      /// annealed copper on AISI 1006 at 2 m/s (V/V_y ~ 10^4), at a / 240
+      /// 0.61 % (doc/results/fem-benchmarks.md); a node then adds at most
+      /// 0.83 % of the force, below issue 30's 1 % target for that GCI.
+      static constexpr double plastic_elements_per_contact_radius = 30;
+      static constexpr double uniform_zone_per_contact_radius     = 1.5;
+      static constexpr double surface_per_contact_radius          = 2.5;
+      static constexpr double steps_per_expected_contact_time     = 300;
       /// Refinements of the contact surfaces' cells when a body is expected
-      /// to yield: contact nodes every a / 160. A fully plastic contact
-      /// carries nearly the same pressure up to its edge, so its force rises
-      /// in a step each time a contact node enters contact (about 2 h / a of
-      /// the force: 10 % at a / 20, a staircase that makes the GCI of F_max
-      /// and e oscillatory); at a / 80 the GCI of F_max still reached 1.4 %
-      /// (AISI 304 on 6061-T6 at 1 and 3 m/s) and 3.4 % (annealed copper at
-      /// V/V_y ~ 10^4), at a / 160 it is 0.008-1.13 % on the former at 1-3
-      /// m/s (fem/bench/automatic_discretisation.sh), for about a quarter
-      /// more cells than a / 80.
+      /// to yield: contact nodes every a / 240, for the force steps above
+      /// (one refinement of the cells costs less than finer elements over
+      /// the whole uniform zone).
       static constexpr unsigned int plastic_contact_surface_refinements = 3;
 
       /// The energy balance a run with automatic steps is sized for: at the
@@ -78,19 +85,6 @@ namespace impact_fem
       /// The most sub-steps at contact entry the rule asks for (the entry's
       /// own bound).
       static constexpr unsigned int maximum_entry_sub_steps = 64;
-      /// The largest force a contact node may add as it enters the contact
-      /// at the peak, per peak force [-]: issue 30's target for the GCI of
-      /// F_max (1 %). Near the peak of a plastic impact the contact radius
-      /// stops growing between two nodes, and a level's F_max holds or
-      /// misses the last node's force: the verified GCI of F_max was 0.9 to
-      /// 1.7 times that force (doc/results/fem-benchmarks.md).
-      static constexpr double entering_node_force_target = 0.01;
-      /// The outer share of the contact radius whose loaded nodes' mean
-      /// pressure stands for the edge's: node to node the edge pressure of a
-      /// plastic contact alternates by about 30 % (0.77 and 1.32 times the
-      /// mean pressure on annealed copper).
-      static constexpr double edge_band_fraction = 0.1;
-
       /// How a run's automatic step and contact nodes are refined for its
       /// energy balance: each at most once (run_impact() makes a run at
       /// most three times).
@@ -103,10 +97,6 @@ namespace impact_fem
         /// Sub-steps of the steps in which the contact's active set
         /// changes (Time integration/Sub-steps at contact entry), >= 1.
         unsigned int entry_sub_steps = 1;
-        /// Whether the contact nodes were made denser for the force a node
-        /// adds entering the contact (contact_spacing_halving_for_force()),
-        /// not for the energy balance.
-        bool spacing_for_force = false;
       };
 
       /**
@@ -153,43 +143,6 @@ namespace impact_fem
                                          double activation_work);
 
       /**
-       * The force a contact node adds as it enters the contact at the time
-       * of the largest force, per that force [-]: 2 pi r_o dr p_edge /
-       * @p force, with r_o the outermost loaded node's radius, dr its
-       * distance to the next node inside, and p_edge the mean pressure of
-       * the loaded nodes beyond (1 - edge_band_fraction) r_o. @p node_radius
-       * [m] and @p pressure [Pa] are the contact nodes' radii and pressures
-       * at that time (any order, same length), @p force [N] the force then.
-       * A fully plastic contact carries about its mean pressure up to its
-       * edge (p_edge 0.92 to 0.98 of F / (pi r_o^2) on the table's plastic
-       * cases), so that this is about 2 dr / r_o: 1.2 % at a / 160, 0.6 %
-       * at a / 320. An elastic (Hertz) edge's pressure falls to zero, so
-       * that its nodes enter carrying none and its force does not step:
-       * this measure, whose band mean is then still 0.45 of the mean
-       * pressure, means a plastic edge only, and the run applies it only
-       * where a body is expected to yield. 0 when no node carries
-       * pressure but the innermost; NaN for inputs of different lengths or
-       * a force <= 0.
-       */
-      static double
-      entering_node_force(const std::vector<double> &node_radius,
-                          const std::vector<double> &pressure,
-                          double                     force);
-
-      /**
-       * Whether a run's automatic contact nodes are made twice as dense for
-       * its largest force: when @p entering_node_force (as
-       * entering_node_force() gives it) exceeds entering_node_force_target.
-       * Measured: 1.16 and 1.22 % at a / 160 on annealed copper on AISI
-       * 1006 at 2 and 5 m/s, whose verified GCI of F_max was then 2.0 and
-       * 1.08 %; 0.55 and 0.60 % at a / 320 on AISI 304 on 6061-T6 at 5 m/s
-       * and 52100 on 1006 at 2 m/s, GCI 0.52 and 0.42 %
-       * (doc/results/fem-benchmarks.md). false for a non-finite input.
-       */
-      static bool
-      contact_spacing_halving_for_force(double entering_node_force);
-
-      /**
        * The sub-steps at contact entry a run asks for together with its
        * step factor, from the same @p balance and @p activation_work as
        * step_refinement_for_energy(): 1 unless that factor is capped at
@@ -208,25 +161,21 @@ namespace impact_fem
 
       /**
        * The refinement of a run's next try, from the refinement @p current
-       * it ran with, its @p balance and @p activation_work (as
-       * step_refinement_for_energy()) and its @p entering_node_force (as
-       * entering_node_force()); @p current itself when the run is kept.
-       * Each refinement is made once: the step
+       * it ran with and its @p balance and @p activation_work (as
+       * step_refinement_for_energy()); @p current itself when the run is
+       * kept. Each refinement is made once: the step
        * (step_refinement_for_energy()) after the first run; the contact
        * nodes (only where @p spacing_refinable: the rule placed them and
-       * one more refinement is allowed) together with it when a node's
-       * force asks for it (contact_spacing_halving_for_force()), or after
-       * a refined step when the run still misses mostly by the rest
-       * (contact_spacing_halving_for_energy()), or after a run that meets
-       * its balance when a node's force asks for it. A capped step comes
-       * with sub-steps at contact entry (entry_sub_steps_for_energy();
-       * only where @p sub_steps_refinable: the scenario left them "auto").
+       * one more refinement is allowed) after a refined step when the run
+       * still misses mostly by the rest
+       * (contact_spacing_halving_for_energy()). A capped step comes with
+       * sub-steps at contact entry (entry_sub_steps_for_energy(); only
+       * where @p sub_steps_refinable: the scenario left them "auto").
        */
       static EnergyRefinement
       next_refinement_for_energy(const EnergyRefinement &current,
                                  double                  balance,
                                  double                  activation_work,
-                                 double                  entering_node_force,
                                  bool                    spacing_refinable,
                                  bool                    sub_steps_refinable);
 
@@ -239,7 +188,8 @@ namespace impact_fem
                               double                 sphere_radius,
                               double                 hertz_contact_time);
 
-      /// The rule of each entry in words, for the log: "a / 20", "1.5 a",
+      /// The rule of each entry in words, for the log: "a / 20, a / 30 if
+      /// a body is expected to yield", "1.5 a",
       /// "2.5 a, at most R/2", "300 per expected contact time; ...".
       static std::string
       contact_element_size_rule();
